@@ -1,0 +1,46 @@
+// Adaptive P2 table and the four causal path costs of eq. (1)
+// (docs/algorithm.md, sections "P2 table" and "Path costs").
+#pragma once
+
+#include "sgm/params.hpp"
+#include "sgm/volume.hpp"
+
+#include <opencv2/core.hpp>
+
+#include <array>
+#include <cstdint>
+
+namespace sgm {
+
+// P2r indexed by |I(p) - I(p - r)|: P2' at 0, max(P1, floor(P2' / k)) otherwise.
+using P2Table = std::array<uint16_t, 256>;
+P2Table makeP2Table(int p1, int p2);
+
+// A path direction r: p - r = (x + dx, y + dy).
+struct PathDirection {
+  int dx, dy, degrees;
+};
+constexpr PathDirection kPathDirections[kPathCount] = {
+    {-1, 0, 0}, {-1, -1, 45}, {0, -1, 90}, {1, -1, 135}};
+
+// Sentinel for the missing neighbours Lr(p-r, -1) and Lr(p-r, D); larger than
+// any path cost, small enough that sentinel + P1 still fits in 16 bits.
+constexpr uint16_t kPathSentinel = 0x7fff;
+
+// One step of eq. (1) at one pixel, for all D disparities:
+//   out[d] = C(p,d) + min(prev[d], prev[d-1] + P1, prev[d+1] + P1, minPrev + P2r) - minPrev
+// prev points at Lr(p-r, 0); prev[-1] and prev[D] must hold kPathSentinel.
+// Returns min_d out[d].
+uint16_t pathStep(const uint8_t* cost, const uint16_t* prev, uint16_t minPrev, int disparities,
+                  int p1, int p2r, uint16_t* out);
+
+// At a path start (p - r outside the image) Lr(p, d) = C(p, d).
+uint16_t pathStart(const uint8_t* cost, int disparities, uint16_t* out);
+
+// Lr of one path (index into kPathDirections) for the whole image.
+PathVolume pathCost(const CostVolume& cost, const cv::Mat& grayLeft, int pathIndex, int p1, int p2);
+
+// S(p, d) = sum over the four paths of Lr(p, d). Runs the paths on both cores.
+PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1, int p2);
+
+}  // namespace sgm

@@ -1,0 +1,96 @@
+#include "sgm/cli_args.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+namespace sgm {
+
+CliArgs::CliArgs(int argc, char** argv, const std::set<std::string>& valueOptions,
+                 const std::set<std::string>& flags) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg.size() > 2 && arg.compare(0, 2, "--") == 0) {
+      std::string name = arg.substr(2), value;
+      const size_t eq = name.find('=');
+      const bool inlineValue = eq != std::string::npos;
+      if (inlineValue) value = name.substr(eq + 1), name = name.substr(0, eq);
+      if (flags.count(name) && !inlineValue) {
+        flags_.insert(name);
+      } else if (valueOptions.count(name)) {
+        if (!inlineValue) {
+          if (i + 1 >= argc) throw Error("option --" + name + " needs a value");
+          value = argv[++i];
+        }
+        values_[name] = value;
+      } else {
+        throw Error("unknown option --" + name + " (see --help)");
+      }
+    } else {
+      positional_.push_back(arg);
+    }
+  }
+}
+
+std::string CliArgs::text(const std::string& name, const std::string& fallback) const {
+  auto it = values_.find(name);
+  return it == values_.end() ? fallback : it->second;
+}
+
+long CliArgs::integer(const std::string& name, long fallback, long min, long max) const {
+  auto it = values_.find(name);
+  if (it == values_.end()) return fallback;
+  const std::string& s = it->second;
+  char* end = nullptr;
+  errno = 0;
+  const long v = std::strtol(s.c_str(), &end, 10);
+  if (s.empty() || *end != '\0' || errno == ERANGE)
+    throw Error("option --" + name + " expects an integer, got '" + s + "'");
+  if (v < min || v > max)
+    throw Error("option --" + name + "=" + s + " out of range " + std::to_string(min) + ".." +
+                std::to_string(max));
+  return v;
+}
+
+double CliArgs::real(const std::string& name, double fallback, double min, double max) const {
+  auto it = values_.find(name);
+  if (it == values_.end()) return fallback;
+  const std::string& s = it->second;
+  char* end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  if (s.empty() || *end != '\0' || !std::isfinite(v))
+    throw Error("option --" + name + " expects a number, got '" + s + "'");
+  if (v < min || v > max)
+    throw Error("option --" + name + "=" + s + " out of range " + std::to_string(min) + ".." +
+                std::to_string(max));
+  return v;
+}
+
+bool CliArgs::onOff(const std::string& name, bool fallback) const {
+  auto it = values_.find(name);
+  if (it == values_.end()) return fallback;
+  if (it->second == "on" || it->second == "1") return true;
+  if (it->second == "off" || it->second == "0") return false;
+  throw Error("option --" + name + " expects on or off, got '" + it->second + "'");
+}
+
+const std::set<std::string>& CliArgs::pipelineOptions() {
+  static const std::set<std::string> names = {"d", "p1", "p2", "mode", "subpixel", "lr", "fill", "median"};
+  return names;
+}
+
+Params CliArgs::pipelineParams(Params p) const {
+  p.disparities = int(integer("d", p.disparities, kMinDisparities, kMaxDisparities));
+  p.p1 = int(integer("p1", p.p1, 0, kMaxPenalty));
+  p.p2 = int(integer("p2", p.p2, 0, kMaxPenalty));
+  if (has("mode")) p.mode = parseCostMode(text("mode", ""));
+  p.subpixel = onOff("subpixel", p.subpixel);
+  if (text("lr", "") == "off") p.lrTolerance = -1;
+  else p.lrTolerance = int(integer("lr", p.lrTolerance, 0, kMaxDisparities));
+  p.fill = onOff("fill", p.fill);
+  p.median = onOff("median", p.median);
+  p.validate();
+  return p;
+}
+
+}  // namespace sgm

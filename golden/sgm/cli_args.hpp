@@ -1,0 +1,37 @@
+// Small command-line parser shared by the project's tools: positional
+// arguments plus "--name value" options, every error a one-line sgm::Error.
+#pragma once
+
+#include "sgm/params.hpp"
+
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace sgm {
+
+class CliArgs {
+ public:
+  // valueOptions take a value ("--d 64"); flags take none ("--help").
+  CliArgs(int argc, char** argv, const std::set<std::string>& valueOptions,
+          const std::set<std::string>& flags = {});
+
+  const std::vector<std::string>& positional() const { return positional_; }
+  bool has(const std::string& name) const { return values_.count(name) || flags_.count(name); }
+  std::string text(const std::string& name, const std::string& fallback) const;
+  long integer(const std::string& name, long fallback, long min, long max) const;
+  double real(const std::string& name, double fallback, double min, double max) const;
+  bool onOff(const std::string& name, bool fallback) const;
+
+  // Reads --d, --p1, --p2, --mode, --subpixel, --lr, --median into params.
+  static const std::set<std::string>& pipelineOptions();
+  Params pipelineParams(Params base = Params{}) const;
+
+ private:
+  std::vector<std::string> positional_;
+  std::map<std::string, std::string> values_;
+  std::set<std::string> flags_;
+};
+
+}  // namespace sgm

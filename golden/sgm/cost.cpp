@@ -1,0 +1,142 @@
+#include "sgm/cost.hpp"
+
+#include "sgm/parallel.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+
+namespace sgm {
+
+int censusCost(CostMode mode, const Census& left, const Census& right) {
+  switch (mode) {
+    case CostMode::kRt: return std::abs(left.rank() - right.rank());
+    case CostMode::kRsad: return hammingDistance(left, right);
+    case CostMode::kUnified: return std::abs(left.rank() - right.rank()) + hammingDistance(left, right);
+    default: throw Error(std::string("cost mode ") + costModeName(mode) + " is not a census mode");
+  }
+}
+
+namespace {
+
+// Census-based modes, including the software-only sad+rt which needs RT.
+void censusModes(const cv::Mat& gl, const cv::Mat& gr, CostMode mode, CostVolume& vol,
+                 const cv::Mat* sadMean) {
+  const int w = gl.cols, h = gl.rows, nd = vol.depth;
+  const std::vector<Census> cl = censusTransform(gl), cr = censusTransform(gr);
+  const int cmax = maxCost(mode);
+  parallelFor(h, [&](int y0, int y1) {
+    for (int y = y0; y < y1; ++y)
+      for (int x = 0; x < w; ++x) {
+        uint8_t* c = vol.at(x, y);
+        const size_t p = size_t(y) * w + x;
+        for (int d = 0; d < nd; ++d) {
+          if (x - d < 0) {
+            c[d] = uint8_t(cmax);
+            continue;
+          }
+          const size_t q = p - d;
+          if (!sadMean) {
+            c[d] = uint8_t(censusCost(mode, cl[p], cr[q]));
+            continue;
+          }
+          // sad+rt, eq. (2) with alpha = 0.2, the SAD mean rescaled to the rank range.
+          const int rt = censusCost(CostMode::kRt, cl[p], cr[q]);
+          const int sadOnRankScale = (sadMean[d].at<uint8_t>(y, x) * kCensusBits + 127) / 255;
+          c[d] = uint8_t((2 * sadOnRankScale + 8 * rt + 5) / 10);
+        }
+      }
+  });
+}
+
+// 9x9 mean absolute difference per disparity over the window pixels whose left
+// and right positions are both inside the image (rounded half up).
+std::vector<cv::Mat> sadMeans(const cv::Mat& gl, const cv::Mat& gr, int disparities) {
+  const int w = gl.cols, h = gl.rows;
+  std::vector<cv::Mat> means(disparities);
+  parallelFor(disparities, [&](int d0, int d1) {
+    cv::Mat integral(h + 1, w + 1, CV_32S);
+    for (int d = d0; d < d1; ++d) {
+      integral.setTo(0);
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+          const int ad = x - d >= 0 ? std::abs(int(gl.at<uint8_t>(y, x)) - int(gr.at<uint8_t>(y, x - d))) : 0;
+          integral.at<int>(y + 1, x + 1) =
+              ad + integral.at<int>(y, x + 1) + integral.at<int>(y + 1, x) - integral.at<int>(y, x);
+        }
+      cv::Mat mean(h, w, CV_8UC1, cv::Scalar(255));
+      for (int y = 0; y < h; ++y)
+        for (int x = d; x < w; ++x) {
+          const int y0 = std::max(0, y - kCensusRadius), y1 = std::min(h - 1, y + kCensusRadius);
+          const int x0 = std::max(d, x - kCensusRadius), x1 = std::min(w - 1, x + kCensusRadius);
+          const int sum = integral.at<int>(y1 + 1, x1 + 1) - integral.at<int>(y0, x1 + 1) -
+                          integral.at<int>(y1 + 1, x0) + integral.at<int>(y0, x0);
+          const int n = (y1 - y0 + 1) * (x1 - x0 + 1);
+          mean.at<uint8_t>(y, x) = uint8_t((2 * sum + n) / (2 * n));
+        }
+      means[d] = mean;
+    }
+  });
+  return means;
+}
+
+// Symmetric Birchfield-Tomasi dissimilarity on one pixel, computed in half
+// steps (values doubled) and rounded half up at the end.
+void birchfieldTomasi(const cv::Mat& gl, const cv::Mat& gr, CostVolume& vol) {
+  const int w = gl.cols, h = gl.rows, nd = vol.depth;
+  auto range = [w](const uint8_t* row, int x, int& lo, int& hi) {
+    const int c = 2 * row[x];
+    const int left = row[std::max(x - 1, 0)] + row[x], right = row[std::min(x + 1, w - 1)] + row[x];
+    lo = std::min({c, left, right});
+    hi = std::max({c, left, right});
+  };
+  parallelFor(h, [&](int y0, int y1) {
+    for (int y = y0; y < y1; ++y) {
+      const uint8_t* l = gl.ptr<uint8_t>(y);
+      const uint8_t* r = gr.ptr<uint8_t>(y);
+      for (int x = 0; x < w; ++x) {
+        uint8_t* c = vol.at(x, y);
+        int lLo, lHi;
+        range(l, x, lLo, lHi);
+        for (int d = 0; d < nd; ++d) {
+          if (x - d < 0) {
+            c[d] = 255;
+            continue;
+          }
+          int rLo, rHi;
+          range(r, x - d, rLo, rHi);
+          const int il = 2 * l[x], ir = 2 * r[x - d];
+          const int dlr = std::max({0, ir - lHi, lLo - ir});
+          const int drl = std::max({0, il - rHi, rLo - il});
+          c[d] = uint8_t((std::min(dlr, drl) + 1) >> 1);
+        }
+      }
+    }
+  });
+}
+
+}  // namespace
+
+CostVolume computeCost(const cv::Mat& gl, const cv::Mat& gr, CostMode mode, int disparities) {
+  CostVolume vol(gl.cols, gl.rows, disparities);
+  switch (mode) {
+    case CostMode::kRt:
+    case CostMode::kRsad:
+    case CostMode::kUnified: censusModes(gl, gr, mode, vol, nullptr); break;
+    case CostMode::kSadRt: {
+      const std::vector<cv::Mat> means = sadMeans(gl, gr, disparities);
+      censusModes(gl, gr, mode, vol, means.data());
+      break;
+    }
+    case CostMode::kSad: {
+      const std::vector<cv::Mat> means = sadMeans(gl, gr, disparities);
+      for (int y = 0; y < gl.rows; ++y)
+        for (int x = 0; x < gl.cols; ++x)
+          for (int d = 0; d < disparities; ++d) vol.at(x, y)[d] = means[d].at<uint8_t>(y, x);
+      break;
+    }
+    case CostMode::kBt: birchfieldTomasi(gl, gr, vol); break;
+  }
+  return vol;
+}
+
+}  // namespace sgm

@@ -1,0 +1,22 @@
+// Matching cost C(p, d) for every pixel and disparity (docs/algorithm.md,
+// section "Matching cost").
+#pragma once
+
+#include "sgm/census.hpp"
+#include "sgm/params.hpp"
+#include "sgm/volume.hpp"
+
+#include <opencv2/core.hpp>
+
+namespace sgm {
+
+// Cost of one hardware mode (rt, rsad, unified) from the left census at p and
+// the right census at p - d. Throws Error for software-only modes.
+int censusCost(CostMode mode, const Census& left, const Census& right);
+
+// Full cost volume C(x, y, d), d = 0 .. D-1; disparities with x - d < 0 cost
+// maxCost(mode).
+CostVolume computeCost(const cv::Mat& grayLeft, const cv::Mat& grayRight, CostMode mode,
+                       int disparities);
+
+}  // namespace sgm

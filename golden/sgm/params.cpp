@@ -1,0 +1,67 @@
+#include "sgm/params.hpp"
+
+namespace sgm {
+
+namespace {
+struct ModeInfo {
+  CostMode mode;
+  const char* name;
+  int maxCost;
+  bool hardware;
+};
+constexpr ModeInfo kModes[] = {
+    {CostMode::kRt, "rt", 80, true},
+    {CostMode::kRsad, "rsad", 80, true},
+    {CostMode::kUnified, "unified", 160, true},
+    {CostMode::kSad, "sad", 255, false},
+    {CostMode::kBt, "bt", 255, false},
+    {CostMode::kSadRt, "sad+rt", 80, false},
+};
+
+const ModeInfo& info(CostMode mode) {
+  for (const ModeInfo& m : kModes)
+    if (m.mode == mode) return m;
+  throw Error("internal: unknown cost mode");
+}
+}  // namespace
+
+bool isHardwareMode(CostMode mode) { return info(mode).hardware; }
+const char* costModeName(CostMode mode) { return info(mode).name; }
+int maxCost(CostMode mode) { return info(mode).maxCost; }
+
+CostMode parseCostMode(const std::string& name) {
+  for (const ModeInfo& m : kModes)
+    if (name == m.name) return m.mode;
+  throw Error("unknown cost mode '" + name + "' (expected rt, rsad, unified, sad, bt or sad+rt)");
+}
+
+std::vector<CostMode> allCostModes() {
+  std::vector<CostMode> modes;
+  for (const ModeInfo& m : kModes) modes.push_back(m.mode);
+  return modes;
+}
+
+void Params::validate() const {
+  if (disparities < kMinDisparities || disparities > kMaxDisparities)
+    throw Error("unsupported disparity count D=" + std::to_string(disparities) + " (expected " +
+                std::to_string(kMinDisparities) + ".." + std::to_string(kMaxDisparities) + ")");
+  if (p1 < 0 || p1 > kMaxPenalty)
+    throw Error("P1=" + std::to_string(p1) + " out of range 0.." + std::to_string(kMaxPenalty));
+  if (p2 < p1 || p2 > kMaxPenalty)
+    throw Error("P2'=" + std::to_string(p2) + " out of range P1.." + std::to_string(kMaxPenalty) +
+                " (P1=" + std::to_string(p1) + ")");
+  if (lrTolerance > disparities)
+    throw Error("LR tolerance " + std::to_string(lrTolerance) + " exceeds D=" +
+                std::to_string(disparities));
+}
+
+Params Params::rawSgm() const {
+  Params raw = *this;
+  raw.subpixel = false;
+  raw.lrTolerance = -1;
+  raw.fill = false;
+  raw.median = false;
+  return raw;
+}
+
+}  // namespace sgm

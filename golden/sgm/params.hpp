@@ -1,0 +1,58 @@
+// Parameters of the SGM pipeline and the fixed-point constants of the contract.
+// docs/algorithm.md is the prose version of everything in this header.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace sgm {
+
+// Every user-facing failure is an sgm::Error with a one-line message.
+struct Error : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Matching-cost modes. The first three exist in the RTL; the others are
+// software-only, kept to reproduce the paper's Table I.
+enum class CostMode { kRt, kRsad, kUnified, kSad, kBt, kSadRt };
+
+bool isHardwareMode(CostMode mode);
+const char* costModeName(CostMode mode);      // "rt", "rsad", "unified", "sad", "bt", "sad+rt"
+CostMode parseCostMode(const std::string& name);  // throws Error on unknown names
+std::vector<CostMode> allCostModes();
+
+// Largest matching cost a mode can produce (also the cost of a disparity whose
+// match falls outside the right image).
+int maxCost(CostMode mode);
+
+constexpr int kCensusRadius = 4;                  // 9x9 window
+constexpr int kCensusBits = 80;                   // 9*9 - 1
+constexpr int kSubpixelBits = 4;                  // disparities carry 1/16 px
+constexpr int kSubpixelOne = 1 << kSubpixelBits;  // 16
+constexpr int kMedianRadius = 2;                  // 5x5 median
+constexpr int kMaxPenalty = 16000;                // keeps 4 * (Cmax + P2') < 2^16
+constexpr int kPathCount = 4;                     // 0, 45, 90, 135 degrees
+
+struct Params {
+  int disparities = 64;        // D: candidates 0 .. D-1
+  int p1 = 7;                  // small-change penalty
+  int p2 = 100;                // P2' of the adaptive P2r = max(P1, P2' / |dI|)
+  CostMode mode = CostMode::kUnified;
+  bool subpixel = true;        // quadratic refinement to 1/16 px
+  int lrTolerance = 1;         // left-right check tolerance in px; < 0 disables it
+  bool fill = true;            // fill invalid pixels along the row from the background side
+  bool median = true;          // 5x5 median over valid pixels
+
+  // Throws Error naming the first parameter that is out of range.
+  void validate() const;
+  // Parameters with every post-processing stage off (raw SGM + WTA).
+  Params rawSgm() const;
+};
+
+// The disparity counts the RTL is built and tested for; the golden model
+// accepts any D in [kMinDisparities, kMaxDisparities].
+constexpr int kMinDisparities = 2;
+constexpr int kMaxDisparities = 256;
+
+}  // namespace sgm

@@ -1,0 +1,36 @@
+#include "sgm/pipeline.hpp"
+
+#include "sgm/aggregate.hpp"
+#include "sgm/cost.hpp"
+#include "sgm/disparity.hpp"
+
+namespace sgm {
+
+void checkInput(const cv::Mat& gl, const cv::Mat& gr, const Params& params) {
+  params.validate();
+  if (gl.type() != CV_8UC1 || gr.type() != CV_8UC1) throw Error("internal: pipeline needs 8-bit gray images");
+  if (gl.size() != gr.size())
+    throw Error("left/right size mismatch: " + std::to_string(gl.cols) + "x" + std::to_string(gl.rows) +
+                " vs " + std::to_string(gr.cols) + "x" + std::to_string(gr.rows));
+  const int window = 2 * kCensusRadius + 1;
+  if (gl.cols < window || gl.rows < window)
+    throw Error("image " + std::to_string(gl.cols) + "x" + std::to_string(gl.rows) +
+                " is smaller than the " + std::to_string(window) + "x" + std::to_string(window) + " window");
+}
+
+PipelineStages runPipelineStages(const cv::Mat& gl, const cv::Mat& gr, const Params& params) {
+  checkInput(gl, gr, params);
+  PipelineStages st;
+  st.cost = computeCost(gl, gr, params.mode, params.disparities);
+  st.aggregated = aggregateCost(st.cost, gl, params.p1, params.p2);
+  st.selected = selectDisparity(st.aggregated, params);
+  st.filled = params.fill ? fillHoles(st.selected) : st.selected;
+  st.result = params.median ? median5x5(st.filled) : st.filled;
+  return st;
+}
+
+DisparityMap runPipeline(const cv::Mat& gl, const cv::Mat& gr, const Params& params) {
+  return runPipelineStages(gl, gr, params).result;
+}
+
+}  // namespace sgm

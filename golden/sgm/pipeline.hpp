@@ -1,0 +1,28 @@
+// The whole golden pipeline: gray pair in, disparity map out.
+#pragma once
+
+#include "sgm/image_io.hpp"
+#include "sgm/params.hpp"
+#include "sgm/volume.hpp"
+
+#include <opencv2/core.hpp>
+
+namespace sgm {
+
+// Intermediate results, for tests and for the harness's per-stage comparison.
+struct PipelineStages {
+  CostVolume cost;         // C(p, d)
+  PathVolume aggregated;   // S(p, d)
+  DisparityMap selected;   // after WTA, sub-pixel and LR check
+  DisparityMap filled;     // after hole filling (== selected when filling is off)
+  DisparityMap result;     // after the median (== filled when the median is off)
+};
+
+// Throws Error for bad input: size mismatch, non-gray images, images smaller
+// than the 9x9 window, invalid parameters.
+void checkInput(const cv::Mat& grayLeft, const cv::Mat& grayRight, const Params& params);
+
+PipelineStages runPipelineStages(const cv::Mat& grayLeft, const cv::Mat& grayRight, const Params& params);
+DisparityMap runPipeline(const cv::Mat& grayLeft, const cv::Mat& grayRight, const Params& params);
+
+}  // namespace sgm

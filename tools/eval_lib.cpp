@@ -1,0 +1,177 @@
+#include "eval_lib.hpp"
+
+#include "sgm/params.hpp"
+
+#include <opencv2/calib3d.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace sgm::eval {
+
+namespace {
+
+double readScale(const std::string& dir) {
+  std::ifstream meta(dir + "/meta.txt");
+  std::string line;
+  while (std::getline(meta, line)) {
+    if (line.rfind("gt_scale:", 0) == 0) {
+      std::istringstream in(line.substr(9));
+      double scale = 0;
+      if (in >> scale && scale > 0) return scale;
+      throw Error("bad gt_scale line in " + dir + "/meta.txt");
+    }
+  }
+  throw Error("no gt_scale in " + dir + "/meta.txt (pass the scale explicitly)");
+}
+
+cv::Mat readMaskIfPresent(const std::string& path, cv::Size size) {
+  if (!fs::exists(path)) return {};
+  cv::Mat m = readSingleChannel(path);
+  if (m.size() != size || m.depth() != CV_8U) throw Error("mask '" + path + "' does not match the image");
+  return m;
+}
+
+}  // namespace
+
+cv::Mat deriveNonOccluded(const cv::Mat& gtRaw, double scale) {
+  cv::Mat mask(gtRaw.size(), CV_8UC1, cv::Scalar(0));
+  for (int y = 0; y < gtRaw.rows; ++y) {
+    // Match positions in gt units (x * scale - g), exact integers.
+    long long leftmostToTheRight = LLONG_MAX;
+    for (int x = gtRaw.cols - 1; x >= 0; --x) {
+      const int g = gtRaw.depth() == CV_8U ? gtRaw.at<uint8_t>(y, x) : gtRaw.at<uint16_t>(y, x);
+      if (g == 0) continue;
+      const long long match = (long long)std::llround(x * scale) - g;
+      const bool inside = match >= 0;
+      const bool hidden = leftmostToTheRight <= match;
+      if (inside && !hidden) mask.at<uint8_t>(y, x) = 255;
+      leftmostToTheRight = std::min(leftmostToTheRight, match);
+    }
+  }
+  return mask;
+}
+
+Scene loadScene(const std::string& dir, double scaleOverride) {
+  Scene s;
+  s.name = fs::path(dir).filename().string();
+  if (s.name.empty()) s.name = fs::path(dir).parent_path().filename().string();
+  const std::string leftPath = dir + "/left.png", rightPath = dir + "/right.png", gtPath = dir + "/gt.png";
+  s.leftColor = cv::imread(leftPath, cv::IMREAD_UNCHANGED);
+  s.left = readGray(leftPath);
+  s.rightColor = cv::imread(rightPath, cv::IMREAD_UNCHANGED);
+  s.right = readGray(rightPath);
+  if (s.left.size() != s.right.size()) throw Error("left/right size mismatch in " + dir);
+  const cv::Mat gtRaw = readSingleChannel(gtPath);
+  if (gtRaw.size() != s.left.size()) throw Error("ground truth size mismatch in " + dir);
+  s.gtScale = scaleOverride > 0 ? scaleOverride : readScale(dir);
+  gtRaw.convertTo(s.gt, CV_32F, 1.0 / s.gtScale);
+  s.all = readMaskIfPresent(dir + "/all.png", s.left.size());
+  if (s.all.empty()) s.all = gtRaw > 0;
+  s.nonocc = readMaskIfPresent(dir + "/nonocc.png", s.left.size());
+  if (s.nonocc.empty()) {
+    s.nonocc = deriveNonOccluded(gtRaw, s.gtScale);
+    s.nonoccDerived = true;
+  }
+  s.disc = readMaskIfPresent(dir + "/disc.png", s.left.size());
+  return s;
+}
+
+std::vector<std::string> listScenes(const std::string& root) {
+  std::vector<std::string> dirs;
+  if (!fs::is_directory(root)) return dirs;
+  for (const auto& entry : fs::directory_iterator(root)) {
+    const fs::path p = entry.path();
+    if (fs::exists(p / "left.png") && fs::exists(p / "right.png") && fs::exists(p / "gt.png"))
+      dirs.push_back(p.string());
+  }
+  std::sort(dirs.begin(), dirs.end());
+  return dirs;
+}
+
+ErrorFigures evaluate(const cv::Mat& disp, const Scene& scene, double delta) {
+  long nonocc = 0, nonoccBad = 0, all = 0, allBad = 0, disc = 0, discBad = 0, allValid = 0;
+  long nonoccValid = 0, nonoccValidBad = 0;
+  for (int y = 0; y < disp.rows; ++y)
+    for (int x = 0; x < disp.cols; ++x) {
+      const float d = disp.at<float>(y, x), g = scene.gt.at<float>(y, x);
+      const bool valid = d >= 0;
+      const bool bad = !valid || std::fabs(d - g) > delta;
+      if (scene.all.at<uint8_t>(y, x) && g > 0) {
+        ++all, allBad += bad, allValid += valid;
+      }
+      if (scene.nonocc.at<uint8_t>(y, x) && g > 0) {
+        ++nonocc, nonoccBad += bad;
+        if (valid) ++nonoccValid, nonoccValidBad += bad;
+      }
+      if (!scene.disc.empty() && scene.disc.at<uint8_t>(y, x) == 255 && g > 0) ++disc, discBad += bad;
+    }
+  auto pct = [](long a, long b) { return b ? 100.0 * double(a) / double(b) : 0.0; };
+  ErrorFigures f;
+  f.errNonocc = pct(nonoccBad, nonocc);
+  f.errAll = pct(allBad, all);
+  if (!scene.disc.empty()) f.errDisc = pct(discBad, disc);
+  f.density = pct(allValid, all);
+  f.errNonoccValid = pct(nonoccValidBad, nonoccValid);
+  return f;
+}
+
+cv::Mat toFloat(const DisparityMap& map) {
+  cv::Mat f(map.disp.size(), CV_32FC1);
+  for (int y = 0; y < f.rows; ++y)
+    for (int x = 0; x < f.cols; ++x)
+      f.at<float>(y, x) = map.valid.at<uint8_t>(y, x) ? map.disp.at<uint16_t>(y, x) / float(kSubpixelOne) : -1.f;
+  return f;
+}
+
+cv::Mat runOpenCvSgbm(const cv::Mat& left, const cv::Mat& right, int disparities, int mode) {
+  const int block = 3, cn = left.channels();
+  auto sgbm = cv::StereoSGBM::create(0, disparities, block, 8 * cn * block * block, 32 * cn * block * block,
+                                     1, 0, 10, 100, 32, mode);
+  cv::Mat raw;
+  sgbm->compute(left, right, raw);
+  cv::Mat out(raw.size(), CV_32FC1);
+  for (int y = 0; y < raw.rows; ++y)
+    for (int x = 0; x < raw.cols; ++x) {
+      const short v = raw.at<short>(y, x);
+      out.at<float>(y, x) = v < 0 ? -1.f : v / 16.f;
+    }
+  return out;
+}
+
+cv::Mat errorMap(const cv::Mat& disp, const Scene& scene, double delta) {
+  cv::Mat out(disp.size(), CV_8UC3, cv::Scalar::all(0));
+  for (int y = 0; y < disp.rows; ++y)
+    for (int x = 0; x < disp.cols; ++x) {
+      const float g = scene.gt.at<float>(y, x), d = disp.at<float>(y, x);
+      if (!scene.all.at<uint8_t>(y, x) || g <= 0) continue;
+      const bool occluded = !scene.nonocc.at<uint8_t>(y, x);
+      cv::Vec3b c = d < 0 ? cv::Vec3b(255, 64, 0) : std::fabs(d - g) > delta ? cv::Vec3b(0, 0, 255) : cv::Vec3b(0, 160, 0);
+      if (occluded) c = c / 2;  // occluded pixels dimmed
+      out.at<cv::Vec3b>(y, x) = c;
+    }
+  return out;
+}
+
+cv::Mat sideBySide(const Scene& scene, const cv::Mat& disp, float maxDisparity, double delta) {
+  cv::Mat left;
+  if (scene.leftColor.channels() == 3) left = scene.leftColor.clone();
+  else cv::cvtColor(scene.left, left, cv::COLOR_GRAY2BGR);
+  cv::Mat result = colorizeDisparity(disp, maxDisparity);
+  // colorizeDisparity blacks out <= 0; keep a valid d = 0 visible is not needed here.
+  std::vector<cv::Mat> parts = {left, colorizeDisparity(scene.gt, maxDisparity), result,
+                                errorMap(disp, scene, delta)};
+  cv::Mat out;
+  cv::hconcat(parts, out);
+  return out;
+}
+
+}  // namespace sgm::eval

@@ -1,0 +1,64 @@
+// Accuracy evaluation against Middlebury ground truth (the paper's eq. (5)),
+// scene loading and the OpenCV StereoSGBM reference, shared by sgm-eval, the
+// tests and the simulator.
+#pragma once
+
+#include "sgm/image_io.hpp"
+
+#include <opencv2/core.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sgm::eval {
+
+struct Scene {
+  std::string name;
+  cv::Mat leftColor, rightColor;  // as decoded (BGR or gray)
+  cv::Mat left, right;            // 8-bit gray (sgm::toGray)
+  cv::Mat gt;                     // CV_32F disparity in px, 0 = unknown
+  double gtScale = 1;
+  cv::Mat nonocc, all, disc;      // CV_8U masks (255 / 128 / 0); disc may be empty
+  bool nonoccDerived = false;     // true when nonocc was derived from gt
+};
+
+// Reads DIR/{left,right,gt}.png, the masks when present and gt_scale from
+// meta.txt (or scaleOverride > 0). Throws Error with a one-line message.
+Scene loadScene(const std::string& dir, double scaleOverride = 0);
+
+// Non-occluded mask from the left ground truth: a pixel is occluded when its
+// match x - d falls outside the right image or a pixel to its right lands on
+// or left of that match. Unknown gt (0) is excluded.
+cv::Mat deriveNonOccluded(const cv::Mat& gtRaw, double scale);
+
+// Lists the scene directories under root that hold left/right/gt.png, sorted.
+std::vector<std::string> listScenes(const std::string& root);
+
+struct ErrorFigures {
+  double errNonocc = 0;      // % of nonocc pixels with |d - gt| > delta or invalid
+  double errAll = 0;         // same over `all`
+  std::optional<double> errDisc;  // same over disc == 255, when the scene has a disc mask
+  double density = 0;        // % of `all` pixels that are valid
+  double errNonoccValid = 0; // % of valid nonocc pixels with |d - gt| > delta
+};
+
+// disparity: CV_32F px with < 0 meaning invalid.
+ErrorFigures evaluate(const cv::Mat& disparity, const Scene& scene, double delta = 1.0);
+
+// DisparityMap (1/16 px + valid) -> CV_32F px with -1 for invalid.
+cv::Mat toFloat(const DisparityMap& map);
+
+// OpenCV StereoSGBM with the settings of OpenCV's stereo_match sample
+// (blockSize 3, P1 = 8*cn*9, P2 = 32*cn*9, uniqueness 10, speckle 100/32,
+// disp12MaxDiff 1) on the given images; returns CV_32F px, -1 invalid.
+// mode: cv::StereoSGBM::MODE_SGBM, MODE_HH, MODE_SGBM_3WAY.
+cv::Mat runOpenCvSgbm(const cv::Mat& left, const cv::Mat& right, int disparities, int mode);
+
+// Error map for people: green = correct, red = wrong, blue = invalid, black = not evaluated.
+cv::Mat errorMap(const cv::Mat& disparity, const Scene& scene, double delta = 1.0);
+
+// left | ground truth | result | error map, side by side.
+cv::Mat sideBySide(const Scene& scene, const cv::Mat& disparity, float maxDisparity, double delta = 1.0);
+
+}  // namespace sgm::eval
