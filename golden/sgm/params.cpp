@@ -55,6 +55,20 @@ void Params::validate() const {
                 std::to_string(disparities));
 }
 
+Params defaultParams(CostMode mode) {
+  Params p;
+  p.mode = mode;
+  switch (mode) {
+    case CostMode::kRt: p.p1 = 7, p.p2 = 100; break;
+    case CostMode::kRsad: p.p1 = 7, p.p2 = 100; break;
+    case CostMode::kUnified: p.p1 = 7, p.p2 = 100; break;
+    case CostMode::kSad: p.p1 = 7, p.p2 = 100; break;
+    case CostMode::kBt: p.p1 = 7, p.p2 = 100; break;
+    case CostMode::kSadRt: p.p1 = 7, p.p2 = 100; break;
+  }
+  return p;
+}
+
 Params Params::rawSgm() const {
   Params raw = *this;
   raw.subpixel = false;

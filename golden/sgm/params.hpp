@@ -50,6 +50,10 @@ struct Params {
   Params rawSgm() const;
 };
 
+// Defaults for a cost mode: the measured P1 / P2' of that mode (see
+// docs/algorithm.md, "Defaults"), everything else as in Params{}.
+Params defaultParams(CostMode mode);
+
 // The disparity counts the RTL is built and tested for; the golden model
 // accepts any D in [kMinDisparities, kMaxDisparities].
 constexpr int kMinDisparities = 2;
