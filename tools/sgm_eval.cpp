@@ -1,12 +1,18 @@
 // sgm-eval: accuracy of the golden model (and OpenCV StereoSGBM) on the
 // Middlebury scenes: the paper's eq. (5) error ratio, Table I, timing.
 #include "eval_lib.hpp"
+#include "report_bench.hpp"
+#include "report_chart.hpp"
+#include "report_json.hpp"
+#include "report_table.hpp"
 
 #include "sgm/cli_args.hpp"
 #include "sgm/pipeline.hpp"
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
+#include <utility>
 
 using namespace sgm;
 using eval::Scene;
@@ -15,10 +21,33 @@ namespace {
 
 const char* kUsage =
     "usage: sgm-eval run   --data DIR [pipeline options]   golden pipeline on every scene\n"
-    "       sgm-eval table --data DIR [--out DIR]          Table I + full pipeline + OpenCV\n"
-    "       sgm-eval bench --data DIR [--out DIR]          golden vs OpenCV SGBM time\n"
-    "pipeline options: --d D --p1 N --p2 N --mode M --subpixel on|off --lr TOL|off --median on|off\n"
-    "--delta X sets the error threshold (default 1).\n";
+    "       sgm-eval table --data DIR [--out DIR] [--d 64] Table I + full pipeline + OpenCV\n"
+    "                                                      -> report.md, report.json, table1.png\n"
+    "       sgm-eval bench --data DIR [--out DIR] [--scene cones] [--repeats 5]\n"
+    "                                                      golden vs OpenCV SGBM time -> bench.json\n"
+    "pipeline options: --d D --p1 N --p2 N --mode M --subpixel on|off --lr TOL|off --fill on|off\n"
+    "                  --median on|off\n"
+    "--delta X sets the error threshold (default 1); --out defaults to build/eval.\n";
+
+const char* kDefaultOut = "build/eval";
+
+// --data: required, an existing directory.
+std::string dataDir(const CliArgs& args) {
+  if (!args.has("data")) throw Error("missing --data DIR (the Middlebury scenes directory)");
+  const std::string root = args.text("data", "");
+  if (root.empty()) throw Error("empty --data directory name");
+  if (!std::filesystem::is_directory(root)) throw Error("data directory '" + root + "' does not exist");
+  return root;
+}
+
+// --out, created when missing.
+std::string outDir(const CliArgs& args) {
+  const std::string out = args.text("out", kDefaultOut);
+  std::error_code ec;
+  std::filesystem::create_directories(out, ec);
+  if (ec || !std::filesystem::is_directory(out)) throw Error("cannot create output directory '" + out + "'");
+  return out;
+}
 
 std::vector<Scene> loadAll(const std::string& root) {
   const auto dirs = eval::listScenes(root);
@@ -28,11 +57,19 @@ std::vector<Scene> loadAll(const std::string& root) {
   return scenes;
 }
 
+Scene loadNamed(const std::string& root, const std::string& name) {
+  for (const auto& d : eval::listScenes(root))
+    if (std::filesystem::path(d).filename() == name) return eval::loadScene(d);
+  throw Error("scene '" + name + "' (left.png, right.png, gt.png) not found under '" + root + "'");
+}
+
+double deltaOption(const CliArgs& args) { return args.real("delta", 1.0, 0.0, 1000.0); }
+
 int commandRun(const CliArgs& args) {
   const Params params = args.pipelineParams();
-  const double delta = args.real("delta", 1.0, 0.0, 1000.0);
+  const double delta = deltaOption(args);
   double sum = 0;
-  std::vector<eval::Scene> scenes = loadAll(args.text("data", ""));
+  const std::vector<Scene> scenes = loadAll(dataDir(args));
   for (const auto& s : scenes) {
     const DisparityMap map = runPipeline(s.left, s.right, params);
     const eval::ErrorFigures f = eval::evaluate(eval::toFloat(map), s, delta);
@@ -44,6 +81,58 @@ int commandRun(const CliArgs& args) {
   return 0;
 }
 
+int commandTable(const CliArgs& args) {
+  const int d = int(args.integer("d", 64, kMinDisparities, kMaxDisparities));
+  const double delta = deltaOption(args);
+  const std::vector<Scene> scenes = loadAll(dataDir(args));
+  const std::string out = outDir(args);
+
+  std::vector<std::pair<std::string, cv::Mat>> images;  // written with the reports, at the end
+  const auto keepSideBySide = [&](const eval::Method& m, const Scene& s, const cv::Mat& disparity) {
+    if (m.hardwareDefault)
+      images.emplace_back(out + "/" + s.name + "_sidebyside.png", eval::sideBySide(s, disparity, float(d), delta));
+  };
+  const eval::TableReport report = eval::computeTable(scenes, d, delta, keepSideBySide);
+
+  const std::string markdown = eval::reportMarkdown(report), json = eval::reportJson(report);
+  images.emplace_back(out + "/table1.png", eval::table1Chart(report));
+  eval::writeTextFile(out + "/report.md", markdown);
+  eval::writeTextFile(out + "/report.json", json);
+  for (const auto& [path, image] : images) writePng(path, image);
+
+  std::cout << eval::table1Markdown(report);
+  std::cout << "wrote " << out << "/report.md, report.json, table1.png and " << images.size() - 1
+            << " side-by-side images (" << report.hardwareDefault << ")\n";
+  return 0;
+}
+
+int commandBench(const CliArgs& args) {
+  const std::string root = dataDir(args);
+  const int repeats = int(args.integer("repeats", 5, 1, 1000));
+  const Scene scene = loadNamed(root, args.text("scene", "cones"));
+  const std::string out = outDir(args);
+  const eval::BenchResult result = eval::runBench(scene, repeats);
+  eval::writeTextFile(out + "/bench.json", eval::benchJson(result));
+  std::cout << eval::benchText(result) << "wrote " << out << "/bench.json\n";
+  return 0;
+}
+
+struct Command {
+  const char* name;
+  int (*run)(const CliArgs&);
+  std::set<std::string> options;
+};
+
+std::vector<Command> commands() {
+  std::set<std::string> runOptions = CliArgs::pipelineOptions();
+  runOptions.insert({"data", "out", "delta"});
+  return {
+      {"run", commandRun, runOptions},
+      {"table", commandTable, {"data", "out", "d", "delta"}},
+      {"bench", commandBench, {"data", "out", "scene", "repeats"}},
+  };
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -52,12 +141,18 @@ int main(int argc, char** argv) {
       std::cout << kUsage;
       return argc < 2 ? 2 : 0;
     }
-    const std::string command = argv[1];
-    auto options = CliArgs::pipelineOptions();
-    options.insert({"data", "out", "delta"});
-    const CliArgs args(argc - 1, argv + 1, options, {"help"});
-    if (command == "run") return commandRun(args);
-    throw Error("unknown command '" + command + "' (see --help)");
+    const std::string name = argv[1];
+    for (const Command& command : commands()) {
+      if (name != command.name) continue;
+      const CliArgs args(argc - 1, argv + 1, command.options, {"help"});
+      if (args.has("help")) {
+        std::cout << kUsage;
+        return 0;
+      }
+      if (!args.positional().empty()) throw Error("unexpected argument '" + args.positional().front() + "'");
+      return command.run(args);
+    }
+    throw Error("unknown command '" + name + "' (see --help)");
   } catch (const std::exception& e) {
     std::fprintf(stderr, "sgm-eval: error: %s\n", e.what());
     return 2;

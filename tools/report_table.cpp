@@ -1,0 +1,380 @@
+#include "report_table.hpp"
+
+#include "report_json.hpp"
+
+#include "sgm/pipeline.hpp"
+
+#include <opencv2/calib3d.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace sgm::eval {
+
+namespace {
+
+struct PaperRow {
+  CostMode mode;
+  const char* label;
+  double figures[4];  // cones, teddy, sawtooth, venus (%)
+};
+
+// Yao & Cheng, Table I: error matching ratios with different matching costs.
+const PaperRow kPaperTable1[] = {
+    {CostMode::kSad, "SAD", {9.1, 13.7, 4.8, 3.3}},
+    {CostMode::kBt, "BT", {7.7, 10.4, 4.0, 3.1}},
+    {CostMode::kRt, "Rank filter/AD", {7.5, 11.7, 3.1, 5.0}},
+    {CostMode::kRsad, "Rank SAD", {6.2, 9.9, 2.8, 2.5}},
+    {CostMode::kSadRt, "SAD+RT", {8.0, 12.6, 3.9, 3.4}},
+    {CostMode::kUnified, "RSAD+RT", {6.6, 11.1, 3.2, 3.8}},
+};
+
+const char* costLabel(CostMode mode) {
+  for (const PaperRow& row : kPaperTable1)
+    if (row.mode == mode) return row.label;
+  return costModeName(mode);
+}
+
+std::map<std::string, double> paperFigures(const PaperRow& row) {
+  std::map<std::string, double> out;
+  for (size_t i = 0; i < paperScenes().size(); ++i) out[paperScenes()[i]] = row.figures[i];
+  return out;
+}
+
+Method goldenMethod(std::string key, std::string label, MethodKind kind, const Params& params) {
+  Method m;
+  m.key = std::move(key);
+  m.label = std::move(label);
+  m.kind = kind;
+  m.params = params;
+  return m;
+}
+
+Method opencvMethod(std::string key, std::string label, int mode, int disparities) {
+  Method m;
+  m.key = std::move(key);
+  m.label = std::move(label);
+  m.kind = MethodKind::kOpenCv;
+  m.opencvMode = mode;
+  m.params.disparities = opencvDisparities(disparities);
+  return m;
+}
+
+const char* opencvModeName(int mode) { return mode == cv::StereoSGBM::MODE_HH ? "MODE_HH" : "MODE_SGBM"; }
+
+std::vector<std::string> columnOrder(const std::vector<Scene>& scenes) {
+  std::vector<std::string> columns = paperScenes();
+  std::vector<std::string> extra;
+  for (const Scene& s : scenes)
+    if (std::find(columns.begin(), columns.end(), s.name) == columns.end()) extra.push_back(s.name);
+  std::sort(extra.begin(), extra.end());
+  columns.insert(columns.end(), extra.begin(), extra.end());
+  return columns;
+}
+
+// ------------------------------------------------------------------ markdown
+
+std::string fixed(double v, int decimals = 2) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+std::string optFixed(const std::optional<double>& v) { return v ? fixed(*v) : "-"; }
+
+std::string titleCase(std::string name) {
+  if (!name.empty()) name[0] = char(std::toupper((unsigned char)name[0]));
+  return name;
+}
+
+std::string displayLabel(const TableReport& r, const Method& m) {
+  return m.key == r.hardwareDefault ? m.label + " **(hardware default)**" : m.label;
+}
+
+// Mean over the scenes of a getter, when every scene has a value.
+template <typename Get>
+std::optional<double> meanOver(const std::vector<std::string>& scenes, Get get) {
+  double sum = 0;
+  for (const std::string& s : scenes) {
+    const std::optional<double> v = get(s);
+    if (!v) return std::nullopt;
+    sum += *v;
+  }
+  return scenes.empty() ? std::nullopt : std::optional<double>(sum / double(scenes.size()));
+}
+
+std::optional<double> ours(const TableReport& r, const Method& m, const std::string& scene) {
+  const ErrorFigures* f = r.find(m.key, scene);
+  return f ? std::optional<double>(f->errNonocc) : std::nullopt;
+}
+
+std::optional<double> paperFigure(const Method& m, const std::string& scene) {
+  auto it = m.paper.find(scene);
+  return it == m.paper.end() ? std::nullopt : std::optional<double>(it->second);
+}
+
+std::string comparisonCell(const std::optional<double>& our, const std::optional<double>& paper) {
+  std::string cell = our ? fixed(*our) : "-";
+  if (paper) cell += " (" + fixed(*paper, 1) + ")";
+  return cell;
+}
+
+std::string table1Row(const TableReport& r, const Method& m) {
+  std::string row = "| " + displayLabel(r, m) + " | `" + m.key + "` |";
+  for (const std::string& s : r.scenes) row += " " + comparisonCell(ours(r, m, s), paperFigure(m, s)) + " |";
+  const auto& paper = paperScenes();
+  const auto ourMean = meanOver(paper, [&](const std::string& s) { return ours(r, m, s); });
+  const auto paperMean = meanOver(paper, [&](const std::string& s) { return paperFigure(m, s); });
+  return row + " " + comparisonCell(ourMean, paperMean) + " |\n";
+}
+
+std::string figuresRow(const std::string& scene, const Method& m, const ErrorFigures* f) {
+  std::string row = "| " + scene + " | `" + m.key + "` | ";
+  if (!f) return row + "- | - | - | - | - |\n";
+  return row + fixed(f->errNonocc) + " | " + fixed(f->errAll) + " | " + optFixed(f->errDisc) + " | " +
+         fixed(f->density) + " | " + fixed(f->errNonoccValid) + " |\n";
+}
+
+std::string perSceneMarkdown(const TableReport& r) {
+  std::string md =
+      "## Figures per scene and method\n\n"
+      "err_* = % of the pixels of the mask that are invalid or off by more than delta; density = % of "
+      "`all` pixels with a valid disparity; err_nonocc_valid = % of the valid nonocc pixels that are off.\n\n"
+      "| Scene | Method | err_nonocc | err_all | err_disc | density | err_nonocc_valid |\n"
+      "|---|---|---:|---:|---:|---:|---:|\n";
+  for (const std::string& s : r.scenes)
+    for (const Method& m : r.methods) md += figuresRow(s, m, r.find(m.key, s));
+  return md + "\n";
+}
+
+std::string onOff(bool on) { return on ? "on" : "off"; }
+
+std::string paramsRow(const TableReport& r, const Method& m) {
+  std::string row = "| `" + m.key + "` | " + methodKindName(m.kind) + " | ";
+  if (m.kind == MethodKind::kOpenCv) {
+    const int cn = r.opencvChannels;
+    return row + "StereoSGBM " + opencvModeName(m.opencvMode) + ", D=" + std::to_string(m.params.disparities) +
+           ", blockSize 3, P1=" + std::to_string(8 * cn * 9) + ", P2=" + std::to_string(32 * cn * 9) +
+           ", uniqueness 10, speckle 100/32, disp12MaxDiff 1, " + std::to_string(cn) + "-channel input |\n";
+  }
+  const Params& p = m.params;
+  return row + "mode " + costModeName(p.mode) + ", D=" + std::to_string(p.disparities) + ", P1=" +
+         std::to_string(p.p1) + ", P2'=" + std::to_string(p.p2) + ", sub-pixel " + onOff(p.subpixel) +
+         ", LR check " + (p.lrTolerance < 0 ? std::string("off") : "tol " + std::to_string(p.lrTolerance)) +
+         ", fill " + onOff(p.fill) + ", median " + onOff(p.median) + " |\n";
+}
+
+std::string notesMarkdown(const TableReport& r) {
+  std::string md =
+      "- **Table I configuration** (rows `sad` .. `unified`): the golden model with `defaultParams(mode)` but "
+      "the left-right check and hole filling off (`lrTolerance = -1`, `fill = false`); sub-pixel refinement and "
+      "the 5x5 median stay as in `defaultParams` (on). The paper's figure is in parentheses.\n"
+      "- **Full pipeline** (rows `full-*`): `defaultParams(mode)` as is (LR check, hole filling, sub-pixel, "
+      "median) for each cost mode the hardware implements; `" + r.hardwareDefault +
+      "` is the hardware default (`Params{}.mode`).\n"
+      "- **OpenCV** rows: `cv::StereoSGBM` (settings of OpenCV's stereo_match sample) on the colour images, "
+      "same process, " + std::to_string(opencvDisparities(r.disparities)) + " disparities.\n"
+      "- Error = % of non-occluded pixels (`nonocc` mask, known ground truth) whose disparity is invalid or "
+      "differs from the ground truth by more than delta = " + fixed(r.delta, 1) + " px (the paper's eq. (5)). "
+      "Mean = mean over the paper's four scenes.\n";
+  for (const std::string& s : r.derivedNonocc)
+    md += "- " + titleCase(s) + ": no nonocc.png; the non-occluded mask was derived from the ground truth "
+          "(`deriveNonOccluded`), so its figures are not exactly the Middlebury protocol.\n";
+  for (const std::string& s : r.scenes)
+    if (!r.present.count(s)) md += "- " + titleCase(s) + ": scene not found under the data directory (\"-\").\n";
+  return md;
+}
+
+// ------------------------------------------------------------------ JSON
+
+void writeParams(JsonWriter& j, const TableReport& r, const Method& m) {
+  j.beginObject();
+  j.key("disparities").integer(m.params.disparities);
+  if (m.kind == MethodKind::kOpenCv) {
+    const int cn = r.opencvChannels;
+    j.key("mode").string(opencvModeName(m.opencvMode));
+    j.key("block_size").integer(3);
+    j.key("p1").integer(8 * cn * 9);
+    j.key("p2").integer(32 * cn * 9);
+    j.key("uniqueness_ratio").integer(10);
+    j.key("speckle_window_size").integer(100);
+    j.key("speckle_range").integer(32);
+    j.key("disp12_max_diff").integer(1);
+    j.key("input_channels").integer(cn);
+  } else {
+    const Params& p = m.params;
+    j.key("mode").string(costModeName(p.mode));
+    j.key("p1").integer(p.p1);
+    j.key("p2").integer(p.p2);
+    j.key("subpixel").boolean(p.subpixel);
+    j.key("lr_tolerance").integer(p.lrTolerance);  // < 0: LR check off
+    j.key("fill").boolean(p.fill);
+    j.key("median").boolean(p.median);
+  }
+  j.endObject();
+}
+
+void writeFigures(JsonWriter& j, const ErrorFigures* f) {
+  if (!f) {
+    j.null();
+    return;
+  }
+  j.beginObject();
+  j.key("err_nonocc").real(f->errNonocc);
+  j.key("err_all").real(f->errAll);
+  j.key("err_disc").real(f->errDisc);
+  j.key("density").real(f->density);
+  j.key("err_nonocc_valid").real(f->errNonoccValid);
+  j.endObject();
+}
+
+void writeMethod(JsonWriter& j, const TableReport& r, const Method& m) {
+  j.beginObject();
+  j.key("key").string(m.key);
+  j.key("label").string(m.label);
+  j.key("kind").string(methodKindName(m.kind));
+  j.key("params");
+  writeParams(j, r, m);
+  j.key("paper");
+  if (m.paper.empty()) {
+    j.null();
+  } else {
+    j.beginObject();
+    for (const std::string& s : paperScenes()) j.key(s).real(paperFigure(m, s));
+    j.endObject();
+  }
+  j.key("results").beginObject();
+  for (const std::string& s : r.scenes) {
+    j.key(s);
+    writeFigures(j, r.find(m.key, s));
+  }
+  j.endObject();
+  j.endObject();
+}
+
+}  // namespace
+
+const char* methodKindName(MethodKind kind) {
+  switch (kind) {
+    case MethodKind::kTable1: return "table1";
+    case MethodKind::kFull: return "full";
+    case MethodKind::kOpenCv: return "opencv";
+  }
+  return "?";
+}
+
+const std::vector<std::string>& paperScenes() {
+  static const std::vector<std::string> scenes = {"cones", "teddy", "sawtooth", "venus"};
+  return scenes;
+}
+
+Params table1Params(CostMode mode, int disparities) {
+  Params p = defaultParams(mode);
+  p.disparities = disparities;
+  p.lrTolerance = -1;
+  p.fill = false;
+  p.validate();
+  return p;
+}
+
+int opencvDisparities(int disparities) { return (disparities + 15) / 16 * 16; }
+
+std::vector<Method> tableMethods(int disparities) {
+  std::vector<Method> methods;
+  for (const PaperRow& row : kPaperTable1) {
+    Method m = goldenMethod(costModeName(row.mode), row.label, MethodKind::kTable1,
+                            table1Params(row.mode, disparities));
+    m.paper = paperFigures(row);
+    methods.push_back(m);
+  }
+  for (CostMode mode : allCostModes()) {
+    if (!isHardwareMode(mode)) continue;
+    Params p = defaultParams(mode);
+    p.disparities = disparities;
+    p.validate();
+    Method m = goldenMethod(std::string("full-") + costModeName(mode),
+                            std::string("Full pipeline, ") + costLabel(mode), MethodKind::kFull, p);
+    m.hardwareDefault = mode == Params{}.mode;
+    methods.push_back(m);
+  }
+  methods.push_back(opencvMethod("opencv-sgbm", "OpenCV SGBM (MODE_SGBM)", cv::StereoSGBM::MODE_SGBM, disparities));
+  methods.push_back(opencvMethod("opencv-hh", "OpenCV SGBM (MODE_HH)", cv::StereoSGBM::MODE_HH, disparities));
+  return methods;
+}
+
+cv::Mat runMethod(const Method& m, const Scene& s) {
+  if (m.kind == MethodKind::kOpenCv)
+    return runOpenCvSgbm(s.leftColor, s.rightColor, m.params.disparities, m.opencvMode);
+  return toFloat(runPipeline(s.left, s.right, m.params));
+}
+
+const ErrorFigures* TableReport::find(const std::string& key, const std::string& scene) const {
+  auto method = results.find(key);
+  if (method == results.end()) return nullptr;
+  auto it = method->second.find(scene);
+  return it == method->second.end() ? nullptr : &it->second;
+}
+
+TableReport computeTable(const std::vector<Scene>& scenes, int disparities, double delta, const ResultHook& hook) {
+  TableReport r;
+  r.disparities = disparities;
+  r.delta = delta;
+  r.scenes = columnOrder(scenes);
+  r.methods = tableMethods(disparities);
+  if (!scenes.empty()) r.opencvChannels = scenes.front().leftColor.channels();
+  for (const Method& m : r.methods)
+    if (m.hardwareDefault) r.hardwareDefault = m.key;
+  for (const Scene& s : scenes) {
+    r.present.insert(s.name);
+    if (s.nonoccDerived) r.derivedNonocc.insert(s.name);
+    for (const Method& m : r.methods) {
+      const cv::Mat disparity = runMethod(m, s);
+      r.results[m.key][s.name] = evaluate(disparity, s, delta);
+      if (hook) hook(m, s, disparity);
+    }
+  }
+  return r;
+}
+
+std::string table1Markdown(const TableReport& r) {
+  std::string md = "## Table I: error in non-occluded regions (%, delta = " + fixed(r.delta, 1) +
+                   "), ours (paper)\n\n| Method | Key |";
+  std::string rule = "|---|---|";
+  for (const std::string& s : r.scenes) md += " " + titleCase(s) + " |", rule += "---:|";
+  md += " Mean |\n" + rule + "---:|\n";
+  for (const Method& m : r.methods) md += table1Row(r, m);
+  return md + "\n";
+}
+
+std::string reportMarkdown(const TableReport& r) {
+  std::string md = "# SGM golden model: accuracy report (D = " + std::to_string(r.disparities) + ")\n\n" +
+                   table1Markdown(r) + notesMarkdown(r) + "\n![Table I chart](table1.png)\n\n" +
+                   perSceneMarkdown(r) + "## Parameters\n\n| Key | Kind | Settings |\n|---|---|---|\n";
+  for (const Method& m : r.methods) md += paramsRow(r, m);
+  return md;
+}
+
+std::string reportJson(const TableReport& r) {
+  JsonWriter j;
+  j.beginObject();
+  if (r.delta == std::floor(r.delta)) j.key("delta").integer(long(r.delta));
+  else j.key("delta").real(r.delta);
+  j.key("disparities").integer(r.disparities);
+  j.key("scenes").beginArray();
+  for (const std::string& s : r.scenes) j.string(s);
+  j.endArray();
+  j.key("nonocc_derived").beginArray();
+  for (const std::string& s : r.derivedNonocc) j.string(s);
+  j.endArray();
+  j.key("methods").beginArray();
+  for (const Method& m : r.methods) writeMethod(j, r, m);
+  j.endArray();
+  j.key("hardware_default").string(r.hardwareDefault);
+  j.endObject();
+  return j.str();
+}
+
+}  // namespace sgm::eval
