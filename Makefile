@@ -10,7 +10,7 @@ JOBS       ?= 2
 
 CXX        ?= g++
 CXXFLAGS   ?= -O3 -march=x86-64-v2 -g
-CXXFLAGS   += -std=c++17 -Wall -Wextra -pthread -Igolden -Itools
+override CXXFLAGS += -std=c++17 -Wall -Wextra -pthread -Igolden -Itools
 OPENCV_CFLAGS = $(shell pkg-config --cflags opencv4 2>/dev/null)
 OPENCV_LIBS   = $(shell pkg-config --libs opencv4 2>/dev/null)
 LDLIBS     += $(OPENCV_LIBS) -pthread

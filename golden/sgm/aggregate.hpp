@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 
 namespace sgm {
 
@@ -40,7 +41,17 @@ uint16_t pathStart(const uint8_t* cost, int disparities, uint16_t* out);
 // Lr of one path (index into kPathDirections) for the whole image.
 PathVolume pathCost(const CostVolume& cost, const cv::Mat& grayLeft, int pathIndex, int p1, int p2);
 
-// S(p, d) = sum over the four paths of Lr(p, d). Runs the paths on both cores.
+// S(p, d) = sum over the four paths of Lr(p, d), for the whole volume.
 PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1, int p2);
+
+// The streaming form used by the pipeline: rows in order, never more than a
+// few rows of cost and S in memory, the four paths split over two workers.
+// costRow(y, row) fills row y of C (W x D, pixel-major) and is called once per
+// row from the first worker; sink(y, row) receives row y of S (W x D) from the
+// second worker, in order.
+using CostRowFn = std::function<void(int y, uint8_t* row)>;
+using SumRowFn = std::function<void(int y, const uint16_t* row)>;
+void aggregateRows(int width, int height, int disparities, const cv::Mat& grayLeft, int p1, int p2,
+                   const CostRowFn& costRow, const SumRowFn& sink);
 
 }  // namespace sgm

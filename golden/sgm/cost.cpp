@@ -7,44 +7,58 @@
 
 namespace sgm {
 
+namespace {
+
+template <CostMode kMode>
+inline int censusCostOf(const Census& left, const Census& right) {
+  if constexpr (kMode == CostMode::kRt) return std::abs(left.rank() - right.rank());
+  if constexpr (kMode == CostMode::kRsad) return hammingDistance(left, right);
+  if constexpr (kMode == CostMode::kUnified)
+    return std::abs(left.rank() - right.rank()) + hammingDistance(left, right);
+}
+
+}  // namespace
+
 int censusCost(CostMode mode, const Census& left, const Census& right) {
   switch (mode) {
-    case CostMode::kRt: return std::abs(left.rank() - right.rank());
-    case CostMode::kRsad: return hammingDistance(left, right);
-    case CostMode::kUnified: return std::abs(left.rank() - right.rank()) + hammingDistance(left, right);
+    case CostMode::kRt: return censusCostOf<CostMode::kRt>(left, right);
+    case CostMode::kRsad: return censusCostOf<CostMode::kRsad>(left, right);
+    case CostMode::kUnified: return censusCostOf<CostMode::kUnified>(left, right);
     default: throw Error(std::string("cost mode ") + costModeName(mode) + " is not a census mode");
   }
 }
 
 namespace {
 
-// Census-based modes, including the software-only sad+rt which needs RT.
-void censusModes(const cv::Mat& gl, const cv::Mat& gr, CostMode mode, CostVolume& vol,
-                 const cv::Mat* sadMean) {
-  const int w = gl.cols, h = gl.rows, nd = vol.depth;
-  const std::vector<Census> cl = censusTransform(gl), cr = censusTransform(gr);
-  const int cmax = maxCost(mode);
-  parallelFor(h, [&](int y0, int y1) {
-    for (int y = y0; y < y1; ++y)
-      for (int x = 0; x < w; ++x) {
-        uint8_t* c = vol.at(x, y);
-        const size_t p = size_t(y) * w + x;
-        for (int d = 0; d < nd; ++d) {
-          if (x - d < 0) {
-            c[d] = uint8_t(cmax);
-            continue;
-          }
-          const size_t q = p - d;
-          if (!sadMean) {
-            c[d] = uint8_t(censusCost(mode, cl[p], cr[q]));
-            continue;
-          }
-          // sad+rt, eq. (2) with alpha = 0.2, the SAD mean rescaled to the rank range.
-          const int rt = censusCost(CostMode::kRt, cl[p], cr[q]);
-          const int sadOnRankScale = (sadMean[d].at<uint8_t>(y, x) * kCensusBits + 127) / 255;
-          c[d] = uint8_t((2 * sadOnRankScale + 8 * rt + 5) / 10);
-        }
-      }
+// One row of C for a mode; cost(x, d) gives the in-image cost (d <= x).
+template <typename CostOf>
+void fillCostRow(uint8_t* row, int width, int nd, int cmax, CostOf cost) {
+  for (int x = 0; x < width; ++x) {
+    uint8_t* c = row + size_t(x) * nd;
+    const int inside = std::min(nd, x + 1);  // d <= x: the match is in the right image
+    for (int d = 0; d < inside; ++d) c[d] = uint8_t(cost(x, d));
+    for (int d = inside; d < nd; ++d) c[d] = uint8_t(cmax);
+  }
+}
+
+template <CostMode kMode>
+void censusRow(const Census* l, const Census* r, int width, int nd, uint8_t* row) {
+  fillCostRow(row, width, nd, maxCost(kMode), [&](int x, int d) { return censusCostOf<kMode>(l[x], r[x - d]); });
+}
+
+// sad+rt: eq. (2) with alpha = 0.2, the SAD mean rescaled to the rank range.
+void sadRtVolume(const std::vector<Census>& cl, const std::vector<Census>& cr,
+                 const std::vector<cv::Mat>& sadMean, CostVolume& vol) {
+  parallelFor(vol.height, [&](int y0, int y1) {
+    for (int y = y0; y < y1; ++y) {
+      const Census* l = cl.data() + size_t(y) * vol.width;
+      const Census* r = cr.data() + size_t(y) * vol.width;
+      fillCostRow(vol.at(0, y), vol.width, vol.depth, maxCost(CostMode::kSadRt), [&](int x, int d) {
+        const int rt = censusCostOf<CostMode::kRt>(l[x], r[x - d]);
+        const int sadOnRankScale = (sadMean[d].at<uint8_t>(y, x) * kCensusBits + 127) / 255;
+        return (2 * sadOnRankScale + 8 * rt + 5) / 10;
+      });
+    }
   });
 }
 
@@ -116,26 +130,39 @@ void birchfieldTomasi(const cv::Mat& gl, const cv::Mat& gr, CostVolume& vol) {
 
 }  // namespace
 
+void censusCostRow(CostMode mode, const Census* left, const Census* right, int width, int nd, uint8_t* row) {
+  switch (mode) {
+    case CostMode::kRt: censusRow<CostMode::kRt>(left, right, width, nd, row); break;
+    case CostMode::kRsad: censusRow<CostMode::kRsad>(left, right, width, nd, row); break;
+    case CostMode::kUnified: censusRow<CostMode::kUnified>(left, right, width, nd, row); break;
+    default: throw Error(std::string("cost mode ") + costModeName(mode) + " is not a census mode");
+  }
+}
+
 CostVolume computeCost(const cv::Mat& gl, const cv::Mat& gr, CostMode mode, int disparities) {
   CostVolume vol(gl.cols, gl.rows, disparities);
-  switch (mode) {
-    case CostMode::kRt:
-    case CostMode::kRsad:
-    case CostMode::kUnified: censusModes(gl, gr, mode, vol, nullptr); break;
-    case CostMode::kSadRt: {
-      const std::vector<cv::Mat> means = sadMeans(gl, gr, disparities);
-      censusModes(gl, gr, mode, vol, means.data());
-      break;
-    }
-    case CostMode::kSad: {
-      const std::vector<cv::Mat> means = sadMeans(gl, gr, disparities);
-      for (int y = 0; y < gl.rows; ++y)
-        for (int x = 0; x < gl.cols; ++x)
-          for (int d = 0; d < disparities; ++d) vol.at(x, y)[d] = means[d].at<uint8_t>(y, x);
-      break;
-    }
-    case CostMode::kBt: birchfieldTomasi(gl, gr, vol); break;
+  if (mode == CostMode::kBt) {
+    birchfieldTomasi(gl, gr, vol);
+    return vol;
   }
+  if (mode == CostMode::kSad) {
+    const std::vector<cv::Mat> means = sadMeans(gl, gr, disparities);
+    for (int y = 0; y < gl.rows; ++y)
+      for (int x = 0; x < gl.cols; ++x)
+        for (int d = 0; d < disparities; ++d) vol.at(x, y)[d] = means[d].at<uint8_t>(y, x);
+    return vol;
+  }
+  const std::vector<Census> cl = censusTransform(gl), cr = censusTransform(gr);
+  if (mode == CostMode::kSadRt) {
+    sadRtVolume(cl, cr, sadMeans(gl, gr, disparities), vol);
+    return vol;
+  }
+  parallelFor(gl.rows, [&](int y0, int y1) {
+    for (int y = y0; y < y1; ++y) {
+      const size_t first = size_t(y) * gl.cols;
+      censusCostRow(mode, cl.data() + first, cr.data() + first, gl.cols, disparities, vol.at(0, y));
+    }
+  });
   return vol;
 }
 

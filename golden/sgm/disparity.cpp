@@ -4,15 +4,21 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <cstring>
 #include <vector>
 
 namespace sgm {
 
+namespace {
+// (cost, d) packed so that one unsigned minimum picks the smallest cost and,
+// among equal costs, the smallest d (d < 256).
+inline uint32_t costKey(uint16_t cost, int d) { return uint32_t(cost) << 8 | uint32_t(d); }
+}  // namespace
+
 int winnerTakeAll(const uint16_t* s, int disparities) {
-  int best = 0;
-  for (int d = 1; d < disparities; ++d)
-    if (s[d] < s[best]) best = d;
-  return best;
+  uint32_t best = 0xffffffff;
+  for (int d = 0; d < disparities; ++d) best = std::min(best, costKey(s[d], d));
+  return int(best & 0xff);
 }
 
 int subpixelOffset(int a, int m, int b) {
@@ -35,25 +41,41 @@ int rightDisparity(const PathVolume& s, int xr, int y) {
   return best;
 }
 
-DisparityMap selectDisparity(const PathVolume& s, const Params& params) {
-  const int w = s.width, h = s.height, nd = s.depth;
-  DisparityMap out{cv::Mat(h, w, CV_16UC1), cv::Mat(h, w, CV_8UC1)};
-  parallelFor(h, [&](int y0, int y1) {
-    std::vector<int> right(w);
-    for (int y = y0; y < y1; ++y) {
-      if (params.lrTolerance >= 0)
-        for (int xr = 0; xr < w; ++xr) right[xr] = rightDisparity(s, xr, y);
-      for (int x = 0; x < w; ++x) {
-        const uint16_t* sp = s.at(x, y);
-        const int d = winnerTakeAll(sp, nd);
-        int fixed = d * kSubpixelOne;
-        if (params.subpixel && d > 0 && d < nd - 1) fixed += subpixelOffset(sp[d - 1], sp[d], sp[d + 1]);
-        bool valid = true;
-        if (params.lrTolerance >= 0) valid = x - d >= 0 && std::abs(right[x - d] - d) <= params.lrTolerance;
-        out.disp.at<uint16_t>(y, x) = uint16_t(fixed);
-        out.valid.at<uint8_t>(y, x) = valid ? 1 : 0;
-      }
+RowSelector::RowSelector(int width, int disparities, const Params& params)
+    : width_(width), disparities_(disparities), params_(params), rightKey_(width) {}
+
+void RowSelector::select(const uint16_t* sumRow, uint16_t* dispRow, uint8_t* validRow) {
+  const int w = width_, nd = disparities_;
+  const bool check = params_.lrTolerance >= 0;
+  if (check) {
+    // dR(xr) for every xr of the row (section 7) in one left-to-right sweep: the
+    // candidate S(x, d) belongs to right pixel x - d. Keys are indexed by
+    // k = W-1-xr so that the D candidates of one x are contiguous.
+    std::fill(rightKey_.begin(), rightKey_.end(), 0xffffffff);
+    for (int x = 0; x < w; ++x) {
+      const uint16_t* sp = sumRow + size_t(x) * nd;
+      uint32_t* key = rightKey_.data() + (w - 1 - x);
+      const int count = std::min(nd, x + 1);
+      for (int d = 0; d < count; ++d) key[d] = std::min(key[d], costKey(sp[d], d));
     }
+  }
+  for (int x = 0; x < w; ++x) {
+    const uint16_t* sp = sumRow + size_t(x) * nd;
+    const int d = winnerTakeAll(sp, nd);
+    int fixed = d * kSubpixelOne;
+    if (params_.subpixel && d > 0 && d < nd - 1) fixed += subpixelOffset(sp[d - 1], sp[d], sp[d + 1]);
+    const int rightD = check && x - d >= 0 ? int(rightKey_[w - 1 - (x - d)] & 0xff) : 0;
+    dispRow[x] = uint16_t(fixed);
+    validRow[x] = !check || (x - d >= 0 && std::abs(rightD - d) <= params_.lrTolerance);
+  }
+}
+
+DisparityMap selectDisparity(const PathVolume& s, const Params& params) {
+  DisparityMap out{cv::Mat(s.height, s.width, CV_16UC1), cv::Mat(s.height, s.width, CV_8UC1)};
+  parallelFor(s.height, [&](int y0, int y1) {
+    RowSelector selector(s.width, s.depth, params);
+    for (int y = y0; y < y1; ++y)
+      selector.select(s.at(0, y), out.disp.ptr<uint16_t>(y), out.valid.ptr<uint8_t>(y));
   });
   return out;
 }
@@ -84,20 +106,58 @@ DisparityMap fillHoles(const DisparityMap& in) {
   return out;
 }
 
+namespace {
+
+constexpr int kMedianWindow = (2 * kMedianRadius + 1) * (2 * kMedianRadius + 1);  // 25
+
+// Batcher's odd-even merge sort for 32 inputs, keeping only the comparators
+// within the first 25 positions: with +inf in positions 25..31 the others
+// never change anything.
+std::vector<std::pair<int, int>> medianSortingNetwork() {
+  std::vector<std::pair<int, int>> net;
+  const int n = 32;
+  for (int p = 1; p < n; p <<= 1)
+    for (int k = p; k >= 1; k >>= 1)
+      for (int j = k % p; j + k < n; j += 2 * k)
+        for (int i = 0; i < std::min(k, n - j - k); ++i)
+          if ((i + j) / (2 * p) == (i + j + k) / (2 * p) && i + j + k < kMedianWindow)
+            net.emplace_back(i + j, i + j + k);
+  return net;
+}
+
+}  // namespace
+
 DisparityMap median5x5(const DisparityMap& in) {
-  const int w = in.disp.cols, h = in.disp.rows;
+  const int w = in.disp.cols, h = in.disp.rows, r = kMedianRadius;
+  // 16 pixels are sorted at once: lane l of window[k] is window entry k of pixel x0 + l.
+  typedef uint16_t Lanes __attribute__((vector_size(32)));
+  constexpr int kLanes = sizeof(Lanes) / sizeof(uint16_t);
+  constexpr uint16_t kAbsent = 0xffff;  // invalid or outside: sorts after every disparity
+  static const std::vector<std::pair<int, int>> network = medianSortingNetwork();
+  // The valid disparities framed by kAbsent: r rows/columns around, plus a lane block of slack.
+  const int pw = w + 2 * r + kLanes;
+  std::vector<uint16_t> padded(size_t(pw) * (h + 2 * r), kAbsent);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (in.valid.at<uint8_t>(y, x)) padded[size_t(y + r) * pw + x + r] = in.disp.at<uint16_t>(y, x);
   DisparityMap out{in.disp.clone(), in.valid.clone()};
   parallelFor(h, [&](int y0, int y1) {
-    std::vector<uint16_t> window;
+    Lanes window[kMedianWindow];
     for (int y = y0; y < y1; ++y)
-      for (int x = 0; x < w; ++x) {
-        if (!in.valid.at<uint8_t>(y, x)) continue;
-        window.clear();
-        for (int qy = std::max(0, y - kMedianRadius); qy <= std::min(h - 1, y + kMedianRadius); ++qy)
-          for (int qx = std::max(0, x - kMedianRadius); qx <= std::min(w - 1, x + kMedianRadius); ++qx)
-            if (in.valid.at<uint8_t>(qy, qx)) window.push_back(in.disp.at<uint16_t>(qy, qx));
-        std::sort(window.begin(), window.end());
-        out.disp.at<uint16_t>(y, x) = window[(window.size() - 1) / 2];
+      for (int x0 = 0; x0 < w; x0 += kLanes) {
+        Lanes count = {};
+        for (int k = 0; k < kMedianWindow; ++k) {
+          const int dy = k / (2 * r + 1), dx = k % (2 * r + 1);  // window offset + r
+          std::memcpy(&window[k], padded.data() + size_t(y + dy) * pw + x0 + dx, sizeof(Lanes));
+          count -= window[k] != kAbsent;  // a true lane compares as -1
+        }
+        for (const auto& [i, j] : network) {
+          const Lanes a = window[i], b = window[j];
+          window[i] = a < b ? a : b;
+          window[j] = a < b ? b : a;
+        }
+        for (int l = 0; l < kLanes && x0 + l < w; ++l)
+          if (in.valid.at<uint8_t>(y, x0 + l)) out.disp.at<uint16_t>(y, x0 + l) = window[(count[l] - 1) / 2][l];
       }
   });
   return out;

@@ -7,6 +7,7 @@
 #include "sgm/volume.hpp"
 
 #include <cstdint>
+#include <vector>
 
 namespace sgm {
 
@@ -21,7 +22,20 @@ int subpixelOffset(int a, int m, int b);
 // d = 0 .. min(D-1, W-1-xr), ties to the smallest d.
 int rightDisparity(const PathVolume& s, int xr, int y);
 
-// WTA (+ sub-pixel when enabled) and the left-right check when tolerance >= 0.
+// WTA (+ sub-pixel when enabled) and the left-right check when tolerance >= 0,
+// one row at a time from row y of S (W x D, pixel-major).
+class RowSelector {
+ public:
+  RowSelector(int width, int disparities, const Params& params);
+  void select(const uint16_t* sumRow, uint16_t* dispRow, uint8_t* validRow);
+
+ private:
+  const int width_, disparities_;
+  const Params params_;
+  std::vector<uint32_t> rightKey_;  // min (S, d) key per right pixel, indexed W-1-xr
+};
+
+// The same over a whole volume.
 DisparityMap selectDisparity(const PathVolume& s, const Params& params);
 
 // Hole filling along each row: an invalid pixel takes the smaller (background)

@@ -1,6 +1,7 @@
 #include "sgm/pipeline.hpp"
 
 #include "sgm/aggregate.hpp"
+#include "sgm/census.hpp"
 #include "sgm/cost.hpp"
 #include "sgm/disparity.hpp"
 
@@ -30,7 +31,30 @@ PipelineStages runPipelineStages(const cv::Mat& gl, const cv::Mat& gr, const Par
 }
 
 DisparityMap runPipeline(const cv::Mat& gl, const cv::Mat& gr, const Params& params) {
-  return runPipelineStages(gl, gr, params).result;
+  checkInput(gl, gr, params);
+  const int w = gl.cols, h = gl.rows, nd = params.disparities;
+  // Hardware modes stream C from the census images row by row; the software
+  // modes read rows of a precomputed volume.
+  std::vector<Census> censusLeft, censusRight;
+  CostVolume volume;
+  CostRowFn costRow;
+  if (isHardwareMode(params.mode)) {
+    censusLeft = censusTransform(gl);
+    censusRight = censusTransform(gr);
+    costRow = [&](int y, uint8_t* row) {
+      censusCostRow(params.mode, &censusLeft[size_t(y) * w], &censusRight[size_t(y) * w], w, nd, row);
+    };
+  } else {
+    volume = computeCost(gl, gr, params.mode, nd);
+    costRow = [&](int y, uint8_t* row) { std::copy_n(volume.at(0, y), size_t(w) * nd, row); };
+  }
+  DisparityMap selected{cv::Mat(h, w, CV_16UC1), cv::Mat(h, w, CV_8UC1)};
+  RowSelector selector(w, nd, params);
+  aggregateRows(w, h, nd, gl, params.p1, params.p2, costRow, [&](int y, const uint16_t* sum) {
+    selector.select(sum, selected.disp.ptr<uint16_t>(y), selected.valid.ptr<uint8_t>(y));
+  });
+  const DisparityMap filled = params.fill ? fillHoles(selected) : selected;
+  return params.median ? median5x5(filled) : filled;
 }
 
 }  // namespace sgm
