@@ -9,7 +9,8 @@ DATA       ?= $(abspath ../shared/data/middlebury)
 JOBS       ?= 2
 
 CXX        ?= g++
-CXXFLAGS   ?= -O3 -march=x86-64-v2 -g
+ARCH       ?= x86-64-v3
+CXXFLAGS   ?= -O3 -march=$(ARCH) -g
 override CXXFLAGS += -std=c++17 -Wall -Wextra -pthread -Igolden -Itools
 OPENCV_CFLAGS = $(shell pkg-config --cflags opencv4 2>/dev/null)
 OPENCV_LIBS   = $(shell pkg-config --libs opencv4 2>/dev/null)

@@ -85,18 +85,14 @@ class PathState {
   std::vector<uint16_t> prevMin_, curMin_;
 };
 
-// sum (+)= Lr of path a + Lr of path b over row y.
-void addTwoPaths(PathState& a, PathState& b, int y, int width, int nd, const uint8_t* cost, bool accumulate,
-                 uint16_t* sum) {
+// sum = Lr of path a + Lr of path b over row y.
+void twoPaths(PathState& a, PathState& b, int y, int width, int nd, const uint8_t* cost, uint16_t* sum) {
   for (int x = 0; x < width; ++x) {
     const uint8_t* c = cost + size_t(x) * nd;
     const uint16_t* la = a.step(x, y, c);
     const uint16_t* lb = b.step(x, y, c);
     uint16_t* s = sum + size_t(x) * nd;
-    if (accumulate)
-      for (int d = 0; d < nd; ++d) s[d] = uint16_t(s[d] + la[d] + lb[d]);
-    else
-      for (int d = 0; d < nd; ++d) s[d] = uint16_t(la[d] + lb[d]);
+    for (int d = 0; d < nd; ++d) s[d] = uint16_t(la[d] + lb[d]);
   }
   a.endRow();
   b.endRow();
@@ -111,34 +107,48 @@ void waitUntil(const std::atomic<int>& counter, int value) {
 void aggregateRows(int width, int height, int nd, const cv::Mat& gray, int p1, int p2, const CostRowFn& costRow,
                    const SumRowFn& sink) {
   const P2Table table = makeP2Table(p1, p2);
-  // A ring of row slots: the first worker computes C and Lr(0) + Lr(90) into
-  // slot y % kSlots; the second adds Lr(45) + Lr(135) and hands the row on.
+  // Row y lives in ring slot y % kSlots. Worker w computes half w of C one row
+  // ahead, then two of the four paths of the current row into its own partial
+  // sum; the worker that finishes a row second adds the two partial sums and
+  // hands S on. Counters say how far each worker got; every wait is on work
+  // the other worker does without waiting for this one, so nothing deadlocks.
   constexpr int kSlots = 4;
   const size_t rowSize = size_t(width) * nd;
   std::vector<uint8_t> costRing(rowSize * kSlots);
-  std::vector<uint16_t> sumRing(rowSize * kSlots);
-  std::atomic<int> rowsFirst{0}, rowsSecond{0};
-  runConcurrently({[&] {
-                     PathState p0(width, nd, gray, 0, p1, table), p90(width, nd, gray, 2, p1, table);
-                     for (int y = 0; y < height; ++y) {
-                       waitUntil(rowsSecond, y - kSlots + 1);  // slot free again
-                       uint8_t* cost = costRing.data() + rowSize * (y % kSlots);
-                       costRow(y, cost);
-                       addTwoPaths(p0, p90, y, width, nd, cost, false, sumRing.data() + rowSize * (y % kSlots));
-                       rowsFirst.store(y + 1, std::memory_order_release);
-                     }
-                   },
-                   [&] {
-                     PathState p45(width, nd, gray, 1, p1, table), p135(width, nd, gray, 3, p1, table);
-                     for (int y = 0; y < height; ++y) {
-                       waitUntil(rowsFirst, y + 1);
-                       const uint8_t* cost = costRing.data() + rowSize * (y % kSlots);
-                       uint16_t* sum = sumRing.data() + rowSize * (y % kSlots);
-                       addTwoPaths(p45, p135, y, width, nd, cost, true, sum);
-                       sink(y, sum);
-                       rowsSecond.store(y + 1, std::memory_order_release);
-                     }
-                   }});
+  std::vector<uint16_t> sumRing[2] = {std::vector<uint16_t>(rowSize * kSlots), std::vector<uint16_t>(rowSize * kSlots)};
+  std::atomic<int> costRows[2] = {0, 0};  // rows whose C half w is written
+  std::atomic<int> pathRows[2] = {0, 0};  // rows whose paths of worker w are done
+  std::atomic<int> arrivals[kSlots] = {0, 0, 0, 0};
+  std::atomic<int> slotFreeFrom[kSlots] = {0, 1, 2, 3};  // first row that may use the slot
+  auto worker = [&](int w) {
+    PathState a(width, nd, gray, w == 0 ? 0 : 1, p1, table), b(width, nd, gray, w == 0 ? 2 : 3, p1, table);
+    const int x0 = w == 0 ? 0 : width / 2, x1 = w == 0 ? width / 2 : width;
+    auto costHalf = [&](int y) {
+      if (y >= height) return;
+      waitUntil(pathRows[0], y - kSlots + 1);  // slot no longer read by either worker's paths
+      waitUntil(pathRows[1], y - kSlots + 1);
+      costRow(y, x0, x1, costRing.data() + rowSize * (y % kSlots));
+      costRows[w].store(y + 1, std::memory_order_release);
+    };
+    costHalf(0);
+    for (int y = 0; y < height; ++y) {
+      costHalf(y + 1);
+      waitUntil(costRows[1 - w], y + 1);
+      waitUntil(slotFreeFrom[y % kSlots], y);  // S of row y - kSlots handed on
+      const uint8_t* cost = costRing.data() + rowSize * (y % kSlots);
+      uint16_t* mine = sumRing[w].data() + rowSize * (y % kSlots);
+      twoPaths(a, b, y, width, nd, cost, mine);
+      pathRows[w].store(y + 1, std::memory_order_release);
+      if (arrivals[y % kSlots].fetch_add(1, std::memory_order_acq_rel) == 1) {  // second to finish row y
+        arrivals[y % kSlots].store(0, std::memory_order_relaxed);
+        const uint16_t* other = sumRing[1 - w].data() + rowSize * (y % kSlots);
+        for (size_t i = 0; i < rowSize; ++i) mine[i] = uint16_t(mine[i] + other[i]);
+        sink(w, y, mine);
+        slotFreeFrom[y % kSlots].store(y + kSlots, std::memory_order_release);
+      }
+    }
+  };
+  runConcurrently({[&] { worker(0); }, [&] { worker(1); }});
 }
 
 PathVolume pathCost(const CostVolume& cost, const cv::Mat& grayLeft, int pathIndex, int p1, int p2) {
@@ -157,8 +167,10 @@ PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1
   const size_t rowSize = size_t(cost.width) * cost.depth;
   aggregateRows(
       cost.width, cost.height, cost.depth, grayLeft, p1, p2,
-      [&](int y, uint8_t* row) { std::copy_n(cost.at(0, y), rowSize, row); },
-      [&](int y, const uint16_t* row) { std::copy_n(row, rowSize, sum.at(0, y)); });
+      [&](int y, int x0, int x1, uint8_t* row) {
+        std::copy(cost.at(x0, y), cost.at(x0, y) + size_t(x1 - x0) * cost.depth, row + size_t(x0) * cost.depth);
+      },
+      [&](int, int y, const uint16_t* row) { std::copy_n(row, rowSize, sum.at(0, y)); });
   return sum;
 }
 

@@ -45,12 +45,13 @@ PathVolume pathCost(const CostVolume& cost, const cv::Mat& grayLeft, int pathInd
 PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1, int p2);
 
 // The streaming form used by the pipeline: rows in order, never more than a
-// few rows of cost and S in memory, the four paths split over two workers.
-// costRow(y, row) fills row y of C (W x D, pixel-major) and is called once per
-// row from the first worker; sink(y, row) receives row y of S (W x D) from the
-// second worker, in order.
-using CostRowFn = std::function<void(int y, uint8_t* row)>;
-using SumRowFn = std::function<void(int y, const uint16_t* row)>;
+// few rows of C and S in memory, the work of each row split over two workers.
+// costRow(y, x0, x1, row) fills pixels x0 .. x1-1 of row y of C (W x D,
+// pixel-major; row points at pixel 0). sink(worker, y, row) receives row y of S
+// (W x D); it is called once per row, from either worker (0 or 1), rows of
+// different workers possibly at the same time.
+using CostRowFn = std::function<void(int y, int x0, int x1, uint8_t* row)>;
+using SumRowFn = std::function<void(int worker, int y, const uint16_t* row)>;
 void aggregateRows(int width, int height, int disparities, const cv::Mat& grayLeft, int p1, int p2,
                    const CostRowFn& costRow, const SumRowFn& sink);
 

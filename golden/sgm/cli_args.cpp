@@ -80,10 +80,13 @@ const std::set<std::string>& CliArgs::pipelineOptions() {
 }
 
 Params CliArgs::pipelineParams(Params p) const {
+  if (has("mode")) {  // a mode brings its own measured penalties; --p1/--p2 override them
+    const Params modeDefaults = defaultParams(parseCostMode(text("mode", "")));
+    p.mode = modeDefaults.mode, p.p1 = modeDefaults.p1, p.p2 = modeDefaults.p2;
+  }
   p.disparities = int(integer("d", p.disparities, kMinDisparities, kMaxDisparities));
   p.p1 = int(integer("p1", p.p1, 0, kMaxPenalty));
   p.p2 = int(integer("p2", p.p2, 0, kMaxPenalty));
-  if (has("mode")) p.mode = parseCostMode(text("mode", ""));
   p.subpixel = onOff("subpixel", p.subpixel);
   if (text("lr", "") == "off") p.lrTolerance = -1;
   else p.lrTolerance = int(integer("lr", p.lrTolerance, 0, kMaxDisparities));

@@ -32,8 +32,8 @@ namespace {
 
 // One row of C for a mode; cost(x, d) gives the in-image cost (d <= x).
 template <typename CostOf>
-void fillCostRow(uint8_t* row, int width, int nd, int cmax, CostOf cost) {
-  for (int x = 0; x < width; ++x) {
+void fillCostRow(uint8_t* row, int x0, int x1, int nd, int cmax, CostOf cost) {
+  for (int x = x0; x < x1; ++x) {
     uint8_t* c = row + size_t(x) * nd;
     const int inside = std::min(nd, x + 1);  // d <= x: the match is in the right image
     for (int d = 0; d < inside; ++d) c[d] = uint8_t(cost(x, d));
@@ -42,8 +42,8 @@ void fillCostRow(uint8_t* row, int width, int nd, int cmax, CostOf cost) {
 }
 
 template <CostMode kMode>
-void censusRow(const Census* l, const Census* r, int width, int nd, uint8_t* row) {
-  fillCostRow(row, width, nd, maxCost(kMode), [&](int x, int d) { return censusCostOf<kMode>(l[x], r[x - d]); });
+void censusRow(const Census* l, const Census* r, int x0, int x1, int nd, uint8_t* row) {
+  fillCostRow(row, x0, x1, nd, maxCost(kMode), [&](int x, int d) { return censusCostOf<kMode>(l[x], r[x - d]); });
 }
 
 // sad+rt: eq. (2) with alpha = 0.2, the SAD mean rescaled to the rank range.
@@ -53,7 +53,7 @@ void sadRtVolume(const std::vector<Census>& cl, const std::vector<Census>& cr,
     for (int y = y0; y < y1; ++y) {
       const Census* l = cl.data() + size_t(y) * vol.width;
       const Census* r = cr.data() + size_t(y) * vol.width;
-      fillCostRow(vol.at(0, y), vol.width, vol.depth, maxCost(CostMode::kSadRt), [&](int x, int d) {
+      fillCostRow(vol.at(0, y), 0, vol.width, vol.depth, maxCost(CostMode::kSadRt), [&](int x, int d) {
         const int rt = censusCostOf<CostMode::kRt>(l[x], r[x - d]);
         const int sadOnRankScale = (sadMean[d].at<uint8_t>(y, x) * kCensusBits + 127) / 255;
         return (2 * sadOnRankScale + 8 * rt + 5) / 10;
@@ -130,11 +130,12 @@ void birchfieldTomasi(const cv::Mat& gl, const cv::Mat& gr, CostVolume& vol) {
 
 }  // namespace
 
-void censusCostRow(CostMode mode, const Census* left, const Census* right, int width, int nd, uint8_t* row) {
+void censusCostRow(CostMode mode, const Census* left, const Census* right, int x0, int x1, int nd,
+                   uint8_t* row) {
   switch (mode) {
-    case CostMode::kRt: censusRow<CostMode::kRt>(left, right, width, nd, row); break;
-    case CostMode::kRsad: censusRow<CostMode::kRsad>(left, right, width, nd, row); break;
-    case CostMode::kUnified: censusRow<CostMode::kUnified>(left, right, width, nd, row); break;
+    case CostMode::kRt: censusRow<CostMode::kRt>(left, right, x0, x1, nd, row); break;
+    case CostMode::kRsad: censusRow<CostMode::kRsad>(left, right, x0, x1, nd, row); break;
+    case CostMode::kUnified: censusRow<CostMode::kUnified>(left, right, x0, x1, nd, row); break;
     default: throw Error(std::string("cost mode ") + costModeName(mode) + " is not a census mode");
   }
 }
@@ -160,7 +161,7 @@ CostVolume computeCost(const cv::Mat& gl, const cv::Mat& gr, CostMode mode, int 
   parallelFor(gl.rows, [&](int y0, int y1) {
     for (int y = y0; y < y1; ++y) {
       const size_t first = size_t(y) * gl.cols;
-      censusCostRow(mode, cl.data() + first, cr.data() + first, gl.cols, disparities, vol.at(0, y));
+      censusCostRow(mode, cl.data() + first, cr.data() + first, 0, gl.cols, disparities, vol.at(0, y));
     }
   });
   return vol;

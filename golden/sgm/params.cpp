@@ -59,12 +59,13 @@ Params defaultParams(CostMode mode) {
   Params p;
   p.mode = mode;
   switch (mode) {
-    case CostMode::kRt: p.p1 = 7, p.p2 = 100; break;
-    case CostMode::kRsad: p.p1 = 7, p.p2 = 100; break;
-    case CostMode::kUnified: p.p1 = 7, p.p2 = 100; break;
-    case CostMode::kSad: p.p1 = 7, p.p2 = 100; break;
-    case CostMode::kBt: p.p1 = 7, p.p2 = 100; break;
-    case CostMode::kSadRt: p.p1 = 7, p.p2 = 100; break;
+    // Measured on cones, teddy, sawtooth, venus: docs/algorithm.md, section 11.
+    case CostMode::kRt: p.p1 = 40, p.p2 = 255; break;
+    case CostMode::kRsad: p.p1 = 20, p.p2 = 200; break;
+    case CostMode::kUnified: p.p1 = 40, p.p2 = 255; break;
+    case CostMode::kSad: p.p1 = 8, p.p2 = 255; break;
+    case CostMode::kBt: p.p1 = 16, p.p2 = 600; break;
+    case CostMode::kSadRt: p.p1 = 28, p.p2 = 400; break;
   }
   return p;
 }

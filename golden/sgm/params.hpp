@@ -36,9 +36,9 @@ constexpr int kPathCount = 4;                     // 0, 45, 90, 135 degrees
 
 struct Params {
   int disparities = 64;        // D: candidates 0 .. D-1
-  int p1 = 7;                  // small-change penalty
-  int p2 = 100;                // P2' of the adaptive P2r = max(P1, P2' / |dI|)
-  CostMode mode = CostMode::kUnified;
+  int p1 = 20;                 // small-change penalty
+  int p2 = 200;                // P2' of the adaptive P2r = max(P1, P2' / |dI|)
+  CostMode mode = CostMode::kRsad;  // the hardware default (measured best)
   bool subpixel = true;        // quadratic refinement to 1/16 px
   int lrTolerance = 1;         // left-right check tolerance in px; < 0 disables it
   bool fill = true;            // fill invalid pixels along the row from the background side

@@ -41,17 +41,19 @@ DisparityMap runPipeline(const cv::Mat& gl, const cv::Mat& gr, const Params& par
   if (isHardwareMode(params.mode)) {
     censusLeft = censusTransform(gl);
     censusRight = censusTransform(gr);
-    costRow = [&](int y, uint8_t* row) {
-      censusCostRow(params.mode, &censusLeft[size_t(y) * w], &censusRight[size_t(y) * w], w, nd, row);
+    costRow = [&](int y, int x0, int x1, uint8_t* row) {
+      censusCostRow(params.mode, &censusLeft[size_t(y) * w], &censusRight[size_t(y) * w], x0, x1, nd, row);
     };
   } else {
     volume = computeCost(gl, gr, params.mode, nd);
-    costRow = [&](int y, uint8_t* row) { std::copy_n(volume.at(0, y), size_t(w) * nd, row); };
+    costRow = [&](int y, int x0, int x1, uint8_t* row) {
+      std::copy(volume.at(x0, y), volume.at(x0, y) + size_t(x1 - x0) * nd, row + size_t(x0) * nd);
+    };
   }
   DisparityMap selected{cv::Mat(h, w, CV_16UC1), cv::Mat(h, w, CV_8UC1)};
-  RowSelector selector(w, nd, params);
-  aggregateRows(w, h, nd, gl, params.p1, params.p2, costRow, [&](int y, const uint16_t* sum) {
-    selector.select(sum, selected.disp.ptr<uint16_t>(y), selected.valid.ptr<uint8_t>(y));
+  RowSelector selectors[2] = {RowSelector(w, nd, params), RowSelector(w, nd, params)};  // one per worker
+  aggregateRows(w, h, nd, gl, params.p1, params.p2, costRow, [&](int worker, int y, const uint16_t* sum) {
+    selectors[worker].select(sum, selected.disp.ptr<uint16_t>(y), selected.valid.ptr<uint8_t>(y));
   });
   const DisparityMap filled = params.fill ? fillHoles(selected) : selected;
   return params.median ? median5x5(filled) : filled;
