@@ -1,0 +1,174 @@
+// Parameter validation, cost-mode names and the pipeline's input checks.
+#include "sgm/params.hpp"
+#include "sgm/pipeline.hpp"
+
+#include <gtest/gtest.h>
+
+#include <opencv2/core.hpp>
+
+namespace {
+
+using sgm::CostMode;
+using sgm::Params;
+
+template <typename F>
+void expectError(F&& f, std::initializer_list<std::string> needles) {
+  try {
+    f();
+    ADD_FAILURE() << "no sgm::Error thrown";
+  } catch (const sgm::Error& e) {
+    const std::string msg = e.what();
+    EXPECT_EQ(msg.find('\n'), std::string::npos) << "multi-line message: " << msg;
+    for (const std::string& n : needles) EXPECT_NE(msg.find(n), std::string::npos) << "'" << n << "' not in: " << msg;
+  } catch (const std::exception& e) {
+    ADD_FAILURE() << "wrong exception type: " << e.what();
+  }
+}
+
+Params withD(int d) {
+  Params p;
+  p.disparities = d;
+  return p;
+}
+
+TEST(ParamsValidate, DefaultsAreValid) {
+  EXPECT_NO_THROW(Params{}.validate());
+  for (CostMode m : sgm::allCostModes()) EXPECT_NO_THROW(sgm::defaultParams(m).validate()) << sgm::costModeName(m);
+}
+
+TEST(ParamsValidate, DisparityRange) {
+  EXPECT_NO_THROW(withD(2).validate());
+  EXPECT_NO_THROW(withD(256).validate());
+  expectError([] { withD(1).validate(); }, {"D=1", "2..256"});
+  expectError([] { withD(0).validate(); }, {"D=0"});
+  expectError([] { withD(257).validate(); }, {"D=257"});
+  expectError([] { withD(999).validate(); }, {"D=999"});
+}
+
+TEST(ParamsValidate, Penalties) {
+  Params p;
+  p.p1 = 10;
+  p.p2 = 10;
+  EXPECT_NO_THROW(p.validate());  // P2' = P1 is allowed
+  p.p2 = 9;
+  expectError([&] { p.validate(); }, {"P2'=9", "P1=10"});
+  p.p1 = -1;
+  p.p2 = 100;
+  expectError([&] { p.validate(); }, {"P1=-1"});
+  p.p1 = 0;
+  p.p2 = 16000;
+  EXPECT_NO_THROW(p.validate());
+  p.p2 = 16001;
+  expectError([&] { p.validate(); }, {"P2'=16001"});
+  p.p1 = 16001;
+  expectError([&] { p.validate(); }, {"P1=16001"});
+}
+
+TEST(ParamsValidate, LrTolerance) {
+  Params p = withD(16);
+  p.lrTolerance = -1;  // off
+  EXPECT_NO_THROW(p.validate());
+  p.lrTolerance = 16;
+  EXPECT_NO_THROW(p.validate());
+  p.lrTolerance = 17;
+  expectError([&] { p.validate(); }, {"17"});
+}
+
+TEST(ParamsTest, RawSgmTurnsEveryPostStageOff) {
+  Params p = sgm::defaultParams(CostMode::kRt);
+  p.disparities = 32;
+  const Params raw = p.rawSgm();
+  EXPECT_FALSE(raw.subpixel);
+  EXPECT_LT(raw.lrTolerance, 0);
+  EXPECT_FALSE(raw.fill);
+  EXPECT_FALSE(raw.median);
+  EXPECT_EQ(raw.disparities, 32);
+  EXPECT_EQ(raw.mode, CostMode::kRt);
+  EXPECT_EQ(raw.p1, p.p1);
+  EXPECT_EQ(raw.p2, p.p2);
+}
+
+TEST(ParamsTest, DefaultParamsKeepsTheModeAndPostProcessing) {
+  const Params base;
+  for (CostMode m : sgm::allCostModes()) {
+    const Params p = sgm::defaultParams(m);
+    EXPECT_EQ(p.mode, m);
+    EXPECT_EQ(p.disparities, base.disparities);
+    EXPECT_EQ(p.subpixel, base.subpixel);
+    EXPECT_EQ(p.lrTolerance, base.lrTolerance);
+    EXPECT_EQ(p.fill, base.fill);
+    EXPECT_EQ(p.median, base.median);
+  }
+  // The documented post-processing defaults (docs/algorithm.md section 11).
+  EXPECT_EQ(base.disparities, 64);
+  EXPECT_TRUE(base.subpixel);
+  EXPECT_EQ(base.lrTolerance, 1);
+  EXPECT_TRUE(base.fill);
+  EXPECT_TRUE(base.median);
+  EXPECT_TRUE(sgm::isHardwareMode(base.mode)) << "Params{} is the hardware default";
+  // ... with the measured penalties of its own mode.
+  EXPECT_EQ(base.p1, sgm::defaultParams(base.mode).p1);
+  EXPECT_EQ(base.p2, sgm::defaultParams(base.mode).p2);
+}
+
+TEST(CostModes, NamesRoundTripAndUnknownThrows) {
+  const std::vector<std::string> names = {"rt", "rsad", "unified", "sad", "bt", "sad+rt"};
+  const auto modes = sgm::allCostModes();
+  ASSERT_EQ(modes.size(), names.size());
+  for (size_t i = 0; i < modes.size(); ++i) {
+    EXPECT_EQ(sgm::costModeName(modes[i]), names[i]);
+    EXPECT_EQ(sgm::parseCostMode(names[i]), modes[i]);
+  }
+  EXPECT_TRUE(sgm::isHardwareMode(CostMode::kRt));
+  EXPECT_TRUE(sgm::isHardwareMode(CostMode::kRsad));
+  EXPECT_TRUE(sgm::isHardwareMode(CostMode::kUnified));
+  EXPECT_FALSE(sgm::isHardwareMode(CostMode::kSad));
+  EXPECT_FALSE(sgm::isHardwareMode(CostMode::kBt));
+  EXPECT_FALSE(sgm::isHardwareMode(CostMode::kSadRt));
+  expectError([] { sgm::parseCostMode("census"); }, {"census"});
+  expectError([] { sgm::parseCostMode("RT"); }, {"RT"});
+  expectError([] { sgm::parseCostMode(""); }, {"unknown cost mode"});
+}
+
+// ------------------------------------------------------------------ checkInput
+
+cv::Mat gray(int w, int h) { return cv::Mat(h, w, CV_8UC1, cv::Scalar(7)); }
+
+TEST(CheckInput, AcceptsTheSmallestImage) {
+  EXPECT_NO_THROW(sgm::checkInput(gray(9, 9), gray(9, 9), Params{}));
+}
+
+TEST(CheckInput, SizeMismatch) {
+  expectError([] { sgm::checkInput(gray(20, 16), gray(21, 16), Params{}); }, {"size mismatch", "20x16", "21x16"});
+  expectError([] { sgm::checkInput(gray(20, 16), gray(20, 15), Params{}); }, {"size mismatch"});
+}
+
+TEST(CheckInput, SmallerThanTheWindow) {
+  expectError([] { sgm::checkInput(gray(8, 9), gray(8, 9), Params{}); }, {"8x9", "smaller", "9x9"});
+  expectError([] { sgm::checkInput(gray(9, 8), gray(9, 8), Params{}); }, {"9x8", "smaller"});
+  expectError([] { sgm::checkInput(gray(1, 1), gray(1, 1), Params{}); }, {"smaller"});
+}
+
+TEST(CheckInput, InvalidParameters) {
+  expectError([] { sgm::checkInput(gray(20, 20), gray(20, 20), withD(1)); }, {"D=1"});
+  expectError([] { sgm::checkInput(gray(20, 20), gray(20, 20), withD(257)); }, {"D=257"});
+  Params p;
+  p.p1 = 50;
+  p.p2 = 20;
+  expectError([&] { sgm::checkInput(gray(20, 20), gray(20, 20), p); }, {"P2'"});
+}
+
+TEST(CheckInput, NonGrayImages) {
+  const cv::Mat colour(16, 16, CV_8UC3, cv::Scalar::all(1));
+  EXPECT_THROW(sgm::checkInput(colour, colour, Params{}), sgm::Error);
+  const cv::Mat deep(16, 16, CV_16UC1, cv::Scalar(1));
+  EXPECT_THROW(sgm::checkInput(deep, deep, Params{}), sgm::Error);
+}
+
+TEST(CheckInput, RunPipelineChecksToo) {
+  EXPECT_THROW(sgm::runPipeline(gray(20, 16), gray(21, 16), Params{}), sgm::Error);
+  EXPECT_THROW(sgm::runPipeline(gray(8, 8), gray(8, 8), Params{}), sgm::Error);
+  EXPECT_THROW(sgm::runPipeline(gray(20, 16), gray(20, 16), withD(1)), sgm::Error);
+}
+
+}  // namespace
