@@ -107,8 +107,8 @@ void waitUntil(const std::atomic<int>& counter, int value) {
 void aggregateRows(int width, int height, int nd, const cv::Mat& gray, int p1, int p2, const CostRowFn& costRow,
                    const SumRowFn& sink) {
   const P2Table table = makeP2Table(p1, p2);
-  // Row y lives in ring slot y % kSlots. Worker w computes half w of C one row
-  // ahead, then two of the four paths of the current row into its own partial
+  // Row y lives in ring slot y % kSlots. Worker w computes half w of C two rows
+  // ahead (so it rarely waits for the other worker's half), then two of the four paths of the current row into its own partial
   // sum; the worker that finishes a row second adds the two partial sums and
   // hands S on. Counters say how far each worker got; every wait is on work
   // the other worker does without waiting for this one, so nothing deadlocks.
@@ -131,8 +131,9 @@ void aggregateRows(int width, int height, int nd, const cv::Mat& gray, int p1, i
       costRows[w].store(y + 1, std::memory_order_release);
     };
     costHalf(0);
+    costHalf(1);
     for (int y = 0; y < height; ++y) {
-      costHalf(y + 1);
+      costHalf(y + 2);
       waitUntil(costRows[1 - w], y + 1);
       waitUntil(slotFreeFrom[y % kSlots], y);  // S of row y - kSlots handed on
       const uint8_t* cost = costRing.data() + rowSize * (y % kSlots);

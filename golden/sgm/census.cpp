@@ -34,7 +34,8 @@ std::vector<Census> censusTransform(const cv::Mat& gray) {
         const uint8_t* row = gray.ptr<uint8_t>(qy);
         uint8_t* plane = bytes.data() + size_t(k / 8) * w;
         const int x0 = std::max(0, -dx), x1 = std::min(w, w - dx);  // columns with q inside
-        for (int x = x0; x < x1; ++x) plane[x] = uint8_t(plane[x] | (row[x + dx] < centre[x]) << (k % 8));
+        const uint8_t bit = uint8_t(1u << (k % 8));
+        for (int x = x0; x < x1; ++x) plane[x] |= row[x + dx] < centre[x] ? bit : uint8_t(0);
       }
       for (int x = 0; x < w; ++x) {
         Census c;

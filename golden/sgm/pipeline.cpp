@@ -42,7 +42,7 @@ DisparityMap runPipeline(const cv::Mat& gl, const cv::Mat& gr, const Params& par
     censusLeft = censusTransform(gl);
     censusRight = censusTransform(gr);
     costRow = [&](int y, int x0, int x1, uint8_t* row) {
-      censusCostRow(params.mode, &censusLeft[size_t(y) * w], &censusRight[size_t(y) * w], x0, x1, nd, row);
+      censusCostRow(params.mode, &censusLeft[size_t(y) * w], &censusRight[size_t(y) * w], w, x0, x1, nd, row);
     };
   } else {
     volume = computeCost(gl, gr, params.mode, nd);
