@@ -275,20 +275,14 @@ TEST_F(SgmGoldenCli, NonImageFile) {
   expectOneLineError(run("sgm-golden", {in_, in("right.png")}), "sgm-golden", "cannot");
 }
 
-// Truncated image files: the decoder libraries print their own diagnostics.
+// Truncated image files: the decoder libraries' own diagnostics must not reach stderr.
 TEST_F(SgmGoldenCli, TruncatedPng) {
   std::vector<uchar> buf;
   ASSERT_TRUE(cv::imencode(".png", texture(40, 30, 1), buf));
   writeRaw("cut.png", std::string(buf.begin(), buf.begin() + 200));
   const RunResult r = run("sgm-golden", {in("cut.png"), in("right.png")});
   const auto errLines = expectUserError(r, "sgm-golden", "cut.png");
-  if (errLines.size() != 1) {
-    // KNOWN BUG (reported, golden/sgm/image_io.cpp decode()): libpng prints
-    // "libpng error: Read Error" on stderr before sgm-golden's own error line,
-    // so the one-line error contract is broken for truncated/corrupt PNGs.
-    // Remove this skip when decode() silences or pre-validates the decoder.
-    GTEST_SKIP() << "KNOWN BUG: decoder diagnostics on stderr (" << errLines.size() << " lines):\n" << r.err;
-  }
+  EXPECT_EQ(errLines.size(), 1u) << r.err;
 }
 
 TEST_F(SgmGoldenCli, TruncatedJpeg) {
@@ -299,11 +293,7 @@ TEST_F(SgmGoldenCli, TruncatedJpeg) {
   writeRaw("cut.jpg", std::string(buf.begin(), buf.begin() + 300));
   const RunResult r = run("sgm-golden", {in("cut.jpg"), in("right.png")});
   const auto errLines = expectUserError(r, "sgm-golden", "cut.jpg");
-  if (errLines.size() != 1) {
-    // KNOWN BUG (reported, golden/sgm/image_io.cpp decode()): libjpeg prints
-    // "Premature end of JPEG file" on stderr before sgm-golden's error line.
-    GTEST_SKIP() << "KNOWN BUG: decoder diagnostics on stderr (" << errLines.size() << " lines):\n" << r.err;
-  }
+  EXPECT_EQ(errLines.size(), 1u) << r.err;
 }
 
 TEST_F(SgmGoldenCli, UnsupportedImageFormats) {
@@ -418,14 +408,8 @@ TEST_F(SgmGoldenCli, FailedLaterOutputLeavesNoEarlierOutput) {
   ASSERT_EQ(errLines.size(), 1u) << r.err;
   EXPECT_EQ(errLines[0].rfind("sgm-golden: error: ", 0), 0u) << r.err;
   EXPECT_NE(errLines[0].find("res_disp8.png"), std::string::npos) << r.err;
-  const auto left = entries(out_);
-  if (left.count("res_disp16.png")) {
-    // KNOWN BUG (reported, golden/cli/sgm_golden.cpp): the three PNGs are written
-    // one after the other, each atomically, but a failure on the 2nd or 3rd
-    // leaves the earlier ones in place although the run exits with an error.
-    GTEST_SKIP() << "KNOWN BUG: partial output set left behind after a write error";
-  }
-  EXPECT_EQ(left, (std::set<std::string>{"res_disp8.png"}));
+  // All three outputs or none: only the blocking directory remains.
+  EXPECT_EQ(entries(out_), (std::set<std::string>{"res_disp8.png"}));
 }
 
 TEST_F(SgmGoldenCli, DefaultPrefixInWorkingDirectory) {

@@ -98,6 +98,8 @@ std::vector<std::string> listScenes(const std::string& root) {
 }
 
 ErrorFigures evaluate(const cv::Mat& disp, const Scene& scene, double delta) {
+  if (disp.size() != scene.gt.size() || disp.type() != CV_32FC1)
+    throw Error("disparity map does not match the scene '" + scene.name + "'");
   long nonocc = 0, nonoccBad = 0, all = 0, allBad = 0, disc = 0, discBad = 0, allValid = 0;
   long nonoccValid = 0, nonoccValidBad = 0;
   for (int y = 0; y < disp.rows; ++y)

@@ -14,7 +14,7 @@ namespace {
 const char* kUsage =
     "usage: sgm-golden LEFT RIGHT [--out PREFIX] [--d D] [--p1 N] [--p2 N]\n"
     "                  [--mode rt|rsad|unified|sad|bt|sad+rt] [--subpixel on|off]\n"
-    "                  [--lr TOL|off] [--median on|off]\n"
+    "                  [--lr TOL|off] [--fill on|off] [--median on|off]\n"
     "Writes PREFIX_disp16.png (disparity x 256, 0 = invalid), PREFIX_disp8.png\n"
     "(the paper's [0, 255] scaling) and PREFIX_color.png. PREFIX defaults to 'disparity'.\n";
 
@@ -39,9 +39,9 @@ int main(int argc, char** argv) {
     const sgm::DisparityMap map = sgm::runPipeline(left, right, params);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
-    sgm::writePng(prefix + "_disp16.png", sgm::encodeDisparity16(map));
-    sgm::writePng(prefix + "_disp8.png", sgm::encodeDisparity8(map, params.disparities));
-    sgm::writePng(prefix + "_color.png", sgm::encodeDisparityColor(map, params.disparities));
+    sgm::writePngs({{prefix + "_disp16.png", sgm::encodeDisparity16(map)},
+                    {prefix + "_disp8.png", sgm::encodeDisparity8(map, params.disparities)},
+                    {prefix + "_color.png", sgm::encodeDisparityColor(map, params.disparities)}});
     const double density = cv::countNonZero(map.valid) * 100.0 / double(map.valid.total());
     std::printf("sgm-golden: %dx%d D=%d mode=%s: %.1f ms, density %.2f%%, wrote %s_{disp16,disp8,color}.png\n",
                 left.cols, left.rows, params.disparities, sgm::costModeName(params.mode), ms, density,

@@ -7,11 +7,30 @@
 
 #include <cstdio>
 #include <fstream>
+#include <fcntl.h>
 #include <unistd.h>
 
 namespace sgm {
 
 namespace {
+
+// Keeps the image libraries' own diagnostics (libpng, libjpeg, OpenCV) off
+// stderr while it lives: the tools report every failure in one line of their own.
+class QuietStderr {
+ public:
+  QuietStderr() : saved_(::dup(STDERR_FILENO)) {
+    const int devNull = ::open("/dev/null", O_WRONLY);
+    if (devNull >= 0) ::dup2(devNull, STDERR_FILENO), ::close(devNull);
+  }
+  ~QuietStderr() {
+    if (saved_ >= 0) ::dup2(saved_, STDERR_FILENO), ::close(saved_);
+  }
+  QuietStderr(const QuietStderr&) = delete;
+  QuietStderr& operator=(const QuietStderr&) = delete;
+
+ private:
+  int saved_;
+};
 
 cv::Mat decode(const std::string& path) {
   std::ifstream probe(path, std::ios::binary);
@@ -20,6 +39,7 @@ cv::Mat decode(const std::string& path) {
   if (probe.tellg() <= 0) throw Error("cannot read '" + path + "': file is empty");
   cv::Mat image;
   try {
+    const QuietStderr quiet;
     image = cv::imread(path, cv::IMREAD_UNCHANGED);
   } catch (const cv::Exception&) {
     image.release();
@@ -67,19 +87,37 @@ cv::Mat readSingleChannel(const std::string& path) {
   return image;
 }
 
-void writePng(const std::string& path, const cv::Mat& image) {
-  const std::string tmp = path + ".tmp" + std::to_string(::getpid()) + ".png";
-  bool ok = false;
-  try {
-    ok = cv::imwrite(tmp, image);
-  } catch (const cv::Exception&) {
-    ok = false;
+void writePngs(const std::vector<std::pair<std::string, cv::Mat>>& files) {
+  // Every file is encoded to a temporary name first; only when all of them
+  // are written are they renamed, so a failure leaves none of them behind.
+  std::vector<std::string> temporaries;
+  auto removeTemporaries = [&] {
+    for (const std::string& t : temporaries) std::remove(t.c_str());
+  };
+  for (const auto& [path, image] : files) {
+    const std::string tmp = path + ".tmp" + std::to_string(::getpid()) + ".png";
+    bool ok = false;
+    try {
+      const QuietStderr quiet;
+      ok = cv::imwrite(tmp, image);
+    } catch (const cv::Exception&) {
+      ok = false;
+    }
+    temporaries.push_back(tmp);
+    if (!ok) {
+      removeTemporaries();
+      throw Error("cannot write '" + path + "'");
+    }
   }
-  if (!ok || std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw Error("cannot write '" + path + "'");
-  }
+  for (size_t i = 0; i < files.size(); ++i)
+    if (std::rename(temporaries[i].c_str(), files[i].first.c_str()) != 0) {
+      for (size_t j = 0; j < i; ++j) std::remove(files[j].first.c_str());
+      removeTemporaries();
+      throw Error("cannot write '" + files[i].first + "'");
+    }
 }
+
+void writePng(const std::string& path, const cv::Mat& image) { writePngs({{path, image}}); }
 
 cv::Mat encodeDisparity16(const DisparityMap& map) {
   cv::Mat out(map.disp.size(), CV_16UC1);
@@ -95,6 +133,7 @@ cv::Mat encodeDisparity16(const DisparityMap& map) {
 }
 
 cv::Mat encodeDisparity8(const DisparityMap& map, int disparities) {
+  if (disparities < kMinDisparities) throw Error("encodeDisparity8 needs D >= " + std::to_string(kMinDisparities));
   cv::Mat out(map.disp.size(), CV_8UC1);
   const int range = (disparities - 1) * kSubpixelOne;
   for (int y = 0; y < out.rows; ++y)

@@ -5,6 +5,8 @@
 #include <opencv2/core.hpp>
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace sgm {
 
@@ -29,6 +31,8 @@ cv::Mat readSingleChannel(const std::string& path);
 // Writes a PNG atomically (temporary file + rename): no partial file is left
 // behind on failure. Throws Error on failure.
 void writePng(const std::string& path, const cv::Mat& image);
+// Writes several PNGs as one: either all of them appear or none does.
+void writePngs(const std::vector<std::pair<std::string, cv::Mat>>& files);
 
 // Output encodings of a disparity map.
 // 16-bit: disparity * 256, 0 = invalid; a valid d = 0 is written as 1 so 0 stays unambiguous.
