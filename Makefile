@@ -36,6 +36,7 @@ all: golden
 help:
 	@echo "make deps          install the Debian packages the project needs (root, idempotent)"
 	@echo "make golden        build build/bin/sgm-golden and build/bin/sgm-eval"
+	@echo "make sim           run the default scene (Aloe) or LEFT= RIGHT= [GT=] [OUT=]"
 	@echo "make eval          Table I and full-pipeline accuracy on DATA=$(DATA) -> build/eval/"
 	@echo "make bench-golden  golden model vs OpenCV StereoSGBM time on one frame, same run"
 	@echo "make test          everything CI runs (unit tests, end-to-end accuracy, CLI errors)"
@@ -61,7 +62,19 @@ $(BIN)/sgm-eval: $(OBJ)/tools/sgm_eval.o $(EVAL_OBJ) $(GOLDEN_LIB)
 	@mkdir -p $(dir $@)
 	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDLIBS)
 
+$(BIN)/sgm-sim: $(OBJ)/tb/sim_main.o $(EVAL_OBJ) $(GOLDEN_LIB)
+	@mkdir -p $(dir $@)
+	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDLIBS)
+
 golden: $(BIN)/sgm-golden $(BIN)/sgm-eval
+
+# ---------------------------------------------------------------- simulation
+# make sim [LEFT=... RIGHT=... [GT=...] [GT_SCALE=...]] [OUT=build/sim] [D=64]
+OUT ?= $(BUILD)/sim
+SIM_ARGS = --out $(OUT) $(if $(LEFT),--left $(LEFT)) $(if $(RIGHT),--right $(RIGHT)) \
+           $(if $(GT),--gt $(GT)) $(if $(GT_SCALE),--gt-scale $(GT_SCALE)) $(if $(D),--d $(D))
+sim: $(BIN)/sgm-sim
+	$(BIN)/sgm-sim $(SIM_ARGS)
 
 eval: golden
 	$(BIN)/sgm-eval table --data "$(DATA)" --out $(BUILD)/eval
@@ -74,7 +87,7 @@ $(BIN)/unit-tests: $(TEST_OBJ) $(EVAL_OBJ) $(GOLDEN_LIB)
 	@mkdir -p $(dir $@)
 	$(CXX) $(CXXFLAGS) -o $@ $^ -lgtest -lgtest_main $(LDLIBS)
 
-unit-test: $(BIN)/unit-tests golden
+unit-test: $(BIN)/unit-tests golden $(BIN)/sgm-sim
 	SGM_DATA="$(DATA)" SGM_BIN="$(abspath $(BIN))" $(BIN)/unit-tests
 
 test: unit-test

@@ -60,29 +60,67 @@ cv::Mat deriveNonOccluded(const cv::Mat& gtRaw, double scale) {
   return mask;
 }
 
-Scene loadScene(const std::string& dir, double scaleOverride) {
+Scene makeScene(const std::string& name, const cv::Mat& leftColor, const cv::Mat& rightColor,
+                const cv::Mat& gtRaw, double gtScale) {
   Scene s;
-  s.name = fs::path(dir).filename().string();
-  if (s.name.empty()) s.name = fs::path(dir).parent_path().filename().string();
+  s.name = name;
+  s.leftColor = leftColor;
+  s.rightColor = rightColor;
+  s.left = toGray(leftColor);
+  s.right = toGray(rightColor);
+  if (s.left.size() != s.right.size())
+    throw Error("left/right size mismatch: " + std::to_string(s.left.cols) + "x" + std::to_string(s.left.rows) +
+                " vs " + std::to_string(s.right.cols) + "x" + std::to_string(s.right.rows));
+  if (gtRaw.empty()) return s;
+  if (gtRaw.size() != s.left.size()) throw Error("ground truth size does not match the images");
+  if (gtScale <= 0) throw Error("ground truth scale must be positive");
+  s.gtScale = gtScale;
+  gtRaw.convertTo(s.gt, CV_32F, 1.0 / gtScale);
+  s.all = gtRaw > 0;
+  s.nonocc = deriveNonOccluded(gtRaw, gtScale);
+  s.nonoccDerived = true;
+  return s;
+}
+
+Scene loadScene(const std::string& dir, double scaleOverride) {
+  std::string name = fs::path(dir).filename().string();
+  if (name.empty()) name = fs::path(dir).parent_path().filename().string();
   const std::string leftPath = dir + "/left.png", rightPath = dir + "/right.png", gtPath = dir + "/gt.png";
-  s.leftColor = cv::imread(leftPath, cv::IMREAD_UNCHANGED);
-  s.left = readGray(leftPath);
-  s.rightColor = cv::imread(rightPath, cv::IMREAD_UNCHANGED);
-  s.right = readGray(rightPath);
-  if (s.left.size() != s.right.size()) throw Error("left/right size mismatch in " + dir);
+  readGray(leftPath), readGray(rightPath);  // one-line errors for unreadable or unsupported images
   const cv::Mat gtRaw = readSingleChannel(gtPath);
-  if (gtRaw.size() != s.left.size()) throw Error("ground truth size mismatch in " + dir);
-  s.gtScale = scaleOverride > 0 ? scaleOverride : readScale(dir);
-  gtRaw.convertTo(s.gt, CV_32F, 1.0 / s.gtScale);
-  s.all = readMaskIfPresent(dir + "/all.png", s.left.size());
-  if (s.all.empty()) s.all = gtRaw > 0;
-  s.nonocc = readMaskIfPresent(dir + "/nonocc.png", s.left.size());
-  if (s.nonocc.empty()) {
-    s.nonocc = deriveNonOccluded(gtRaw, s.gtScale);
-    s.nonoccDerived = true;
+  Scene s = makeScene(name, cv::imread(leftPath, cv::IMREAD_UNCHANGED), cv::imread(rightPath, cv::IMREAD_UNCHANGED),
+                      gtRaw, scaleOverride > 0 ? scaleOverride : readScale(dir));
+  if (cv::Mat all = readMaskIfPresent(dir + "/all.png", s.left.size()); !all.empty()) s.all = all;
+  if (cv::Mat nonocc = readMaskIfPresent(dir + "/nonocc.png", s.left.size()); !nonocc.empty()) {
+    s.nonocc = nonocc;
+    s.nonoccDerived = false;
   }
   s.disc = readMaskIfPresent(dir + "/disc.png", s.left.size());
   return s;
+}
+
+Scene loadSceneFiles(const std::string& leftPath, const std::string& rightPath, const std::string& gtPath,
+                     double gtScale, int downscale) {
+  readGray(leftPath), readGray(rightPath);  // one-line errors for unreadable or unsupported images
+  cv::Mat left = cv::imread(leftPath, cv::IMREAD_UNCHANGED), right = cv::imread(rightPath, cv::IMREAD_UNCHANGED);
+  cv::Mat gtRaw;
+  if (!gtPath.empty()) {
+    gtRaw = readSingleChannel(gtPath);
+    if (gtScale <= 0) {
+      const std::string dir = fs::path(gtPath).parent_path().string();
+      gtScale = fs::exists(dir + "/meta.txt") ? readScale(dir.empty() ? "." : dir) : 1.0;
+    }
+  }
+  if (downscale > 1) {
+    const cv::Size size(left.cols / downscale, left.rows / downscale);
+    cv::resize(left, left, size, 0, 0, cv::INTER_AREA);
+    cv::resize(right, right, size, 0, 0, cv::INTER_AREA);
+    if (!gtRaw.empty()) {
+      cv::resize(gtRaw, gtRaw, size, 0, 0, cv::INTER_NEAREST);  // values kept, disparities shrink:
+      gtScale *= downscale;                                     // the scale grows instead
+    }
+  }
+  return makeScene(fs::path(leftPath).stem().string(), left, right, gtRaw, gtScale);
 }
 
 std::vector<std::string> listScenes(const std::string& root) {

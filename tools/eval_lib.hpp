@@ -21,11 +21,26 @@ struct Scene {
   double gtScale = 1;
   cv::Mat nonocc, all, disc;      // CV_8U masks (255 / 128 / 0); disc may be empty
   bool nonoccDerived = false;     // true when nonocc was derived from gt
+  bool hasGroundTruth() const { return !gt.empty(); }
 };
 
 // Reads DIR/{left,right,gt}.png, the masks when present and gt_scale from
 // meta.txt (or scaleOverride > 0). Throws Error with a one-line message.
 Scene loadScene(const std::string& dir, double scaleOverride = 0);
+
+// A scene from images in memory: colour or gray left/right, the raw ground
+// truth (CV_8U or CV_16U, 0 = unknown; may be empty: no figures then) and its
+// scale. Masks are derived from the ground truth (all = known gt, nonocc as
+// deriveNonOccluded, no disc).
+Scene makeScene(const std::string& name, const cv::Mat& leftColor, const cv::Mat& rightColor,
+                const cv::Mat& gtRaw, double gtScale);
+
+// Reads a scene from explicit files; gtPath may be empty. A missing
+// gtScale (<= 0) is read from meta.txt beside the ground truth, else 1.
+// downscale > 1 shrinks images (INTER_AREA) and ground truth (nearest) by that
+// factor and divides the disparities accordingly.
+Scene loadSceneFiles(const std::string& leftPath, const std::string& rightPath, const std::string& gtPath,
+                     double gtScale, int downscale = 1);
 
 // Non-occluded mask from the left ground truth: a pixel is occluded when its
 // match x - d falls outside the right image or a pixel to its right lands on
