@@ -28,7 +28,7 @@ EVAL_OBJ   := $(patsubst %.cpp,$(OBJ)/%.o,$(EVAL_SRC))
 TEST_SRC   := $(wildcard tests/*.cpp)
 TEST_OBJ   := $(patsubst %.cpp,$(OBJ)/%.o,$(TEST_SRC))
 
-.PHONY: all help deps check-tools golden eval bench-golden test unit-test sim synth lint clean
+.PHONY: all help deps check-tools golden eval bench-golden test unit-test rtl-tests sim synth lint clean
 .DEFAULT_GOAL := all
 
 all: golden
@@ -82,6 +82,43 @@ eval: golden
 bench-golden: golden
 	$(BIN)/sgm-eval bench --data "$(DATA)" --out $(BUILD)/eval
 
+# ---------------------------------------------------------------- RTL
+RTL_SRC    := $(wildcard rtl/*.sv)
+RTL_TOPS   := $(wildcard tb/tops/*.sv)
+RTL_MODULES = $(basename $(notdir $(RTL_SRC)))
+VERILATOR  := verilator
+VLT        := rtl/lint.vlt
+TB_HDR     := $(wildcard tb/*.hpp)
+VL_CFLAGS   = -std=c++17 -O2 -march=$(ARCH) -I$(abspath golden) -I$(abspath tools) -I$(abspath tb) $(OPENCV_CFLAGS)
+VL_LDFLAGS  = -lgtest -lgtest_main $(OPENCV_LIBS) -pthread
+# TRACE=1 builds the verilated models with FST tracing (then run with TRACE=1 to write build/trace/*.fst).
+VL_TRACE    = $(if $(filter 1,$(TRACE)),--trace-fst)
+
+# $(call rtl_test,NAME,TOP,VERILATOR-OPTIONS): build/bin/rtl-NAME runs tests/rtl/test_TOP.cpp
+# against the verilated TOP (an rtl/ module or a tb/tops/ wrapper) built with the options
+# (parameters as -GNAME=VALUE).
+define rtl_test
+RTL_TEST_BINS += $(BIN)/rtl-$(1)
+$(BIN)/rtl-$(1): tests/rtl/test_$(2).cpp $(RTL_SRC) $(RTL_TOPS) $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
+	@mkdir -p $(BIN) $(BUILD)/verilator
+	$(VERILATOR) --cc --exe --build -j $(JOBS) -Wall $(VLT) --x-assign unique --x-initial unique $(VL_TRACE) \
+	  -Irtl -Itb/tops --top-module $(2) $(3) -Mdir $(BUILD)/verilator/$(1) -o $(abspath $(BIN))/rtl-$(1) \
+	  $(RTL_SRC) $(RTL_TOPS) $(abspath tests/rtl/test_$(2).cpp) $(abspath $(EVAL_OBJ)) $(abspath $(GOLDEN_LIB)) \
+	  -CFLAGS "$(VL_CFLAGS)" -LDFLAGS "$(VL_LDFLAGS)" > $(BUILD)/verilator-$(1).log || \
+	  { tail -30 $(BUILD)/verilator-$(1).log; exit 1; }
+endef
+
+$(eval $(call rtl_test,p2-lut,sgm_p2_lut,))
+
+rtl-tests: $(RTL_TEST_BINS)
+	@for t in $(RTL_TEST_BINS); do echo "== $$t"; SGM_DATA="$(DATA)" $$t || exit 1; done
+
+# verilator --lint-only -Wall on every module; waivers live in rtl/lint.vlt.
+lint: | check-tools
+	@for m in $(RTL_MODULES); do \
+	  $(VERILATOR) --lint-only -Wall $(VLT) -Irtl --top-module $$m rtl/$$m.sv || exit 1; \
+	done; echo "lint: $(words $(RTL_MODULES)) modules clean"
+
 # ---------------------------------------------------------------- tests
 $(BIN)/unit-tests: $(TEST_OBJ) $(EVAL_OBJ) $(GOLDEN_LIB)
 	@mkdir -p $(dir $@)
@@ -90,7 +127,7 @@ $(BIN)/unit-tests: $(TEST_OBJ) $(EVAL_OBJ) $(GOLDEN_LIB)
 unit-test: $(BIN)/unit-tests golden $(BIN)/sgm-sim
 	SGM_DATA="$(DATA)" SGM_BIN="$(abspath $(BIN))" $(BIN)/unit-tests
 
-test: unit-test
+test: lint unit-test rtl-tests
 
 clean:
 	rm -rf $(BUILD)

@@ -1,0 +1,80 @@
+`default_nettype none
+// sgm_p2_lut: the adaptive P2 table of docs/algorithm.md section 4,
+//   P2r(k) = P2'                 for k = 0
+//   P2r(k) = max(P1, P2' / k)    for k = 1 .. 255 (floor),
+// filled after start_i without a divider: for k = 1, 2, .. it keeps
+// q = floor(P2' / k) and prod = q * k, decrementing q while prod > P2' and
+// moving on with prod += q. At most 2 x 255 + 2 cycles; ready_o rises when done.
+//
+// Parameters: PW penalty width (P1, P2' and the entries).
+// Latency: lookups are registered (one enabled cycle). Throughput: NPORTS
+// lookups per enabled cycle.
+module sgm_p2_lut #(
+  parameter int PW     = 8,
+  parameter int NPORTS = 4
+) (
+  input  wire                   clk_i,
+  input  wire                   rst_ni,
+  // Fill control: start_i (one cycle) latches p1_i / p2_i and refills the table.
+  input  wire                   start_i,
+  input  wire  [PW-1:0]         p1_i,
+  input  wire  [PW-1:0]         p2_i,
+  output logic                  ready_o,
+  // Lookups: index |dI| per port, result P2r per port, updated when en_i.
+  input  wire                   en_i,
+  input  wire  [NPORTS*8-1:0]   idx_i,
+  output logic [NPORTS*PW-1:0]  p2r_o
+);
+
+  logic [PW-1:0] table_q [0:255];
+
+  logic          busy_q;
+  logic [8:0]    k_q;        // 1 .. 256
+  logic [PW-1:0] q_q;        // floor(P2' / k) once prod_q <= P2'
+  logic [PW:0]   prod_q;     // q_q * k_q, at most 2 P2'
+  logic [PW-1:0] p1_q, p2_q;
+
+  wire             too_big = prod_q > {1'b0, p2_q};
+  wire [PW-1:0]    entry   = q_q > p1_q ? q_q : p1_q;
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      busy_q  <= 1'b0;
+      ready_o <= 1'b0;
+    end else if (start_i) begin
+      busy_q  <= 1'b1;
+      ready_o <= 1'b0;
+      p1_q    <= p1_i;
+      p2_q    <= p2_i;
+      k_q     <= 9'd1;
+      q_q     <= p2_i;
+      prod_q  <= {1'b0, p2_i};
+    end else if (busy_q) begin
+      if (too_big) begin
+        q_q    <= q_q - 1'b1;
+        prod_q <= prod_q - k_q[PW:0];
+      end else begin
+        k_q    <= k_q + 1'b1;
+        prod_q <= prod_q + {1'b0, q_q};
+        if (k_q == 9'd255) begin
+          busy_q  <= 1'b0;
+          ready_o <= 1'b1;
+        end
+      end
+    end
+  end
+
+  // One write port: entry 0 on start, entry k when q is settled.
+  always_ff @(posedge clk_i) begin
+    if (start_i) table_q[0] <= p2_i;
+    else if (busy_q && !too_big) table_q[k_q[7:0]] <= entry;
+  end
+
+  for (genvar p = 0; p < NPORTS; p++) begin : g_port
+    always_ff @(posedge clk_i) begin
+      if (en_i) p2r_o[p*PW +: PW] <= table_q[idx_i[p*8 +: 8]];
+    end
+  end
+
+endmodule
+`default_nettype wire
