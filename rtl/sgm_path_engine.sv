@@ -1,0 +1,210 @@
+`default_nettype none
+// sgm_path_engine: the four causal path costs of eq. (1) and their sum S
+// (docs/algorithm.md section 5) at one pixel per slot, D sub-PEs per path.
+//
+// Slots arrive in raster order of a virtual raster (docs/rtl.md): consecutive
+// slots are consecutive positions, rows < 0 and >= height carry no pixel.
+// Pipeline (one register stage per slot):
+//   A  register the cost vector and position; look up P2r of the 4 paths;
+//      read the previous-row memories for the coming pixels
+//   B  the 4 x D sub-PEs; the 0 degree path feeds back in the same cycle
+//      (sub-PEs + D-input minimum = the single-cycle loop of the design)
+//   C  S = sum of the four Lr; min Lr of 45/90/135 degrees, written with Lr
+//      to the path memories at the pixel's column
+// Path memories (one per vertical path, MAX_WIDTH words of (D + 1) x LW bits,
+// synchronous read with enable -> block RAM): at the slot where pixel p enters
+// stage A the engine reads M90[p], M45[p] and M135[p + 1] (raster order);
+// they are used at stage B of p (90, 135) and of p + 1 (45, one register
+// later). Pixel p is written at its stage C, two slots after its reads, so a
+// word is always read for the next row before that row overwrites it.
+//
+// Parameters: D disparities, CW cost width, LW path-cost width (Cmax + P2'max
+// must fit), PW penalty width, MAX_WIDTH, XW column bits, YW row bits.
+// Latency: LATENCY = 3 slots from cost_i to s_o. Throughput: 1 pixel per slot.
+module sgm_path_engine #(
+  parameter int D         = 64,
+  parameter int CW        = 8,
+  parameter int LW        = 9,
+  parameter int PW        = 8,
+  parameter int MAX_WIDTH = 1280,
+  parameter int XW        = 11,
+  parameter int YW        = 11,
+  localparam int SW       = LW + 2,
+  localparam int LATENCY  = 3
+) (
+  input  wire                 clk_i,
+  input  wire                 rst_ni,
+  input  wire                 en_i,
+  // Per-frame configuration (constant while the frame's slots flow).
+  input  wire  [XW-1:0]       width_i,
+  input  wire  [PW-1:0]       p1_i,
+  // P2 table fill (sgm_p2_lut): start with p1_i / p2_i, ready when filled.
+  input  wire                 lut_start_i,
+  input  wire  [PW-1:0]       p2_i,
+  output logic                lut_ready_o,
+  // Slot input: the pixel's costs, position and left-image grays.
+  input  wire  [D*CW-1:0]     cost_i,
+  input  wire  [XW-1:0]       col_i,
+  input  wire signed [YW:0]   row_i,
+  input  wire                 valid_i,
+  input  wire  [7:0]          centre_i,
+  input  wire  [31:0]         nbr_i,     // I(p - r): 0, 45, 90, 135 degrees, 8 bits each
+  // Slot output, LATENCY slots later.
+  output logic [D*SW-1:0]     s_o,
+  output logic [XW-1:0]       col_o,
+  output logic signed [YW:0]  row_o,
+  output logic                valid_o
+);
+
+  localparam int WORD = (D + 1) * LW;  // {min, Lr(D-1) .. Lr(0)}
+  localparam int AW   = $clog2(MAX_WIDTH);
+
+  // ------------------------------------------------------------------ stage A
+  logic [31:0] dI;
+  for (genvar r = 0; r < 4; r++) begin : g_grad
+    wire [7:0] n = nbr_i[r*8 +: 8];
+    assign dI[r*8 +: 8] = centre_i > n ? centre_i - n : n - centre_i;
+  end
+
+  logic [4*PW-1:0] p2r_b;
+  sgm_p2_lut #(.PW(PW), .NPORTS(4)) u_p2_lut (
+    .clk_i   (clk_i),
+    .rst_ni  (rst_ni),
+    .start_i (lut_start_i),
+    .p1_i    (p1_i),
+    .p2_i    (p2_i),
+    .ready_o (lut_ready_o),
+    .en_i    (en_i),
+    .idx_i   (dI),
+    .p2r_o   (p2r_b)
+  );
+
+  logic [D*CW-1:0]    cost_b;
+  logic [XW-1:0]      col_b;
+  logic signed [YW:0] row_b;
+  logic               valid_b;
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      cost_b  <= cost_i;
+      col_b   <= col_i;
+      row_b   <= row_i;
+    end
+  end
+
+  // Slot valid flags: the only registers with a reset.
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      valid_b <= 1'b0;
+      valid_c <= 1'b0;
+      valid_o <= 1'b0;
+    end else if (en_i) begin
+      valid_b <= valid_i;
+      valid_c <= valid_b;
+      valid_o <= valid_c;
+    end
+  end
+
+  // Previous-row memories.
+  wire [AW-1:0] col_next = col_i == width_i - 1'b1 ? '0 : AW'(col_i + 1'b1);
+
+  logic [WORD-1:0] mem45  [0:MAX_WIDTH-1];
+  logic [WORD-1:0] mem90  [0:MAX_WIDTH-1];
+  logic [WORD-1:0] mem135 [0:MAX_WIDTH-1];
+  logic [WORD-1:0] rd45_b, rd45_c, rd90_b, rd135_b;
+
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      rd45_b  <= mem45[AW'(col_i)];
+      rd90_b  <= mem90[AW'(col_i)];
+      rd135_b <= mem135[col_next];
+      rd45_c  <= rd45_b;  // M45[p - 1] at stage B of p
+    end
+  end
+
+  // ------------------------------------------------------------------ stage B
+  wire at_left  = col_b == '0;
+  wire at_right = col_b == width_i - 1'b1;
+  wire at_top   = row_b == '0;
+
+  logic [D*LW-1:0] lr0_q;
+  logic [LW-1:0]   min0_q;
+
+  // Previous-pixel path costs per path: 0 = 0 deg, 1 = 45, 2 = 90, 3 = 135.
+  wire [4*WORD-1:0] prev = {rd135_b, rd90_b, rd45_c, min0_q, lr0_q};
+  wire [3:0]        start = {at_right | at_top, at_top, at_left | at_top, at_left};
+
+  logic [4*D*LW-1:0] lr_b;  // path r, disparity d at lr_b[(r*D+d)*LW +: LW]
+  for (genvar r = 0; r < 4; r++) begin : g_path
+    wire [WORD-1:0] pw      = prev[r*WORD +: WORD];
+    wire [LW-1:0]   min_prv = pw[D*LW +: LW];
+    for (genvar d = 0; d < D; d++) begin : g_pe
+      sgm_path_pe #(.CW(CW), .LW(LW), .PW(PW)) u_pe (
+        .cost_i     (cost_b[d*CW +: CW]),
+        .prev_i     (pw[d*LW +: LW]),
+        .prev_lo_i  (d > 0 ? pw[(d > 0 ? d - 1 : 0)*LW +: LW] : {LW{1'b0}}),
+        .prev_hi_i  (d < D - 1 ? pw[(d < D - 1 ? d + 1 : d)*LW +: LW] : {LW{1'b0}}),
+        .has_lo_i   (d > 0),
+        .has_hi_i   (d < D - 1),
+        .min_prev_i (min_prv),
+        .p1_i       (p1_i),
+        .p2r_i      (p2r_b[r*PW +: PW]),
+        .start_i    (start[r]),
+        .lr_o       (lr_b[(r*D+d)*LW +: LW])
+      );
+    end
+  end
+
+  // The 0 degree recursion: Lr and its minimum registered for the next pixel.
+  logic [LW-1:0] min0_d;
+  sgm_min_tree #(.N(D), .W(LW)) u_min0 (
+    .values_i (lr_b[0 +: D*LW]),
+    .min_o    (min0_d)
+  );
+
+  logic [4*D*LW-1:0]  lr_c;
+  logic [XW-1:0]      col_c;
+  logic signed [YW:0] row_c;
+  logic               valid_c;
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      lr0_q   <= lr_b[0 +: D*LW];
+      min0_q  <= min0_d;
+      lr_c    <= lr_b;
+      col_c   <= col_b;
+      row_c   <= row_b;
+    end
+  end
+
+  // ------------------------------------------------------------------ stage C
+  logic [3*LW-1:0] min_c;  // 45, 90, 135
+  for (genvar r = 1; r < 4; r++) begin : g_min
+    sgm_min_tree #(.N(D), .W(LW)) u_min (
+      .values_i (lr_c[r*D*LW +: D*LW]),
+      .min_o    (min_c[(r-1)*LW +: LW])
+    );
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      mem45[AW'(col_c)]  <= {min_c[0*LW +: LW], lr_c[1*D*LW +: D*LW]};
+      mem90[AW'(col_c)]  <= {min_c[1*LW +: LW], lr_c[2*D*LW +: D*LW]};
+      mem135[AW'(col_c)] <= {min_c[2*LW +: LW], lr_c[3*D*LW +: D*LW]};
+    end
+  end
+
+  logic [D*SW-1:0] s_c;
+  for (genvar d = 0; d < D; d++) begin : g_sum
+    assign s_c[d*SW +: SW] = SW'(lr_c[(0*D+d)*LW +: LW]) + SW'(lr_c[(1*D+d)*LW +: LW]) +
+                             SW'(lr_c[(2*D+d)*LW +: LW]) + SW'(lr_c[(3*D+d)*LW +: LW]);
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      s_o     <= s_c;
+      col_o   <= col_c;
+      row_o   <= row_c;
+    end
+  end
+
+endmodule
+`default_nettype wire
