@@ -1,0 +1,289 @@
+`default_nettype none
+// sgm_stream_ctrl: the AXI4-Stream side of the core. Turns input beats into
+// pipeline slots (docs/rtl.md), generates the flush slots after a frame,
+// latches the per-frame configuration at start of frame, frames the output
+// (tuser on the first pixel, tlast on the last pixel of every line) through a
+// small FIFO, and flags malformed frames.
+//
+// Frame protocol: beat 0 of a frame has tuser = 1, every beat at column W-1
+// has tlast = 1, exactly W x H beats. A beat that breaks it (tuser inside a
+// frame, tlast at another column, no tlast at column W-1) abandons the frame:
+// its remaining slots are padded with zero pixels so that exactly W x H output
+// beats still leave, error_o records why, and input beats are then dropped
+// until the next tuser. A tuser inside a frame is not consumed: it starts the
+// next frame. A frame whose configuration is out of range (width outside
+// MIN_WIDTH .. MAX_WIDTH, height outside 9 .. MAX_HEIGHT) is dropped whole.
+//
+// Configuration is sampled with the tuser beat's handshake and applied when
+// that frame starts; the P2 table is refilled then (lut_start_o) and the
+// frame's first slot follows when lut_ready_i is high. A two-entry input
+// buffer keeps s_tready_o and the pipeline enable en_o free of combinational
+// paths from the stream inputs.
+//
+// Parameters: MAX_WIDTH, MIN_WIDTH (>= max(D, 16)), MAX_HEIGHT, XW/YW column/row
+// bits (rows count on past the frame while flushing: MAX_HEIGHT + flush rows
+// must fit YW bits), PW penalty bits, DW disparity bits (DW <= 15), FIFO_DEPTH.
+// Throughput: one beat per cycle in both directions when the output is ready.
+module sgm_stream_ctrl #(
+  parameter int MAX_WIDTH  = 1280,
+  parameter int MIN_WIDTH  = 64,
+  parameter int MAX_HEIGHT = 1024,
+  parameter int XW         = 11,
+  parameter int YW         = 11,
+  parameter int PW         = 8,
+  parameter int DW         = 10,
+  parameter int FIFO_DEPTH = 4
+) (
+  input  wire                 clk_i,
+  input  wire                 rst_ni,
+  // Input stream: tdata = {right[7:0], left[7:0]}.
+  input  wire  [15:0]         s_tdata_i,
+  input  wire                 s_tuser_i,
+  input  wire                 s_tlast_i,
+  input  wire                 s_tvalid_i,
+  output logic                s_tready_o,
+  // Output stream: tdata = {valid, zeros, disparity[DW-1:0]} (disparity in 1/16 px).
+  output logic [15:0]         m_tdata_o,
+  output logic                m_tuser_o,
+  output logic                m_tlast_o,
+  output logic                m_tvalid_o,
+  input  wire                 m_tready_i,
+  // Run-time configuration, sampled at start of frame.
+  input  wire  [XW-1:0]       cfg_width_i,
+  input  wire  [YW-1:0]       cfg_height_i,
+  input  wire  [PW-1:0]       cfg_p1_i,
+  input  wire  [PW-1:0]       cfg_p2_i,
+  input  wire  [1:0]          cfg_mode_i,
+  input  wire                 cfg_subpixel_i,
+  input  wire                 cfg_lr_en_i,
+  input  wire  [2:0]          cfg_lr_tol_i,
+  input  wire                 cfg_fill_i,
+  input  wire                 cfg_median_i,
+  // The latched configuration, constant while a frame's slots flow.
+  output logic [XW-1:0]       width_o,
+  output logic [YW-1:0]       height_o,
+  output logic [PW-1:0]       p1_o,
+  output logic [PW-1:0]       p2_o,
+  output logic [1:0]          mode_o,
+  output logic                subpixel_o,
+  output logic                lr_en_o,
+  output logic [2:0]          lr_tol_o,
+  output logic                fill_o,
+  output logic                median_o,
+  output logic                lut_start_o,
+  input  wire                 lut_ready_i,
+  // Pipeline slots.
+  output logic                en_o,
+  output logic [7:0]          pix_left_o,
+  output logic [7:0]          pix_right_o,
+  output logic [XW-1:0]       col_o,
+  output logic [YW-1:0]       row_o,
+  // Pipeline result of the current slot: a frame pixel when res_valid_i.
+  input  wire                 res_valid_i,
+  input  wire  [DW-1:0]       res_disp_i,
+  input  wire                 res_ok_i,      // the pixel's validity flag
+  // Status.
+  output logic                busy_o,        // a frame is in flight
+  output logic                frame_done_o,  // one-cycle pulse: last output beat of a frame queued
+  output logic [3:0]          error_o        // sticky per frame, cleared at the next start of frame:
+                                             // [0] tlast early, [1] tlast missing, [2] tuser inside
+                                             // a frame, [3] configuration out of range
+);
+
+  typedef enum logic [2:0] {IDLE, FILL, RUN, PAD, FLUSH} state_e;
+  state_e state_q;
+
+  // ---------------------------------------------------------------- input buffer
+  // Two entries, so that s_tready_o and every enable below come from registers.
+  logic [17:0] ibuf_q [0:1];  // {tuser, tlast, tdata}
+  logic [1:0]  in_count_q;
+  logic        in_rd_q, in_wr_q;
+  wire         in_push  = s_tvalid_i && s_tready_o;
+  wire         head_ok  = in_count_q != 2'd0;
+  wire [17:0]  head     = ibuf_q[in_rd_q];
+  wire         head_sof = head_ok && head[17];
+  wire         head_eol = head[16];
+  logic        in_pop;
+  assign s_tready_o = in_count_q != 2'd2;
+
+  // Configuration at the start-of-frame handshake, applied when that frame starts.
+  logic [XW-1:0] pend_width_q;
+  logic [YW-1:0] pend_height_q;
+  logic [PW-1:0] pend_p1_q, pend_p2_q;
+  logic [1:0]    pend_mode_q;
+  logic          pend_subpixel_q, pend_lr_en_q, pend_fill_q, pend_median_q;
+  logic [2:0]    pend_lr_tol_q;
+  always_ff @(posedge clk_i) begin
+    if (in_push && s_tuser_i) begin
+      pend_width_q    <= cfg_width_i;
+      pend_height_q   <= cfg_height_i;
+      pend_p1_q       <= cfg_p1_i;
+      pend_p2_q       <= cfg_p2_i;
+      pend_mode_q     <= cfg_mode_i;
+      pend_subpixel_q <= cfg_subpixel_i;
+      pend_lr_en_q    <= cfg_lr_en_i;
+      pend_lr_tol_q   <= cfg_lr_tol_i;
+      pend_fill_q     <= cfg_fill_i;
+      pend_median_q   <= cfg_median_i;
+    end
+  end
+  wire pend_ok = pend_width_q >= XW'(MIN_WIDTH) && pend_width_q <= XW'(MAX_WIDTH) &&
+                 pend_height_q >= YW'(9) && pend_height_q <= YW'(MAX_HEIGHT);
+
+  // ---------------------------------------------------------------- output FIFO
+  localparam int FAW = $clog2(FIFO_DEPTH);
+  logic [17:0]    fifo_q [0:FIFO_DEPTH-1];  // {tuser, tlast, tdata}
+  logic [FAW:0]   count_q;
+  logic [FAW-1:0] rd_q, wr_q;
+  wire room = count_q < (FAW+1)'(FIFO_DEPTH);
+  wire pop  = m_tvalid_o && m_tready_i;
+
+  // ---------------------------------------------------------------- slots
+  logic [XW-1:0] x_q;          // position of the next slot
+  logic [YW-1:0] y_q;
+  logic [XW-1:0] out_x_q;      // position of the next output pixel
+  logic [YW-1:0] out_y_q;
+
+  wire first_px = x_q == '0 && y_q == '0;
+  wire last_col = x_q == width_o - 1'b1;
+  wire last_px  = last_col && y_q == height_o - 1'b1;
+
+  // RUN takes the head beat as the next slot, except a tuser beat inside the
+  // frame, which is left for the next frame.
+  wire err_sof  = state_q == RUN && head_sof && !first_px;
+  wire take     = state_q == RUN && head_ok && room && !err_sof;
+  wire gen_slot = (state_q == PAD || state_q == FLUSH) && room;
+  // IDLE drops every beat but a start of frame with a valid configuration.
+  wire drop     = state_q == IDLE && head_ok && !(head_sof && pend_ok);
+  assign in_pop = take || drop;
+
+  assign en_o        = take || gen_slot;
+  assign pix_left_o  = take ? head[7:0] : 8'd0;
+  assign pix_right_o = take ? head[15:8] : 8'd0;
+  assign col_o       = x_q;
+  assign row_o       = y_q;
+  assign busy_o      = state_q != IDLE;
+
+  // Framing errors of the beat being taken.
+  wire err_early   = take && head_eol && !last_col;
+  wire err_missing = take && !head_eol && last_col;
+
+  wire push     = en_o && res_valid_i;
+  wire out_last = out_x_q == width_o - 1'b1 && out_y_q == height_o - 1'b1;
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      state_q      <= IDLE;
+      lut_start_o  <= 1'b0;
+      frame_done_o <= 1'b0;
+      error_o      <= '0;
+    end else begin
+      lut_start_o  <= 1'b0;
+      frame_done_o <= 1'b0;
+      case (state_q)
+        IDLE: if (head_sof) begin
+          error_o <= {~pend_ok, 3'b000};
+          if (pend_ok) begin
+            width_o     <= pend_width_q;
+            height_o    <= pend_height_q;
+            p1_o        <= pend_p1_q;
+            p2_o        <= pend_p2_q;
+            mode_o      <= pend_mode_q;
+            subpixel_o  <= pend_subpixel_q;
+            lr_en_o     <= pend_lr_en_q;
+            lr_tol_o    <= pend_lr_tol_q;
+            fill_o      <= pend_fill_q;
+            median_o    <= pend_median_q;
+            lut_start_o <= 1'b1;
+            state_q     <= FILL;
+          end
+        end
+        FILL: if (lut_ready_i && !lut_start_o) state_q <= RUN;
+        RUN: begin
+          if (err_sof) begin
+            error_o[2] <= 1'b1;
+            state_q    <= PAD;
+          end else if (take) begin
+            if (err_early) error_o[0] <= 1'b1;
+            if (err_missing) error_o[1] <= 1'b1;
+            if (last_px) state_q <= FLUSH;
+            else if (err_early || err_missing) state_q <= PAD;
+          end
+        end
+        PAD: if (gen_slot && last_px) state_q <= FLUSH;
+        FLUSH: if (push && out_last) begin
+          state_q      <= IDLE;
+          frame_done_o <= 1'b1;
+        end
+        default: state_q <= IDLE;
+      endcase
+    end
+  end
+
+  // Input buffer.
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      in_count_q <= '0;
+      in_rd_q    <= 1'b0;
+      in_wr_q    <= 1'b0;
+    end else begin
+      if (in_push) begin
+        ibuf_q[in_wr_q] <= {s_tuser_i, s_tlast_i, s_tdata_i};
+        in_wr_q         <= ~in_wr_q;
+      end
+      if (in_pop) in_rd_q <= ~in_rd_q;
+      in_count_q <= in_count_q + (in_push ? 2'd1 : 2'd0) - (in_pop ? 2'd1 : 2'd0);
+    end
+  end
+
+  // Slot position: restarts at the frame's first slot, counts on through the flush rows.
+  always_ff @(posedge clk_i) begin
+    if (state_q == IDLE) begin
+      x_q     <= '0;
+      y_q     <= '0;
+      out_x_q <= '0;
+      out_y_q <= '0;
+    end else begin
+      if (en_o) begin
+        if (last_col) begin
+          x_q <= '0;
+          y_q <= y_q + 1'b1;
+        end else begin
+          x_q <= x_q + 1'b1;
+        end
+      end
+      if (push) begin
+        if (out_x_q == width_o - 1'b1) begin
+          out_x_q <= '0;
+          out_y_q <= out_y_q + 1'b1;
+        end else begin
+          out_x_q <= out_x_q + 1'b1;
+        end
+      end
+    end
+  end
+
+  // Output FIFO.
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      count_q <= '0;
+      rd_q    <= '0;
+      wr_q    <= '0;
+    end else begin
+      if (push) begin
+        fifo_q[wr_q] <= {out_x_q == '0 && out_y_q == '0, out_x_q == width_o - 1'b1, res_ok_i,
+                         {(15 - DW){1'b0}}, res_disp_i};
+        wr_q         <= wr_q == FAW'(FIFO_DEPTH - 1) ? '0 : wr_q + 1'b1;
+      end
+      if (pop) rd_q <= rd_q == FAW'(FIFO_DEPTH - 1) ? '0 : rd_q + 1'b1;
+      count_q <= count_q + (FAW+1)'(push) - (FAW+1)'(pop);
+    end
+  end
+
+  assign m_tvalid_o = count_q != '0;
+  assign m_tuser_o  = fifo_q[rd_q][17];
+  assign m_tlast_o  = fifo_q[rd_q][16];
+  assign m_tdata_o  = fifo_q[rd_q][15:0];
+
+endmodule
+`default_nettype wire

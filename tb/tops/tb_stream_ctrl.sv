@@ -1,0 +1,84 @@
+`default_nettype none
+// tb_stream_ctrl: sgm_stream_ctrl around a stand-in pipeline, for the stream
+// protocol tests. The stand-in has a fixed latency of LAT slots; a slot at
+// (col, row) with row < height is a frame pixel and comes out as
+// disparity = {right, left} (low DW bits), validity flag = left[0]. Its P2
+// table is "filled" FILL_CYCLES cycles after lut_start.
+module tb_stream_ctrl #(
+  parameter int LAT         = 37,
+  parameter int FILL_CYCLES = 20,
+  parameter int XW          = 8,
+  parameter int YW          = 8,
+  parameter int DW          = 12
+) (
+  input  wire         clk_i,
+  input  wire         rst_ni,
+  input  wire  [15:0] s_tdata_i,
+  input  wire         s_tuser_i,
+  input  wire         s_tlast_i,
+  input  wire         s_tvalid_i,
+  output logic        s_tready_o,
+  output logic [15:0] m_tdata_o,
+  output logic        m_tuser_o,
+  output logic        m_tlast_o,
+  output logic        m_tvalid_o,
+  input  wire         m_tready_i,
+  input  wire [XW-1:0] cfg_width_i,
+  input  wire [YW-1:0] cfg_height_i,
+  output logic        busy_o,
+  output logic        frame_done_o,
+  output logic [3:0]  error_o,
+  output logic        en_o
+);
+
+  logic [XW-1:0] width;
+  logic [YW-1:0] height;
+  logic          lut_start;
+  logic [7:0]    pix_l, pix_r;
+  logic [XW-1:0] col;
+  logic [YW-1:0] row;
+  logic [7:0]    unused_p1, unused_p2;
+  logic [1:0]    unused_mode;
+  logic [2:0]    unused_tol;
+  logic          unused_sub, unused_lr, unused_fill, unused_med;
+
+  // Stand-in P2 table: ready FILL_CYCLES cycles after a start.
+  logic [7:0] fill_q;
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) fill_q <= '0;
+    else if (lut_start) fill_q <= 8'(FILL_CYCLES);
+    else if (fill_q != '0) fill_q <= fill_q - 1'b1;
+  end
+
+  // Stand-in pipeline: LAT slots of delay.
+  localparam int SLOT = 1 + DW + 1;  // {frame pixel, disparity, flag}
+  logic [LAT*SLOT-1:0] pipe_q;
+  wire [SLOT-1:0] slot_in = {row < height, DW'({pix_r, pix_l}), pix_l[0]};
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) pipe_q <= '0;
+    else if (en_o) pipe_q <= {pipe_q[(LAT-1)*SLOT-1:0], slot_in};
+  end
+  wire [SLOT-1:0] slot_out = pipe_q[(LAT-1)*SLOT +: SLOT];
+
+  sgm_stream_ctrl #(
+    .MAX_WIDTH(200), .MIN_WIDTH(16), .MAX_HEIGHT(200), .XW(XW), .YW(YW), .DW(DW), .FIFO_DEPTH(4)
+  ) u_ctrl (
+    .clk_i, .rst_ni,
+    .s_tdata_i, .s_tuser_i, .s_tlast_i, .s_tvalid_i, .s_tready_o,
+    .m_tdata_o, .m_tuser_o, .m_tlast_o, .m_tvalid_o, .m_tready_i,
+    .cfg_width_i, .cfg_height_i,
+    .cfg_p1_i(8'd20), .cfg_p2_i(8'd200), .cfg_mode_i(2'd1), .cfg_subpixel_i(1'b1), .cfg_lr_en_i(1'b1),
+    .cfg_lr_tol_i(3'd1), .cfg_fill_i(1'b1), .cfg_median_i(1'b1),
+    .width_o(width), .height_o(height), .p1_o(unused_p1), .p2_o(unused_p2), .mode_o(unused_mode),
+    .subpixel_o(unused_sub), .lr_en_o(unused_lr), .lr_tol_o(unused_tol), .fill_o(unused_fill),
+    .median_o(unused_med), .lut_start_o(lut_start), .lut_ready_i(fill_q == '0),
+    .en_o, .pix_left_o(pix_l), .pix_right_o(pix_r), .col_o(col), .row_o(row),
+    .res_valid_i(slot_out[SLOT-1]), .res_disp_i(slot_out[1 +: DW]), .res_ok_i(slot_out[0]),
+    .busy_o, .frame_done_o, .error_o
+  );
+
+  wire unused = &{1'b0, width, col, unused_p1, unused_p2, unused_mode, unused_tol, unused_sub, unused_lr,
+                  unused_fill, unused_med};
+
+endmodule
+`default_nettype wire
