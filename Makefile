@@ -109,6 +109,7 @@ $(BIN)/rtl-$(1): tests/rtl/test_$(2).cpp $(RTL_SRC) $(RTL_TOPS) $(TB_HDR) $(EVAL
 endef
 
 $(eval $(call rtl_test,p2-lut,sgm_p2_lut,))
+$(eval $(call rtl_test,stream-ctrl,tb_stream_ctrl,))
 $(eval $(call rtl_test,path-engine-d16,sgm_path_engine,-GD=16 -GMAX_WIDTH=128 -GXW=8 -GYW=8 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,path-engine-d64,sgm_path_engine,-GD=64 -GMAX_WIDTH=512 -GXW=10 -GYW=10 -CFLAGS -DSGM_D=64))
 
