@@ -45,14 +45,14 @@ module sgm_path_engine #(
   // Slot input: the pixel's costs, position and left-image grays.
   input  wire  [D*CW-1:0]     cost_i,
   input  wire  [XW-1:0]       col_i,
-  input  wire signed [YW:0]   row_i,
+  input  wire  [YW-1:0]       row_i,    // rows outside the frame carry no pixel (valid_i = 0)
   input  wire                 valid_i,
   input  wire  [7:0]          centre_i,
   input  wire  [31:0]         nbr_i,     // I(p - r): 0, 45, 90, 135 degrees, 8 bits each
   // Slot output, LATENCY slots later.
   output logic [D*SW-1:0]     s_o,
   output logic [XW-1:0]       col_o,
-  output logic signed [YW:0]  row_o,
+  output logic [YW-1:0]       row_o,
   output logic                valid_o
 );
 
@@ -81,7 +81,7 @@ module sgm_path_engine #(
 
   logic [D*CW-1:0]    cost_b;
   logic [XW-1:0]      col_b;
-  logic signed [YW:0] row_b;
+  logic [YW-1:0]      row_b;
   logic               valid_b;
   always_ff @(posedge clk_i) begin
     if (en_i) begin
@@ -163,7 +163,7 @@ module sgm_path_engine #(
 
   logic [4*D*LW-1:0]  lr_c;
   logic [XW-1:0]      col_c;
-  logic signed [YW:0] row_c;
+  logic [YW-1:0]      row_c;
   logic               valid_c;
   always_ff @(posedge clk_i) begin
     if (en_i) begin

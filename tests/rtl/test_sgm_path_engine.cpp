@@ -20,6 +20,9 @@
 #ifndef SGM_D
 #define SGM_D 16
 #endif
+#ifndef SGM_YW
+#define SGM_YW 8
+#endif
 
 namespace {
 
@@ -86,7 +89,7 @@ class PathEngine {
       for (int d = 0; d < kD; ++d)
         setBits(top_->cost_i, d * kCostBits, kCostBits, inside ? f.cost.at(col, row)[d] : 0);
       top_->col_i = col;
-      top_->row_i = uint32_t(row) & 0xfff;
+      top_->row_i = uint32_t(row) & ((1u << SGM_YW) - 1);  // negative rows wrap; they carry valid_i = 0
       top_->valid_i = inside;
       uint32_t nbr = 0;
       if (inside) {
