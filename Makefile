@@ -102,8 +102,8 @@ RTL_TEST_BINS += $(BIN)/rtl-$(1)
 $(BIN)/rtl-$(1): tests/rtl/test_$(2).cpp $(RTL_SRC) $(RTL_TOPS) $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
 	@mkdir -p $(BIN) $(BUILD)/verilator
 	$(VERILATOR) --cc --exe --build -j $(JOBS) -Wall $(VLT) --x-assign unique --x-initial unique $(VL_TRACE) \
-	  -Irtl -Itb/tops --top-module $(2) $(3) -Mdir $(BUILD)/verilator/$(1) -o $(abspath $(BIN))/rtl-$(1) \
-	  $(RTL_SRC) $(RTL_TOPS) $(abspath tests/rtl/test_$(2).cpp) $(abspath $(EVAL_OBJ)) $(abspath $(GOLDEN_LIB)) \
+	  -y rtl -y tb/tops --top-module $(2) $(3) -Mdir $(BUILD)/verilator/$(1) -o $(abspath $(BIN))/rtl-$(1) \
+	  $(wildcard rtl/$(2).sv tb/tops/$(2).sv) $(abspath tests/rtl/test_$(2).cpp) $(abspath $(EVAL_OBJ)) $(abspath $(GOLDEN_LIB)) \
 	  -CFLAGS "$(VL_CFLAGS)" -LDFLAGS "$(VL_LDFLAGS)" > $(BUILD)/verilator-$(1).log || \
 	  { tail -30 $(BUILD)/verilator-$(1).log; exit 1; }
 endef
@@ -111,7 +111,7 @@ endef
 $(eval $(call rtl_test,p2-lut,sgm_p2_lut,))
 $(eval $(call rtl_test,stream-ctrl,tb_stream_ctrl,))
 $(eval $(call rtl_test,path-engine-d16,sgm_path_engine,-GD=16 -GMAX_WIDTH=128 -GXW=8 -GYW=8 -CFLAGS -DSGM_D=16))
-$(eval $(call rtl_test,path-engine-d64,sgm_path_engine,-GD=64 -GMAX_WIDTH=512 -GXW=10 -GYW=10 -CFLAGS -DSGM_D=64))
+$(eval $(call rtl_test,path-engine-d64,sgm_path_engine,-GD=64 -GMAX_WIDTH=512 -GXW=10 -GYW=10 -CFLAGS -DSGM_D=64 -CFLAGS -DSGM_YW=10))
 
 rtl-tests: $(RTL_TEST_BINS)
 	@for t in $(RTL_TEST_BINS); do echo "== $$t"; SGM_DATA="$(DATA)" $$t || exit 1; done
