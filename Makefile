@@ -62,19 +62,31 @@ $(BIN)/sgm-eval: $(OBJ)/tools/sgm_eval.o $(EVAL_OBJ) $(GOLDEN_LIB)
 	@mkdir -p $(dir $@)
 	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDLIBS)
 
-$(BIN)/sgm-sim: $(OBJ)/tb/sim_main.o $(EVAL_OBJ) $(GOLDEN_LIB)
-	@mkdir -p $(dir $@)
-	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDLIBS)
-
 golden: $(BIN)/sgm-golden $(BIN)/sgm-eval
 
 # ---------------------------------------------------------------- simulation
-# make sim [LEFT=... RIGHT=... [GT=...] [GT_SCALE=...]] [OUT=build/sim] [D=64]
-OUT ?= $(BUILD)/sim
-SIM_ARGS = --out $(OUT) $(if $(LEFT),--left $(LEFT)) $(if $(RIGHT),--right $(RIGHT)) \
-           $(if $(GT),--gt $(GT)) $(if $(GT_SCALE),--gt-scale $(GT_SCALE)) $(if $(D),--d $(D))
-sim: $(BIN)/sgm-sim
-	$(BIN)/sgm-sim $(SIM_ARGS)
+# make sim [LEFT=... RIGHT=... [GT=...] [GT_SCALE=...]] [OUT=build/sim] [D=64] [MAX_WIDTH=1280]
+#          [STALL=0.0] [SEED=1] [FRAMES=1] [TRACE=1]
+OUT       ?= $(BUILD)/sim
+D         ?= 64
+MAX_WIDTH ?= 1280
+SIM_BIN    = $(BIN)/sgm-sim-d$(D)-w$(MAX_WIDTH)$(if $(filter 1,$(TRACE)),-trace)
+SIM_ARGS   = --out $(OUT) --d $(D) $(if $(LEFT),--left $(LEFT)) $(if $(RIGHT),--right $(RIGHT)) \
+             $(if $(GT),--gt $(GT)) $(if $(GT_SCALE),--gt-scale $(GT_SCALE)) $(if $(STALL),--stall $(STALL)) \
+             $(if $(SEED),--seed $(SEED)) $(if $(FRAMES),--frames $(FRAMES))
+SIM_VFLAGS = -O3 --x-assign fast --x-initial fast
+
+$(BIN)/sgm-sim-d%: tb/sim_main.cpp $(RTL_SRC) $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
+	@mkdir -p $(BIN) $(BUILD)/verilator
+	@echo "verilating sgm_top (D=$(D), MAX_WIDTH=$(MAX_WIDTH)) for $@"
+	@$(VERILATOR) --cc --exe --build -j $(JOBS) -Wall $(VLT) $(SIM_VFLAGS) $(VL_TRACE) -y rtl --top-module sgm_top \
+	  -GD=$(D) -GMAX_WIDTH=$(MAX_WIDTH) -Mdir $(BUILD)/verilator/$(notdir $@) -o $(abspath $@) \
+	  rtl/sgm_top.sv $(abspath tb/sim_main.cpp) $(abspath $(EVAL_OBJ)) $(abspath $(GOLDEN_LIB)) \
+	  -CFLAGS "$(VL_CFLAGS) -DSGM_D=$(D) -DSGM_MAX_WIDTH=$(MAX_WIDTH)" -LDFLAGS "$(OPENCV_LIBS) -pthread" \
+	  > $(BUILD)/verilator-$(notdir $@).log || { tail -30 $(BUILD)/verilator-$(notdir $@).log; exit 1; }
+
+sim: $(SIM_BIN)
+	$(SIM_BIN) $(SIM_ARGS)
 
 eval: golden
 	$(BIN)/sgm-eval table --data "$(DATA)" --out $(BUILD)/eval
@@ -127,7 +139,7 @@ $(BIN)/unit-tests: $(TEST_OBJ) $(EVAL_OBJ) $(GOLDEN_LIB)
 	@mkdir -p $(dir $@)
 	$(CXX) $(CXXFLAGS) -o $@ $^ -lgtest -lgtest_main $(LDLIBS)
 
-unit-test: $(BIN)/unit-tests golden $(BIN)/sgm-sim
+unit-test: $(BIN)/unit-tests golden
 	SGM_DATA="$(DATA)" SGM_BIN="$(abspath $(BIN))" $(BIN)/unit-tests
 
 test: lint unit-test rtl-tests

@@ -21,6 +21,9 @@ namespace sgm::tb {
 struct FrameInput {
   cv::Mat left, right;  // 8-bit gray, same size
   Params params;
+  // When not empty, sent instead of the frame's well-formed beats (malformed
+  // frames); the core still owes width x height output beats.
+  std::vector<Beat> rawBeats = {};
 };
 
 struct FrameOutput {
@@ -79,14 +82,17 @@ class CoreHarness {
     size_t inputBeats = 0, outputBeats = 0;
     for (const FrameInput& f : frames) {
       firstBeat.push_back(inputBeats);
-      source_.push(frameBeats(f.left.data, f.right.data, f.left.cols, f.left.rows, f.left.step, f.right.step));
-      inputBeats += f.left.total();
+      const std::vector<Beat> beats = f.rawBeats.empty() ? frameBeats(f.left.data, f.right.data, f.left.cols,
+                                                                      f.left.rows, f.left.step, f.right.step)
+                                                         : f.rawBeats;
+      source_.push(beats);
+      inputBeats += beats.size();
       outputBeats += f.left.total();
     }
     std::vector<FrameOutput> out(frames.size());
     std::vector<size_t> outFirst;
     for (size_t k = 0, n = 0; k < frames.size(); n += frames[k].left.total(), ++k) outFirst.push_back(n);
-    size_t frame = 0, done = 0;
+    size_t frame = 0, done = 0, doneFrames = 0;
     present(frames[0].params, frames[0].left.size());
     const size_t sinkStart = sink_.beats().size();
     uint64_t guard = 0;
@@ -107,7 +113,7 @@ class CoreHarness {
           if (i == firstBeat[k]) out[k].firstInCycle = top_.cycles();
       }
       top_.tick();
-      if (top_->frame_done_o && doneFrames_ < frames.size()) out[doneFrames_++].errors = top_->error_o;
+      if (top_->frame_done_o && doneFrames < frames.size()) out[doneFrames++].errors = top_->error_o;
       while (frame + 1 < frames.size() && source_.accepted() > firstBeat[frame]) {
         ++frame;
         present(frames[frame].params, frames[frame].left.size());
@@ -154,7 +160,6 @@ class CoreHarness {
   VerilatedTop<Model> top_;
   AxisSource<Model> source_;
   AxisSink<Model> sink_;
-  size_t doneFrames_ = 0;
 };
 
 }  // namespace sgm::tb

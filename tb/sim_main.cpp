@@ -1,6 +1,9 @@
-// sgm-sim: runs the core on a stereo pair and writes disparity PNGs, a
-// side-by-side picture and report.json. Until the RTL core lands (issue 3)
-// the engine is the golden model only, and the report says so.
+// sgm-sim: streams a stereo pair through the verilated sgm_top, runs the
+// golden model on the same pair in the same process, compares every output
+// pixel, and writes disparity PNGs, a side-by-side picture and report.json.
+#include "Vsgm_top.h"
+#include "core_harness.hpp"
+
 #include "eval_lib.hpp"
 #include "report_json.hpp"
 
@@ -12,15 +15,26 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <unistd.h>
+
+#ifndef SGM_D
+#define SGM_D 64
+#endif
+#ifndef SGM_MAX_WIDTH
+#define SGM_MAX_WIDTH 1280
+#endif
 
 using namespace sgm;
 
 namespace {
 
 const char* kUsage =
-    "usage: sgm-sim [--left L --right R [--gt G] [--gt-scale S]] [--out DIR] [pipeline options]\n"
+    "usage: sgm-sim [--left L --right R [--gt G] [--gt-scale S]] [--out DIR] [--stall P] [--seed N]\n"
+    "               [--frames N] [pipeline options]\n"
     "Without --left/--right runs the default scene: the Middlebury Aloe pair shipped by\n"
-    "opencv-doc, scaled by 1/4 so its disparities fit D = 64.\n";
+    "opencv-doc, scaled by 1/4 so its disparities fit D = 64. --stall P idles the input and\n"
+    "stalls the output with probability P per cycle; --frames N sends the pair N times back\n"
+    "to back. TRACE=1 (at build and run time) writes build/trace/sgm_top.fst.\n";
 
 const char* kAloeDir = "/usr/share/doc/opencv-doc/examples/data";
 
@@ -29,7 +43,7 @@ const char* kAloeDir = "/usr/share/doc/opencv-doc/examples/data";
 int main(int argc, char** argv) {
   try {
     auto options = CliArgs::pipelineOptions();
-    options.insert({"left", "right", "gt", "gt-scale", "out"});
+    options.insert({"left", "right", "gt", "gt-scale", "out", "stall", "seed", "frames"});
     const CliArgs args(argc, argv, options, {"help"});
     if (args.has("help")) {
       std::cout << kUsage;
@@ -37,8 +51,19 @@ int main(int argc, char** argv) {
     }
     if (!args.positional().empty()) throw Error("unexpected argument '" + args.positional()[0] + "' (see --help)");
     if (args.has("left") != args.has("right")) throw Error("give both --left and --right, or neither");
-    const Params params = args.pipelineParams();
+    Params base;
+    base.disparities = SGM_D;
+    const Params params = args.pipelineParams(base);
+    if (params.disparities != SGM_D)
+      throw Error("this simulator is built for D=" + std::to_string(SGM_D) + " (make sim D=" +
+                  std::to_string(params.disparities) + " builds another)");
+    if (!isHardwareMode(params.mode)) throw Error("cost mode " + std::string(costModeName(params.mode)) + " is software only");
+    if (params.p2 > 255) throw Error("P2'=" + std::to_string(params.p2) + " exceeds the core's 8-bit input");
+    if (params.lrTolerance > 7) throw Error("LR tolerance " + std::to_string(params.lrTolerance) + " exceeds the core's 3-bit input");
     const std::string out = args.text("out", "build/sim");
+    const double stall = args.real("stall", 0.0, 0.0, 0.95);
+    const uint32_t seed = uint32_t(args.integer("seed", 1, 0, 0xffffffffL));
+    const int frames = int(args.integer("frames", 1, 1, 100));
 
     eval::Scene scene;
     if (args.has("left")) {
@@ -52,46 +77,92 @@ int main(int argc, char** argv) {
       scene.name = "aloe";
     }
     checkInput(scene.left, scene.right, params);
+    const int w = scene.left.cols, h = scene.left.rows;
+    if (w > SGM_MAX_WIDTH) throw Error("width " + std::to_string(w) + " exceeds MAX_WIDTH=" + std::to_string(SGM_MAX_WIDTH));
+    if (w < std::max(SGM_D, 16)) throw Error("width " + std::to_string(w) + " is below the core's minimum " + std::to_string(std::max(SGM_D, 16)));
 
-    const auto start = std::chrono::steady_clock::now();
     const DisparityMap golden = runPipeline(scene.left, scene.right, params);
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+
+    tb::CoreHarness<Vsgm_top> core("sgm_top", seed, tb::Stalls{stall, stall});
+    std::vector<tb::FrameInput> inputs(frames, tb::FrameInput{scene.left, scene.right, params});
+    const auto start = std::chrono::steady_clock::now();
+    const bool tty = isatty(fileno(stderr));
+    const std::vector<tb::FrameOutput> outputs = core.run(inputs, [&](uint64_t done, uint64_t total) {
+      if (tty) std::fprintf(stderr, "\rsgm-sim: %3d%% of %llu output pixels", int(100 * done / total), (unsigned long long)total);
+    });
+    if (tty) std::fprintf(stderr, "\r%60s\r", "");
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    long mismatches = 0;
+    std::string firstMismatch;
+    for (int k = 0; k < frames; ++k) {
+      long m = 0;
+      const std::string text = tb::compareMaps(golden, outputs[k].map, "sgm_top output", &m);
+      if (firstMismatch.empty() && !text.empty()) firstMismatch = "frame " + std::to_string(k) + ": " + text;
+      mismatches += m;
+    }
+    const DisparityMap& rtl = outputs[0].map;
+    const uint64_t cycles = outputs[0].lastOutCycle - outputs[0].firstInCycle + 1;
+    const uint64_t allCycles = outputs.back().lastOutCycle - outputs[0].firstInCycle + 1;
+    const long pixels = long(w) * h;
 
     std::filesystem::create_directories(out);
     const float maxD = float(params.disparities - 1);
     std::vector<std::pair<std::string, cv::Mat>> pictures = {
-        {out + "/disparity16.png", encodeDisparity16(golden)},
-        {out + "/disparity_color.png", encodeDisparityColor(golden, params.disparities)}};
+        {out + "/disparity16.png", encodeDisparity16(rtl)},
+        {out + "/disparity8.png", encodeDisparity8(rtl, params.disparities)},
+        {out + "/disparity_color.png", encodeDisparityColor(rtl, params.disparities)}};
     if (scene.hasGroundTruth())
-      pictures.push_back({out + "/sidebyside.png", eval::sideBySide(scene, eval::toFloat(golden), maxD)});
+      pictures.push_back({out + "/sidebyside.png", eval::sideBySide(scene, eval::toFloat(rtl), maxD)});
     writePngs(pictures);
 
     eval::JsonWriter json;
     json.beginObject();
-    json.key("engine").string("golden");
-    json.key("rtl").boolean(false);
     json.key("scene").string(scene.name);
-    json.key("width").integer(scene.left.cols);
-    json.key("height").integer(scene.left.rows);
+    json.key("bit_exact").boolean(mismatches == 0);
+    json.key("mismatches").integer(mismatches);
+    json.key("first_mismatch").string(firstMismatch);
+    json.key("pixels").integer(pixels * frames);
+    json.key("frames").integer(frames);
+    json.key("width").integer(w);
+    json.key("height").integer(h);
     json.key("disparities").integer(params.disparities);
     json.key("mode").string(costModeName(params.mode));
-    json.key("frames").integer(1);
-    json.key("pixels").integer(long(scene.left.total()));
-    json.key("golden_ms").real(ms);
+    json.key("stall").real(stall);
+    json.key("seed").integer(seed);
+    json.key("cycles").integer(long(cycles));
+    json.key("cycles_per_pixel").real(double(cycles) / double(pixels));
+    json.key("latency_cycles").integer(long(cycles) - pixels);
+    json.key("sustained_cycles_per_pixel").real(double(allCycles) / double(pixels * frames));
+    json.key("sim_cycles_per_second").real(double(core.top().cycles()) / seconds);
+    json.key("sim_seconds").real(seconds);
+    json.key("frame_errors").integer(long(outputs[0].errors));
     if (scene.hasGroundTruth()) {
-      const eval::ErrorFigures f = eval::evaluate(eval::toFloat(golden), scene);
+      const eval::ErrorFigures f = eval::evaluate(eval::toFloat(rtl), scene);
       json.key("err_nonocc").real(f.errNonocc);
       json.key("err_all").real(f.errAll);
+      json.key("err_disc").real(f.errDisc);
       json.key("density").real(f.density);
       json.key("err_nonocc_valid").real(f.errNonoccValid);
-      std::printf("sgm-sim: %s %dx%d D=%d: bad-1.0 nonocc %.2f%%, all %.2f%%, density %.2f%%\n", scene.name.c_str(),
-                  scene.left.cols, scene.left.rows, params.disparities, f.errNonocc, f.errAll, f.density);
     }
     json.endObject();
     eval::writeTextFile(out + "/report.json", json.str());
-    std::printf("sgm-sim: RTL core not built yet (issue 3): golden model only, %.1f ms; outputs in %s/\n", ms,
-                out.c_str());
-    return 0;
+
+    std::printf("sgm-sim: %s %dx%d D=%d mode=%s, %d frame(s), stall %.2f\n", scene.name.c_str(), w, h,
+                params.disparities, costModeName(params.mode), frames, stall);
+    std::printf("sgm-sim: bit-exact %s: %.2f%% of %ld pixels match the golden model%s%s\n", mismatches ? "NO" : "yes",
+                100.0 * double(pixels * frames - mismatches) / double(pixels * frames), pixels * frames,
+                firstMismatch.empty() ? "" : "; ", firstMismatch.c_str());
+    std::printf("sgm-sim: %llu cycles for the frame, %.4f cycles/pixel (latency %lld cycles), %.0f simulated cycles/s\n",
+                (unsigned long long)cycles, double(cycles) / double(pixels), (long long)(cycles) - pixels,
+                double(core.top().cycles()) / seconds);
+    if (scene.hasGroundTruth()) {
+      const eval::ErrorFigures f = eval::evaluate(eval::toFloat(rtl), scene);
+      std::printf("sgm-sim: bad-1.0 nonocc %.2f%%, all %.2f%%, density %.2f%%\n", f.errNonocc, f.errAll, f.density);
+    }
+    std::printf("sgm-sim: wrote %s/{disparity16,disparity8,disparity_color%s}.png and report.json\n", out.c_str(),
+                scene.hasGroundTruth() ? ",sidebyside" : "");
+    return mismatches == 0 ? 0 : 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "sgm-sim: error: %s\n", e.what());
     return 2;

@@ -1,0 +1,328 @@
+`default_nettype none
+// sgm_top: Semi-Global Matching stereo core with the refined rank cost of
+// Yao & Cheng, one pixel per clock (docs/algorithm.md defines every bit,
+// docs/rtl.md the architecture).
+//
+//   s_axis (left + right gray) -> sgm_stream_ctrl -> 2 x sgm_census_unit
+//   -> sgm_cost_volume (D PEs) -> sgm_path_engine (4 paths, S) -> sgm_wta
+//   -> sgm_lr_check -> sgm_hole_fill -> sgm_median5x5 -> sgm_stream_ctrl -> m_axis
+//
+// Parameters: D disparities (16, 32, 64, 128), MAX_WIDTH, MAX_HEIGHT.
+// Frame constraints: max(D, 16) <= width <= MAX_WIDTH, 9 <= height <= MAX_HEIGHT
+// (frames outside are dropped and flagged in error_o[3]).
+// Throughput: one pixel per clock while a frame streams; after its last input
+// pixel a frame needs about 8 more lines of flush (input stalled) and, at its
+// start, the P2 table fill (about 2 x 256 cycles).
+// Latency: about 8 lines + D + a few tens of pixels from a pixel in to its
+// disparity out.
+module sgm_top #(
+  parameter int D          = 64,
+  parameter int MAX_WIDTH  = 1280,
+  parameter int MAX_HEIGHT = 1024,
+  localparam int XW        = $clog2(MAX_WIDTH + 1),
+  localparam int YW        = $clog2(MAX_HEIGHT + 16),
+  localparam int LD        = $clog2(D),
+  localparam int DW        = LD + 4,
+  localparam int CBITS     = 8,    // matching cost
+  localparam int LW        = 9,    // path cost: Cmax + P2'max = 160 + 255 < 512
+  localparam int SW        = LW + 2
+) (
+  input  wire          clk_i,
+  input  wire          rst_ni,
+  // Input stream: one left and one right gray pixel per beat.
+  input  wire  [15:0]  s_tdata_i,   // {right, left}
+  input  wire          s_tuser_i,   // start of frame
+  input  wire          s_tlast_i,   // end of line
+  input  wire          s_tvalid_i,
+  output logic         s_tready_o,
+  // Output stream: one disparity per beat, same framing.
+  output logic [15:0]  m_tdata_o,   // {valid, zeros, disparity x 16}
+  output logic         m_tuser_o,
+  output logic         m_tlast_o,
+  output logic         m_tvalid_o,
+  input  wire          m_tready_i,
+  // Configuration, latched at start of frame.
+  input  wire [XW-1:0] cfg_width_i,
+  input  wire [YW-1:0] cfg_height_i,
+  input  wire  [7:0]   cfg_p1_i,
+  input  wire  [7:0]   cfg_p2_i,
+  input  wire  [1:0]   cfg_mode_i,     // 0 rt, 1 rsad, 2 unified
+  input  wire          cfg_subpixel_i,
+  input  wire          cfg_lr_en_i,
+  input  wire  [2:0]   cfg_lr_tol_i,
+  input  wire          cfg_fill_i,
+  input  wire          cfg_median_i,
+  // Status.
+  output logic         busy_o,
+  output logic         frame_done_o,
+  output logic [3:0]   error_o
+);
+
+  // ------------------------------------------------------------ control
+  logic          en;
+  logic [7:0]    pix_l, pix_r;
+  logic [XW-1:0] col0, width;
+  logic [YW-1:0] row0, height;
+  logic [7:0]    p1, p2;
+  logic [1:0]    mode;
+  logic          subpixel, lr_en, fill_en, median_en;
+  logic [2:0]    lr_tol;
+  logic          lut_start, lut_ready;
+  logic          res_valid, res_ok;
+  logic [DW-1:0] res_disp;
+
+  sgm_stream_ctrl #(
+    .MAX_WIDTH (MAX_WIDTH),
+    .MIN_WIDTH (D > 16 ? D : 16),
+    .MAX_HEIGHT(MAX_HEIGHT),
+    .XW        (XW),
+    .YW        (YW),
+    .PW        (8),
+    .DW        (DW),
+    .FIFO_DEPTH(4)
+  ) u_ctrl (
+    .clk_i         (clk_i),
+    .rst_ni        (rst_ni),
+    .s_tdata_i     (s_tdata_i),
+    .s_tuser_i     (s_tuser_i),
+    .s_tlast_i     (s_tlast_i),
+    .s_tvalid_i    (s_tvalid_i),
+    .s_tready_o    (s_tready_o),
+    .m_tdata_o     (m_tdata_o),
+    .m_tuser_o     (m_tuser_o),
+    .m_tlast_o     (m_tlast_o),
+    .m_tvalid_o    (m_tvalid_o),
+    .m_tready_i    (m_tready_i),
+    .cfg_width_i   (cfg_width_i),
+    .cfg_height_i  (cfg_height_i),
+    .cfg_p1_i      (cfg_p1_i),
+    .cfg_p2_i      (cfg_p2_i),
+    .cfg_mode_i    (cfg_mode_i),
+    .cfg_subpixel_i(cfg_subpixel_i),
+    .cfg_lr_en_i   (cfg_lr_en_i),
+    .cfg_lr_tol_i  (cfg_lr_tol_i),
+    .cfg_fill_i    (cfg_fill_i),
+    .cfg_median_i  (cfg_median_i),
+    .width_o       (width),
+    .height_o      (height),
+    .p1_o          (p1),
+    .p2_o          (p2),
+    .mode_o        (mode),
+    .subpixel_o    (subpixel),
+    .lr_en_o       (lr_en),
+    .lr_tol_o      (lr_tol),
+    .fill_o        (fill_en),
+    .median_o      (median_en),
+    .lut_start_o   (lut_start),
+    .lut_ready_i   (lut_ready),
+    .en_o          (en),
+    .pix_left_o    (pix_l),
+    .pix_right_o   (pix_r),
+    .col_o         (col0),
+    .row_o         (row0),
+    .res_valid_i   (res_valid),
+    .res_disp_i    (res_disp),
+    .res_ok_i      (res_ok),
+    .busy_o        (busy_o),
+    .frame_done_o  (frame_done_o),
+    .error_o       (error_o)
+  );
+
+  // ------------------------------------------------------------ census
+  logic [79:0]   census_l, census_r;
+  logic [6:0]    rank_l, rank_r;
+  logic [7:0]    centre;
+  logic [31:0]   nbr;
+  logic [XW-1:0] col1;
+  logic [YW-1:0] row1;
+  logic          valid1;
+  logic [7:0]    unused_centre_r;
+  logic [31:0]   unused_nbr_r;
+  logic [XW-1:0] unused_col_r;
+  logic [YW-1:0] unused_row_r;
+  logic          unused_valid_r;
+
+  sgm_census_unit #(.MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(YW)) u_census_l (
+    .clk_i    (clk_i),
+    .rst_ni   (rst_ni),
+    .en_i     (en),
+    .pix_i    (pix_l),
+    .col_i    (col0),
+    .row_i    (row0),
+    .width_i  (width),
+    .height_i (height),
+    .census_o (census_l),
+    .rank_o   (rank_l),
+    .centre_o (centre),
+    .nbr_o    (nbr),
+    .col_o    (col1),
+    .row_o    (row1),
+    .valid_o  (valid1)
+  );
+
+  sgm_census_unit #(.MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(YW)) u_census_r (
+    .clk_i    (clk_i),
+    .rst_ni   (rst_ni),
+    .en_i     (en),
+    .pix_i    (pix_r),
+    .col_i    (col0),
+    .row_i    (row0),
+    .width_i  (width),
+    .height_i (height),
+    .census_o (census_r),
+    .rank_o   (rank_r),
+    .centre_o (unused_centre_r),
+    .nbr_o    (unused_nbr_r),
+    .col_o    (unused_col_r),
+    .row_o    (unused_row_r),
+    .valid_o  (unused_valid_r)
+  );
+
+  // ------------------------------------------------------------ costs
+  localparam int COST_LATENCY = 3;  // sgm_cost_volume
+  logic [D*CBITS-1:0] cost;
+  logic [XW-1:0]      col2;
+  logic               valid2;
+
+  sgm_cost_volume #(.D(D), .CW(XW)) u_cost (
+    .clk_i     (clk_i),
+    .rst_ni    (rst_ni),
+    .en_i      (en),
+    .mode_i    (mode),
+    .lcensus_i (census_l),
+    .lrank_i   (rank_l),
+    .col_i     (col1),
+    .rcensus_i (census_r),
+    .rrank_i   (rank_r),
+    .valid_i   (valid1),
+    .cost_o    (cost),
+    .col_o     (col2),
+    .valid_o   (valid2)
+  );
+
+  // The path engine also needs the row and the left grays of the pixel.
+  logic [YW-1:0] row2;
+  logic [7:0]    centre2;
+  logic [31:0]   nbr2;
+  sgm_delay #(.WIDTH(YW + 8 + 32), .DEPTH(COST_LATENCY)) u_align_cost (
+    .clk_i (clk_i),
+    .en_i  (en),
+    .d_i   ({row1, centre, nbr}),
+    .q_o   ({row2, centre2, nbr2})
+  );
+
+  // ------------------------------------------------------------ paths
+  logic [D*SW-1:0] sum;
+  logic [XW-1:0]   col3;
+  logic [YW-1:0]   row3;
+  logic            valid3;
+
+  sgm_path_engine #(
+    .D(D), .CW(CBITS), .LW(LW), .PW(8), .MAX_WIDTH(MAX_WIDTH), .XW(XW), .YW(YW)
+  ) u_paths (
+    .clk_i       (clk_i),
+    .rst_ni      (rst_ni),
+    .en_i        (en),
+    .width_i     (width),
+    .p1_i        (p1),
+    .lut_start_i (lut_start),
+    .p2_i        (p2),
+    .lut_ready_o (lut_ready),
+    .cost_i      (cost),
+    .col_i       (col2),
+    .row_i       (row2),
+    .valid_i     (valid2),
+    .centre_i    (centre2),
+    .nbr_i       (nbr2),
+    .s_o         (sum),
+    .col_o       (col3),
+    .row_o       (row3),
+    .valid_o     (valid3)
+  );
+
+  // ------------------------------------------------------------ WTA
+  logic [LD-1:0] win_d;
+  logic [DW-1:0] win_disp;
+  logic [XW-1:0] col4;
+  logic [YW-1:0] row4;
+  logic          valid4;
+
+  sgm_wta #(.D(D), .SW(SW), .CW(XW), .RW(YW)) u_wta (
+    .clk_i      (clk_i),
+    .rst_ni     (rst_ni),
+    .en_i       (en),
+    .subpixel_i (subpixel),
+    .s_i        (sum),
+    .col_i      (col3),
+    .row_i      (row3),
+    .valid_i    (valid3),
+    .d_o        (win_d),
+    .disp_o     (win_disp),
+    .col_o      (col4),
+    .row_o      (row4),
+    .valid_o    (valid4)
+  );
+
+  // ------------------------------------------------------------ LR check
+  // TEMPORARY pass-through until sgm_lr_check lands (LR check off only).
+  logic [DW-1:0] lr_disp;
+  logic          lr_ok, lr_valid;
+  logic [XW-1:0] col5;
+  logic [YW-1:0] row5;
+  assign lr_disp  = win_disp;
+  assign lr_ok    = 1'b1;
+  assign lr_valid = valid4;
+  assign col5     = col4;
+  assign row5     = row4;
+  wire unused_lr = &{1'b0, win_d, lr_en, lr_tol};
+
+  // ------------------------------------------------------------ hole filling
+  logic [DW-1:0] fill_disp;
+  logic          fill_ok, fill_valid;
+  logic [XW-1:0] col6;
+  logic [YW-1:0] row6;
+
+  sgm_hole_fill #(.DW(DW), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(YW)) u_fill (
+    .clk_i       (clk_i),
+    .rst_ni      (rst_ni),
+    .en_i        (en),
+    .fill_en_i   (fill_en),
+    .width_i     (width),
+    .height_i    (height),
+    .disp_i      (lr_disp),
+    .valid_i     (lr_ok),
+    .in_valid_i  (lr_valid),
+    .col_i       (col5),
+    .row_i       (row5),
+    .disp_o      (fill_disp),
+    .valid_o     (fill_ok),
+    .col_o       (col6),
+    .row_o       (row6),
+    .out_valid_o (fill_valid)
+  );
+
+  // ------------------------------------------------------------ median
+  logic [XW-1:0] unused_col7;
+  logic [YW-1:0] unused_row7;
+
+  sgm_median5x5 #(.DW(DW), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(YW)) u_median (
+    .clk_i       (clk_i),
+    .rst_ni      (rst_ni),
+    .en_i        (en),
+    .median_en_i (median_en),
+    .width_i     (width),
+    .height_i    (height),
+    .disp_i      (fill_disp),
+    .valid_i     (fill_ok),
+    .in_valid_i  (fill_valid),
+    .col_i       (col6),
+    .row_i       (row6),
+    .disp_o      (res_disp),
+    .valid_o     (res_ok),
+    .col_o       (unused_col7),
+    .row_o       (unused_row7),
+    .out_valid_o (res_valid)
+  );
+
+endmodule
+`default_nettype wire
