@@ -1,0 +1,231 @@
+`default_nettype none
+// sgm_census_unit: 9-line buffer, 9x9 window, census and rank of ONE image
+// (docs/algorithm.md section 2, docs/rtl.md "Window and census"). The core
+// instantiates it twice (left, right).
+//
+// Input: one slot of the step stream per enabled cycle, (col_i, row_i) = (x, y)
+// in the virtual raster, pix_i the gray pixel (0 on flush slots, row_i >= height).
+// Output: the census of the centre of that slot,
+//   (cx, cy) = (x - 4, y - 4)          if x >= 4
+//            = (width + x - 4, y - 5)  otherwise,
+// with census bit k = I(q) < I(p) in golden censusBitIndex order (row-major over
+// dy = -4..4, dx = -4..4, centre skipped), 0 for window pixels outside the frame;
+// rank = popcount; centre = I(cx, cy); nbr = I of the four path predecessors,
+// 8 bits each LSB first: 0 deg (cx-1, cy), 45 deg (cx-1, cy-1), 90 deg (cx, cy-1),
+// 135 deg (cx+1, cy-1) (don't care outside the frame); valid_o = the slot came
+// through the pipeline since reset and 0 <= cy < height (0 <= cx < width holds
+// by construction). col_o/row_o = (cx, cy) (row_o meaningless when !valid_o).
+//
+// Structure (stage = one enabled cycle):
+//   s1  line buffer read mem[x] (rows y-8 .. y-1 of column x), input registers;
+//       width/height are captured here and travel with the slot, so a new frame
+//       may enter while the previous one is still in the pipeline.
+//   s2  window shift (column x, rows y-8 .. y enters), line buffer write-back of
+//       {rows y-7 .. y} to mem[x] (the address read one slot earlier; read and
+//       write addresses of one cycle differ because consecutive slots of a frame
+//       have different columns), centre position and the 9 + 9 row/column masks.
+//   s3  census: 80 masked compares, centre and neighbours.
+//   s4  rank (popcount tree), all outputs registered.
+// Rows of an earlier frame or of flush slots still in the buffer are never
+// used: every such window pixel is masked by the centre position (rows above 0
+// of a new frame are negative, columns of another virtual row lie outside
+// 0 .. width-1). If one column arrives in two consecutive slots (possible only
+// across a frame boundary) the second read misses the first write-back; the
+// missed rows are the previous frame's and masked.
+//
+// Memory: one MAX_WIDTH x 64 bit simple dual-port RAM (synchronous read with
+// enable, write with enable, no same-address read and write) + 81 x 8 bit
+// window registers.
+//
+// Parameters: MAX_WIDTH largest frame width; CW column/width bits
+// (2^CW > MAX_WIDTH); RW row/height bits (row_i must hold height + 4, the last
+// flush row the core needs).
+// Frame: width_i >= 16, height_i >= 9, constant during a frame (sampled with
+// every slot).
+// Latency: LATENCY = 4 slots for every parameter value (s1 .. s4): the outputs
+// during slot t belong to the input of slot t - 4. The top mirrors it as its own
+// localparam (hierarchical parameter references are not portable).
+// Throughput: one slot per enabled cycle.
+module sgm_census_unit #(
+  parameter int MAX_WIDTH /*verilator public*/ = 1280,
+  parameter int CW        = 11,
+  parameter int RW        = 11
+) (
+  input  wire              clk_i,
+  input  wire              rst_ni,
+  input  wire              en_i,
+  input  wire  [7:0]       pix_i,
+  input  wire  [CW-1:0]    col_i,
+  input  wire  [RW-1:0]    row_i,
+  input  wire  [CW-1:0]    width_i,
+  input  wire  [RW-1:0]    height_i,
+  output logic [79:0]      census_o,
+  output logic [6:0]       rank_o,
+  output logic [7:0]       centre_o,
+  output logic [31:0]      nbr_o,
+  output logic [CW-1:0]    col_o,
+  output logic [RW-1:0]    row_o,
+  output logic             valid_o
+);
+
+  localparam int LATENCY /*verilator public*/ = 4;
+  localparam int AW = MAX_WIDTH > 1 ? $clog2(MAX_WIDTH) : 1;  // line buffer address bits (<= CW)
+
+  // Popcount of 80 bits as an adder tree (2, 3, 4, 5 bit levels, then 5 terms).
+  function automatic logic [6:0] popcount80(input logic [79:0] v);
+    logic [79:0] l1;
+    logic [59:0] l2;
+    logic [39:0] l3;
+    logic [24:0] l4;
+    l1 = '0;
+    l2 = '0;
+    l3 = '0;
+    l4 = '0;
+    for (int i = 0; i < 40; i++) l1[i*2 +: 2] = {1'b0, v[2*i]} + {1'b0, v[2*i+1]};
+    for (int i = 0; i < 20; i++) l2[i*3 +: 3] = {1'b0, l1[4*i +: 2]} + {1'b0, l1[4*i+2 +: 2]};
+    for (int i = 0; i < 10; i++) l3[i*4 +: 4] = {1'b0, l2[6*i +: 3]} + {1'b0, l2[6*i+3 +: 3]};
+    for (int i = 0; i < 5; i++) l4[i*5 +: 5] = {1'b0, l3[8*i +: 4]} + {1'b0, l3[8*i+4 +: 4]};
+    popcount80 = {2'b0, l4[0 +: 5]} + {2'b0, l4[5 +: 5]} + {2'b0, l4[10 +: 5]} + {2'b0, l4[15 +: 5]} +
+                 {2'b0, l4[20 +: 5]};
+  endfunction
+
+  // ------------------------------------------------------------ s1: line buffer read
+  // mem_q[c][8k +: 8] = row y-8+k of column c (k = 7 the newest), seen from the next
+  // slot y of that column.
+  logic [63:0]   mem_q [0:MAX_WIDTH-1];
+  logic [63:0]   rd_q;
+  logic [7:0]    pix1_q;
+  logic [CW-1:0] col1_q, width1_q;
+  logic [RW-1:0] row1_q, height1_q;
+  logic          v1_q;
+
+  always_ff @(posedge clk_i) begin
+    if (en_i) rd_q <= mem_q[col_i[AW-1:0]];
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (en_i && v1_q) mem_q[col1_q[AW-1:0]] <= {pix1_q, rd_q[63:8]};
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      pix1_q    <= pix_i;
+      col1_q    <= col_i;
+      row1_q    <= row_i;
+      width1_q  <= width_i;
+      height1_q <= height_i;
+    end
+  end
+
+  // ------------------------------------------------------------ s2: window, position, masks
+  // win_q[(9 i + j) * 8 +: 8]: window row i (dy = i - 4, i = 0 the oldest row),
+  // column j (dx = j - 4, j = 8 the newest column).
+  logic [647:0]  win_q;
+  wire  [71:0]   new_col = {pix1_q, rd_q};  // byte i = row y-8+i
+
+  for (genvar i = 0; i < 9; i++) begin : g_win_row
+    for (genvar j = 0; j < 9; j++) begin : g_win_col
+      if (j < 8) begin : g_shift
+        always_ff @(posedge clk_i) begin
+          if (en_i) win_q[(9*i+j)*8 +: 8] <= win_q[(9*i+j+1)*8 +: 8];
+        end
+      end else begin : g_load
+        always_ff @(posedge clk_i) begin
+          if (en_i) win_q[(9*i+j)*8 +: 8] <= new_col[i*8 +: 8];
+        end
+      end
+    end
+  end
+
+  // Centre of the slot: x >= 4 -> (x - 4, y - 4), else (width + x - 4, y - 5).
+  // Window row i holds raster row y - 8 + i (x >= 4) or y - 9 + i (x < 4, the
+  // centre column is in the previous virtual row), i.e. row cy + i - 4, inside
+  // the frame when off <= y + i < height + off with off = 8 or 9. Window column
+  // j holds cx + j - 4, inside when 4 <= cx + j < width + 4.
+  wire             wrap   = col1_q < CW'(4);
+  wire  [CW-1:0]   cx     = wrap ? width1_q + col1_q - CW'(4) : col1_q - CW'(4);
+  wire  [RW+1:0]   roff   = wrap ? (RW+2)'(9) : (RW+2)'(8);
+  wire  [RW-1:0]   cy     = row1_q - (wrap ? RW'(5) : RW'(4));
+  logic [8:0]      row_ok, col_ok;
+
+  for (genvar i = 0; i < 9; i++) begin : g_mask
+    wire [RW+1:0] yi = {2'b00, row1_q} + (RW+2)'(i);
+    wire [CW+1:0] xj = {2'b00, cx} + (CW+2)'(i);
+    assign row_ok[i] = yi >= roff && yi < {2'b00, height1_q} + roff;
+    assign col_ok[i] = xj >= (CW+2)'(4) && xj < {2'b00, width1_q} + (CW+2)'(4);
+  end
+
+  logic [8:0]    row_ok2_q, col_ok2_q;
+  logic [CW-1:0] cx2_q;
+  logic [RW-1:0] cy2_q;
+  logic          v2_q;
+
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      row_ok2_q <= row_ok;
+      col_ok2_q <= col_ok;
+      cx2_q     <= cx;
+      cy2_q     <= cy;
+    end
+  end
+
+  // ------------------------------------------------------------ s3: census
+  wire  [7:0]    centre = win_q[(9*4+4)*8 +: 8];
+  logic [79:0]   census;
+
+  for (genvar i = 0; i < 9; i++) begin : g_cen_row
+    for (genvar j = 0; j < 9; j++) begin : g_cen_col
+      if (9 * i + j < 40) begin : g_before
+        assign census[9*i+j] = row_ok2_q[i] && col_ok2_q[j] && win_q[(9*i+j)*8 +: 8] < centre;
+      end else if (9 * i + j > 40) begin : g_after
+        assign census[9*i+j-1] = row_ok2_q[i] && col_ok2_q[j] && win_q[(9*i+j)*8 +: 8] < centre;
+      end
+    end
+  end
+
+  logic [79:0]   census3_q;
+  logic [7:0]    centre3_q;
+  logic [31:0]   nbr3_q;
+  logic [CW-1:0] cx3_q;
+  logic [RW-1:0] cy3_q;
+  logic          v3_q;
+
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      census3_q <= census;
+      centre3_q <= centre;
+      nbr3_q    <= {win_q[(9*3+5)*8 +: 8], win_q[(9*3+4)*8 +: 8], win_q[(9*3+3)*8 +: 8], win_q[(9*4+3)*8 +: 8]};
+      cx3_q     <= cx2_q;
+      cy3_q     <= cy2_q;
+    end
+  end
+
+  // ------------------------------------------------------------ s4: rank, outputs
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      census_o <= census3_q;
+      rank_o   <= popcount80(census3_q);
+      centre_o <= centre3_q;
+      nbr_o    <= nbr3_q;
+      col_o    <= cx3_q;
+      row_o    <= cy3_q;
+    end
+  end
+
+  // Control: slot-valid chain (reset).
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      v1_q    <= 1'b0;
+      v2_q    <= 1'b0;
+      v3_q    <= 1'b0;
+      valid_o <= 1'b0;
+    end else if (en_i) begin
+      v1_q    <= 1'b1;
+      v2_q    <= v1_q && row_ok[4];
+      v3_q    <= v2_q;
+      valid_o <= v3_q;
+    end
+  end
+
+endmodule
+`default_nettype wire

@@ -1,0 +1,114 @@
+`default_nettype none
+// sgm_cost_volume: the right census/rank delay line and D cost PEs
+// (docs/algorithm.md section 3). For the slot entering at t it outputs the
+// costs C(p, d), d = 0 .. D-1, of the left centre p of that slot.
+//
+// Inputs per slot (same slot of the left and right sgm_census_unit): left and
+// right census/rank, the centre column col_i and valid_i; mode_i (0 rt, 1 rsad,
+// 2 unified; 3 behaves as unified) is sampled with the slot and travels with
+// it, so the top presents each frame's mode aligned with the census outputs.
+//
+// Delay line: entry d holds the right census/rank of the slot d slots earlier,
+// which is right pixel x - d of the same row whenever x - d >= 0 (slots are
+// consecutive raster positions, flush slots included). Entries from another
+// row or frame are only reached when col - d < 0, where the PE outputs Cmax.
+//
+// Structure: s1 input registers and the delay line (D x 87 bit registers,
+// entry 0 = the slot's own right census), s2 + s3 the two PE stages
+// (sgm_cost_pe).
+//
+// Parameters: D disparities, CW column bits.
+// Latency: LATENCY = 3 slots (1 + the PE's 2) for every parameter value:
+// cost_o, col_o, valid_o during slot t belong to the input of slot t - 3.
+// cost_o[d*8 +: 8] = C(p, d). Throughput: one slot per enabled cycle.
+module sgm_cost_volume #(
+  parameter int D  = 64,
+  parameter int CW = 11
+) (
+  input  wire              clk_i,
+  input  wire              rst_ni,
+  input  wire              en_i,
+  input  wire  [1:0]       mode_i,
+  input  wire  [79:0]      lcensus_i,
+  input  wire  [6:0]       lrank_i,
+  input  wire  [CW-1:0]    col_i,
+  input  wire  [79:0]      rcensus_i,
+  input  wire  [6:0]       rrank_i,
+  input  wire              valid_i,
+  output logic [D*8-1:0]   cost_o,
+  output logic [CW-1:0]    col_o,
+  output logic             valid_o
+);
+
+  localparam int LATENCY /*verilator public*/ = 3;
+  localparam int EW = 87;  // delay line entry: {rank, census}
+
+  // ------------------------------------------------------------ s1
+  logic [79:0]   lcensus1_q;
+  logic [6:0]    lrank1_q;
+  logic [CW-1:0] col1_q, col2_q;
+  logic [1:0]    mode1_q, mode2_q;
+  logic          valid1_q, valid2_q;
+  logic [D*EW-1:0] line_q;
+
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      lcensus1_q <= lcensus_i;
+      lrank1_q   <= lrank_i;
+      col1_q     <= col_i;
+      mode1_q    <= mode_i;
+      col2_q     <= col1_q;
+      mode2_q    <= mode1_q;
+      col_o      <= col2_q;
+    end
+  end
+
+  for (genvar d = 0; d < D; d++) begin : g_line
+    if (d == 0) begin : g_head
+      always_ff @(posedge clk_i) begin
+        if (en_i) line_q[0 +: EW] <= {rrank_i, rcensus_i};
+      end
+    end else begin : g_tail
+      always_ff @(posedge clk_i) begin
+        if (en_i) line_q[d*EW +: EW] <= line_q[(d-1)*EW +: EW];
+      end
+    end
+  end
+
+  // ------------------------------------------------------------ s2, s3: PEs
+  for (genvar d = 0; d < D; d++) begin : g_pe
+    wire outside;  // x - d < 0
+    if (d == 0) begin : g_d0
+      assign outside = 1'b0;
+    end else begin : g_dn
+      assign outside = {{(32-CW){1'b0}}, col1_q} < 32'(d);
+    end
+
+    sgm_cost_pe u_pe (
+      .clk_i     (clk_i),
+      .en_i      (en_i),
+      .mode_i    (mode2_q),
+      .lcensus_i (lcensus1_q),
+      .lrank_i   (lrank1_q),
+      .rcensus_i (line_q[d*EW +: 80]),
+      .rrank_i   (line_q[d*EW+80 +: 7]),
+      .outside_i (outside),
+      .cost_o    (cost_o[d*8 +: 8])
+    );
+  end
+
+  // Control: valid chain (reset).
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      valid1_q <= 1'b0;
+      valid2_q <= 1'b0;
+      valid_o  <= 1'b0;
+    end else if (en_i) begin
+      valid1_q <= valid_i;
+      valid2_q <= valid1_q;
+      valid_o  <= valid2_q;
+    end
+  end
+
+endmodule
+`default_nettype wire

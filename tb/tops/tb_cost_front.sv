@@ -1,0 +1,120 @@
+`default_nettype none
+// tb_cost_front: test wrapper for tests/rtl/test_tb_cost_front.cpp. Two
+// sgm_census_unit (left, right) on one step stream feed sgm_cost_volume, as in
+// the core: gray pair in, the full cost volume out in raster order.
+//
+// mode_i is the frame's mode at the input slot; it is delayed by the census
+// latency so that it reaches the cost volume with the same slot.
+// Outputs: the left and right census units' census/rank (left also col/row/valid,
+// latency CENSUS_LATENCY) and the cost volume (latency
+// CENSUS_LATENCY + COST_LATENCY).
+module tb_cost_front #(
+  parameter int D         /*verilator public*/ = 16,
+  parameter int MAX_WIDTH /*verilator public*/ = 128,
+  parameter int CW        = 8,
+  parameter int RW        = 8
+) (
+  input  wire              clk_i,
+  input  wire              rst_ni,
+  input  wire              en_i,
+  input  wire  [1:0]       mode_i,
+  input  wire  [7:0]       lpix_i,
+  input  wire  [7:0]       rpix_i,
+  input  wire  [CW-1:0]    col_i,
+  input  wire  [RW-1:0]    row_i,
+  input  wire  [CW-1:0]    width_i,
+  input  wire  [RW-1:0]    height_i,
+  output logic [79:0]      lcensus_o,
+  output logic [6:0]       lrank_o,
+  output logic [CW-1:0]    lcol_o,
+  output logic [RW-1:0]    lrow_o,
+  output logic             lvalid_o,
+  output logic [79:0]      rcensus_o,
+  output logic [6:0]       rrank_o,
+  output logic [D*8-1:0]   cost_o,
+  output logic [CW-1:0]    col_o,
+  output logic             valid_o
+);
+
+  // Mirrors of sgm_census_unit::LATENCY and sgm_cost_volume::LATENCY (checked by the test).
+  localparam int CENSUS_LATENCY /*verilator public*/ = 4;
+  localparam int COST_LATENCY   /*verilator public*/ = 3;
+
+  logic [7:0]    l_centre, r_centre;
+  logic [31:0]   l_nbr, r_nbr;
+  logic [CW-1:0] r_col;
+  logic [RW-1:0] r_row;
+  logic          r_valid;
+  wire           unused_right = ^{l_centre, r_centre, l_nbr, r_nbr, r_col, r_row, r_valid};
+
+  sgm_census_unit #(
+    .MAX_WIDTH (MAX_WIDTH),
+    .CW        (CW),
+    .RW        (RW)
+  ) u_left (
+    .clk_i    (clk_i),
+    .rst_ni   (rst_ni),
+    .en_i     (en_i),
+    .pix_i    (lpix_i),
+    .col_i    (col_i),
+    .row_i    (row_i),
+    .width_i  (width_i),
+    .height_i (height_i),
+    .census_o (lcensus_o),
+    .rank_o   (lrank_o),
+    .centre_o (l_centre),
+    .nbr_o    (l_nbr),
+    .col_o    (lcol_o),
+    .row_o    (lrow_o),
+    .valid_o  (lvalid_o)
+  );
+
+  sgm_census_unit #(
+    .MAX_WIDTH (MAX_WIDTH),
+    .CW        (CW),
+    .RW        (RW)
+  ) u_right (
+    .clk_i    (clk_i),
+    .rst_ni   (rst_ni),
+    .en_i     (en_i),
+    .pix_i    (rpix_i),
+    .col_i    (col_i),
+    .row_i    (row_i),
+    .width_i  (width_i),
+    .height_i (height_i),
+    .census_o (rcensus_o),
+    .rank_o   (rrank_o),
+    .centre_o (r_centre),
+    .nbr_o    (r_nbr),
+    .col_o    (r_col),
+    .row_o    (r_row),
+    .valid_o  (r_valid)
+  );
+
+  // The frame's mode, delayed to the census outputs' slot.
+  logic [CENSUS_LATENCY*2-1:0] mode_q;
+  always_ff @(posedge clk_i) begin
+    if (en_i) mode_q <= {mode_q[(CENSUS_LATENCY-1)*2-1:0], mode_i};
+  end
+
+  sgm_cost_volume #(
+    .D  (D),
+    .CW (CW)
+  ) u_cost (
+    .clk_i     (clk_i),
+    .rst_ni    (rst_ni),
+    .en_i      (en_i),
+    .mode_i    (mode_q[(CENSUS_LATENCY-1)*2 +: 2]),
+    .lcensus_i (lcensus_o),
+    .lrank_i   (lrank_o),
+    .col_i     (lcol_o),
+    .rcensus_i (rcensus_o),
+    .rrank_i   (rrank_o),
+    .valid_i   (lvalid_o),
+    .cost_o    (cost_o),
+    .col_o     (col_o),
+    .valid_o   (valid_o)
+  );
+
+endmodule
+`default_nettype wire
