@@ -1,0 +1,292 @@
+`default_nettype none
+// sgm_lr_check: left-right validation (docs/algorithm.md section 7) at one
+// pixel per slot, with the right disparities computed from the same S:
+//
+//   dR(xr) = argmin over d = 0 .. min(D-1, W-1-xr) of S(xr+d, d)  (ties: smallest d)
+//   left (x, y) with winner d is valid iff x - d >= 0 and |dR(x-d) - d| <= tol_i
+//   (check_en_i = 0: every pixel valid).
+//
+// Two input streams:
+//   S side    s_i, col_i, row_i, valid_i (+ width_i, height_i): the slot stream.
+//             It also drives the output timing.
+//   WTA side  d_i, disp_i with their own position wta_col_i / wta_row_i /
+//             wta_valid_i: the sgm_wta result of the same S, connected directly
+//             (it arrives sgm_wta LATENCY slots after its S, no delay line of S
+//             needed). Any lag L of the WTA side behind the S side with
+//             0 <= L <= width - 1 slots works (the result of row y is read
+//             during row y + 1 at its own column).
+//
+// Right disparities: a systolic diagonal array of D slots. After the S of
+// pixel x, slot j holds (min S, argmin d) of right pixel x - j over d = 0 .. j:
+// slot j takes slot j-1 of the previous pixel and compares it with S(x, j)
+// (strict <, so the smallest d wins a tie); slot 0 restarts at (S(x, 0), 0),
+// so every chain starts inside its own row. Right pixel xr is final
+//   * when it leaves slot D-1, at column x = xr + D - 1 (xr <= W - D), or
+//   * at the last column of the row for xr > W - D: its later candidates
+//     xr + d > W - 1 do not exist. At column W-1 the argmins of slots
+//     0 .. D-2 (xr = W-1 .. W-D+1) go to a shift register (tail_q) that writes
+//     them, xr = W-D+1 first, during the next D-1 slots (columns 0 .. D-2 of
+//     the next row, where slot D-1 finalises nothing: no write port conflict).
+// dR goes through one registered write port into dr_mem (2 banks by row
+// parity x MAX_WIDTH x log2(D) bit). The WTA result {d, disp} of (x, y) goes
+// to lt_mem (2 banks x MAX_WIDTH x (log2(D) + DW) bit) at its own column.
+//
+// Read side, at the S slot (x, y), y >= 1, for the left pixel (x, y-1):
+//   R1  read lt_mem[bank (y-1) % 2][x]
+//   R2  xr = x - d; read dr_mem[bank (y-1) % 2][xr] when x >= d
+//   R3  valid = !check_en || (x >= d && |dR - d| <= tol); output registers.
+// Order of memory accesses (slot = S-side slot, a write at slot t is visible
+// to reads at slots > t):
+//   * dR(xr), xr <= W-D, of row y is written at slot (xr + D, y) and read no
+//     earlier than slot (xr + 1, y + 1).
+//   * tail entry k (xr = W-D+1+k) of row y is written at slot (k + 1, y + 1);
+//     the left pixel x that reads it has x - d = xr, so it reads at slot
+//     (x + 1, y + 1) with x >= xr = k + 1 + (W - D): strictly later because
+//     W >= D. (With W = D and d = 0 the margin is exactly one slot.)
+//   * bank y % 2 is next written by row y + 2 from slot (D, y + 2) on; the
+//     last read of row y is at slot (0, y + 2).
+//   * lt_mem: (x, y) is written at slot (x, y) + L, L <= W-1, and read at
+//     (x, y + 1); row y + 2 writes the bank at (x, y + 2) + L.
+// Stale words from an earlier frame or from flush rows are never read for a
+// real pixel: every word read for row y was written by row y of this frame.
+//
+// The output slot carries left pixel (x, y-1): out_valid_o = 1 iff
+// 1 <= y <= height (the flush row y = height carries the last frame row out).
+// tol_i / check_en_i / height_i are sampled with the slot and travel with it.
+//
+// Parameters: D disparities (power of two), SW width of S, DW disparity width
+// (log2(D) + 4), MAX_WIDTH (largest width; width >= max(D, 16) required),
+// CW column bits (must hold width), RW row bits (must hold every virtual row
+// of a frame, flush rows included).
+// Latency: one row plus LATENCY = 3 slots: left pixel (x, y) presented on the
+// WTA side is on the outputs after the enabled edge of S slot (x, y+1) plus
+// LATENCY - 1 edges, i.e. S slot (x, y) + width + LATENCY - 1 edges.
+// Throughput: one pixel per slot. Reset: control registers only (tail counter,
+// dR write enable, out_valid pipeline).
+module sgm_lr_check #(
+  parameter int D         /*verilator public*/ = 64,
+  parameter int SW        /*verilator public*/ = 11,
+  parameter int DW        /*verilator public*/ = $clog2(D) + 4,
+  parameter int MAX_WIDTH /*verilator public*/ = 1024,
+  parameter int CW        /*verilator public*/ = $clog2(MAX_WIDTH + 1),
+  parameter int RW        /*verilator public*/ = 11,
+  localparam int LD       = $clog2(D),
+  localparam int LATENCY  /*verilator public*/ = 3
+) (
+  input  wire              clk_i,
+  input  wire              rst_ni,
+  input  wire              en_i,
+  // Per-frame configuration (constant while the frame's slots flow).
+  input  wire  [CW-1:0]    width_i,
+  input  wire  [RW-1:0]    height_i,
+  input  wire  [2:0]       tol_i,        // tolerance in px
+  input  wire              check_en_i,   // 0: every pixel valid
+  // S side: aggregated costs S(d) = s_i[d*SW +: SW] of the slot's pixel.
+  input  wire  [D*SW-1:0]  s_i,
+  input  wire  [CW-1:0]    col_i,
+  input  wire  [RW-1:0]    row_i,
+  input  wire              valid_i,
+  // WTA side: winner and disparity of pixel (wta_col_i, wta_row_i).
+  input  wire  [LD-1:0]    d_i,
+  input  wire  [DW-1:0]    disp_i,
+  input  wire  [CW-1:0]    wta_col_i,
+  input  wire  [RW-1:0]    wta_row_i,
+  input  wire              wta_valid_i,
+  // Output: left pixel (col_o, row_o) of the previous row.
+  output logic [DW-1:0]    disp_o,
+  output logic             valid_o,      // left-right check passed
+  output logic [CW-1:0]    col_o,
+  output logic [RW-1:0]    row_o,
+  output logic             out_valid_o   // the slot carries a pixel of the frame
+);
+
+  localparam int MW  = 2 * MAX_WIDTH;   // words per memory (two banks)
+  localparam int MAW = $clog2(MW);
+  localparam int LW  = LD + DW;         // lt_mem word {d, disp}
+
+  // Word address of column col in bank b.
+  function automatic logic [MAW-1:0] mem_addr(input logic b, input logic [CW-1:0] col);
+    mem_addr = (b ? MAW'(MAX_WIDTH) : MAW'(0)) + MAW'(col);
+  endfunction
+
+  // ------------------------------------------------------------ diagonal array
+  // Slots 0 .. D-2 are registered; slot D-1 is final and only written out.
+  logic [(D-1)*SW-1:0] dmin_q;
+  logic [(D-1)*LD-1:0] darg_q;
+  logic [(D-1)*SW-1:0] nmin;    // next state of slots 0 .. D-2
+  logic [D*LD-1:0]     narg;    // next argmin of slots 0 .. D-1
+
+  assign nmin[0 +: SW] = s_i[0 +: SW];
+  assign narg[0 +: LD] = '0;
+  for (genvar j = 1; j < D; j++) begin : g_slot
+    wire [SW-1:0] cand = s_i[j*SW +: SW];
+    wire          take = cand < dmin_q[(j-1)*SW +: SW];
+    assign narg[j*LD +: LD] = take ? LD'(j) : darg_q[(j-1)*LD +: LD];
+    if (j < D - 1) begin : g_min
+      assign nmin[j*SW +: SW] = take ? cand : dmin_q[(j-1)*SW +: SW];
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      dmin_q <= nmin;
+      darg_q <= narg[(D-1)*LD-1:0];
+    end
+  end
+
+  // ------------------------------------------------------------ row tail
+  wire last_col = valid_i && col_i == width_i - CW'(1);
+
+  logic [(D-1)*LD-1:0] tail_q;       // entry k: dR(W-D+1+k)
+  logic [CW-1:0]       tail_col_q;   // column of entry 0
+  logic                tail_bank_q;
+  logic [LD-1:0]       tail_cnt_q;   // entries left to write
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      tail_cnt_q <= '0;
+    end else if (en_i) begin
+      if (last_col) tail_cnt_q <= LD'(D - 1);
+      else if (tail_cnt_q != '0) tail_cnt_q <= tail_cnt_q - 1'b1;
+    end
+  end
+
+  for (genvar k = 0; k < D - 1; k++) begin : g_tail
+    wire [LD-1:0] shift_in;
+    if (k < D - 2) begin : g_shift
+      assign shift_in = tail_q[(k+1)*LD +: LD];
+    end else begin : g_end
+      assign shift_in = tail_q[k*LD +: LD];
+    end
+    always_ff @(posedge clk_i) begin
+      if (en_i) tail_q[k*LD +: LD] <= last_col ? narg[(D-2-k)*LD +: LD] : shift_in;
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      if (last_col) begin
+        tail_col_q  <= width_i - CW'(D - 1);
+        tail_bank_q <= row_i[0];
+      end else if (tail_cnt_q != '0) begin
+        tail_col_q  <= tail_col_q + 1'b1;
+      end
+    end
+  end
+
+  // ------------------------------------------------------------ dR memory
+  // One registered write request per slot: the tail of the previous row during
+  // its D-1 slots, else slot D-1 of the diagonal (xr = x - (D-1) >= 0).
+  wire steady = valid_i && col_i >= CW'(D - 1);
+
+  logic           drw_en_q;
+  logic [MAW-1:0] drw_addr_q;
+  logic [LD-1:0]  drw_data_q;
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) drw_en_q <= 1'b0;
+    else if (en_i) drw_en_q <= tail_cnt_q != '0 || steady;
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      if (tail_cnt_q != '0) begin
+        drw_addr_q <= mem_addr(tail_bank_q, tail_col_q);
+        drw_data_q <= tail_q[0 +: LD];
+      end else begin
+        drw_addr_q <= mem_addr(row_i[0], col_i - CW'(D - 1));
+        drw_data_q <= narg[(D-1)*LD +: LD];
+      end
+    end
+  end
+
+  logic [LD-1:0] dr_mem [0:MW-1];
+  always_ff @(posedge clk_i) begin
+    if (en_i && drw_en_q) dr_mem[drw_addr_q] <= drw_data_q;
+  end
+
+  // ------------------------------------------------------------ left memory
+  logic [LW-1:0] lt_mem [0:MW-1];
+  always_ff @(posedge clk_i) begin
+    if (en_i && wta_valid_i) lt_mem[mem_addr(wta_row_i[0], wta_col_i)] <= {d_i, disp_i};
+  end
+
+  // ------------------------------------------------------------ R1
+  wire in_real = row_i != '0 && row_i <= height_i;   // previous row is a frame row
+
+  logic [LW-1:0] r1_word_q;
+  logic [CW-1:0] r1_col_q;
+  logic [RW-1:0] r1_row_q;
+  logic          r1_bank_q, r1_real_q, r1_chk_q;
+  logic [2:0]    r1_tol_q;
+
+  always_ff @(posedge clk_i) begin
+    if (en_i && in_real) r1_word_q <= lt_mem[mem_addr(~row_i[0], col_i)];
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      r1_col_q  <= col_i;
+      r1_row_q  <= row_i - 1'b1;
+      r1_bank_q <= ~row_i[0];
+      r1_chk_q  <= check_en_i;
+      r1_tol_q  <= tol_i;
+    end
+  end
+
+  // ------------------------------------------------------------ R2
+  wire [LD-1:0] r1_d    = r1_word_q[DW +: LD];
+  wire          r1_ok   = r1_col_q >= CW'(r1_d);          // x - d >= 0
+  wire [CW-1:0] r1_xr   = r1_col_q - CW'(r1_d);
+
+  logic [LD-1:0] r2_dr_q;
+  logic [LD-1:0] r2_d_q;
+  logic [DW-1:0] r2_disp_q;
+  logic [CW-1:0] r2_col_q;
+  logic [RW-1:0] r2_row_q;
+  logic          r2_ok_q, r2_real_q, r2_chk_q;
+  logic [2:0]    r2_tol_q;
+
+  always_ff @(posedge clk_i) begin
+    if (en_i && r1_real_q && r1_ok) r2_dr_q <= dr_mem[mem_addr(r1_bank_q, r1_xr)];
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      r2_d_q    <= r1_d;
+      r2_disp_q <= r1_word_q[0 +: DW];
+      r2_ok_q   <= r1_ok;
+      r2_col_q  <= r1_col_q;
+      r2_row_q  <= r1_row_q;
+      r2_chk_q  <= r1_chk_q;
+      r2_tol_q  <= r1_tol_q;
+    end
+  end
+
+  // ------------------------------------------------------------ R3 / outputs
+  wire [LD-1:0] diff = r2_dr_q > r2_d_q ? r2_dr_q - r2_d_q : r2_d_q - r2_dr_q;
+  wire          pass = !r2_chk_q || (r2_ok_q && diff <= LD'(r2_tol_q));
+
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      disp_o  <= r2_disp_q;
+      valid_o <= pass;
+      col_o   <= r2_col_q;
+      row_o   <= r2_row_q;
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      r1_real_q   <= 1'b0;
+      r2_real_q   <= 1'b0;
+      out_valid_o <= 1'b0;
+    end else if (en_i) begin
+      r1_real_q   <= in_real;
+      r2_real_q   <= r1_real_q;
+      out_valid_o <= r2_real_q;
+    end
+  end
+
+endmodule
+`default_nettype wire

@@ -1,0 +1,372 @@
+// sgm_wta against the golden sgm::winnerTakeAll / sgm::subpixelOffset
+// (docs/algorithm.md section 6). S volumes are streamed slot by slot in raster
+// order, each frame followed by flush slots (rows >= height), back to back
+// without reset, with en_i toggled by a seeded random pattern (inputs are junk
+// while en_i = 0). Every enabled slot's outputs are checked against the latency
+// contract (position, valid_o), every pixel's d and disp against the golden
+// model, and the outputs must hold while en_i = 0. D / SW / LATENCY come from
+// the model (public parameters), so the same file serves every build.
+#include "Vsgm_wta.h"
+#include "Vsgm_wta_sgm_wta.h"
+#include "port_bits.hpp"
+#include "verilated_top.hpp"
+
+#include "sgm/disparity.hpp"
+#include "sgm/image_io.hpp"
+#include "sgm/pipeline.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using Top = sgm::tb::VerilatedTop<Vsgm_wta>;
+using Rtl = Vsgm_wta_sgm_wta;  // public parameters of the build
+
+constexpr int kD = int(Rtl::D);
+constexpr int kSW = int(Rtl::SW);
+constexpr int kCW = int(Rtl::CW);
+constexpr int kRW = int(Rtl::RW);
+constexpr int kLatency = int(Rtl::LATENCY);
+constexpr int kMaxS = (1 << kSW) - 1;
+
+constexpr int log2Ceil(int n) { return n <= 1 ? 0 : 1 + log2Ceil((n + 1) / 2); }
+static_assert(kLatency == (log2Ceil(kD) + 1) / 2 + 3, "sgm_wta latency: ceil(log2(D) / 2) tree stages + 3");
+
+struct Frame {
+  sgm::PathVolume s;
+  bool subpixel = true;
+  std::string name;
+  int flush = kLatency - 1;  // slots after the last pixel (the minimum that drains the pipeline)
+};
+
+std::string describe(const Frame& f) {
+  std::ostringstream o;
+  o << "frame '" << f.name << "' " << f.s.width << "x" << f.s.height << " sub-pixel " << (f.subpixel ? "on" : "off")
+    << " (D=" << kD << ", SW=" << kSW << ", LATENCY=" << kLatency << ")";
+  return o.str();
+}
+
+// Golden result of one pixel.
+struct Want {
+  int d, disp;
+};
+Want golden(const uint16_t* s, bool subpixel) {
+  const int d = sgm::winnerTakeAll(s, kD);
+  int disp = d * sgm::kSubpixelOne;
+  if (subpixel && d > 0 && d < kD - 1) disp += sgm::subpixelOffset(s[d - 1], s[d], s[d + 1]);
+  return {d, disp};
+}
+
+// S vector -> s_i (S(d) at bits [d*SW +: SW]).
+template <typename Port>
+void packS(Port& port, const uint16_t* s) {
+  uint32_t words[(kD * kSW + 31) / 32 + 1] = {};
+  for (int d = 0; d < kD; ++d) {
+    const int bit = d * kSW;
+    const uint64_t v = uint64_t(s[d]) << (bit % 32);
+    words[bit / 32] |= uint32_t(v);
+    words[bit / 32 + 1] |= uint32_t(v >> 32);
+  }
+  for (int w = 0; w < (kD * kSW + 31) / 32; ++w) sgm::tb::setWord(port, w, words[w]);
+}
+
+struct Outputs {
+  uint32_t d, disp, col, row, valid;
+  bool operator==(const Outputs& o) const {
+    return d == o.d && disp == o.disp && col == o.col && row == o.row && valid == o.valid;
+  }
+};
+Outputs outputs(Top& top) {
+  return {uint32_t(top->d_o), uint32_t(top->disp_o), uint32_t(top->col_o), uint32_t(top->row_o),
+          uint32_t(top->valid_o)};
+}
+
+// Enable pattern: mostly on, single-cycle gaps and occasional long stalls.
+class EnablePattern {
+ public:
+  EnablePattern(uint32_t seed, double onRate) : rng_(seed), on_(onRate) {}
+  bool next() {
+    if (stall_ > 0) return --stall_, false;
+    if (std::bernoulli_distribution(0.002)(rng_)) stall_ = int(rng_() % 40);
+    return on_(rng_);
+  }
+
+ private:
+  std::mt19937 rng_;
+  std::bernoulli_distribution on_;
+  int stall_ = 0;
+};
+
+// Streams the frames back to back on one model (reset once) and checks every
+// output slot. Stops at the first mismatch, naming pixel, expected, got, stage.
+void runFrames(Top& top, const std::vector<Frame>& frames, uint32_t seed, double onRate = 0.7) {
+  std::mt19937 junk(seed ^ 0x9e3779b9u);
+  EnablePattern en(seed, onRate);
+  std::vector<uint16_t> junkS(kD);
+  auto randomInputs = [&] {
+    for (auto& v : junkS) v = uint16_t(junk() & kMaxS);
+    packS(top->s_i, junkS.data());
+    top->col_i = junk() & ((1u << kCW) - 1);
+    top->row_i = junk() & ((1u << kRW) - 1);
+    top->valid_i = junk() & 1;
+    top->subpixel_i = junk() & 1;
+  };
+  struct Slot {
+    int frame, x, y;
+    bool real;
+  };
+  std::vector<Slot> history;  // every enabled slot, in order
+  top->en_i = 0;
+  randomInputs();
+  top.reset();
+  ASSERT_EQ(int(top->valid_o), 0) << "valid_o after reset";
+  Outputs held = outputs(top);
+
+  for (size_t fi = 0; fi < frames.size(); ++fi) {
+    const Frame& f = frames[fi];
+    const int w = f.s.width, h = f.s.height;
+    ASSERT_EQ(f.s.depth, kD) << describe(f);
+    ASSERT_LT(w, 1 << kCW) << describe(f);
+    ASSERT_LT(h + (f.flush + w - 1) / w, 1 << kRW) << describe(f);
+    ASSERT_LE(*std::max_element(f.s.data.begin(), f.s.data.end()), kMaxS) << describe(f) << ": S exceeds SW bits";
+    for (long n = 0; n < long(w) * h + f.flush;) {
+      if (!en.next()) {
+        randomInputs();
+        top->en_i = 0;
+        top.tick();
+        ASSERT_TRUE(outputs(top) == held) << describe(f) << ": outputs changed while en_i = 0";
+        continue;
+      }
+      const int x = int(n % w), y = int(n / w);
+      const bool real = y < h;
+      top->en_i = 1;
+      if (real) {
+        packS(top->s_i, f.s.at(x, y));
+      } else {  // flush slot: junk the module must not mistake for a pixel
+        for (auto& v : junkS) v = uint16_t(junk() & kMaxS);
+        packS(top->s_i, junkS.data());
+      }
+      top->col_i = x;
+      top->row_i = y;
+      top->valid_i = real;
+      top->subpixel_i = f.subpixel;
+      top.tick();
+      history.push_back({int(fi), x, y, real});
+      held = outputs(top);
+      ++n;
+
+      // The outputs after enabled slot t belong to the input of slot t - (LATENCY - 1).
+      const long src = long(history.size()) - kLatency;
+      if (src < 0) {
+        ASSERT_EQ(int(top->valid_o), 0) << describe(f) << ": valid_o before the first pixel reached the output";
+        continue;
+      }
+      const Slot& s = history[src];
+      const Frame& sf = frames[s.frame];
+      ASSERT_EQ(bool(top->valid_o), s.real) << describe(sf) << ": valid_o of slot (" << s.x << ", " << s.y
+                                            << ") [stage: position pipeline]";
+      ASSERT_EQ(int(top->col_o), s.x) << describe(sf) << ": col_o of slot (" << s.x << ", " << s.y << ")";
+      ASSERT_EQ(int(top->row_o), s.y) << describe(sf) << ": row_o of slot (" << s.x << ", " << s.y << ")";
+      if (!s.real) continue;
+      const uint16_t* sp = sf.s.at(s.x, s.y);
+      const Want want = golden(sp, sf.subpixel);
+      const int gd = int(top->d_o), gdisp = int(top->disp_o);
+      if (gd != want.d || gdisp != want.disp) {
+        std::ostringstream ctx;
+        const int d = want.d;
+        ctx << "S(d-1, d, d+1) = " << (d > 0 ? int(sp[d - 1]) : -1) << ", " << int(sp[d]) << ", "
+            << (d < kD - 1 ? int(sp[d + 1]) : -1);
+        FAIL() << "first mismatch at (x, y) = (" << s.x << ", " << s.y << ") of " << describe(sf) << ": expected d "
+               << want.d << " disp " << want.disp << ", got d " << gd << " disp " << gdisp << " [stage: "
+               << (gd != want.d ? "winner-take-all tree" : "sub-pixel division") << "; " << ctx.str() << "]";
+      }
+    }
+  }
+}
+
+// ------------------------------------------------------------------ volumes
+
+sgm::PathVolume randomVolume(int w, int h, int maxValue, std::mt19937& rng) {
+  sgm::PathVolume v(w, h, kD);
+  std::uniform_int_distribution<int> value(0, maxValue);
+  for (auto& s : v.data) s = uint16_t(value(rng));
+  return v;
+}
+
+// Hand-picked cost vectors, one per pixel (cycled through the frame), around
+// the cases the datapath must get right; the rest of each vector is random
+// above the minimum.
+sgm::PathVolume edgeCaseVolume(int w, int h, std::mt19937& rng) {
+  sgm::PathVolume v(w, h, kD);
+  std::uniform_int_distribution<int> above(0, kMaxS);
+  int k = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x, ++k) {
+      uint16_t* s = v.at(x, y);
+      const int m = int(rng() % 200);  // the minimum
+      for (int d = 0; d < kD; ++d) s[d] = uint16_t(m + 1 + above(rng) % (kMaxS - m));
+      const int dm = 1 + int(rng() % (kD - 2));  // an interior winner
+      switch (k % 16) {
+        case 0: std::fill(s, s + kD, uint16_t(m)); break;              // all equal: d = 0
+        case 1: s[0] = uint16_t(m); break;                             // winner at 0
+        case 2: s[kD - 1] = uint16_t(m); break;                        // winner at D-1
+        case 3: s[kD - 1] = s[kD - 2] = uint16_t(m); break;            // tie D-2 / D-1
+        case 4: s[1] = uint16_t(m); break;                             // first refined d
+        case 5: s[kD - 2] = uint16_t(m); break;                        // last refined d
+        case 6: s[dm] = s[dm + 1] = uint16_t(m); break;                // b = m: offset +8
+        case 7:                                                        // many equal minima
+          for (int d = 0; d < kD; ++d)
+            if (rng() % 3 == 0 && d >= dm) s[d] = uint16_t(m);
+          s[dm] = uint16_t(m);
+          break;
+        case 8: s[dm] = 0, s[dm - 1] = s[dm + 1] = uint16_t(kMaxS); break;  // widest den, num = 0
+        case 9: s[dm] = 0, s[dm - 1] = uint16_t(kMaxS), s[dm + 1] = 0; break;  // tie to the right
+        case 10: s[dm] = 0, s[dm - 1] = uint16_t(kMaxS), s[dm + 1] = 1; break;  // q near 8
+        case 11: s[dm] = 0, s[dm - 1] = 1, s[dm + 1] = uint16_t(kMaxS); break;  // q near -8
+        case 12: s[dm] = uint16_t(m), s[dm - 1] = uint16_t(m + 1), s[dm + 1] = uint16_t(m + 3); break;  // half-way rounding
+        case 13: s[dm] = uint16_t(m), s[dm - 1] = uint16_t(m + 3), s[dm + 1] = uint16_t(m + 1); break;
+        case 14: std::fill(s, s + kD, uint16_t(kMaxS)), s[dm] = uint16_t(kMaxS - 1); break;  // all at the top
+        default: s[dm] = uint16_t(m); break;
+      }
+    }
+  return v;
+}
+
+// ------------------------------------------------------------------ synthetic
+
+TEST(SgmWta, EdgeCases) {
+  Top top("sgm_wta_edges");
+  std::mt19937 rng(11);
+  runFrames(top,
+            {{edgeCaseVolume(32, 16, rng), true, "edge cases, sub-pixel"},
+             {edgeCaseVolume(32, 16, rng), false, "edge cases, integer"}},
+            111);
+}
+
+// den = a + b - 2m = 0 cannot occur at the WTA winner: a = S(d*-1) > m, or d*-1
+// would have won the tie (golden's "q = 0 when den = 0" is unreachable here).
+// The smallest reachable denominators: den = 1 (b = m, a = m + 1: q = 8, the
+// half-pixel rounding edge) and den = 2 with num = 0 (q = 0), at every
+// interior d.
+TEST(SgmWta, SmallestDenominator) {
+  Top top("sgm_wta_den");
+  sgm::PathVolume v(kD, 4, kD);
+  for (int y = 0; y < v.height; ++y)
+    for (int x = 0; x < v.width; ++x) {
+      uint16_t* s = v.at(x, y);
+      std::fill(s, s + kD, uint16_t(500));
+      const int dm = 1 + (x % (kD - 2));
+      s[dm] = 100;
+      if (y % 2 == 0) s[dm - 1] = 101, s[dm + 1] = 100;
+      else s[dm - 1] = 101, s[dm + 1] = 101;
+    }
+  runFrames(top, {{v, true, "small den"}}, 112);
+}
+
+TEST(SgmWta, RandomCostsFullRange) {
+  Top top("sgm_wta_random");
+  std::mt19937 rng(13);
+  runFrames(top,
+            {{randomVolume(16, 9, kMaxS, rng), true, "16x9 full range"},
+             {randomVolume(61, 13, kMaxS, rng), true, "61x13 full range"},
+             {randomVolume(128, 8, kMaxS, rng), false, "128x8 full range, integer"}},
+            113);
+}
+
+TEST(SgmWta, RandomCostsManyTies) {
+  Top top("sgm_wta_ties");
+  std::mt19937 rng(14);
+  runFrames(top,
+            {{randomVolume(40, 12, 1, rng), true, "values 0..1"},
+             {randomVolume(40, 12, 3, rng), true, "values 0..3"},
+             {randomVolume(23, 9, 7, rng), false, "values 0..7, integer"}},
+            114);
+}
+
+// Two frames (then more) of different sizes and settings with no reset in
+// between and the minimum flush, then a generous one.
+TEST(SgmWta, BackToBackFramesOfDifferentSizes) {
+  Top top("sgm_wta_b2b");
+  std::mt19937 rng(15);
+  std::vector<Frame> frames = {{randomVolume(128, 11, kMaxS, rng), true, "first 128x11"},
+                               {randomVolume(17, 9, 5, rng), false, "second 17x9"},
+                               {edgeCaseVolume(45, 10, rng), true, "third 45x10"},
+                               {randomVolume(16, 20, 3, rng), true, "fourth 16x20"}};
+  frames[2].flush = 3 * 45;  // three flush rows
+  runFrames(top, frames, 115);
+}
+
+TEST(SgmWta, EnablePatterns) {
+  std::mt19937 rng(16);
+  for (double rate : {0.05, 0.5, 1.0}) {
+    Top top("sgm_wta_en");
+    runFrames(top, {{edgeCaseVolume(29, 12, rng), true, "en rate " + std::to_string(rate)}}, 116, rate);
+  }
+}
+
+// Many random frames of random sizes, value ranges and settings back to back.
+TEST(SgmWta, RandomSoak) {
+  Top top("sgm_wta_soak");
+  std::mt19937 rng(17);
+  std::vector<Frame> frames;
+  const int ranges[] = {1, 3, 15, 255, kMaxS};
+  for (int i = 0; i < 40; ++i) {
+    const int w = 16 + int(rng() % 113), h = 1 + int(rng() % 12);
+    Frame f{i % 5 == 4 ? edgeCaseVolume(w, h, rng) : randomVolume(w, h, ranges[rng() % 5], rng), bool(rng() % 4 != 0),
+            "soak " + std::to_string(i)};
+    f.flush += int(rng() % 3) * w;
+    frames.push_back(std::move(f));
+  }
+  runFrames(top, frames, 117);
+}
+
+// ------------------------------------------------------------------ Middlebury cones
+
+const sgm::PipelineStages* conesStages(std::string& why) {
+  static std::map<int, sgm::PipelineStages> cache;
+  const char* root = std::getenv("SGM_DATA");
+  const std::string dir = std::string(root ? root : "") + "/cones";
+  if (!root || !std::filesystem::exists(dir + "/left.png") || !std::filesystem::exists(dir + "/right.png")) {
+    why = "Middlebury cones not found at '" + dir + "' (set SGM_DATA, e.g. via make rtl-tests DATA=...)";
+    return nullptr;
+  }
+  auto it = cache.find(kD);
+  if (it == cache.end()) {
+    sgm::Params params;
+    params.disparities = kD;
+    it = cache.emplace(kD, sgm::runPipelineStages(sgm::readGray(dir + "/left.png"), sgm::readGray(dir + "/right.png"),
+                                                  params)).first;
+  }
+  return &it->second;
+}
+
+// The whole aggregated cones volume of this build's D through the core, with
+// and without sub-pixel; the sub-pixel result must also equal the disp plane of
+// the golden pipeline's selection stage.
+TEST(SgmWta, Cones) {
+  std::string why;
+  const sgm::PipelineStages* st = conesStages(why);
+  if (!st) GTEST_SKIP() << why;
+  const sgm::PathVolume& s = st->aggregated;
+  // The golden selection stage agrees with the per-pixel model used above.
+  for (int y = 0; y < s.height; ++y)
+    for (int x = 0; x < s.width; ++x)
+      ASSERT_EQ(golden(s.at(x, y), true).disp, int(st->selected.disp.at<uint16_t>(y, x)))
+          << "golden model disagreement at (" << x << ", " << y << ")";
+  Top top("sgm_wta_cones");
+  runFrames(top,
+            {{s, true, "cones D=" + std::to_string(kD) + " aggregated"},
+             {s, false, "cones D=" + std::to_string(kD) + " aggregated, integer"}},
+            700 + kD, 0.8);
+}
+
+}  // namespace
