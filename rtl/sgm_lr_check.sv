@@ -51,7 +51,10 @@
 // real pixel: every word read for row y was written by row y of this frame.
 //
 // The output slot carries left pixel (x, y-1): out_valid_o = 1 iff
-// 1 <= y <= height (the flush row y = height carries the last frame row out).
+// 1 <= y <= height (the flush row y = height carries the last frame row out)
+// and the stored word of (x, y-1) says it was a frame pixel (wta_valid_i):
+// a slot of an earlier frame still in flight after a frame switch may have a
+// row inside the new frame's height, but its stored flag is 0.
 // tol_i / check_en_i / height_i are sampled with the slot and travel with it.
 //
 // Parameters: D disparities (power of two), SW width of S, DW disparity width
@@ -102,7 +105,7 @@ module sgm_lr_check #(
 
   localparam int MW  = 2 * MAX_WIDTH;   // words per memory (two banks)
   localparam int MAW = $clog2(MW);
-  localparam int LW  = LD + DW;         // lt_mem word {d, disp}
+  localparam int LW  = LD + DW;         // lt_mem word {frame pixel, d, disp} has LW + 1 bits
 
   // Word address of column col in bank b.
   function automatic logic [MAW-1:0] mem_addr(input logic b, input logic [CW-1:0] col);
@@ -206,22 +209,26 @@ module sgm_lr_check #(
   end
 
   // ------------------------------------------------------------ left memory
-  logic [LW-1:0] lt_mem [0:MW-1];
+  // Every WTA-side slot writes its word with its frame-pixel flag, so a word
+  // read back is always the one of (x, y-1) of the same slot stream: output
+  // validity comes from that flag, never from the position alone (a slot of an
+  // earlier frame still in flight may have a row inside the next frame).
+  logic [LW:0] lt_mem [0:MW-1];
   always_ff @(posedge clk_i) begin
-    if (en_i && wta_valid_i) lt_mem[mem_addr(wta_row_i[0], wta_col_i)] <= {d_i, disp_i};
+    if (en_i) lt_mem[mem_addr(wta_row_i[0], wta_col_i)] <= {wta_valid_i, d_i, disp_i};
   end
 
   // ------------------------------------------------------------ R1
   wire in_real = row_i != '0 && row_i <= height_i;   // previous row is a frame row
 
-  logic [LW-1:0] r1_word_q;
+  logic [LW:0]   r1_word_q;
   logic [CW-1:0] r1_col_q;
   logic [RW-1:0] r1_row_q;
   logic          r1_bank_q, r1_real_q, r1_chk_q;
   logic [2:0]    r1_tol_q;
 
   always_ff @(posedge clk_i) begin
-    if (en_i && in_real) r1_word_q <= lt_mem[mem_addr(~row_i[0], col_i)];
+    if (en_i) r1_word_q <= lt_mem[mem_addr(~row_i[0], col_i)];
   end
 
   always_ff @(posedge clk_i) begin
@@ -238,6 +245,7 @@ module sgm_lr_check #(
   wire [LD-1:0] r1_d    = r1_word_q[DW +: LD];
   wire          r1_ok   = r1_col_q >= CW'(r1_d);          // x - d >= 0
   wire [CW-1:0] r1_xr   = r1_col_q - CW'(r1_d);
+  wire          r1_real = r1_real_q && r1_word_q[LW];  // (x, y-1) was a pixel of this frame
 
   logic [LD-1:0] r2_dr_q;
   logic [LD-1:0] r2_d_q;
@@ -248,7 +256,7 @@ module sgm_lr_check #(
   logic [2:0]    r2_tol_q;
 
   always_ff @(posedge clk_i) begin
-    if (en_i && r1_real_q && r1_ok) r2_dr_q <= dr_mem[mem_addr(r1_bank_q, r1_xr)];
+    if (en_i && r1_real && r1_ok) r2_dr_q <= dr_mem[mem_addr(r1_bank_q, r1_xr)];
   end
 
   always_ff @(posedge clk_i) begin
@@ -283,7 +291,7 @@ module sgm_lr_check #(
       out_valid_o <= 1'b0;
     end else if (en_i) begin
       r1_real_q   <= in_real;
-      r2_real_q   <= r1_real_q;
+      r2_real_q   <= r1_real;
       out_valid_o <= r2_real_q;
     end
   end

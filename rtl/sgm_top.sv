@@ -264,17 +264,38 @@ module sgm_top #(
   );
 
   // ------------------------------------------------------------ LR check
-  // TEMPORARY pass-through until sgm_lr_check lands (LR check off only).
+  // S side: the path engine's slot stream; WTA side: the winner of the same S,
+  // sgm_wta's LATENCY slots later (sgm_lr_check accepts any lag below a row).
   logic [DW-1:0] lr_disp;
   logic          lr_ok, lr_valid;
   logic [XW-1:0] col5;
   logic [YW-1:0] row5;
-  assign lr_disp  = win_disp;
-  assign lr_ok    = 1'b1;
-  assign lr_valid = valid4;
-  assign col5     = col4;
-  assign row5     = row4;
-  wire unused_lr = &{1'b0, win_d, lr_en, lr_tol};
+
+  sgm_lr_check #(
+    .D(D), .SW(SW), .DW(DW), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(YW)
+  ) u_lr (
+    .clk_i       (clk_i),
+    .rst_ni      (rst_ni),
+    .en_i        (en),
+    .width_i     (width),
+    .height_i    (height),
+    .tol_i       (lr_tol),
+    .check_en_i  (lr_en),
+    .s_i         (sum),
+    .col_i       (col3),
+    .row_i       (row3),
+    .valid_i     (valid3),
+    .d_i         (win_d),
+    .disp_i      (win_disp),
+    .wta_col_i   (col4),
+    .wta_row_i   (row4),
+    .wta_valid_i (valid4),
+    .disp_o      (lr_disp),
+    .valid_o     (lr_ok),
+    .col_o       (col5),
+    .row_o       (row5),
+    .out_valid_o (lr_valid)
+  );
 
   // ------------------------------------------------------------ hole filling
   logic [DW-1:0] fill_disp;
