@@ -122,6 +122,10 @@ endef
 
 $(eval $(call rtl_test,p2-lut,sgm_p2_lut,))
 $(eval $(call rtl_test,stream-ctrl,tb_stream_ctrl,))
+$(eval $(call rtl_test,hole-fill,sgm_hole_fill,))
+$(eval $(call rtl_test,hole-fill-d64,sgm_hole_fill,-GDW=10 -GMAX_WIDTH=512))
+$(eval $(call rtl_test,median5x5,sgm_median5x5,))
+$(eval $(call rtl_test,median5x5-d64,sgm_median5x5,-GDW=10 -GMAX_WIDTH=512))
 $(eval $(call rtl_test,path-engine-d16,sgm_path_engine,-GD=16 -GMAX_WIDTH=128 -GXW=8 -GYW=8 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,path-engine-d64,sgm_path_engine,-GD=64 -GMAX_WIDTH=512 -GXW=10 -GYW=10 -CFLAGS -DSGM_D=64 -CFLAGS -DSGM_YW=10))
 $(eval $(call rtl_test,wta-d16,sgm_wta,-GD=16))
