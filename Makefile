@@ -20,6 +20,8 @@ GOLDEN_SRC := $(wildcard golden/sgm/*.cpp)
 GOLDEN_OBJ := $(patsubst %.cpp,$(OBJ)/%.o,$(GOLDEN_SRC))
 GOLDEN_LIB := $(BUILD)/lib/libsgmgolden.a
 GOLDEN_HDR := $(wildcard golden/sgm/*.hpp)
+RTL_SRC    := $(wildcard rtl/*.sv)
+TB_HDR     := $(wildcard tb/*.hpp)
 
 # tools/*.cpp except the CLI mains form the evaluation library (scenes, error
 # figures, OpenCV reference, reports) shared by sgm-eval, the tests and the harness.
@@ -95,12 +97,10 @@ bench-golden: golden
 	$(BIN)/sgm-eval bench --data "$(DATA)" --out $(BUILD)/eval
 
 # ---------------------------------------------------------------- RTL
-RTL_SRC    := $(wildcard rtl/*.sv)
 RTL_TOPS   := $(wildcard tb/tops/*.sv)
 RTL_MODULES = $(basename $(notdir $(RTL_SRC)))
 VERILATOR  := verilator
 VLT        := rtl/lint.vlt
-TB_HDR     := $(wildcard tb/*.hpp)
 VL_CFLAGS   = -std=c++17 -O2 -march=$(ARCH) -I$(abspath golden) -I$(abspath tools) -I$(abspath tb) $(OPENCV_CFLAGS)
 VL_LDFLAGS  = -lgtest -lgtest_main $(OPENCV_LIBS) -pthread
 # TRACE=1 builds the verilated models with FST tracing (then run with TRACE=1 to write build/trace/*.fst).
@@ -126,6 +126,8 @@ $(eval $(call rtl_test,hole-fill,sgm_hole_fill,))
 $(eval $(call rtl_test,hole-fill-d64,sgm_hole_fill,-GDW=10 -GMAX_WIDTH=512))
 $(eval $(call rtl_test,median5x5,sgm_median5x5,))
 $(eval $(call rtl_test,median5x5-d64,sgm_median5x5,-GDW=10 -GMAX_WIDTH=512))
+$(eval $(call rtl_test,top-d16,sgm_top,-GD=16 -GMAX_WIDTH=128 -CFLAGS -DSGM_D=16))
+$(eval $(call rtl_test,top-d64,sgm_top,-GD=64 -GMAX_WIDTH=512 -CFLAGS -DSGM_D=64))
 $(eval $(call rtl_test,path-engine-d16,sgm_path_engine,-GD=16 -GMAX_WIDTH=128 -GXW=8 -GYW=8 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,path-engine-d64,sgm_path_engine,-GD=64 -GMAX_WIDTH=512 -GXW=10 -GYW=10 -CFLAGS -DSGM_D=64 -CFLAGS -DSGM_YW=10))
 $(eval $(call rtl_test,wta-d16,sgm_wta,-GD=16))

@@ -64,7 +64,8 @@ TEST(SgmTop, SyntheticFramesBackToBackWithStalls) {
     Harness core("sgm_top_synthetic", 11, {stall, stall});
     std::mt19937 rng(3);
     std::vector<FrameInput> frames;
-    for (const auto [w, h] : {std::pair{std::max(kD, 16), 9}, {53, 17}, {100, 12}, {std::max(kD, 16) + 1, 10}})
+    const int narrowest = std::max(kD, 16);  // the core's minimum width
+    for (const auto [w, h] : {std::pair{narrowest, 9}, {narrowest + 37, 17}, {narrowest + 84, 12}, {narrowest + 1, 10}})
       frames.push_back(syntheticPair(w, h, rng, hardwareDefaults()));
     expectBitExact(core, frames, "stall " + std::to_string(stall));
   }
@@ -81,7 +82,7 @@ TEST(SgmTop, ParameterSetsChangeFromFrameToFrame) {
   sgm::Params strict = hardwareDefaults();
   strict.lrTolerance = 0, strict.p1 = 0, strict.p2 = 0;
   sgm::Params raw = hardwareDefaults().rawSgm();
-  for (const sgm::Params& p : {unified, rt, strict, raw, hardwareDefaults()}) frames.push_back(syntheticPair(64, 20, rng, p));
+  for (const sgm::Params& p : {unified, rt, strict, raw, hardwareDefaults()}) frames.push_back(syntheticPair(kD + 20, 20, rng, p));
   expectBitExact(core, frames, "parameter sets");
 }
 
