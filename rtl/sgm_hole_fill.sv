@@ -130,13 +130,22 @@ module sgm_hole_fill #(
   // Output pixel (x, y) is real when 1 <= row_i <= height_i and its stored word
   // says its own slot was a frame pixel (a slot of an earlier frame still in
   // flight after a frame switch may have a row inside the new frame, never the flag).
+  // armed_q: a frame pixel has entered since reset. Before that, positions in
+  // the pipeline and flags in the memories are power-up values, so nothing may
+  // come out; after it, every word read for an output was written by the stream.
+  logic armed_q;
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) armed_q <= 1'b0;
+    else if (en_i && in_valid_i) armed_q <= 1'b1;
+  end
+
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       ok1_q       <= 1'b0;
       ok2_q       <= 1'b0;
       out_valid_o <= 1'b0;
     end else if (en_i) begin
-      ok1_q       <= row_i != '0 && row_i <= height_i && col_i < width_i;
+      ok1_q       <= armed_q && row_i != '0 && row_i <= height_i && col_i < width_i;
       ok2_q       <= ok1_q && word1_q[PW-1];
       out_valid_o <= ok2_q;
     end

@@ -284,13 +284,22 @@ module sgm_lr_check #(
     end
   end
 
+  // armed_q: a frame pixel has entered since reset. Before that, positions in
+  // the pipeline and flags in the memories are power-up values, so nothing may
+  // come out; after it, every word read for an output was written by the stream.
+  logic armed_q;
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) armed_q <= 1'b0;
+    else if (en_i && valid_i) armed_q <= 1'b1;
+  end
+
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       r1_real_q   <= 1'b0;
       r2_real_q   <= 1'b0;
       out_valid_o <= 1'b0;
     end else if (en_i) begin
-      r1_real_q   <= in_real;
+      r1_real_q   <= in_real && armed_q;
       r2_real_q   <= r1_real;
       out_valid_o <= r2_real_q;
     end

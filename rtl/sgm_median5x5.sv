@@ -255,6 +255,15 @@ module sgm_median5x5 #(
     if (en_i) real_q <= {real_q[0], new_ent[2*EW + DW + 1]};
   end
 
+  // armed_q: a frame pixel has entered since reset. Before that, positions in
+  // the pipeline and flags in the memories are power-up values, so nothing may
+  // come out; after it, every word read for an output was written by the stream.
+  logic armed_q;
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) armed_q <= 1'b0;
+    else if (en_i && in_valid_i) armed_q <= 1'b1;
+  end
+
   // Control: v0_q marks stage 0 as loaded since reset; oka_q, ok_q follow the centre.
   logic v0_q, oka_q;
   always_ff @(posedge clk_i) begin
@@ -265,7 +274,7 @@ module sgm_median5x5 #(
       out_valid_o <= 1'b0;
     end else if (en_i) begin
       v0_q        <= 1'b1;
-      oka_q       <= v0_q && centre_in && real_q[1];
+      oka_q       <= v0_q && armed_q && centre_in && real_q[1];
       ok_q        <= {ok_q[DW-2:0], oka_q};
       out_valid_o <= ok_q[DW-1];
     end

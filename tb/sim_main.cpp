@@ -114,6 +114,16 @@ int main(int argc, char** argv) {
         {out + "/disparity_color.png", encodeDisparityColor(rtl, params.disparities)}};
     if (scene.hasGroundTruth())
       pictures.push_back({out + "/sidebyside.png", eval::sideBySide(scene, eval::toFloat(rtl), maxD)});
+    if (mismatches) {  // where the core differs from the golden model: white
+      cv::Mat where(h, w, CV_8UC1);
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+          where.at<uint8_t>(y, x) = rtl.disp.at<uint16_t>(y, x) != golden.disp.at<uint16_t>(y, x) ||
+                                            rtl.valid.at<uint8_t>(y, x) != golden.valid.at<uint8_t>(y, x)
+                                        ? 255
+                                        : 0;
+      pictures.push_back({out + "/mismatch.png", where});
+    }
     writePngs(pictures);
 
     eval::JsonWriter json;
