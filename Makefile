@@ -38,7 +38,10 @@ all: golden
 help:
 	@echo "make deps          install the Debian packages the project needs (root, idempotent)"
 	@echo "make golden        build build/bin/sgm-golden and build/bin/sgm-eval"
-	@echo "make sim           run the default scene (Aloe) or LEFT= RIGHT= [GT=] [OUT=]"
+	@echo "make sim           the verilated core on Aloe (or LEFT= RIGHT= [GT=] [OUT=]) vs the golden model"
+	@echo "                   options: D=64 MAX_WIDTH=1280 STALL=0.3 FRAMES=2 SEED=1 TRACE=1"
+	@echo "make lint          verilator --lint-only -Wall on every RTL module"
+	@echo "make rtl-tests     every verilated GoogleTest fixture (modules and the whole core)"
 	@echo "make eval          Table I and full-pipeline accuracy on DATA=$(DATA) -> build/eval/"
 	@echo "make bench-golden  golden model vs OpenCV StereoSGBM time on one frame, same run"
 	@echo "make test          everything CI runs (unit tests, end-to-end accuracy, CLI errors)"
@@ -88,7 +91,7 @@ $(BIN)/sgm-sim-d%: tb/sim_main.cpp $(RTL_SRC) $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB
 	  > $(BUILD)/verilator-$(notdir $@).log || { tail -30 $(BUILD)/verilator-$(notdir $@).log; exit 1; }
 
 sim: $(SIM_BIN)
-	$(SIM_BIN) $(SIM_ARGS)
+	TRACE=$(TRACE) $(SIM_BIN) $(SIM_ARGS)
 
 eval: golden
 	$(BIN)/sgm-eval table --data "$(DATA)" --out $(BUILD)/eval
