@@ -116,7 +116,8 @@ define rtl_test
 RTL_TEST_BINS += $(BIN)/rtl-$(1)
 $(BIN)/rtl-$(1): tests/rtl/test_$(2).cpp $(RTL_SRC) $(RTL_TOPS) $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
 	@mkdir -p $(BIN) $(BUILD)/verilator
-	$(VERILATOR) --cc --exe --build -j $(JOBS) -Wall $(VLT) --x-assign unique --x-initial unique $(VL_TRACE) \
+	@echo "verilating $(2) for $$@ (log: $(BUILD)/verilator-$(1).log)"
+	@$(VERILATOR) --cc --exe --build -j $(JOBS) -Wall $(VLT) --x-assign unique --x-initial unique $(VL_TRACE) \
 	  -y rtl -y tb/tops --top-module $(2) $(3) -Mdir $(BUILD)/verilator/$(1) -o $(abspath $(BIN))/rtl-$(1) \
 	  $(wildcard rtl/$(2).sv tb/tops/$(2).sv) $(abspath tests/rtl/test_$(2).cpp) $(abspath $(EVAL_OBJ)) $(abspath $(GOLDEN_LIB)) \
 	  -CFLAGS "$(VL_CFLAGS)" -LDFLAGS "$(VL_LDFLAGS)" > $(BUILD)/verilator-$(1).log || \
@@ -131,6 +132,8 @@ $(eval $(call rtl_test,median5x5,sgm_median5x5,))
 $(eval $(call rtl_test,median5x5-d64,sgm_median5x5,-GDW=10 -GMAX_WIDTH=512))
 $(eval $(call rtl_test,top-d16,sgm_top,-GD=16 -GMAX_WIDTH=128 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,top-d64,sgm_top,-GD=64 -GMAX_WIDTH=512 -CFLAGS -DSGM_D=64))
+$(eval $(call rtl_test,top-d32,sgm_top,-GD=32 -GMAX_WIDTH=128 -CFLAGS -DSGM_D=32))
+$(eval $(call rtl_test,top-d128,sgm_top,-GD=128 -GMAX_WIDTH=256 -CFLAGS -DSGM_D=128))
 $(eval $(call rtl_test,path-engine-d16,sgm_path_engine,-GD=16 -GMAX_WIDTH=128 -GXW=8 -GYW=8 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,path-engine-d64,sgm_path_engine,-GD=64 -GMAX_WIDTH=512 -GXW=10 -GYW=10 -CFLAGS -DSGM_D=64 -CFLAGS -DSGM_YW=10))
 $(eval $(call rtl_test,wta-d16,sgm_wta,-GD=16))
@@ -142,8 +145,12 @@ $(eval $(call rtl_test,census-unit,sgm_census_unit,-GMAX_WIDTH=128 -GCW=8 -GRW=8
 $(eval $(call rtl_test,cost-volume-d16,sgm_cost_volume,--top-module tb_cost_front tb/tops/tb_cost_front.sv -GD=16 -GMAX_WIDTH=128 -GCW=8 -GRW=8))
 $(eval $(call rtl_test,cost-volume-d64,sgm_cost_volume,--top-module tb_cost_front tb/tops/tb_cost_front.sv -GD=64 -GMAX_WIDTH=512 -GCW=10 -GRW=9))
 
+RESULTS := $(BUILD)/test-results
+
 rtl-tests: $(RTL_TEST_BINS)
-	@for t in $(RTL_TEST_BINS); do echo "== $$t"; SGM_DATA="$(DATA)" $$t || exit 1; done
+	@mkdir -p $(RESULTS)
+	@for t in $(RTL_TEST_BINS); do echo "== $$t"; \
+	  SGM_DATA="$(DATA)" $$t --gtest_output=xml:$(RESULTS)/$$(basename $$t).xml || exit 1; done
 
 # verilator --lint-only -Wall on every module; waivers live in rtl/lint.vlt.
 lint: | check-tools
@@ -157,9 +164,12 @@ $(BIN)/unit-tests: $(TEST_OBJ) $(EVAL_OBJ) $(GOLDEN_LIB)
 	$(CXX) $(CXXFLAGS) -o $@ $^ -lgtest -lgtest_main $(LDLIBS)
 
 unit-test: $(BIN)/unit-tests golden
-	SGM_DATA="$(DATA)" SGM_BIN="$(abspath $(BIN))" $(BIN)/unit-tests
+	@mkdir -p $(RESULTS)
+	SGM_DATA="$(DATA)" SGM_BIN="$(abspath $(BIN))" $(BIN)/unit-tests --gtest_output=xml:$(RESULTS)/unit-tests.xml
 
+# One closing line over every GoogleTest binary of this run.
 test: lint unit-test rtl-tests
+	@scripts/test-summary.sh $(RESULTS)
 
 clean:
 	rm -rf $(BUILD)
