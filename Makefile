@@ -49,6 +49,8 @@ help:
 
 # ---------------------------------------------------------------- dependencies
 include scripts/deps.mk
+# `make synth` and its reports (synth/synth.mk, when present).
+-include synth/synth.mk
 
 # ---------------------------------------------------------------- golden model
 $(OBJ)/%.o: %.cpp $(GOLDEN_HDR) $(wildcard tools/*.hpp) | check-tools
