@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <unistd.h>
 
 #ifndef SGM_D
@@ -147,8 +148,10 @@ int main(int argc, char** argv) {
     json.key("sim_cycles_per_second").real(double(core.top().cycles()) / seconds);
     json.key("sim_seconds").real(seconds);
     json.key("frame_errors").integer(long(outputs[0].errors));
+    std::optional<eval::ErrorFigures> figures;
     if (scene.hasGroundTruth()) {
-      const eval::ErrorFigures f = eval::evaluate(eval::toFloat(rtl), scene);
+      figures = eval::evaluate(eval::toFloat(rtl), scene);
+      const eval::ErrorFigures& f = *figures;
       json.key("err_nonocc").real(f.errNonocc);
       json.key("err_all").real(f.errAll);
       json.key("err_disc").real(f.errDisc);
@@ -166,10 +169,9 @@ int main(int argc, char** argv) {
     std::printf("sgm-sim: %llu cycles for the frame, %.4f cycles/pixel (latency %lld cycles), %.0f simulated cycles/s\n",
                 (unsigned long long)cycles, double(cycles) / double(pixels), (long long)(cycles) - pixels,
                 double(core.top().cycles()) / seconds);
-    if (scene.hasGroundTruth()) {
-      const eval::ErrorFigures f = eval::evaluate(eval::toFloat(rtl), scene);
-      std::printf("sgm-sim: bad-1.0 nonocc %.2f%%, all %.2f%%, density %.2f%%\n", f.errNonocc, f.errAll, f.density);
-    }
+    if (figures)
+      std::printf("sgm-sim: bad-1.0 nonocc %.2f%%, all %.2f%%, density %.2f%%\n", figures->errNonocc, figures->errAll,
+                  figures->density);
     std::printf("sgm-sim: wrote %s/{disparity16,disparity8,disparity_color%s}.png and report.json\n", out.c_str(),
                 scene.hasGroundTruth() ? ",sidebyside" : "");
     return mismatches == 0 ? 0 : 1;
