@@ -6,6 +6,7 @@
 #include <verilated.h>
 
 #include <cstdint>
+#include <vector>
 
 namespace sgm::tb {
 
@@ -42,6 +43,32 @@ inline void setBits(Port& port, int lsb, int width, uint32_t value) {
     w = (w & ~(1u << (bit % 32))) | (((value >> i) & 1u) << (bit % 32));
     setWord(port, word, w);
   }
+}
+
+// values[0 .. count) into port, element i at bits [i*width +: width] (width <= 32,
+// each value masked to width bits): a flattened array port such as s_i.
+template <typename Port, typename T>
+inline void packFields(Port& port, const T* values, int count, int width) {
+  const uint64_t mask = width == 32 ? 0xffffffffull : ((uint64_t(1) << width) - 1);
+  uint64_t acc = 0;
+  int bits = 0, word = 0;
+  for (int i = 0; i < count; ++i) {
+    acc |= (uint64_t(values[i]) & mask) << bits;
+    for (bits += width; bits >= 32; bits -= 32, acc >>= 32) setWord(port, word++, uint32_t(acc));
+  }
+  if (bits > 0) setWord(port, word, uint32_t(acc));
+}
+
+// Every 32-bit word of the given ports, in order: a snapshot of a set of
+// (output) ports of any widths, to compare before and after a cycle.
+template <typename... Ports>
+inline std::vector<uint32_t> portWords(const Ports&... ports) {
+  std::vector<uint32_t> words;
+  auto append = [&](const auto& port) {
+    for (int i = 0; i < int(sizeof(port) + 3) / 4; ++i) words.push_back(wordOf(port, i));
+  };
+  (append(ports), ...);
+  return words;
 }
 
 }  // namespace sgm::tb

@@ -1,13 +1,16 @@
 // sgm_census_unit against the golden sgm::censusTransform (docs/algorithm.md
 // section 2, docs/rtl.md "Window and census"). Frames are streamed slot by slot
-// in raster order, each followed by flush slots (rows height, height+1, ...,
-// pixel 0) until its last centre has entered, back to back without reset, with
-// en_i toggled by a seeded random pattern (pix/col/row are random junk while
-// en_i = 0, and every output must hold). Every output slot is checked against
-// the latency contract (LATENCY from the model): valid_o, the centre position,
-// and for valid centres census, rank, centre pixel and the four neighbours.
+// in the census raster of tb/census_stream.hpp (each frame followed by flush
+// slots until its last centre has entered), back to back without reset, with
+// en_i toggled by the seeded enable pattern of tb/slot_driver.hpp (pix/col/row
+// are random junk while en_i = 0, and every output must hold). Every output
+// slot is checked against the latency contract (LATENCY from the model):
+// valid_o, the centre position, and for valid centres census, rank, centre
+// pixel and the four neighbours.
 #include "Vsgm_census_unit.h"
 #include "Vsgm_census_unit_sgm_census_unit.h"
+#include "census_stream.hpp"
+#include "slot_driver.hpp"
 #include "verilated_top.hpp"
 
 #include "sgm/census.hpp"
@@ -16,7 +19,7 @@
 
 #include <opencv2/core.hpp>
 
-#include <cstdio>
+#include <algorithm>
 #include <random>
 #include <sstream>
 #include <string>
@@ -26,173 +29,95 @@ namespace {
 
 using Top = sgm::tb::VerilatedTop<Vsgm_census_unit>;
 using Rtl = Vsgm_census_unit_sgm_census_unit;  // public parameters of the build
+using sgm::tb::Flush;
+using StreamOptions = sgm::tb::CensusStreamOptions;
 
 constexpr int kLatency = int(Rtl::LATENCY);
 constexpr int kMaxWidth = int(Rtl::MAX_WIDTH);
 
-// How a frame's flush ends: right after the slot of its last centre, (3, H+4)
-// (the next frame enters while this one is still in the pipeline), or after
-// complete flush rows H .. H+4.
-enum class Flush { kMinimal, kFullRows };
-
-struct Slot {
-  int frame;  // index into the frame list
-  int x, y;   // position in the virtual raster
-  uint8_t pix;
-};
-
-// Centre of the slot at input (x, y): docs/rtl.md.
-struct Centre {
-  int x, y;
-};
-Centre centreOf(int x, int y, int w) { return x >= 4 ? Centre{x - 4, y - 4} : Centre{w + x - 4, y - 5}; }
-
-std::vector<Slot> buildSlots(const std::vector<cv::Mat>& frames, Flush flush, int trailing) {
-  std::vector<Slot> slots;
-  for (int f = 0; f < int(frames.size()); ++f) {
-    const cv::Mat& img = frames[f];
-    const int w = img.cols, h = img.rows;
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x) slots.push_back({f, x, y, img.at<uint8_t>(y, x)});
-    // Flush slots: rows h, h+1, ... with pixel 0 until the flush policy is met,
-    // then (after the last frame only) `trailing` more so the last outputs leave.
-    int extra = f + 1 == int(frames.size()) ? trailing : 0;
-    for (int x = 0, y = h;;) {
-      const bool done = y > h + 4 || (y == h + 4 && flush == Flush::kMinimal && x > 3);
-      if (done && extra-- <= 0) break;
-      slots.push_back({f, x, y, 0});
-      if (++x == w) x = 0, ++y;
-    }
-  }
-  return slots;
-}
-
-struct Outputs {
-  uint32_t census[3];
-  uint32_t rank, centre, nbr, col, row, valid;
-  bool operator==(const Outputs& o) const {
-    return census[0] == o.census[0] && census[1] == o.census[1] && census[2] == o.census[2] && rank == o.rank &&
-           centre == o.centre && nbr == o.nbr && col == o.col && row == o.row && valid == o.valid;
-  }
-};
-
-Outputs outputsOf(Top& top) {
-  Outputs o;
-  for (int i = 0; i < 3; ++i) o.census[i] = top->census_o[i];
-  o.rank = top->rank_o;
-  o.centre = top->centre_o;
-  o.nbr = top->nbr_o;
-  o.col = top->col_o;
-  o.row = top->row_o;
-  o.valid = top->valid_o;
-  return o;
-}
-
-std::string hexCensus(uint64_t lo, uint32_t hi) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%04x%016llx", unsigned(hi & 0xffff), static_cast<unsigned long long>(lo));
-  return buf;
-}
-
-struct StreamOptions {
-  Flush flush = Flush::kMinimal;
-  uint32_t seed = 1;
-  int idlePercent = 30;    // probability of an idle cycle before a slot
-  int burstPermille = 5;   // probability of a long idle burst (up to 40 cycles)
-};
-
-struct StreamStats {
-  long slots = 0, cycles = 0, validOutputs = 0;
-};
-
 // Streams the frames through the unit and checks every output slot; stops at the
 // first mismatch with frame, pixel, stage, expected and got.
-void runStream(Top& top, const std::vector<cv::Mat>& frames, const StreamOptions& opt, StreamStats* stats = nullptr) {
+void runStream(Top& top, const std::vector<cv::Mat>& frames, const StreamOptions& opt) {
+  std::vector<cv::Size> sizes;
   for (const cv::Mat& f : frames) {
     ASSERT_GE(f.cols, 16);
     ASSERT_GE(f.rows, 9);
     ASSERT_LE(f.cols, kMaxWidth);
+    sizes.push_back(f.size());
   }
   std::vector<std::vector<sgm::Census>> golden;
   for (const cv::Mat& f : frames) golden.push_back(sgm::censusTransform(f));
-  const std::vector<Slot> slots = buildSlots(frames, opt.flush, kLatency);
+  const std::vector<sgm::tb::RasterSlot> slots = sgm::tb::censusRaster(sizes, opt.flush, kLatency);
 
-  std::mt19937 rng(opt.seed);
-  std::uniform_int_distribution<int> percent(0, 99), permille(0, 999), burst(1, 40), junk(0, 1 << 30);
-  long validCount = 0;
+  sgm::tb::SlotDriver<Vsgm_census_unit, long> driver(
+      top, opt.enablePattern(),
+      [](Vsgm_census_unit& m, std::mt19937& junk) {
+        m.pix_i = junk() & 0xff;
+        m.col_i = junk() & 0xff;
+        m.row_i = junk() & 0xff;
+      },
+      [](Vsgm_census_unit& m) {
+        return sgm::tb::portWords(m.census_o, m.rank_o, m.centre_o, m.nbr_o, m.col_o, m.row_o, m.valid_o);
+      });
+  if (opt.reset) driver.reset();
   std::vector<long> perFrame(frames.size(), 0);
 
   for (long s = 0; s < long(slots.size()); ++s) {
-    const Slot& in = slots[s];
+    const sgm::tb::RasterSlot& in = slots[s];
     const cv::Mat& img = frames[in.frame];
-    // Idle cycles: junk inputs, nothing may change.
-    int idle = 0;
-    while (percent(rng) < opt.idlePercent) ++idle;
-    if (permille(rng) < opt.burstPermille) idle += burst(rng);
-    for (int i = 0; i < idle; ++i) {
-      const Outputs before = outputsOf(top);
-      top->en_i = 0;
-      top->pix_i = junk(rng) & 0xff;
-      top->col_i = junk(rng) & 0xff;
-      top->row_i = junk(rng) & 0xff;
-      top.tick();
-      ASSERT_TRUE(outputsOf(top) == before) << "outputs changed during an idle cycle before slot " << s << " (frame "
-                                            << in.frame << ", input (" << in.x << ", " << in.y << "))";
-    }
-    top->en_i = 1;
-    top->pix_i = in.pix;
-    top->col_i = in.x;
-    top->row_i = in.y;
-    top->width_i = img.cols;
-    top->height_i = img.rows;
-    top.tick();
+    const bool ok = driver.slot(
+        s,
+        [&](Vsgm_census_unit& m) {
+          m.pix_i = sgm::tb::pixelOf(img, in);
+          m.col_i = in.x;
+          m.row_i = in.y;
+          m.width_i = img.cols;
+          m.height_i = img.rows;
+        },
+        [&] {
+          std::ostringstream os;
+          os << "before slot " << s << " (frame " << in.frame << ", input (" << in.x << ", " << in.y << "))";
+          return os.str();
+        });
+    if (!ok) return;
 
     // The outputs now belong to the slot LATENCY - 1 slots back (the input
     // just sampled is one of the LATENCY stages).
-    const long o = s - (kLatency - 1);
-    const Outputs got = outputsOf(top);
-    if (o < 0) {
-      ASSERT_EQ(got.valid, 0u) << "valid_o set at slot " << s << ", before any centre could arrive";
+    const long* o = driver.source(kLatency);
+    if (!o) {
+      ASSERT_EQ(uint32_t(top->valid_o), 0u) << "valid_o set at slot " << s << ", before any centre could arrive";
       continue;
     }
-    const Slot& src = slots[o];
+    const sgm::tb::RasterSlot& src = slots[*o];
     const cv::Mat& src_img = frames[src.frame];
     const int w = src_img.cols, h = src_img.rows;
-    const Centre c = centreOf(src.x, src.y, w);
+    const sgm::tb::Centre c = sgm::tb::centreOf(src.x, src.y, w);
     const bool inside = c.y >= 0 && c.y < h;
     std::ostringstream where;
     where << "frame " << src.frame << " (" << w << "x" << h << ") centre (" << c.x << ", " << c.y
-          << ") from input slot " << o << " (" << src.x << ", " << src.y << "), output slot " << s;
-    ASSERT_EQ(got.valid, uint32_t(inside)) << "stage valid: " << where.str();
+          << ") from input slot " << *o << " (" << src.x << ", " << src.y << "), output slot " << s;
+    ASSERT_EQ(uint32_t(top->valid_o), uint32_t(inside)) << "stage valid: " << where.str();
     if (!inside) continue;
-    ++validCount;
     ++perFrame[src.frame];
-    ASSERT_EQ(got.col, uint32_t(c.x)) << "stage position (col_o): " << where.str();
-    ASSERT_EQ(got.row, uint32_t(c.y)) << "stage position (row_o): " << where.str();
+    ASSERT_EQ(uint32_t(top->col_o), uint32_t(c.x)) << "stage position (col_o): " << where.str();
+    ASSERT_EQ(uint32_t(top->row_o), uint32_t(c.y)) << "stage position (row_o): " << where.str();
     const sgm::Census& g = golden[src.frame][size_t(c.y) * w + c.x];
-    const uint64_t lo = uint64_t(got.census[0]) | uint64_t(got.census[1]) << 32;
-    const uint32_t hi = got.census[2] & 0xffff;
-    ASSERT_TRUE(lo == g.lo && hi == g.hi)
-        << "stage census: " << where.str() << ": expected " << hexCensus(g.lo, g.hi) << " got " << hexCensus(lo, hi);
-    ASSERT_EQ(int(got.rank), g.rank()) << "stage rank: " << where.str();
-    ASSERT_EQ(int(got.centre), int(src_img.at<uint8_t>(c.y, c.x))) << "stage centre: " << where.str();
+    const std::string census = sgm::tb::censusMismatch(top->census_o, g);
+    ASSERT_TRUE(census.empty()) << "stage census: " << where.str() << ": " << census;
+    ASSERT_EQ(int(top->rank_o), g.rank()) << "stage rank: " << where.str();
+    ASSERT_EQ(int(top->centre_o), int(src_img.at<uint8_t>(c.y, c.x))) << "stage centre: " << where.str();
     // Neighbours 0, 45, 90, 135 degrees; only those inside the frame are defined.
     const int nx[4] = {c.x - 1, c.x - 1, c.x, c.x + 1}, ny[4] = {c.y, c.y - 1, c.y - 1, c.y - 1};
     static const char* const kNames[4] = {"0 deg (x-1, y)", "45 deg (x-1, y-1)", "90 deg (x, y-1)",
                                           "135 deg (x+1, y-1)"};
     for (int k = 0; k < 4; ++k) {
       if (nx[k] < 0 || nx[k] >= w || ny[k] < 0) continue;
-      ASSERT_EQ(int((got.nbr >> (8 * k)) & 0xff), int(src_img.at<uint8_t>(ny[k], nx[k])))
+      ASSERT_EQ(int((top->nbr_o >> (8 * k)) & 0xff), int(src_img.at<uint8_t>(ny[k], nx[k])))
           << "stage neighbour " << kNames[k] << ": " << where.str();
     }
   }
   for (size_t f = 0; f < frames.size(); ++f)
     ASSERT_EQ(perFrame[f], long(frames[f].total())) << "frame " << f << ": valid centres";
-  if (stats) {
-    stats->slots += long(slots.size());
-    stats->cycles = long(top.cycles());
-    stats->validOutputs += validCount;
-  }
 }
 
 cv::Mat randomImage(int w, int h, std::mt19937& rng, int levels = 256) {
@@ -216,11 +141,7 @@ TEST(SgmCensusUnit, RandomImagesSeveralSizes) {
     if (w > kMaxWidth) continue;
     SCOPED_TRACE(std::to_string(w) + "x" + std::to_string(h));
     Top top("sgm_census_unit_random_" + std::to_string(w) + "x" + std::to_string(h));
-    top->en_i = 0;
-    top.reset();
-    StreamOptions opt;
-    opt.seed = seed++;
-    ASSERT_NO_FATAL_FAILURE(runStream(top, {randomImage(w, h, rng)}, opt));
+    ASSERT_NO_FATAL_FAILURE(runStream(top, {randomImage(w, h, rng)}, StreamOptions::seeded(seed++)));
   }
 }
 
@@ -228,11 +149,8 @@ TEST(SgmCensusUnit, FewGrayLevelsTies) {
   // Many equal neighbours: bit = I(q) < I(p) is strict.
   std::mt19937 rng(77);
   Top top("sgm_census_unit_ties");
-  top->en_i = 0;
-  top.reset();
-  StreamOptions opt;
-  opt.seed = 99;
-  ASSERT_NO_FATAL_FAILURE(runStream(top, {randomImage(29, 14, rng, 2), randomImage(31, 12, rng, 3)}, opt));
+  ASSERT_NO_FATAL_FAILURE(
+      runStream(top, {randomImage(29, 14, rng, 2), randomImage(31, 12, rng, 3)}, StreamOptions::seeded(99)));
 }
 
 TEST(SgmCensusUnit, BackToBackFramesNoReset) {
@@ -243,14 +161,10 @@ TEST(SgmCensusUnit, BackToBackFramesNoReset) {
   for (Flush flush : {Flush::kMinimal, Flush::kFullRows}) {
     SCOPED_TRACE(flush == Flush::kMinimal ? "minimal flush" : "full-row flush");
     Top top("sgm_census_unit_b2b");
-    top->en_i = 0;
-    top.reset();
     std::vector<cv::Mat> frames = {randomImage(std::min(90, kMaxWidth), 20, rng), randomImage(16, 9, rng),
                                    randomImage(std::min(57, kMaxWidth), 13, rng), randomImage(40, 25, rng),
                                    randomImage(40, 9, rng)};
-    StreamOptions opt;
-    opt.flush = flush;
-    opt.seed = flush == Flush::kMinimal ? 5 : 6;
+    const StreamOptions opt = StreamOptions::seeded(flush == Flush::kMinimal ? 5 : 6, flush);
     ASSERT_NO_FATAL_FAILURE(runStream(top, frames, opt));
   }
 }
@@ -261,22 +175,16 @@ TEST(SgmCensusUnit, RandomSizesBackToBack) {
   std::mt19937 rng(555);
   for (Flush flush : {Flush::kMinimal, Flush::kFullRows}) {
     Top top("sgm_census_unit_sizes");
-    top->en_i = 0;
-    top.reset();
     std::uniform_int_distribution<int> wd(16, kMaxWidth), hd(9, 40);
     std::vector<cv::Mat> frames;
     for (int i = 0; i < 12; ++i) frames.push_back(randomImage(wd(rng), hd(rng), rng));
-    StreamOptions opt;
-    opt.flush = flush;
-    opt.seed = flush == Flush::kMinimal ? 61 : 62;
+    const StreamOptions opt = StreamOptions::seeded(flush == Flush::kMinimal ? 61 : 62, flush);
     ASSERT_NO_FATAL_FAILURE(runStream(top, frames, opt));
   }
 }
 
 TEST(SgmCensusUnit, FlatAndSaturatedImages) {
   Top top("sgm_census_unit_flat");
-  top->en_i = 0;
-  top.reset();
   std::vector<cv::Mat> frames = {cv::Mat(9, 16, CV_8UC1, cv::Scalar(255)), cv::Mat(10, 20, CV_8UC1, cv::Scalar(0)),
                                  cv::Mat(12, 18, CV_8UC1, cv::Scalar(128))};
   cv::Mat checker(11, 24, CV_8UC1), stripes(9, 33, CV_8UC1);
@@ -287,9 +195,7 @@ TEST(SgmCensusUnit, FlatAndSaturatedImages) {
   frames.push_back(checker);
   frames.push_back(stripes);
   frames.push_back(cv::Mat(9, 16, CV_8UC1, cv::Scalar(255)));  // all-zero census after the others
-  StreamOptions opt;
-  opt.seed = 3;
-  ASSERT_NO_FATAL_FAILURE(runStream(top, frames, opt));
+  ASSERT_NO_FATAL_FAILURE(runStream(top, frames, StreamOptions::seeded(3)));
 }
 
 TEST(SgmCensusUnit, HeavyStallsAndNoStalls) {
@@ -298,12 +204,7 @@ TEST(SgmCensusUnit, HeavyStallsAndNoStalls) {
   for (int idle : {0, 70}) {
     SCOPED_TRACE("idle " + std::to_string(idle) + "%");
     Top top("sgm_census_unit_stalls");
-    top->en_i = 0;
-    top.reset();
-    StreamOptions opt;
-    opt.idlePercent = idle;
-    opt.burstPermille = idle ? 50 : 0;
-    opt.seed = 11 + idle;
+    const StreamOptions opt = StreamOptions::idle(11 + idle, idle);
     ASSERT_NO_FATAL_FAILURE(runStream(top, {img, img}, opt));
   }
 }
@@ -329,8 +230,8 @@ TEST(SgmCensusUnit, ResetMidFrame) {
   top->en_i = 0;
   top.reset();
   EXPECT_EQ(top->valid_o, 0);
-  StreamOptions opt;
-  opt.seed = 12;
+  StreamOptions opt = StreamOptions::seeded(12);
+  opt.reset = false;  // straight on from the reset above
   ASSERT_NO_FATAL_FAILURE(runStream(top, {randomImage(37, 18, rng)}, opt));
 }
 

@@ -7,23 +7,23 @@
 // by a seeded random pattern (all inputs are junk while en_i = 0). Every
 // enabled slot's outputs are checked against the latency contract (one row +
 // LATENCY: position, out_valid_o), every pixel's disp and valid against the
-// golden model, and the outputs must hold while en_i = 0. The build's D / SW /
-// DW / MAX_WIDTH / LATENCY come from the model (public parameters).
+// golden model, and the outputs must hold while en_i = 0 (the slot driver of
+// tb/slot_driver.hpp). The build's D / SW / DW / MAX_WIDTH / LATENCY come from
+// the model (public parameters).
 #include "Vsgm_lr_check.h"
 #include "Vsgm_lr_check_sgm_lr_check.h"
+#include "cones.hpp"
 #include "port_bits.hpp"
+#include "slot_driver.hpp"
 #include "verilated_top.hpp"
+#include "wta_model.hpp"
 
 #include "sgm/disparity.hpp"
-#include "sgm/image_io.hpp"
 #include "sgm/pipeline.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cstdlib>
-#include <filesystem>
-#include <map>
 #include <random>
 #include <sstream>
 #include <string>
@@ -44,8 +44,7 @@ constexpr int kLatency = int(Rtl::LATENCY);
 constexpr int kMaxS = (1 << kSW) - 1;
 constexpr int kMinWidth = kD > 16 ? kD : 16;
 
-constexpr int log2Ceil(int n) { return n <= 1 ? 0 : 1 + log2Ceil((n + 1) / 2); }
-constexpr int kWtaLatency = (log2Ceil(kD) + 1) / 2 + 3;  // sgm_wta's LATENCY for this D
+constexpr int kWtaLatency = sgm::tb::wtaLatency(kD);
 
 struct Frame {
   sgm::PathVolume s;
@@ -79,79 +78,40 @@ Wta goldenWta(const Frame& f) {
   Wta w;
   for (int y = 0; y < f.s.height; ++y)
     for (int x = 0; x < f.s.width; ++x) {
-      const uint16_t* s = f.s.at(x, y);
-      const int d = sgm::winnerTakeAll(s, kD);
-      int disp = d * sgm::kSubpixelOne;
-      if (f.subpixel && d > 0 && d < kD - 1) disp += sgm::subpixelOffset(s[d - 1], s[d], s[d + 1]);
-      w.d.push_back(d);
-      w.disp.push_back(disp);
+      const sgm::tb::WtaResult r = sgm::tb::goldenWta(f.s.at(x, y), kD, f.subpixel);
+      w.d.push_back(r.d);
+      w.disp.push_back(r.disp);
     }
   return w;
 }
 
-template <typename Port>
-void packS(Port& port, const uint16_t* s) {
-  uint32_t words[(kD * kSW + 31) / 32 + 1] = {};
-  for (int d = 0; d < kD; ++d) {
-    const int bit = d * kSW;
-    const uint64_t v = uint64_t(s[d]) << (bit % 32);
-    words[bit / 32] |= uint32_t(v);
-    words[bit / 32 + 1] |= uint32_t(v >> 32);
-  }
-  for (int w = 0; w < (kD * kSW + 31) / 32; ++w) sgm::tb::setWord(port, w, words[w]);
-}
-
-struct Outputs {
-  uint32_t disp, valid, col, row, outValid;
-  bool operator==(const Outputs& o) const {
-    return disp == o.disp && valid == o.valid && col == o.col && row == o.row && outValid == o.outValid;
-  }
-};
-Outputs outputs(Top& top) {
-  return {uint32_t(top->disp_o), uint32_t(top->valid_o), uint32_t(top->col_o), uint32_t(top->row_o),
-          uint32_t(top->out_valid_o)};
-}
-
-class EnablePattern {
- public:
-  EnablePattern(uint32_t seed, double onRate) : rng_(seed), on_(onRate) {}
-  bool next() {
-    if (stall_ > 0) return --stall_, false;
-    if (std::bernoulli_distribution(0.002)(rng_)) stall_ = int(rng_() % 40);
-    return on_(rng_);
-  }
-
- private:
-  std::mt19937 rng_;
-  std::bernoulli_distribution on_;
-  int stall_ = 0;
-};
-
 // Streams the frames back to back on one model (reset once); the WTA side lags
 // the S side by `lag` enabled slots. Stops at the first mismatch.
 void runFrames(Top& top, const std::vector<Frame>& frames, uint32_t seed, int lag, double onRate = 0.7) {
-  std::mt19937 junk(seed ^ 0x9e3779b9u);
-  EnablePattern en(seed, onRate);
+  struct Slot {
+    int frame, x, y;
+    bool real;
+  };
   std::vector<uint16_t> junkS(kD);
-  auto junkVector = [&] {
-    for (auto& v : junkS) v = uint16_t(junk() & kMaxS);
-    return junkS.data();
-  };
-  auto randomInputs = [&] {
-    packS(top->s_i, junkVector());
-    top->col_i = junk() & ((1u << kCW) - 1);
-    top->row_i = junk() & ((1u << kRW) - 1);
-    top->valid_i = junk() & 1;
-    top->width_i = junk() & ((1u << kCW) - 1);
-    top->height_i = junk() & ((1u << kRW) - 1);
-    top->tol_i = junk() & 7;
-    top->check_en_i = junk() & 1;
-    top->d_i = junk() % kD;
-    top->disp_i = junk() & ((1u << kDW) - 1);
-    top->wta_col_i = junk() & ((1u << kCW) - 1);
-    top->wta_row_i = junk() & ((1u << kRW) - 1);
-    top->wta_valid_i = junk() & 1;
-  };
+  sgm::tb::SlotDriver<Vsgm_lr_check, Slot> driver(
+      top, sgm::tb::EnablePattern(seed, onRate),
+      [&](Vsgm_lr_check& m, std::mt19937& junk) {
+        sgm::tb::packFields(m.s_i, sgm::tb::junkVector(junkS, kMaxS, junk), kD, kSW);
+        m.col_i = junk() & ((1u << kCW) - 1);
+        m.row_i = junk() & ((1u << kRW) - 1);
+        m.valid_i = junk() & 1;
+        m.width_i = junk() & ((1u << kCW) - 1);
+        m.height_i = junk() & ((1u << kRW) - 1);
+        m.tol_i = junk() & 7;
+        m.check_en_i = junk() & 1;
+        m.d_i = junk() % kD;
+        m.disp_i = junk() & ((1u << kDW) - 1);
+        m.wta_col_i = junk() & ((1u << kCW) - 1);
+        m.wta_row_i = junk() & ((1u << kRW) - 1);
+        m.wta_valid_i = junk() & 1;
+      },
+      [](Vsgm_lr_check& m) { return sgm::tb::portWords(m.disp_o, m.valid_o, m.col_o, m.row_o, m.out_valid_o); });
+  std::mt19937& junk = driver.junk();
   std::vector<Wta> wta;
   std::vector<sgm::DisparityMap> want;
   std::vector<int> received(frames.size(), 0);
@@ -166,71 +126,56 @@ void runFrames(Top& top, const std::vector<Frame>& frames, uint32_t seed, int la
     want.push_back(sgm::selectDisparity(f.s, paramsOf(f)));
   }
 
-  struct Slot {
-    int frame, x, y;
-    bool real;
-  };
-  std::vector<Slot> history;  // every enabled S-side slot, in order
-  top->en_i = 0;
-  randomInputs();
-  top.reset();
+  driver.reset();
   ASSERT_EQ(int(top->out_valid_o), 0) << "out_valid_o after reset";
-  Outputs held = outputs(top);
 
   for (size_t fi = 0; fi < frames.size(); ++fi) {
     const Frame& f = frames[fi];
     const int w = f.s.width, h = f.s.height;
     const long slots = long(w) * h + w + kLatency - 1 + long(f.flushRows) * w;
-    for (long n = 0; n < slots;) {
-      if (!en.next()) {
-        randomInputs();
-        top->en_i = 0;
-        top.tick();
-        ASSERT_TRUE(outputs(top) == held) << describe(f) << ": outputs changed while en_i = 0";
-        continue;
-      }
+    for (long n = 0; n < slots; ++n) {
       const int x = int(n % w), y = int(n / w);
       const bool real = y < h;
-      top->en_i = 1;
-      packS(top->s_i, real ? f.s.at(x, y) : junkVector());  // flush slots: junk S
-      top->col_i = x;
-      top->row_i = y;
-      top->valid_i = real;
-      top->width_i = w;
-      top->height_i = h;
-      top->tol_i = f.tol < 0 ? junk() & 7 : f.tol;
-      top->check_en_i = f.tol >= 0;
-      history.push_back({int(fi), x, y, real});
-      // WTA side: the slot `lag` enabled slots earlier.
-      const long ws = long(history.size()) - 1 - lag;
-      if (ws >= 0 && history[ws].real) {
-        const Slot& s = history[ws];
-        const size_t i = size_t(s.y) * frames[s.frame].s.width + s.x;
-        top->d_i = wta[s.frame].d[i];
-        top->disp_i = wta[s.frame].disp[i];
-        top->wta_col_i = s.x;
-        top->wta_row_i = s.y;
-        top->wta_valid_i = 1;
-      } else {
-        top->d_i = junk() % kD;
-        top->disp_i = junk() & ((1u << kDW) - 1);
-        top->wta_col_i = ws >= 0 ? history[ws].x : 0;
-        top->wta_row_i = ws >= 0 ? history[ws].y : 0;
-        top->wta_valid_i = 0;
-      }
-      top.tick();
-      held = outputs(top);
-      ++n;
+      const bool ok = driver.slot(
+          {int(fi), x, y, real},
+          [&](Vsgm_lr_check& m) {
+            sgm::tb::packFields(m.s_i, real ? f.s.at(x, y) : sgm::tb::junkVector(junkS, kMaxS, junk), kD,
+                                kSW);  // flush slots: junk S
+            m.col_i = x;
+            m.row_i = y;
+            m.valid_i = real;
+            m.width_i = w;
+            m.height_i = h;
+            m.tol_i = f.tol < 0 ? junk() & 7 : f.tol;
+            m.check_en_i = f.tol >= 0;
+            // WTA side: the slot `lag` enabled slots earlier.
+            const Slot* ws = driver.source(lag + 1);
+            if (ws && ws->real) {
+              const size_t i = size_t(ws->y) * frames[ws->frame].s.width + ws->x;
+              m.d_i = wta[ws->frame].d[i];
+              m.disp_i = wta[ws->frame].disp[i];
+              m.wta_col_i = ws->x;
+              m.wta_row_i = ws->y;
+              m.wta_valid_i = 1;
+            } else {
+              m.d_i = junk() % kD;
+              m.disp_i = junk() & ((1u << kDW) - 1);
+              m.wta_col_i = ws ? ws->x : 0;
+              m.wta_row_i = ws ? ws->y : 0;
+              m.wta_valid_i = 0;
+            }
+          },
+          [&] { return describe(f); });
+      if (!ok) return;
 
       // The outputs after enabled slot t belong to the S slot t - (LATENCY - 1),
       // which carries left pixel (x, y - 1) of its frame when 1 <= y <= height.
-      const long src = long(history.size()) - kLatency;
-      const bool expectOut =
-          src >= 0 && history[src].y >= 1 && history[src].y <= frames[history[src].frame].s.height;
+      const Slot* src = driver.source(kLatency);
+      const bool expectOut = src && src->y >= 1 && src->y <= frames[src->frame].s.height;
       ASSERT_EQ(bool(top->out_valid_o), expectOut)
-          << describe(f) << ": out_valid_o at S slot " << history.size() - 1 << " [stage: output framing]";
+          << describe(f) << ": out_valid_o at S slot " << driver.slots() - 1 << " [stage: output framing]";
       if (!expectOut) continue;
-      const Slot& s = history[src];
+      const Slot& s = *src;
       const Frame& sf = frames[s.frame];
       const int ox = s.x, oy = s.y - 1;
       ASSERT_EQ(int(top->col_o), ox) << describe(sf) << ": col_o of pixel (" << ox << ", " << oy << ")";
@@ -242,12 +187,13 @@ void runFrames(Top& top, const std::vector<Frame>& frames, uint32_t seed, int la
       if (ed != gd || ev != gv) {
         const int d = wta[s.frame].d[size_t(oy) * sf.s.width + ox];
         std::ostringstream ctx;
-        ctx << "d* = " << d << ", x - d* = " << ox - d;
+        ctx << (ed != gd ? "left result memory (disp)" : "left-right check (valid)") << "; d* = " << d
+            << ", x - d* = " << ox - d;
         if (ox - d >= 0) ctx << ", golden dR(x - d*) = " << sgm::rightDisparity(sf.s, ox - d, oy);
-        FAIL() << "first mismatch at (x, y) = (" << ox << ", " << oy << ") of " << describe(sf)
-               << ": expected disp " << ed << " valid " << ev << ", got disp " << gd << " valid " << gv
-               << " [stage: " << (ed != gd ? "left result memory (disp)" : "left-right check (valid)") << "; "
-               << ctx.str() << "]";
+        auto result = [](int disp, int valid) {
+          return "disp " + std::to_string(disp) + " valid " + std::to_string(valid);
+        };
+        FAIL() << sgm::tb::firstMismatch(ox, oy, describe(sf), result(ed, ev), result(gd, gv), ctx.str());
       }
     }
   }
@@ -258,10 +204,7 @@ void runFrames(Top& top, const std::vector<Frame>& frames, uint32_t seed, int la
 // ------------------------------------------------------------------ volumes
 
 sgm::PathVolume randomVolume(int w, int h, int maxValue, std::mt19937& rng) {
-  sgm::PathVolume v(w, h, kD);
-  std::uniform_int_distribution<int> value(0, maxValue);
-  for (auto& s : v.data) s = uint16_t(value(rng));
-  return v;
+  return sgm::tb::randomVolume(w, h, kD, maxValue, rng);
 }
 
 // A scene-like S: per row, runs of constant true disparity (foreground runs
@@ -383,24 +326,6 @@ TEST(SgmLrCheck, RandomSoak) {
 
 // ------------------------------------------------------------------ Middlebury cones
 
-const sgm::PipelineStages* conesStages(std::string& why) {
-  static std::map<int, sgm::PipelineStages> cache;
-  const char* root = std::getenv("SGM_DATA");
-  const std::string dir = std::string(root ? root : "") + "/cones";
-  if (!root || !std::filesystem::exists(dir + "/left.png") || !std::filesystem::exists(dir + "/right.png")) {
-    why = "Middlebury cones not found at '" + dir + "' (set SGM_DATA, e.g. via make rtl-tests DATA=...)";
-    return nullptr;
-  }
-  auto it = cache.find(kD);
-  if (it == cache.end()) {
-    sgm::Params params;
-    params.disparities = kD;
-    it = cache.emplace(kD, sgm::runPipelineStages(sgm::readGray(dir + "/left.png"), sgm::readGray(dir + "/right.png"),
-                                                  params)).first;
-  }
-  return &it->second;
-}
-
 // Columns x0 .. x0 + w - 1, rows y0 .. y0 + h - 1 of a volume.
 sgm::PathVolume crop(const sgm::PathVolume& v, int x0, int y0, int w, int h) {
   sgm::PathVolume c(w, h, v.depth);
@@ -414,16 +339,15 @@ sgm::PathVolume crop(const sgm::PathVolume& v, int x0, int y0, int w, int h) {
 // 1, 0 and off; the full-frame golden selection (default parameters) must
 // also agree with selectDisparity on the whole volume.
 TEST(SgmLrCheck, Cones) {
-  std::string why;
-  const sgm::PipelineStages* st = conesStages(why);
-  if (!st) GTEST_SKIP() << why;
-  const sgm::PathVolume& s = st->aggregated;
+  if (const std::string why = sgm::tb::conesMissing(); !why.empty()) GTEST_SKIP() << why;
+  const sgm::PipelineStages& st = sgm::tb::conesStages(kD);
+  const sgm::PathVolume& s = st.aggregated;
   {
     sgm::Params p;
     p.disparities = kD;
     const sgm::DisparityMap whole = sgm::selectDisparity(s, p);
-    ASSERT_EQ(cv::countNonZero(whole.disp != st->selected.disp), 0) << "golden selection stage disagreement";
-    ASSERT_EQ(cv::countNonZero(whole.valid != st->selected.valid), 0) << "golden selection stage disagreement";
+    ASSERT_EQ(cv::countNonZero(whole.disp != st.selected.disp), 0) << "golden selection stage disagreement";
+    ASSERT_EQ(cv::countNonZero(whole.valid != st.selected.valid), 0) << "golden selection stage disagreement";
   }
   const int w = std::min(kMaxWidth, s.width), h = s.height;
   std::vector<Frame> frames;

@@ -4,23 +4,23 @@
 // without reset, with en_i toggled by a seeded random pattern (inputs are junk
 // while en_i = 0). Every enabled slot's outputs are checked against the latency
 // contract (position, valid_o), every pixel's d and disp against the golden
-// model, and the outputs must hold while en_i = 0. D / SW / LATENCY come from
-// the model (public parameters), so the same file serves every build.
+// model, and the outputs must hold while en_i = 0 (the slot driver of
+// tb/slot_driver.hpp). D / SW / LATENCY come from the model (public
+// parameters), so the same file serves every build.
 #include "Vsgm_wta.h"
 #include "Vsgm_wta_sgm_wta.h"
+#include "cones.hpp"
 #include "port_bits.hpp"
+#include "slot_driver.hpp"
 #include "verilated_top.hpp"
+#include "wta_model.hpp"
 
 #include "sgm/disparity.hpp"
-#include "sgm/image_io.hpp"
 #include "sgm/pipeline.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cstdlib>
-#include <filesystem>
-#include <map>
 #include <random>
 #include <sstream>
 #include <string>
@@ -38,8 +38,7 @@ constexpr int kRW = int(Rtl::RW);
 constexpr int kLatency = int(Rtl::LATENCY);
 constexpr int kMaxS = (1 << kSW) - 1;
 
-constexpr int log2Ceil(int n) { return n <= 1 ? 0 : 1 + log2Ceil((n + 1) / 2); }
-static_assert(kLatency == (log2Ceil(kD) + 1) / 2 + 3, "sgm_wta latency: ceil(log2(D) / 2) tree stages + 3");
+static_assert(kLatency == sgm::tb::wtaLatency(kD), "sgm_wta latency: ceil(log2(D) / 2) tree stages + 3");
 
 struct Frame {
   sgm::PathVolume s;
@@ -55,81 +54,28 @@ std::string describe(const Frame& f) {
   return o.str();
 }
 
-// Golden result of one pixel.
-struct Want {
-  int d, disp;
-};
-Want golden(const uint16_t* s, bool subpixel) {
-  const int d = sgm::winnerTakeAll(s, kD);
-  int disp = d * sgm::kSubpixelOne;
-  if (subpixel && d > 0 && d < kD - 1) disp += sgm::subpixelOffset(s[d - 1], s[d], s[d + 1]);
-  return {d, disp};
-}
-
-// S vector -> s_i (S(d) at bits [d*SW +: SW]).
-template <typename Port>
-void packS(Port& port, const uint16_t* s) {
-  uint32_t words[(kD * kSW + 31) / 32 + 1] = {};
-  for (int d = 0; d < kD; ++d) {
-    const int bit = d * kSW;
-    const uint64_t v = uint64_t(s[d]) << (bit % 32);
-    words[bit / 32] |= uint32_t(v);
-    words[bit / 32 + 1] |= uint32_t(v >> 32);
-  }
-  for (int w = 0; w < (kD * kSW + 31) / 32; ++w) sgm::tb::setWord(port, w, words[w]);
-}
-
-struct Outputs {
-  uint32_t d, disp, col, row, valid;
-  bool operator==(const Outputs& o) const {
-    return d == o.d && disp == o.disp && col == o.col && row == o.row && valid == o.valid;
-  }
-};
-Outputs outputs(Top& top) {
-  return {uint32_t(top->d_o), uint32_t(top->disp_o), uint32_t(top->col_o), uint32_t(top->row_o),
-          uint32_t(top->valid_o)};
-}
-
-// Enable pattern: mostly on, single-cycle gaps and occasional long stalls.
-class EnablePattern {
- public:
-  EnablePattern(uint32_t seed, double onRate) : rng_(seed), on_(onRate) {}
-  bool next() {
-    if (stall_ > 0) return --stall_, false;
-    if (std::bernoulli_distribution(0.002)(rng_)) stall_ = int(rng_() % 40);
-    return on_(rng_);
-  }
-
- private:
-  std::mt19937 rng_;
-  std::bernoulli_distribution on_;
-  int stall_ = 0;
-};
+sgm::tb::WtaResult golden(const uint16_t* s, bool subpixel) { return sgm::tb::goldenWta(s, kD, subpixel); }
 
 // Streams the frames back to back on one model (reset once) and checks every
 // output slot. Stops at the first mismatch, naming pixel, expected, got, stage.
 void runFrames(Top& top, const std::vector<Frame>& frames, uint32_t seed, double onRate = 0.7) {
-  std::mt19937 junk(seed ^ 0x9e3779b9u);
-  EnablePattern en(seed, onRate);
-  std::vector<uint16_t> junkS(kD);
-  auto randomInputs = [&] {
-    for (auto& v : junkS) v = uint16_t(junk() & kMaxS);
-    packS(top->s_i, junkS.data());
-    top->col_i = junk() & ((1u << kCW) - 1);
-    top->row_i = junk() & ((1u << kRW) - 1);
-    top->valid_i = junk() & 1;
-    top->subpixel_i = junk() & 1;
-  };
   struct Slot {
     int frame, x, y;
     bool real;
   };
-  std::vector<Slot> history;  // every enabled slot, in order
-  top->en_i = 0;
-  randomInputs();
-  top.reset();
+  std::vector<uint16_t> junkS(kD);
+  sgm::tb::SlotDriver<Vsgm_wta, Slot> driver(
+      top, sgm::tb::EnablePattern(seed, onRate),
+      [&](Vsgm_wta& m, std::mt19937& junk) {
+        sgm::tb::packFields(m.s_i, sgm::tb::junkVector(junkS, kMaxS, junk), kD, kSW);
+        m.col_i = junk() & ((1u << kCW) - 1);
+        m.row_i = junk() & ((1u << kRW) - 1);
+        m.valid_i = junk() & 1;
+        m.subpixel_i = junk() & 1;
+      },
+      [](Vsgm_wta& m) { return sgm::tb::portWords(m.d_o, m.disp_o, m.col_o, m.row_o, m.valid_o); });
+  driver.reset();
   ASSERT_EQ(int(top->valid_o), 0) << "valid_o after reset";
-  Outputs held = outputs(top);
 
   for (size_t fi = 0; fi < frames.size(); ++fi) {
     const Frame& f = frames[fi];
@@ -138,39 +84,30 @@ void runFrames(Top& top, const std::vector<Frame>& frames, uint32_t seed, double
     ASSERT_LT(w, 1 << kCW) << describe(f);
     ASSERT_LT(h + (f.flush + w - 1) / w, 1 << kRW) << describe(f);
     ASSERT_LE(*std::max_element(f.s.data.begin(), f.s.data.end()), kMaxS) << describe(f) << ": S exceeds SW bits";
-    for (long n = 0; n < long(w) * h + f.flush;) {
-      if (!en.next()) {
-        randomInputs();
-        top->en_i = 0;
-        top.tick();
-        ASSERT_TRUE(outputs(top) == held) << describe(f) << ": outputs changed while en_i = 0";
-        continue;
-      }
+    for (long n = 0; n < long(w) * h + f.flush; ++n) {
       const int x = int(n % w), y = int(n / w);
       const bool real = y < h;
-      top->en_i = 1;
-      if (real) {
-        packS(top->s_i, f.s.at(x, y));
-      } else {  // flush slot: junk the module must not mistake for a pixel
-        for (auto& v : junkS) v = uint16_t(junk() & kMaxS);
-        packS(top->s_i, junkS.data());
-      }
-      top->col_i = x;
-      top->row_i = y;
-      top->valid_i = real;
-      top->subpixel_i = f.subpixel;
-      top.tick();
-      history.push_back({int(fi), x, y, real});
-      held = outputs(top);
-      ++n;
+      const bool ok = driver.slot(
+          {int(fi), x, y, real},
+          [&](Vsgm_wta& m) {
+            // flush slots: junk the module must not mistake for a pixel
+            sgm::tb::packFields(m.s_i, real ? f.s.at(x, y) : sgm::tb::junkVector(junkS, kMaxS, driver.junk()), kD,
+                                kSW);
+            m.col_i = x;
+            m.row_i = y;
+            m.valid_i = real;
+            m.subpixel_i = f.subpixel;
+          },
+          [&] { return describe(f); });
+      if (!ok) return;
 
       // The outputs after enabled slot t belong to the input of slot t - (LATENCY - 1).
-      const long src = long(history.size()) - kLatency;
-      if (src < 0) {
+      const Slot* src = driver.source(kLatency);
+      if (!src) {
         ASSERT_EQ(int(top->valid_o), 0) << describe(f) << ": valid_o before the first pixel reached the output";
         continue;
       }
-      const Slot& s = history[src];
+      const Slot& s = *src;
       const Frame& sf = frames[s.frame];
       ASSERT_EQ(bool(top->valid_o), s.real) << describe(sf) << ": valid_o of slot (" << s.x << ", " << s.y
                                             << ") [stage: position pipeline]";
@@ -178,16 +115,16 @@ void runFrames(Top& top, const std::vector<Frame>& frames, uint32_t seed, double
       ASSERT_EQ(int(top->row_o), s.y) << describe(sf) << ": row_o of slot (" << s.x << ", " << s.y << ")";
       if (!s.real) continue;
       const uint16_t* sp = sf.s.at(s.x, s.y);
-      const Want want = golden(sp, sf.subpixel);
+      const sgm::tb::WtaResult want = golden(sp, sf.subpixel);
       const int gd = int(top->d_o), gdisp = int(top->disp_o);
       if (gd != want.d || gdisp != want.disp) {
         std::ostringstream ctx;
         const int d = want.d;
-        ctx << "S(d-1, d, d+1) = " << (d > 0 ? int(sp[d - 1]) : -1) << ", " << int(sp[d]) << ", "
-            << (d < kD - 1 ? int(sp[d + 1]) : -1);
-        FAIL() << "first mismatch at (x, y) = (" << s.x << ", " << s.y << ") of " << describe(sf) << ": expected d "
-               << want.d << " disp " << want.disp << ", got d " << gd << " disp " << gdisp << " [stage: "
-               << (gd != want.d ? "winner-take-all tree" : "sub-pixel division") << "; " << ctx.str() << "]";
+        ctx << (gd != want.d ? "winner-take-all tree" : "sub-pixel division") << "; S(d-1, d, d+1) = "
+            << (d > 0 ? int(sp[d - 1]) : -1) << ", " << int(sp[d]) << ", " << (d < kD - 1 ? int(sp[d + 1]) : -1);
+        auto result = [](int d, int disp) { return "d " + std::to_string(d) + " disp " + std::to_string(disp); };
+        FAIL() << sgm::tb::firstMismatch(s.x, s.y, describe(sf), result(want.d, want.disp), result(gd, gdisp),
+                                         ctx.str());
       }
     }
   }
@@ -196,10 +133,7 @@ void runFrames(Top& top, const std::vector<Frame>& frames, uint32_t seed, double
 // ------------------------------------------------------------------ volumes
 
 sgm::PathVolume randomVolume(int w, int h, int maxValue, std::mt19937& rng) {
-  sgm::PathVolume v(w, h, kD);
-  std::uniform_int_distribution<int> value(0, maxValue);
-  for (auto& s : v.data) s = uint16_t(value(rng));
-  return v;
+  return sgm::tb::randomVolume(w, h, kD, maxValue, rng);
 }
 
 // Hand-picked cost vectors, one per pixel (cycled through the frame), around
@@ -331,36 +265,17 @@ TEST(SgmWta, RandomSoak) {
 
 // ------------------------------------------------------------------ Middlebury cones
 
-const sgm::PipelineStages* conesStages(std::string& why) {
-  static std::map<int, sgm::PipelineStages> cache;
-  const char* root = std::getenv("SGM_DATA");
-  const std::string dir = std::string(root ? root : "") + "/cones";
-  if (!root || !std::filesystem::exists(dir + "/left.png") || !std::filesystem::exists(dir + "/right.png")) {
-    why = "Middlebury cones not found at '" + dir + "' (set SGM_DATA, e.g. via make rtl-tests DATA=...)";
-    return nullptr;
-  }
-  auto it = cache.find(kD);
-  if (it == cache.end()) {
-    sgm::Params params;
-    params.disparities = kD;
-    it = cache.emplace(kD, sgm::runPipelineStages(sgm::readGray(dir + "/left.png"), sgm::readGray(dir + "/right.png"),
-                                                  params)).first;
-  }
-  return &it->second;
-}
-
 // The whole aggregated cones volume of this build's D through the core, with
 // and without sub-pixel; the sub-pixel result must also equal the disp plane of
 // the golden pipeline's selection stage.
 TEST(SgmWta, Cones) {
-  std::string why;
-  const sgm::PipelineStages* st = conesStages(why);
-  if (!st) GTEST_SKIP() << why;
-  const sgm::PathVolume& s = st->aggregated;
+  if (const std::string why = sgm::tb::conesMissing(); !why.empty()) GTEST_SKIP() << why;
+  const sgm::PipelineStages& st = sgm::tb::conesStages(kD);
+  const sgm::PathVolume& s = st.aggregated;
   // The golden selection stage agrees with the per-pixel model used above.
   for (int y = 0; y < s.height; ++y)
     for (int x = 0; x < s.width; ++x)
-      ASSERT_EQ(golden(s.at(x, y), true).disp, int(st->selected.disp.at<uint16_t>(y, x)))
+      ASSERT_EQ(golden(s.at(x, y), true).disp, int(st.selected.disp.at<uint16_t>(y, x)))
           << "golden model disagreement at (" << x << ", " << y << ")";
   Top top("sgm_wta_cones");
   runFrames(top,
