@@ -60,6 +60,20 @@ cv::Mat deriveNonOccluded(const cv::Mat& gtRaw, double scale) {
   return mask;
 }
 
+namespace {
+
+// Middlebury masks (all, nonocc, disc) from dir replace the derived ones where present.
+void useMasksIn(const std::string& dir, Scene& s) {
+  if (cv::Mat all = readMaskIfPresent(dir + "/all.png", s.left.size()); !all.empty()) s.all = all;
+  if (cv::Mat nonocc = readMaskIfPresent(dir + "/nonocc.png", s.left.size()); !nonocc.empty()) {
+    s.nonocc = nonocc;
+    s.nonoccDerived = false;
+  }
+  s.disc = readMaskIfPresent(dir + "/disc.png", s.left.size());
+}
+
+}  // namespace
+
 Scene makeScene(const std::string& name, const cv::Mat& leftColor, const cv::Mat& rightColor,
                 const cv::Mat& gtRaw, double gtScale) {
   Scene s;
@@ -90,12 +104,7 @@ Scene loadScene(const std::string& dir, double scaleOverride) {
   const cv::Mat gtRaw = readSingleChannel(gtPath);
   Scene s = makeScene(name, cv::imread(leftPath, cv::IMREAD_UNCHANGED), cv::imread(rightPath, cv::IMREAD_UNCHANGED),
                       gtRaw, scaleOverride > 0 ? scaleOverride : readScale(dir));
-  if (cv::Mat all = readMaskIfPresent(dir + "/all.png", s.left.size()); !all.empty()) s.all = all;
-  if (cv::Mat nonocc = readMaskIfPresent(dir + "/nonocc.png", s.left.size()); !nonocc.empty()) {
-    s.nonocc = nonocc;
-    s.nonoccDerived = false;
-  }
-  s.disc = readMaskIfPresent(dir + "/disc.png", s.left.size());
+  useMasksIn(dir, s);
   return s;
 }
 
@@ -120,7 +129,9 @@ Scene loadSceneFiles(const std::string& leftPath, const std::string& rightPath, 
       gtScale *= downscale;                                     // the scale grows instead
     }
   }
-  return makeScene(fs::path(leftPath).stem().string(), left, right, gtRaw, gtScale);
+  Scene scene = makeScene(fs::path(leftPath).stem().string(), left, right, gtRaw, gtScale);
+  if (!gtPath.empty() && downscale <= 1) useMasksIn(fs::path(gtPath).parent_path().string(), scene);
+  return scene;
 }
 
 std::vector<std::string> listScenes(const std::string& root) {

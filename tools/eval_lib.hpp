@@ -37,6 +37,8 @@ Scene makeScene(const std::string& name, const cv::Mat& leftColor, const cv::Mat
 
 // Reads a scene from explicit files; gtPath may be empty. A missing
 // gtScale (<= 0) is read from meta.txt beside the ground truth, else 1.
+// Middlebury masks (all.png, nonocc.png, disc.png) beside the ground truth are
+// used when present (and the scene is not downscaled).
 // downscale > 1 shrinks images (INTER_AREA) and ground truth (nearest) by that
 // factor and divides the disparities accordingly.
 Scene loadSceneFiles(const std::string& leftPath, const std::string& rightPath, const std::string& gtPath,
