@@ -172,8 +172,9 @@ int main(int argc, char** argv) {
     if (figures)
       std::printf("sgm-sim: bad-1.0 nonocc %.2f%%, all %.2f%%, density %.2f%%\n", figures->errNonocc, figures->errAll,
                   figures->density);
-    std::printf("sgm-sim: wrote %s/{disparity16,disparity8,disparity_color%s}.png and report.json\n", out.c_str(),
-                scene.hasGroundTruth() ? ",sidebyside" : "");
+    std::string written;
+    for (const auto& file : pictures) written += std::filesystem::path(file.first).filename().string() + " ";
+    std::printf("sgm-sim: wrote %s in %s/\n", (written + "report.json").c_str(), out.c_str());
     return mismatches == 0 ? 0 : 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "sgm-sim: error: %s\n", e.what());
