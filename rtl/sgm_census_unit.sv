@@ -71,24 +71,6 @@ module sgm_census_unit #(
   localparam int LATENCY /*verilator public*/ = 4;
   localparam int AW = MAX_WIDTH > 1 ? $clog2(MAX_WIDTH) : 1;  // line buffer address bits (<= CW)
 
-  // Popcount of 80 bits as an adder tree (2, 3, 4, 5 bit levels, then 5 terms).
-  function automatic logic [6:0] popcount80(input logic [79:0] v);
-    logic [79:0] l1;
-    logic [59:0] l2;
-    logic [39:0] l3;
-    logic [24:0] l4;
-    l1 = '0;
-    l2 = '0;
-    l3 = '0;
-    l4 = '0;
-    for (int i = 0; i < 40; i++) l1[i*2 +: 2] = {1'b0, v[2*i]} + {1'b0, v[2*i+1]};
-    for (int i = 0; i < 20; i++) l2[i*3 +: 3] = {1'b0, l1[4*i +: 2]} + {1'b0, l1[4*i+2 +: 2]};
-    for (int i = 0; i < 10; i++) l3[i*4 +: 4] = {1'b0, l2[6*i +: 3]} + {1'b0, l2[6*i+3 +: 3]};
-    for (int i = 0; i < 5; i++) l4[i*5 +: 5] = {1'b0, l3[8*i +: 4]} + {1'b0, l3[8*i+4 +: 4]};
-    popcount80 = {2'b0, l4[0 +: 5]} + {2'b0, l4[5 +: 5]} + {2'b0, l4[10 +: 5]} + {2'b0, l4[15 +: 5]} +
-                 {2'b0, l4[20 +: 5]};
-  endfunction
-
   // ------------------------------------------------------------ s1: line buffer read
   // mem_q[c][8k +: 8] = row y-8+k of column c (k = 7 the newest), seen from the next
   // slot y of that column.
@@ -201,10 +183,16 @@ module sgm_census_unit #(
   end
 
   // ------------------------------------------------------------ s4: rank, outputs
+  logic [6:0] rank3;
+  sgm_popcount80 u_rank (
+    .bits_i  (census3_q),
+    .count_o (rank3)
+  );
+
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       census_o <= census3_q;
-      rank_o   <= popcount80(census3_q);
+      rank_o   <= rank3;
       centre_o <= centre3_q;
       nbr_o    <= nbr3_q;
       col_o    <= cx3_q;

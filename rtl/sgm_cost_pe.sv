@@ -23,23 +23,11 @@ module sgm_cost_pe (
   output logic [7:0]      cost_o
 );
 
-  // Popcount of 80 bits as an adder tree (2, 3, 4, 5 bit levels, then 5 terms).
-  function automatic logic [6:0] popcount80(input logic [79:0] v);
-    logic [79:0] l1;
-    logic [59:0] l2;
-    logic [39:0] l3;
-    logic [24:0] l4;
-    l1 = '0;
-    l2 = '0;
-    l3 = '0;
-    l4 = '0;
-    for (int i = 0; i < 40; i++) l1[i*2 +: 2] = {1'b0, v[2*i]} + {1'b0, v[2*i+1]};
-    for (int i = 0; i < 20; i++) l2[i*3 +: 3] = {1'b0, l1[4*i +: 2]} + {1'b0, l1[4*i+2 +: 2]};
-    for (int i = 0; i < 10; i++) l3[i*4 +: 4] = {1'b0, l2[6*i +: 3]} + {1'b0, l2[6*i+3 +: 3]};
-    for (int i = 0; i < 5; i++) l4[i*5 +: 5] = {1'b0, l3[8*i +: 4]} + {1'b0, l3[8*i+4 +: 4]};
-    popcount80 = {2'b0, l4[0 +: 5]} + {2'b0, l4[5 +: 5]} + {2'b0, l4[10 +: 5]} + {2'b0, l4[15 +: 5]} +
-                 {2'b0, l4[20 +: 5]};
-  endfunction
+  logic [6:0] hamming;
+  sgm_popcount80 u_hamming (
+    .bits_i  (lcensus_i ^ rcensus_i),
+    .count_o (hamming)
+  );
 
   // Stage A
   logic [6:0] rt_q, ham_q;
@@ -48,7 +36,7 @@ module sgm_cost_pe (
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       rt_q  <= lrank_i >= rrank_i ? lrank_i - rrank_i : rrank_i - lrank_i;
-      ham_q <= popcount80(lcensus_i ^ rcensus_i);
+      ham_q <= hamming;
       out_q <= outside_i;
     end
   end
