@@ -1,0 +1,116 @@
+# Common part of the synth/*.tcl scripts (run as `yosys -c synth/<target>.tcl`).
+#
+# Reads the RTL, sets the top's parameters with chparam, elaborates, runs
+# `check` and saves the elaborated design as "elab". The pipeline stages (the
+# module instances of sgm_top, docs/rtl.md) are then synthesized one at a time
+# as their own top (everything inside a stage flattened), which gives the
+# per-module breakdown and keeps Yosys' optimisation loops per stage: `opt`
+# iterates over the whole design until nothing changes, and constant bits
+# travelling down the long register chains of sgm_lr_check make that loop
+# iterate ~D times. sgm_top itself holds no logic, only the stage instances.
+#
+# Environment (set by synth/synth.mk):
+#   SYNTH_RTL        directory of the *.sv sources (default rtl)
+#   SYNTH_D          disparities D (16, 32, 64, 128)
+#   SYNTH_MAX_WIDTH  MAX_WIDTH
+#   SYNTH_MAX_HEIGHT MAX_HEIGHT (default 1024, the RTL default)
+#   SYNTH_OUT        output directory of this target (created by make)
+#
+# Files written into SYNTH_OUT by this part:
+#   check.txt      `check` of the elaborated design
+#   hierarchy.txt  `stat -top sgm_top` of the elaborated design (instance counts)
+yosys -import
+
+proc env_or {name default} {
+  if {[info exists ::env($name)] && $::env($name) ne ""} { return $::env($name) }
+  return $default
+}
+
+set rtl        [env_or SYNTH_RTL rtl]
+set d          [env_or SYNTH_D 64]
+set max_width  [env_or SYNTH_MAX_WIDTH 1280]
+set max_height [env_or SYNTH_MAX_HEIGHT 1024]
+set out        [env_or SYNTH_OUT build/synth]
+
+yosys read_verilog -sv {*}[lsort [glob $rtl/*.sv]]
+yosys chparam -set D $d -set MAX_WIDTH $max_width -set MAX_HEIGHT $max_height sgm_top
+yosys hierarchy -check -top sgm_top
+yosys proc
+yosys tee -o $out/check.txt check
+yosys tee -q -o $out/hierarchy.txt stat -top sgm_top
+yosys design -save elab
+
+# The stage modules ($paramod$<hash>\sgm_<name>): the direct children of sgm_top in
+# the "design hierarchy" section of hierarchy.txt (indented by 5 spaces).
+proc stage_modules {} {
+  set f [open $::out/hierarchy.txt r]
+  set mods {}
+  set in_hier 0
+  foreach line [split [read $f] "\n"] {
+    if {[string match "=== design hierarchy ===*" $line]} { set in_hier 1; continue }
+    if {$in_hier && [string match "*Number of wires*" $line]} break
+    if {$in_hier && [regexp {^     (\S+)\s+[0-9]+$} $line -> mod]} { lappend mods $mod }
+  }
+  close $f
+  return [lsort -unique $mods]
+}
+
+# sgm_<name> of a stage module (the part after the last backslash).
+proc stage_name {mod} {
+  set i [string last "\\" $mod]
+  if {$i >= 0} { return [string range $mod [expr {$i + 1}] end] }
+  return $mod
+}
+
+# Run BODY once per stage with the variables mod (module name) and name (its
+# sgm_<name>) set and only that stage (and what it instantiates) loaded. The
+# seconds each stage took go to $out/<name>.seconds.
+proc foreach_stage {body} {
+  foreach mod [stage_modules] {
+    set name [stage_name $mod]
+    set t0 [clock milliseconds]
+    yosys design -load elab
+    yosys hierarchy -top $mod
+    uplevel 1 [list set mod $mod]
+    uplevel 1 [list set name $name]
+    uplevel 1 $body
+    set f [open $::out/$name.seconds w]
+    puts $f [format %.1f [expr {([clock milliseconds] - $t0) / 1000.0}]]
+    close $f
+  }
+}
+
+# Write into FILE one line "TYPE module/cell" per cell of each of TYPES (the
+# RAM primitives, so that the summary can tell which memory went where).
+proc write_cells {file types} {
+  set lines {}
+  foreach t $types {
+    yosys tee -q -o $::out/.cells.tmp select -list t:$t
+    set f [open $::out/.cells.tmp r]
+    foreach line [split [read $f] "\n"] {
+      set line [string trim $line]
+      if {$line ne ""} { lappend lines "$t $line" }
+    }
+    close $f
+  }
+  file delete $::out/.cells.tmp
+  set f [open $file w]
+  foreach line $lines { puts $f $line }
+  close $f
+}
+
+# RAM primitives per technology (block RAM first, then distributed RAM).
+set ram_types(xilinx) {RAMB36E1 RAMB18E1 RAMB36E2 RAMB18E2 RAMB16BWER RAMB8BWER
+  RAM16X1S RAM16X1D RAM32X1S RAM32X1D RAM64X1S RAM64X1D RAM128X1S RAM128X1D RAM256X1S RAM256X1D
+  RAM512X1S RAM32M RAM64M RAM32M16 RAM64M8 RAM32X16DR8 RAM64X8SW}
+set ram_types(ice40) {SB_RAM40_4K SB_SPRAM256KA}
+
+# Sequential primitives that end a combinational path, per technology, as a
+# selection (ltp counts the cells between them: LUTs, carry cells, wide muxes).
+proc ltp_sel {tech} {
+  switch $tech {
+    xilinx  { return [list t:FD* t:LD* t:RAM* t:SRL* t:DSP* t:BUFG* %u %u %u %u %u %n] }
+    ice40   { return [list t:SB_DFF* t:SB_RAM* t:SB_MAC16 t:SB_SPRAM* %u %u %u %n] }
+    generic { return [list t:\$_DFF* t:\$_SDFF* t:\$_DFFE* t:\$_SDFFE* t:\$_SDFFCE* t:\$_ALDFF* t:\$_DLATCH* t:\$mem* %u %u %u %u %u %u %u %n] }
+  }
+}

@@ -1,0 +1,136 @@
+# `make synth`: Yosys resource and timing reports of sgm_top against the
+# paper's Table III (included by the main Makefile; synth/README.md explains
+# the flow, the outputs and the figures).
+#
+#   make synth [D=64] [MAX_WIDTH=1280]   xc7, xc6s, generic and iCE40 synthesis of
+#                                        that configuration, the routed iCE40 loop
+#                                        harness, build/synth/summary.{json,md}
+#   make synth-ci                        D=16, MAX_WIDTH=128: xc7 only, then checks the
+#                                        summary and that the path buffers are block RAM
+#   make synth-xc7 | synth-xc6s | synth-generic | synth-ice40 | synth-ice40-loop
+#                                        one target (then make synth-summary)
+#   make synth-flat                      xc7 of the whole core flattened in one run
+#                                        (cross-stage optimisation, slow for D = 64)
+#
+# Yosys and nextpnr run one at a time (flock on build/synth/.lock, also under
+# make -j), each under `timeout $(SYNTH_TIMEOUT)`. The results depend on rtl/*.sv and
+# synth/*.tcl; after changing an option here, `make synth-clean` (or delete the
+# target directory) to rerun.
+
+# The same variables and defaults as `make sim` (the main Makefile sets them
+# after including this file).
+D                 ?= 64
+MAX_WIDTH         ?= 1280
+SYNTH_MAX_HEIGHT  ?= 1024
+SYNTH_TARGETS     ?= xc7 xc6s generic ice40
+SYNTH_TIMEOUT     ?= 10800
+SYNTH_CI_D        ?= 16
+SYNTH_CI_MAX_WIDTH ?= 128
+# Loop harness on iCE40: D, device, package, nextpnr target frequency (MHz).
+ICE40_LOOP_D      ?= 16
+ICE40_DEVICE      ?= hx8k
+ICE40_PACKAGE     ?= ct256
+ICE40_FREQ        ?= 100
+ICE40_SEED        ?= 1
+
+SYNTH_DIR    := $(BUILD)/synth
+SYNTH_CFG     = d$(D)-w$(MAX_WIDTH)
+SYNTH_OUT     = $(SYNTH_DIR)/$(SYNTH_CFG)
+SYNTH_LOOP    = $(SYNTH_DIR)/ice40-loop-d$(ICE40_LOOP_D)
+SYNTH_LOCK    = $(SYNTH_DIR)/.lock
+SYNTH_SUMMARY = $(BIN)/synth-summary
+SYNTH_COMMON := $(RTL_SRC) synth/common.tcl
+
+.PHONY: synth synth-ci synth-summary synth-help synth-clean synth-flat \
+        synth-xc7 synth-xc6s synth-generic synth-ice40 synth-ice40-loop
+
+synth-help:
+	@echo "make synth [D=64 MAX_WIDTH=1280]  xc7 / xc6s / generic / iCE40 synthesis + routed iCE40 loop -> build/synth/summary.{json,md}"
+	@echo "make synth-ci                     D=$(SYNTH_CI_D) MAX_WIDTH=$(SYNTH_CI_MAX_WIDTH), xc7 only; fails unless the path buffers are block RAM"
+	@echo "make synth-xc7 | synth-xc6s | synth-generic | synth-ice40 | synth-ice40-loop [ICE40_LOOP_D=16]"
+	@echo "make synth-flat                   xc7, whole core flattened in one Yosys run (slow for D = 64)"
+	@echo "make synth-summary                rebuild summary.{json,md} from what build/synth holds"
+
+synth: $(foreach t,$(SYNTH_TARGETS),$(SYNTH_OUT)/$(t)/done) $(SYNTH_LOOP)/done $(SYNTH_SUMMARY) | check-tools
+	@$(SYNTH_SUMMARY) $(SYNTH_DIR)
+	@awk '/^## D = $(D), MAX_WIDTH = $(MAX_WIDTH) /{f=1} f && /^\*\*Path buffers/{exit} f' $(SYNTH_DIR)/summary.md
+
+synth-ci: $(SYNTH_SUMMARY) | check-tools
+	@$(MAKE) --no-print-directory D=$(SYNTH_CI_D) MAX_WIDTH=$(SYNTH_CI_MAX_WIDTH) synth-xc7
+	@$(SYNTH_SUMMARY) $(SYNTH_DIR) --check d$(SYNTH_CI_D)-w$(SYNTH_CI_MAX_WIDTH)/xc7
+	@test -s $(SYNTH_DIR)/summary.json && test -s $(SYNTH_DIR)/summary.md || \
+	  { echo "synth-ci: FAIL: $(SYNTH_DIR)/summary.json or summary.md missing or empty"; exit 1; }
+	@echo "synth-ci: OK ($(SYNTH_DIR)/summary.json, $(SYNTH_DIR)/summary.md)"
+
+synth-summary: $(SYNTH_SUMMARY) | check-tools
+	@$(SYNTH_SUMMARY) $(SYNTH_DIR)
+
+synth-xc7:        $(SYNTH_OUT)/xc7/done
+synth-xc6s:       $(SYNTH_OUT)/xc6s/done
+synth-generic:    $(SYNTH_OUT)/generic/done
+synth-ice40:      $(SYNTH_OUT)/ice40/done
+synth-ice40-loop: $(SYNTH_LOOP)/done
+synth-flat:       $(SYNTH_OUT)/xc7-flat/done
+
+synth-clean:
+	rm -rf $(SYNTH_DIR)
+
+$(SYNTH_SUMMARY): synth/synth_summary.cpp | check-tools
+	@mkdir -p $(dir $@)
+	$(CXX) -std=c++17 -O2 -Wall -Wextra -o $@ $<
+
+# $(call synth_yosys,TARGET,SCRIPT,ENV): run SCRIPT for TARGET into $(@D), with the
+# configuration in the environment, then write $(@D)/meta.txt and the stamp.
+define synth_yosys
+	@rm -rf $(@D) && mkdir -p $(@D)
+	@echo "synth: $(1), D=$(D) MAX_WIDTH=$(MAX_WIDTH) (log: $(@D)/yosys.log)"
+	@start=$$(date +%s); \
+	 commit=$$(git rev-parse --short HEAD 2>/dev/null)$$(git status --porcelain -- rtl 2>/dev/null | grep -q . && echo -dirty); \
+	 SYNTH_RTL=rtl SYNTH_D=$(D) SYNTH_MAX_WIDTH=$(MAX_WIDTH) SYNTH_MAX_HEIGHT=$(SYNTH_MAX_HEIGHT) SYNTH_OUT=$(@D) $(3) \
+	   flock $(SYNTH_LOCK) timeout $(SYNTH_TIMEOUT) yosys -q -l $(@D)/yosys.log -c $(2) > $(@D)/yosys.out 2>&1; rc=$$?; \
+	 if [ $$rc != 0 ]; then \
+	   if [ $$rc = 124 ]; then echo "synth: $(1): Yosys timed out after $(SYNTH_TIMEOUT) s (SYNTH_TIMEOUT)"; \
+	   else echo "synth: $(1): Yosys failed (exit $$rc):"; grep -E '^ERROR' $(@D)/yosys.log | tail -5; fi; exit 1; fi; \
+	 { echo "target=$(1)"; echo "d=$(D)"; echo "max_width=$(MAX_WIDTH)"; echo "max_height=$(SYNTH_MAX_HEIGHT)"; \
+	   echo "yosys=$$(yosys -V)"; echo "rtl_commit=$$commit"; \
+	   echo "date=$$(date -u +%Y-%m-%dT%H:%M:%SZ)"; echo "seconds=$$(( $$(date +%s) - start ))"; } > $(@D)/meta.txt; \
+	 echo "synth: $(1) done in $$(( $$(date +%s) - start )) s"
+	@touch $@
+endef
+
+$(SYNTH_OUT)/xc7/done: $(SYNTH_COMMON) synth/xilinx.tcl | check-tools
+	$(call synth_yosys,xc7,synth/xilinx.tcl,SYNTH_FAMILY=xc7)
+
+$(SYNTH_OUT)/xc6s/done: $(SYNTH_COMMON) synth/xilinx.tcl | check-tools
+	$(call synth_yosys,xc6s,synth/xilinx.tcl,SYNTH_FAMILY=xc6s)
+
+$(SYNTH_OUT)/generic/done: $(SYNTH_COMMON) synth/generic.tcl | check-tools
+	$(call synth_yosys,generic,synth/generic.tcl,)
+
+$(SYNTH_OUT)/ice40/done: $(SYNTH_COMMON) synth/ice40.tcl | check-tools
+	$(call synth_yosys,ice40,synth/ice40.tcl,)
+
+$(SYNTH_OUT)/xc7-flat/done: $(SYNTH_COMMON) synth/xilinx_flat.tcl | check-tools
+	$(call synth_yosys,xc7-flat,synth/xilinx_flat.tcl,SYNTH_FAMILY=xc7)
+
+# The loop harness: synth_ice40, nextpnr-ice40 (placed and routed, timing
+# report), icetime on the routed design as a second opinion.
+$(SYNTH_LOOP)/done: synth/sgm_path_loop.sv synth/ice40_loop.tcl rtl/sgm_path_pe.sv rtl/sgm_min_tree.sv | check-tools
+	@rm -rf $(@D) && mkdir -p $(@D)
+	@echo "synth: iCE40 loop harness, D=$(ICE40_LOOP_D), $(ICE40_DEVICE) (logs: $(@D)/)"
+	@start=$$(date +%s); \
+	 SYNTH_RTL=rtl SYNTH_LOOP_D=$(ICE40_LOOP_D) SYNTH_OUT=$(@D) \
+	   flock $(SYNTH_LOCK) timeout $(SYNTH_TIMEOUT) yosys -q -l $(@D)/yosys.log -c synth/ice40_loop.tcl > $(@D)/yosys.out 2>&1 || \
+	   { echo "synth: loop harness: Yosys failed, see $(@D)/yosys.log"; exit 1; }; \
+	 flock $(SYNTH_LOCK) timeout $(SYNTH_TIMEOUT) nextpnr-ice40 --$(ICE40_DEVICE) --package $(ICE40_PACKAGE) \
+	   --json $(@D)/netlist.json --pcf-allow-unconstrained --freq $(ICE40_FREQ) --timing-allow-fail \
+	   --seed $(ICE40_SEED) --threads 1 --report $(@D)/report.json --asc $(@D)/loop.asc -l $(@D)/nextpnr.log \
+	   > /dev/null 2>&1 || \
+	   { echo "synth: loop harness: nextpnr-ice40 failed:"; grep -E '^ERROR' $(@D)/nextpnr.log | tail -3; exit 1; }; \
+	 icetime -d $(ICE40_DEVICE) -P $(ICE40_PACKAGE) -t $(@D)/loop.asc > $(@D)/icetime.txt 2>&1 || \
+	   { echo "synth: loop harness: icetime failed, see $(@D)/icetime.txt"; exit 1; }; \
+	 { echo "target=ice40-loop"; echo "d=$(ICE40_LOOP_D)"; echo "device=$(ICE40_DEVICE)-$(ICE40_PACKAGE)"; \
+	   echo "freq_mhz=$(ICE40_FREQ)"; echo "yosys=$$(yosys -V)"; \
+	   echo "date=$$(date -u +%Y-%m-%dT%H:%M:%SZ)"; echo "seconds=$$(( $$(date +%s) - start ))"; } > $(@D)/meta.txt; \
+	 echo "synth: loop harness: $$(grep -o 'Max frequency.*' $(@D)/nextpnr.log | tail -1) ($$(( $$(date +%s) - start )) s)"
+	@touch $@

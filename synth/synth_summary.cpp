@@ -1,0 +1,878 @@
+// synth_summary: collects the `make synth` reports under build/synth into
+// summary.json and summary.md (synth/README.md describes the layout).
+//
+//   synth-summary ROOT [--check CONFIG/TARGET]...
+//
+// ROOT holds one directory per configuration, d<D>-w<MAX_WIDTH>, with one
+// directory per target (xc7, xc6s, generic, ice40) written by synth/*.tcl,
+// and ice40-loop-d<D> directories (the routed loop harness). Every target
+// directory has a meta.txt (key=value, written by synth/synth.mk) and is
+// skipped without its "done" stamp. --check CONFIG/TARGET fails (exit 1, with
+// the reason on stderr) unless that target is in the summary and its path
+// buffers (sgm_path_engine mem45 / mem90 / mem135) were mapped to block RAM
+// only, and `check` found no problem.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <dirent.h>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <sys/stat.h>
+#include <vector>
+
+namespace {
+
+// ------------------------------------------------------------------ paper
+// Table III of the paper: Spartan-6 xc6slx150.
+constexpr long kPaperLut = 31495;
+constexpr long kPaperFf = 13084;
+constexpr double kPaperSramKB = 183.0;
+constexpr double kPaperPixelsPerClock = 1.0 / 9.0;
+constexpr int kLw = 9;  // path-cost width of the core = ceil(log2(Lmax + 1)), Lmax = 415
+
+// Eq. (7): path-cost buffer bits (D + 5)(3W + 1) ceil(log2(Lmax + 1)).
+long eq7Bits(long d, long w) { return (d + 5) * (3 * w + 1) * kLw; }
+
+// ------------------------------------------------------------------ helpers
+bool isDir(const std::string &p) {
+  struct stat st;
+  return stat(p.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
+}
+bool isFile(const std::string &p) {
+  struct stat st;
+  return stat(p.c_str(), &st) == 0 && S_ISREG(st.st_mode);
+}
+std::vector<std::string> listDir(const std::string &p) {
+  std::vector<std::string> out;
+  if (DIR *d = opendir(p.c_str())) {
+    while (dirent *e = readdir(d)) {
+      std::string n = e->d_name;
+      if (n != "." && n != "..") out.push_back(n);
+    }
+    closedir(d);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+std::vector<std::string> readLines(const std::string &p) {
+  std::vector<std::string> out;
+  std::ifstream f(p);
+  std::string l;
+  while (std::getline(f, l)) out.push_back(l);
+  return out;
+}
+std::map<std::string, std::string> readMeta(const std::string &p) {
+  std::map<std::string, std::string> m;
+  for (auto &l : readLines(p)) {
+    auto eq = l.find('=');
+    if (eq != std::string::npos) m[l.substr(0, eq)] = l.substr(eq + 1);
+  }
+  return m;
+}
+std::string metaGet(const std::map<std::string, std::string> &m, const std::string &k) {
+  auto it = m.find(k);
+  return it == m.end() ? std::string() : it->second;
+}
+long toLong(const std::string &s, long dflt = 0) {
+  try { return std::stol(s); } catch (...) { return dflt; }
+}
+double toDouble(const std::string &s, double dflt = NAN) {
+  try { return std::stod(s); } catch (...) { return dflt; }
+}
+// The part after the last backslash: $paramod$<hash>\sgm_wta -> sgm_wta.
+std::string baseName(const std::string &mod) {
+  auto i = mod.rfind('\\');
+  return i == std::string::npos ? mod : mod.substr(i + 1);
+}
+bool startsWith(const std::string &s, const std::string &p) { return s.compare(0, p.size(), p) == 0; }
+
+std::string jsonStr(const std::string &s) {
+  std::string o = "\"";
+  for (char c : s) {
+    switch (c) {
+      case '"': o += "\\\""; break;
+      case '\\': o += "\\\\"; break;
+      case '\n': o += "\\n"; break;
+      case '\t': o += "\\t"; break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20) {
+          char b[8];
+          std::snprintf(b, sizeof b, "\\u%04x", c);
+          o += b;
+        } else {
+          o += c;
+        }
+    }
+  }
+  return o + "\"";
+}
+std::string jsonNum(double v, int prec = 1) {
+  if (std::isnan(v)) return "null";
+  char b[64];
+  std::snprintf(b, sizeof b, "%.*f", prec, v);
+  return b;
+}
+// 31495 -> "31,495"
+std::string grouped(long v) {
+  std::string s = std::to_string(v < 0 ? -v : v), o;
+  int n = 0;
+  for (auto it = s.rbegin(); it != s.rend(); ++it, ++n) {
+    if (n && n % 3 == 0) o += ',';
+    o += *it;
+  }
+  if (v < 0) o += '-';
+  return std::string(o.rbegin(), o.rend());
+}
+std::string fixed(double v, int prec) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.*f", prec, v);
+  return b;
+}
+
+// ------------------------------------------------------------------ cell classes
+enum class Tech { Xilinx, Ice40, Generic };
+
+Tech techOf(const std::string &target) {
+  if (target == "xc7" || target == "xc6s" || startsWith(target, "xc")) return Tech::Xilinx;
+  if (target == "ice40") return Tech::Ice40;
+  return Tech::Generic;
+}
+
+// LUT6 sites a distributed-RAM primitive occupies.
+int lutramLuts(const std::string &t) {
+  static const std::map<std::string, int> k = {
+      {"RAM16X1S", 1},  {"RAM16X1D", 2},  {"RAM32X1S", 1},   {"RAM32X1D", 2},    {"RAM64X1S", 1},
+      {"RAM64X1D", 2},  {"RAM128X1S", 2}, {"RAM128X1D", 4},  {"RAM256X1S", 4},   {"RAM256X1D", 8},
+      {"RAM512X1S", 8}, {"RAM32M", 4},    {"RAM64M", 4},     {"RAM32M16", 8},    {"RAM64M8", 8},
+      {"RAM32X16DR8", 8}, {"RAM64X8SW", 8}};
+  auto it = k.find(t);
+  return it == k.end() ? 0 : it->second;
+}
+// Block RAM capacity in Kbit (18 Kbit primitives include the parity bits).
+int bramKbitOf(const std::string &t) {
+  if (t == "RAMB36E1" || t == "RAMB36E2" || t == "RAMB36") return 36;
+  if (t == "RAMB18E1" || t == "RAMB18E2" || t == "RAMB16BWER" || t == "RAMB16") return 18;
+  if (t == "RAMB8BWER") return 9;
+  if (t == "SB_RAM40_4K") return 4;
+  if (t == "SB_SPRAM256KA") return 256;
+  return 0;
+}
+bool isFf(Tech tech, const std::string &t) {
+  switch (tech) {
+    case Tech::Xilinx: return startsWith(t, "FD") || startsWith(t, "LD");
+    case Tech::Ice40: return startsWith(t, "SB_DFF");
+    case Tech::Generic:
+      return startsWith(t, "$_") && (t.find("DFF") != std::string::npos || t.find("LATCH") != std::string::npos);
+  }
+  return false;
+}
+bool isLut(Tech tech, const std::string &t) {
+  if (tech == Tech::Xilinx) return std::regex_match(t, std::regex("LUT[1-6](_2)?"));
+  if (tech == Tech::Ice40) return t == "SB_LUT4";
+  return false;
+}
+bool isSrl(const std::string &t) { return startsWith(t, "SRL"); }
+bool isDsp(const std::string &t) { return startsWith(t, "DSP48") || t == "SB_MAC16"; }
+bool isCarry(const std::string &t) { return t == "CARRY4" || t == "CARRY8" || t == "SB_CARRY"; }
+bool isMuxf(const std::string &t) { return startsWith(t, "MUXF"); }
+
+// ------------------------------------------------------------------ data
+struct Memory {
+  std::string stage, name;
+  long width = 0, depth = 0, instances = 1;
+  std::map<std::string, long> cells;  // primitive type -> count (per instance)
+  long bits() const { return width * depth * instances; }
+  bool pathBuffer() const {
+    if (stage == "sgm_path_engine") return name == "mem45" || name == "mem90" || name == "mem135";
+    return stage == "sgm_top" && (name == "u_paths.mem45" || name == "u_paths.mem90" || name == "u_paths.mem135");
+  }
+};
+
+struct Counts {
+  std::map<std::string, long> cells;  // type -> count, already times instances where summed
+  long lut = 0, lutram = 0, srl = 0, ff = 0, dsp = 0, carry = 0, muxf = 0, total = 0;
+  long bram36 = 0, bram18 = 0, bram9 = 0, bram4 = 0, bramKbit = 0, mems = 0;
+  std::map<int, long> lutBySize;
+  void add(Tech tech, const std::string &t, long n) {
+    cells[t] += n;
+    total += n;
+    if (isLut(tech, t)) {
+      lut += n;
+      lutBySize[tech == Tech::Ice40 ? 4 : t[3] - '0'] += n;
+    } else if (lutramLuts(t)) {
+      lutram += n * lutramLuts(t);
+    } else if (isSrl(t)) {
+      srl += n;
+    } else if (isFf(tech, t)) {
+      ff += n;
+    } else if (isDsp(t)) {
+      dsp += n;
+    } else if (isCarry(t)) {
+      carry += n;
+    } else if (isMuxf(t)) {
+      muxf += n;
+    } else if (t == "$mem_v2" || t == "$mem") {
+      mems += n;
+    }
+    int kb = bramKbitOf(t);
+    if (kb) {
+      bramKbit += n * kb;
+      if (kb == 36) bram36 += n;
+      else if (kb == 18) bram18 += n;
+      else if (kb == 9) bram9 += n;
+      else if (kb == 4) bram4 += n;
+    }
+  }
+  void add(Tech tech, const Counts &o, long times) {
+    for (auto &kv : o.cells) add(tech, kv.first, kv.second * times);
+  }
+  long sliceLuts() const { return lut + lutram + srl; }
+};
+
+struct Ltp {
+  int length = -1;
+  std::string from, to;
+};
+
+struct Stage {
+  std::string module, name;
+  long instances = 1;
+  Counts counts;  // one instance
+  Ltp ltp;
+  double seconds = NAN;
+};
+
+struct Target {
+  std::string config, target, dir;
+  Tech tech = Tech::Generic;
+  std::map<std::string, std::string> meta;
+  long d = 0, w = 0, h = 0;
+  std::vector<Stage> stages;
+  std::vector<Memory> memories;
+  Counts total;
+  Ltp ltp;
+  std::string ltpStage;
+  long checkProblems = -1;
+  double seconds = NAN;
+  // path buffers
+  long pbBits = 0, pbBram18 = 0, pbBram36 = 0, pbBram9 = 0, pbBram4 = 0, pbBramKbit = 0, pbLutram = 0;
+  bool pbFound = false, pbInBram = false;
+  std::vector<std::string> notes;
+};
+
+struct Loop {
+  std::string dir;
+  std::map<std::string, std::string> meta;
+  long d = 0;
+  double fmaxNextpnr = NAN, fmaxIcetime = NAN, targetMhz = NAN;
+  long lc = -1, lcTotal = -1, lut = -1, ff = -1, carry = -1, icetimeLevels = -1;
+  double seconds = NAN;
+};
+
+// ------------------------------------------------------------------ parsers
+// `stat` output: the cell-type lines after "Number of cells:" of the first
+// (or only) module section.
+Counts parseStat(Tech tech, const std::string &path) {
+  Counts c;
+  bool in = false;
+  static const std::regex cellLine(R"(^\s+(\S+)\s+([0-9]+)\s*$)");
+  for (auto &l : readLines(path)) {
+    if (l.find("Number of cells:") != std::string::npos) {
+      in = true;
+      continue;
+    }
+    if (!in) continue;
+    std::smatch m;
+    if (std::regex_match(l, m, cellLine)) {
+      c.add(tech, m[1], toLong(m[2]));
+    } else if (!l.empty() && l.find_first_not_of(" \t") != std::string::npos) {
+      break;
+    } else if (!c.cells.empty()) {
+      break;
+    }
+  }
+  return c;
+}
+
+// "design hierarchy" section of `stat -top sgm_top`: direct children of the top.
+std::map<std::string, long> parseInstances(const std::string &path) {
+  std::map<std::string, long> out;
+  bool in = false;
+  static const std::regex child(R"(^     (\S+)\s+([0-9]+)\s*$)");
+  for (auto &l : readLines(path)) {
+    if (startsWith(l, "=== design hierarchy ===")) {
+      in = true;
+      continue;
+    }
+    if (!in) continue;
+    if (l.find("Number of wires") != std::string::npos) break;
+    std::smatch m;
+    if (std::regex_match(l, m, child)) out[m[1]] += toLong(m[2]);
+  }
+  return out;
+}
+
+// `dump t:$mem_v2`: memories with width and depth.
+std::vector<Memory> parseMemories(const std::string &stage, const std::string &path) {
+  std::vector<Memory> out;
+  static const std::regex cell(R"(^\s*cell \$mem(_v2)? (\S+)\s*$)");
+  static const std::regex param(R"(^\s*parameter \\(WIDTH|SIZE|MEMID) (.*)$)");
+  for (auto &l : readLines(path)) {
+    std::smatch m;
+    if (std::regex_match(l, m, cell)) {
+      Memory mem;
+      mem.stage = stage;
+      mem.name = m[2];
+      if (!mem.name.empty() && mem.name[0] == '\\') mem.name = mem.name.substr(1);
+      out.push_back(mem);
+    } else if (!out.empty() && std::regex_match(l, m, param)) {
+      std::string v = m[2];
+      if (m[1] == "WIDTH") out.back().width = toLong(v);
+      if (m[1] == "SIZE") out.back().depth = toLong(v);
+      if (m[1] == "MEMID") {
+        // "\\u_p2_lut.table_q" -> u_p2_lut.table_q
+        std::string id;
+        for (char ch : v)
+          if (ch != '"' && ch != '\\') id += ch;
+        out.back().name = id;
+      }
+    }
+  }
+  return out;
+}
+
+// "TYPE module/cell" lines; the memory of a cell is its name without the
+// trailing ".<i>.<j>" that memory_libmap appends.
+std::vector<std::pair<std::string, std::string>> parseRamCells(const std::string &path) {
+  std::vector<std::pair<std::string, std::string>> out;
+  static const std::regex suffix(R"((\.[0-9]+)+$)");
+  for (auto &l : readLines(path)) {
+    std::istringstream is(l);
+    std::string type, full;
+    if (!(is >> type >> full)) continue;
+    auto slash = full.rfind('/');
+    std::string cell = slash == std::string::npos ? full : full.substr(slash + 1);
+    out.emplace_back(type, std::regex_replace(cell, suffix, ""));
+  }
+  return out;
+}
+
+Ltp parseLtp(const std::string &path) {
+  Ltp r;
+  static const std::regex head(R"(Longest topological path in .* \(length=(-?[0-9]+)\):)");
+  static const std::regex step(R"(^\s*([0-9]+): (\S+(?: \[[0-9]+\])?)(?: \(via .*\))?\s*$)");
+  bool in = false;
+  for (auto &l : readLines(path)) {
+    std::smatch m;
+    if (std::regex_search(l, m, head)) {
+      r.length = static_cast<int>(toLong(m[1], -1));
+      in = true;
+      continue;
+    }
+    if (in && std::regex_match(l, m, step)) {
+      std::string sig = m[2];
+      if (!sig.empty() && sig[0] == '\\') sig = sig.substr(1);
+      if (r.from.empty()) r.from = sig;
+      r.to = sig;
+    }
+  }
+  return r;
+}
+
+long parseCheck(const std::string &path) {
+  static const std::regex found(R"(Found and reported ([0-9]+) problems)");
+  for (auto &l : readLines(path)) {
+    std::smatch m;
+    if (std::regex_search(l, m, found)) return toLong(m[1]);
+  }
+  return -1;
+}
+
+double readSeconds(const std::string &path) {
+  auto lines = readLines(path);
+  return lines.empty() ? NAN : toDouble(lines[0]);
+}
+
+// ------------------------------------------------------------------ collect
+bool loadTarget(const std::string &root, const std::string &config, const std::string &name, Target &t) {
+  t.config = config;
+  t.target = name;
+  t.dir = root + "/" + config + "/" + name;
+  if (!isFile(t.dir + "/done")) return false;
+  t.tech = techOf(name);
+  t.meta = readMeta(t.dir + "/meta.txt");
+  t.d = toLong(metaGet(t.meta, "d"));
+  t.w = toLong(metaGet(t.meta, "max_width"));
+  t.h = toLong(metaGet(t.meta, "max_height"));
+  t.seconds = toDouble(metaGet(t.meta, "seconds"));
+  t.checkProblems = parseCheck(t.dir + "/check.txt");
+
+  // synth/xilinx_flat.tcl: the whole core as one "stage" sgm_top.
+  auto inst = isFile(t.dir + "/sgm_top.stat.txt") ? std::map<std::string, long>{{"sgm_top", 1}}
+                                                  : parseInstances(t.dir + "/hierarchy.txt");
+  for (auto &kv : inst) {
+    Stage s;
+    s.module = kv.first;
+    s.name = baseName(kv.first);
+    s.instances = kv.second;
+    std::string p = t.dir + "/" + s.name;
+    s.counts = parseStat(t.tech, p + ".stat.txt");
+    s.ltp = parseLtp(p + ".ltp.txt");
+    s.seconds = readSeconds(p + ".seconds");
+    t.total.add(t.tech, s.counts, s.instances);
+    if (s.ltp.length > t.ltp.length) {
+      t.ltp = s.ltp;
+      t.ltpStage = s.name;
+    }
+    auto mems = parseMemories(s.name, p + ".memories.txt");
+    auto cells = parseRamCells(p + ".ramcells.txt");
+    for (auto &m : mems) {
+      m.instances = s.instances;
+      for (auto &c : cells)
+        if (c.second == m.name) m.cells[c.first]++;
+      t.memories.push_back(m);
+    }
+    t.stages.push_back(s);
+  }
+  std::sort(t.stages.begin(), t.stages.end(),
+            [](const Stage &a, const Stage &b) { return a.counts.sliceLuts() * a.instances > b.counts.sliceLuts() * b.instances; });
+
+  // Path buffers.
+  int found = 0;
+  bool allBram = true;
+  for (auto &m : t.memories) {
+    if (!m.pathBuffer()) continue;
+    ++found;
+    t.pbBits += m.bits();
+    long bram = 0, lr = 0;
+    for (auto &c : m.cells) {
+      int kb = bramKbitOf(c.first);
+      long n = c.second * m.instances;
+      if (kb == 36) t.pbBram36 += n;
+      if (kb == 18) t.pbBram18 += n;
+      if (kb == 9) t.pbBram9 += n;
+      if (kb == 4) t.pbBram4 += n;
+      t.pbBramKbit += n * kb;
+      if (kb) bram += n;
+      if (lutramLuts(c.first)) lr += n * lutramLuts(c.first);
+    }
+    t.pbLutram += lr;
+    if (bram == 0 || lr != 0) allBram = false;
+  }
+  t.pbFound = found == 3;
+  t.pbInBram = t.pbFound && allBram && t.tech != Tech::Generic;
+  return true;
+}
+
+bool loadLoop(const std::string &dir, Loop &l) {
+  l.dir = dir;
+  if (!isFile(dir + "/done")) return false;
+  l.meta = readMeta(dir + "/meta.txt");
+  l.d = toLong(metaGet(l.meta, "d"));
+  l.seconds = toDouble(metaGet(l.meta, "seconds"));
+  l.targetMhz = toDouble(metaGet(l.meta, "freq_mhz"));
+  static const std::regex fmax(R"(Max frequency for clock '[^']*': ([0-9.]+) MHz)");
+  static const std::regex lc(R"(ICESTORM_LC:\s*([0-9]+)\s*/\s*([0-9]+))");
+  // nextpnr prints the estimate before routing and the routed figure last.
+  for (auto &s : readLines(dir + "/nextpnr.log")) {
+    std::smatch m;
+    if (std::regex_search(s, m, fmax)) l.fmaxNextpnr = toDouble(m[1]);
+    if (std::regex_search(s, m, lc)) {
+      l.lc = toLong(m[1]);
+      l.lcTotal = toLong(m[2]);
+    }
+  }
+  static const std::regex ice(R"(Total path delay: [0-9.]+ ns \(([0-9.]+) MHz\))");
+  static const std::regex lev(R"(Total number of logic levels: ([0-9]+))");
+  for (auto &s : readLines(dir + "/icetime.txt")) {
+    std::smatch m;
+    if (std::regex_search(s, m, ice)) l.fmaxIcetime = toDouble(m[1]);
+    if (std::regex_search(s, m, lev)) l.icetimeLevels = toLong(m[1]);
+  }
+  Counts c = parseStat(Tech::Ice40, dir + "/stat.txt");
+  l.lut = c.lut;
+  l.ff = c.ff;
+  l.carry = c.carry;
+  return true;
+}
+
+// ------------------------------------------------------------------ JSON
+std::string countsJson(const Counts &c, Tech tech, const std::string &ind) {
+  std::ostringstream o;
+  bool x = tech == Tech::Xilinx, i = tech == Tech::Ice40;
+  o << ind << "\"lut\": " << (tech == Tech::Generic ? "null" : std::to_string(c.lut)) << ",\n";
+  o << ind << "\"ff\": " << c.ff << ",\n";
+  o << ind << "\"bram18\": " << (x ? std::to_string(c.bram18) : "null") << ",\n";
+  o << ind << "\"bram36\": " << (x ? std::to_string(c.bram36) : "null") << ",\n";
+  if (x) o << ind << "\"ramb8\": " << c.bram9 << ",\n";
+  if (i) o << ind << "\"sb_ram40_4k\": " << c.bram4 << ",\n";
+  o << ind << "\"bram_kbit\": " << c.bramKbit << ",\n";
+  o << ind << "\"lutram\": " << (x ? std::to_string(c.lutram) : "null") << ",\n";
+  o << ind << "\"srl\": " << (x ? std::to_string(c.srl) : "null") << ",\n";
+  o << ind << "\"slice_luts\": " << (x ? std::to_string(c.sliceLuts()) : "null") << ",\n";
+  o << ind << "\"dsp\": " << (tech == Tech::Generic ? "null" : std::to_string(c.dsp)) << ",\n";
+  o << ind << "\"carry\": " << (tech == Tech::Generic ? "null" : std::to_string(c.carry)) << ",\n";
+  o << ind << "\"cells\": " << c.total;
+  return o.str();
+}
+
+void writeJson(const std::string &path, const std::vector<Target> &ts, const std::vector<Loop> &loops) {
+  std::ofstream o(path);
+  o << "{\n  \"paper\": {\"device\": \"xc6slx150\", \"lut\": " << kPaperLut << ", \"ff\": " << kPaperFf
+    << ", \"sram_kbyte\": " << jsonNum(kPaperSramKB, 0) << ", \"pixels_per_clock\": " << jsonNum(kPaperPixelsPerClock, 4)
+    << ", \"lut_per_pixel_per_clock\": " << jsonNum(kPaperLut / kPaperPixelsPerClock, 0) << "},\n";
+  o << "  \"results\": [\n";
+  for (size_t k = 0; k < ts.size(); ++k) {
+    const Target &t = ts[k];
+    const std::string I = "      ";
+    o << "    {\n";
+    o << I << "\"target\": " << jsonStr(t.target) << ",\n";
+    o << I << "\"config\": " << jsonStr(t.config) << ",\n";
+    o << I << "\"d\": " << t.d << ",\n" << I << "\"max_width\": " << t.w << ",\n" << I << "\"max_height\": " << t.h << ",\n";
+    o << I << "\"pixels_per_clock\": 1,\n";
+    o << countsJson(t.total, t.tech, I) << ",\n";
+    if (t.tech == Tech::Xilinx) {
+      o << I << "\"lut_by_size\": {";
+      bool first = true;
+      for (auto &kv : t.total.lutBySize) {
+        o << (first ? "" : ", ") << "\"LUT" << kv.first << "\": " << kv.second;
+        first = false;
+      }
+      o << "},\n";
+      o << I << "\"muxf\": " << t.total.muxf << ",\n";
+    }
+    if (t.tech == Tech::Generic) o << I << "\"memories\": " << t.total.mems << ",\n";
+    long memBits = 0;
+    for (auto &m : t.memories) memBits += m.bits();
+    o << I << "\"memory_bits\": " << memBits << ",\n";
+    o << I << "\"logic_levels\": " << (t.ltp.length >= 0 ? std::to_string(t.ltp.length) : "null") << ",\n";
+    o << I << "\"logic_levels_path\": {\"stage\": " << jsonStr(t.ltpStage) << ", \"from\": " << jsonStr(t.ltp.from)
+      << ", \"to\": " << jsonStr(t.ltp.to) << "},\n";
+    double fmax = NAN;
+    if (t.tech == Tech::Ice40)
+      for (auto &l : loops)
+        if (!std::isnan(l.fmaxNextpnr) && (std::isnan(fmax) || l.d == t.d)) fmax = l.fmaxNextpnr;
+    o << I << "\"fmax_mhz\": " << jsonNum(fmax, 2) << ",\n";
+    if (t.tech == Tech::Xilinx)
+      o << I << "\"lut_per_pixel_per_clock\": " << t.total.sliceLuts() << ",\n";
+    o << I << "\"path_buffers\": {\"bits\": " << t.pbBits << ", \"eq7_bits\": " << eq7Bits(t.d, t.w)
+      << ", \"bram18\": " << t.pbBram18 << ", \"bram36\": " << t.pbBram36 << ", \"ramb8\": " << t.pbBram9
+      << ", \"sb_ram40_4k\": " << t.pbBram4 << ", \"bram_kbit\": " << t.pbBramKbit << ", \"lutram\": " << t.pbLutram
+      << ", \"in_block_ram\": " << (t.pbInBram ? "true" : "false") << "},\n";
+    o << I << "\"check_problems\": " << t.checkProblems << ",\n";
+    o << I << "\"seconds\": " << jsonNum(t.seconds, 0) << ",\n";
+    o << I << "\"yosys\": " << jsonStr(metaGet(t.meta, "yosys")) << ",\n";
+    o << I << "\"rtl_commit\": " << jsonStr(metaGet(t.meta, "rtl_commit")) << ",\n";
+    o << I << "\"stages\": [\n";
+    for (size_t s = 0; s < t.stages.size(); ++s) {
+      const Stage &st = t.stages[s];
+      o << I << "  {\"name\": " << jsonStr(st.name) << ", \"instances\": " << st.instances << ",\n";
+      o << countsJson(st.counts, t.tech, I + "   ") << ",\n";
+      o << I << "   \"logic_levels\": " << st.ltp.length << ", \"seconds\": " << jsonNum(st.seconds, 1) << "}"
+        << (s + 1 < t.stages.size() ? "," : "") << "\n";
+    }
+    o << I << "],\n";
+    o << I << "\"memory_list\": [\n";
+    for (size_t m = 0; m < t.memories.size(); ++m) {
+      const Memory &me = t.memories[m];
+      o << I << "  {\"stage\": " << jsonStr(me.stage) << ", \"name\": " << jsonStr(me.name) << ", \"width\": " << me.width
+        << ", \"depth\": " << me.depth << ", \"instances\": " << me.instances << ", \"bits\": " << me.bits()
+        << ", \"cells\": {";
+      bool first = true;
+      for (auto &c : me.cells) {
+        o << (first ? "" : ", ") << jsonStr(c.first) << ": " << c.second;
+        first = false;
+      }
+      o << "}}" << (m + 1 < t.memories.size() ? "," : "") << "\n";
+    }
+    o << I << "]\n";
+    o << "    }" << (k + 1 < ts.size() || !loops.empty() ? "," : "") << "\n";
+  }
+  for (size_t k = 0; k < loops.size(); ++k) {
+    const Loop &l = loops[k];
+    o << "    {\"target\": \"ice40-loop\", \"config\": " << jsonStr("loop-d" + std::to_string(l.d)) << ", \"d\": " << l.d
+      << ", \"max_width\": null, \"pixels_per_clock\": 1, \"device\": " << jsonStr(metaGet(l.meta, "device"))
+      << ", \"lut\": " << l.lut << ", \"ff\": " << l.ff << ", \"carry\": " << l.carry << ", \"lc\": " << l.lc
+      << ", \"lc_available\": " << l.lcTotal << ", \"fmax_mhz\": " << jsonNum(l.fmaxNextpnr, 2)
+      << ", \"fmax_icetime_mhz\": " << jsonNum(l.fmaxIcetime, 2) << ", \"icetime_logic_levels\": " << l.icetimeLevels
+      << ", \"seconds\": " << jsonNum(l.seconds, 0) << "}" << (k + 1 < loops.size() ? "," : "") << "\n";
+  }
+  o << "  ]\n}\n";
+}
+
+// ------------------------------------------------------------------ Markdown
+std::string stageShort(const std::string &s) { return startsWith(s, "sgm_") ? s.substr(4) : s; }
+
+std::string bramText(const Target &t) {
+  const Counts &c = t.total;
+  std::ostringstream o;
+  if (t.tech == Tech::Ice40) {
+    o << c.bram4 << " SB_RAM40_4K";
+  } else if (t.target == "xc6s") {
+    o << c.bram18 << " RAMB16 + " << c.bram9 << " RAMB8";
+  } else {
+    o << c.bram18 << " RAMB18 + " << c.bram36 << " RAMB36";
+  }
+  o << " (" << fixed(c.bramKbit / 8.0, 0) << " KB)";
+  return o.str();
+}
+
+void writeMarkdown(const std::string &path, const std::vector<Target> &ts, const std::vector<Loop> &loops) {
+  std::ofstream o(path);
+  o << "# Synthesis summary\n\n";
+  o << "Written by `make synth` (synth/README.md). Yosys synthesizes every pipeline stage of `sgm_top` as its own "
+       "top with everything inside the stage flattened; totals are the sum over the stage instances (the census "
+       "unit twice). LUT figures for Xilinx: *slice LUTs* = LUTs as logic + LUTs as distributed RAM + SRLs, the "
+       "figure ISE reports as \"Number of Slice LUTs\". Logic levels = `ltp` on the mapped netlist: LUT, carry and "
+       "wide-mux cells between sequential cells (FF, RAM, SRL, DSP). Block RAM in KB = primitive capacity "
+       "(18 Kbit per RAMB18/RAMB16, parity bits included) / 8 / 1024.\n\n";
+  o << "Yosys 0.23 supports `synth_xilinx -family xc6s` (Spartan-6: RAMB16BWER / RAMB8BWER, DSP48A1); the xc6s column "
+       "is that run. The paper's figures are Table III (Spartan-6 xc6slx150, 1/9 pixel per clock).\n\n";
+
+  std::set<std::string> configs;
+  for (auto &t : ts) configs.insert(t.config);
+  std::vector<std::string> cfgs(configs.begin(), configs.end());
+  auto cfgKey = [&](const std::string &c) {
+    for (auto &t : ts)
+      if (t.config == c) return std::make_pair(t.d, t.w);
+    return std::make_pair(0L, 0L);
+  };
+  std::sort(cfgs.begin(), cfgs.end(), [&](auto &a, auto &b) { return cfgKey(a) > cfgKey(b); });
+
+  const Loop *bestLoop = nullptr;
+  for (auto &l : loops)
+    if (!bestLoop || l.d < bestLoop->d) bestLoop = &l;
+
+  for (auto &cfg : cfgs) {
+    std::vector<const Target *> cols;
+    for (const char *want : {"xc6s", "xc7", "ice40", "generic"})
+      for (auto &t : ts)
+        if (t.config == cfg && t.target == want) cols.push_back(&t);
+    if (cols.empty()) continue;
+    const Target &f = *cols[0];
+    o << "## D = " << f.d << ", MAX_WIDTH = " << f.w << " (MAX_HEIGHT = " << f.h << ")\n\n";
+    o << "| | paper, Table III (xc6slx150) |";
+    for (auto *c : cols) o << " " << c->target << " (this core) |";
+    o << "\n| --- | --- |";
+    for (size_t i = 0; i < cols.size(); ++i) o << " --- |";
+    o << "\n";
+    auto row = [&](const std::string &label, const std::string &paper, auto fn) {
+      o << "| " << label << " | " << paper << " |";
+      for (auto *c : cols) o << " " << fn(*c) << " |";
+      o << "\n";
+    };
+    auto na = std::string("n/a");
+    row("slice LUTs (logic + memory + SRL)", grouped(kPaperLut), [&](const Target &t) {
+      return t.tech == Tech::Xilinx ? "**" + grouped(t.total.sliceLuts()) + "**" : t.tech == Tech::Ice40 ? grouped(t.total.lut) + " LUT4" : na;
+    });
+    row("LUTs as logic (LUT1..6)", "", [&](const Target &t) {
+      if (t.tech != Tech::Xilinx) return t.tech == Tech::Ice40 ? grouped(t.total.lut) : na;
+      std::string s = grouped(t.total.lut) + " (";
+      bool first = true;
+      for (auto it = t.total.lutBySize.rbegin(); it != t.total.lutBySize.rend(); ++it) {
+        s += (first ? "" : " / ") + std::string("L") + std::to_string(it->first) + " " + grouped(it->second);
+        first = false;
+      }
+      return s + ")";
+    });
+    row("LUTs as distributed RAM / SRL", "", [&](const Target &t) {
+      return t.tech == Tech::Xilinx ? grouped(t.total.lutram) + " / " + grouped(t.total.srl) : na;
+    });
+    row("flip-flops", grouped(kPaperFf), [&](const Target &t) { return grouped(t.total.ff); });
+    row("block RAM", fixed(kPaperSramKB, 0) + " KB on-chip SRAM", [&](const Target &t) {
+      return t.tech == Tech::Generic ? grouped(t.total.mems) + " memories, not mapped" : bramText(t);
+    });
+    row("memory bits inferred", "", [&](const Target &t) {
+      long b = 0;
+      for (auto &m : t.memories) b += m.bits();
+      return grouped(b) + " (" + fixed(b / 8.0 / 1024.0, 0) + " KB)";
+    });
+    row("DSP / carry cells", "", [&](const Target &t) {
+      return t.tech == Tech::Generic ? na : grouped(t.total.dsp) + " / " + grouped(t.total.carry);
+    });
+    row("gate-level cells", "", [&](const Target &t) { return grouped(t.total.total); });
+    row("logic levels (longest path)", "", [&](const Target &t) {
+      return t.ltp.length < 0 ? na : std::to_string(t.ltp.length) + " (" + stageShort(t.ltpStage) + ")";
+    });
+    row("fmax", "", [&](const Target &t) {
+      if (t.tech != Tech::Ice40 || !bestLoop || std::isnan(bestLoop->fmaxNextpnr)) return std::string("");
+      return fixed(bestLoop->fmaxNextpnr, 1) + " MHz (0 degree loop, D = " + std::to_string(bestLoop->d) + ", routed)";
+    });
+    row("fits the largest iCE40 (HX8K: 7,680 LCs, 32 RAM)", "", [&](const Target &t) {
+      if (t.tech != Tech::Ice40) return std::string("");
+      bool fits = t.total.lut <= 7680 && t.total.bram4 <= 32;
+      return std::string(fits ? "by LUT4 and RAM count" : "**no**") + " (" + grouped(t.total.lut) + " LUT4, " +
+             std::to_string(t.total.bram4) + " RAM)";
+    });
+    row("pixels per clock", "1/9", [&](const Target &) { return std::string("1"); });
+    row("LUTs per (pixel/clock)", grouped(static_cast<long>(kPaperLut / kPaperPixelsPerClock)), [&](const Target &t) {
+      return t.tech == Tech::Xilinx ? grouped(t.total.sliceLuts()) : na;
+    });
+    row("bar: at most 31,495 LUTs at 1 pixel/clock", "", [&](const Target &t) {
+      if (t.tech != Tech::Xilinx) return std::string("");
+      long l = t.total.sliceLuts();
+      return l <= kPaperLut ? "met (" + fixed(100.0 * l / kPaperLut, 0) + " %)"
+                            : "**missed** (" + fixed(100.0 * l / kPaperLut, 0) + " %)";
+    });
+    row("Yosys run time", "", [&](const Target &t) { return std::isnan(t.seconds) ? na : fixed(t.seconds, 0) + " s"; });
+    o << "\n";
+
+    // Path buffers.
+    o << "**Path buffers** (`sgm_path_engine` mem45 / mem90 / mem135, 3 x " << f.w << " x " << (f.d + 1) << " x " << kLw
+      << " bit) against eq. (7), (D + 5)(3W + 1) ceil(log2(Lmax + 1)) with Lmax = 415:\n\n";
+    o << "| target | bits | eq. (7) bits | ratio | blocks | block capacity | in block RAM |\n| --- | --- | --- | --- | --- | --- | --- |\n";
+    for (auto *c : cols) {
+      if (c->tech == Tech::Generic) continue;
+      std::string blocks;
+      if (c->tech == Tech::Ice40) blocks = std::to_string(c->pbBram4) + " SB_RAM40_4K";
+      else if (c->target == "xc6s") blocks = std::to_string(c->pbBram18) + " RAMB16 + " + std::to_string(c->pbBram9) + " RAMB8";
+      else blocks = std::to_string(c->pbBram18) + " RAMB18 + " + std::to_string(c->pbBram36) + " RAMB36";
+      long e = eq7Bits(c->d, c->w);
+      o << "| " << c->target << " | " << grouped(c->pbBits) << " | " << grouped(e) << " | " << fixed(double(c->pbBits) / e, 3)
+        << " | " << blocks << " | " << grouped(c->pbBramKbit) << " Kbit (" << fixed(100.0 * c->pbBits / (c->pbBramKbit * 1024.0 > 0 ? c->pbBramKbit * 1024.0 : 1), 0)
+        << " % used) | " << (c->pbInBram ? "yes" : "**NO**") << (c->pbLutram ? " (" + std::to_string(c->pbLutram) + " LUTRAM LUTs)" : "") << " |\n";
+    }
+    o << "\n";
+
+    // Per stage.
+    for (auto *c : cols) {
+      if (c->tech != Tech::Xilinx) continue;
+      o << "**Where the area goes** (" << c->target << ", per stage, all instances):\n\n";
+      o << "| stage | inst. | slice LUTs | share | LUT logic | LUTRAM | SRL | FF | block RAM | carry | levels | Yosys s |\n";
+      o << "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
+      for (auto &s : c->stages) {
+        long n = s.instances;
+        long sl = s.counts.sliceLuts() * n;
+        std::string br = c->target == "xc6s"
+                             ? std::to_string(s.counts.bram18 * n) + " / " + std::to_string(s.counts.bram9 * n)
+                             : std::to_string(s.counts.bram18 * n) + " / " + std::to_string(s.counts.bram36 * n);
+        o << "| " << stageShort(s.name) << " | " << n << " | " << grouped(sl) << " | "
+          << fixed(c->total.sliceLuts() ? 100.0 * sl / c->total.sliceLuts() : 0.0, 1) << " % | " << grouped(s.counts.lut * n)
+          << " | " << grouped(s.counts.lutram * n) << " | " << grouped(s.counts.srl * n) << " | " << grouped(s.counts.ff * n)
+          << " | " << br << " | " << grouped(s.counts.carry * n) << " | " << s.ltp.length << " | "
+          << (std::isnan(s.seconds) ? na : fixed(s.seconds, 0)) << " |\n";
+      }
+      o << "\n(block RAM column: " << (c->target == "xc6s" ? "RAMB16 / RAMB8" : "RAMB18 / RAMB36")
+        << "; levels: longest LUT/carry/mux path inside the stage)\n\n";
+    }
+
+    // Memories.
+    for (auto *c : cols) {
+      if (c->target != "xc7" && !(c->target == "xc6s" && cols.size() == 1)) continue;
+      o << "**Memories** (" << c->target << "): where each inferred memory went\n\n";
+      o << "| stage | memory | words x bits | inst. | bits | primitives (per instance) |\n| --- | --- | --- | --- | --- | --- |\n";
+      for (auto &m : c->memories) {
+        std::string cells;
+        for (auto &kv : m.cells) cells += (cells.empty() ? "" : ", ") + std::to_string(kv.second) + " " + kv.first;
+        if (cells.empty()) cells = "flip-flops / logic";
+        o << "| " << stageShort(m.stage) << " | " << m.name << " | " << m.depth << " x " << m.width << " | " << m.instances
+          << " | " << grouped(m.bits()) << " | " << cells << " |\n";
+      }
+      o << "\n";
+    }
+    for (auto *c : cols)
+      if (c->tech == Tech::Xilinx && !c->ltp.from.empty())
+        o << "Longest path (" << c->target << ", " << c->ltp.length << " cells, in " << c->ltpStage << "): `" << c->ltp.from
+          << "` -> `" << c->ltp.to << "`.\n\n";
+    for (auto *c : cols)
+      if (c->checkProblems != 0)
+        o << "**`check` reported " << c->checkProblems << " problem(s) for " << c->target << "**: see " << c->dir
+          << "/check.txt.\n\n";
+  }
+
+  if (!loops.empty()) {
+    o << "## iCE40: routed fmax of the single-cycle loop\n\n";
+    o << "The whole core does not fit any iCE40 (see the ice40 column: LUT4s and SB_RAM40_4K against the "
+         "largest part, iCE40HX8K: 7,680 LCs, 32 SB_RAM40_4K), so `nextpnr-ice40` routes the harness "
+         "synth/sgm_path_loop.sv: the 0 degree path recursion of sgm_path_engine (D sub-PEs, "
+         "add-compare-select, and the D-input minimum tree, registered back), the one single-cycle loop of "
+         "the design.\n\n";
+    o << "| D | device | LCs | LUT4 / FF / carry | fmax (nextpnr, routed) | fmax (icetime) | icetime levels | run time |\n";
+    o << "| --- | --- | --- | --- | --- | --- | --- | --- |\n";
+    for (auto &l : loops)
+      o << "| " << l.d << " | " << metaGet(l.meta, "device") << " | " << l.lc << " / " << l.lcTotal << " | " << l.lut << " / " << l.ff
+        << " / " << l.carry << " | **" << fixed(l.fmaxNextpnr, 1) << " MHz** | " << fixed(l.fmaxIcetime, 1) << " MHz | "
+        << l.icetimeLevels << " | " << fixed(l.seconds, 0) << " s |\n";
+    o << "\n";
+  }
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+  if (argc < 2) {
+    std::cerr << "usage: synth-summary ROOT [--check CONFIG/TARGET]...\n";
+    return 2;
+  }
+  std::string root = argv[1];
+  std::vector<std::string> checks;
+  for (int i = 2; i < argc; ++i) {
+    std::string a = argv[i];
+    if (a == "--check" && i + 1 < argc) checks.push_back(argv[++i]);
+    else {
+      std::cerr << "synth-summary: unknown argument " << a << "\n";
+      return 2;
+    }
+  }
+  std::vector<Target> targets;
+  std::vector<Loop> loops;
+  static const std::regex cfgRe(R"(d[0-9]+-w[0-9]+)");
+  static const std::regex loopRe(R"(ice40-loop-d[0-9]+)");
+  for (auto &cfg : listDir(root)) {
+    std::string p = root + "/" + cfg;
+    if (!isDir(p)) continue;
+    if (std::regex_match(cfg, cfgRe)) {
+      for (auto &tn : listDir(p)) {
+        Target t;
+        if (isDir(p + "/" + tn) && loadTarget(root, cfg, tn, t)) targets.push_back(t);
+      }
+    } else if (std::regex_match(cfg, loopRe)) {
+      Loop l;
+      if (loadLoop(p, l)) loops.push_back(l);
+    }
+  }
+  std::sort(loops.begin(), loops.end(), [](const Loop &a, const Loop &b) { return a.d < b.d; });
+  writeJson(root + "/summary.json", targets, loops);
+  writeMarkdown(root + "/summary.md", targets, loops);
+  std::cout << "synth-summary: " << targets.size() << " synthesis results, " << loops.size() << " routed loop(s) -> "
+            << root << "/summary.json, " << root << "/summary.md\n";
+
+  int rc = 0;
+  for (auto &c : checks) {
+    auto slash = c.find('/');
+    std::string cfg = c.substr(0, slash), tn = slash == std::string::npos ? "" : c.substr(slash + 1);
+    const Target *t = nullptr;
+    for (auto &x : targets)
+      if (x.config == cfg && x.target == tn) t = &x;
+    if (!t) {
+      std::cerr << "synth-summary: FAIL: no " << c << " result in " << root << "/summary.json\n";
+      rc = 1;
+      continue;
+    }
+    if (!t->pbFound) {
+      std::cerr << "synth-summary: FAIL: " << c << ": the path buffers mem45 / mem90 / mem135 of sgm_path_engine were "
+                << "not found among the inferred memories (renamed, or no longer inferred as memories)\n";
+      rc = 1;
+    } else if (!t->pbInBram) {
+      std::cerr << "synth-summary: FAIL: " << c << ": the path buffers are not (only) in block RAM: "
+                << t->pbBram18 + t->pbBram36 + t->pbBram9 + t->pbBram4 << " block RAM primitives, " << t->pbLutram
+                << " LUTs of distributed RAM (a memory with neither went to flip-flops)\n";
+      rc = 1;
+    } else {
+      std::cout << "synth-summary: " << c << ": path buffers in block RAM (" << t->pbBram18 << " x 18K + " << t->pbBram36
+                << " x 36K + " << t->pbBram9 << " x 9K), " << t->total.sliceLuts() << " slice LUTs, " << t->total.ff
+                << " FFs\n";
+    }
+    if (t->checkProblems != 0) {
+      std::cerr << "synth-summary: FAIL: " << c << ": `check` reported " << t->checkProblems << " problem(s), see "
+                << t->dir << "/check.txt\n";
+      rc = 1;
+    }
+  }
+  return rc;
+}
