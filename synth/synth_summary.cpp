@@ -553,11 +553,17 @@ void writeJson(const std::string &path, const std::vector<Target> &ts, const std
     o << I << "\"logic_levels\": " << (t.ltp.length >= 0 ? std::to_string(t.ltp.length) : "null") << ",\n";
     o << I << "\"logic_levels_path\": {\"stage\": " << jsonStr(t.ltpStage) << ", \"from\": " << jsonStr(t.ltp.from)
       << ", \"to\": " << jsonStr(t.ltp.to) << "},\n";
+    // iCE40: the routed loop harness of the same D if there is one, else the smallest D.
     double fmax = NAN;
+    long fmaxD = 0;
     if (t.tech == Tech::Ice40)
       for (auto &l : loops)
-        if (!std::isnan(l.fmaxNextpnr) && (std::isnan(fmax) || l.d == t.d)) fmax = l.fmaxNextpnr;
+        if (!std::isnan(l.fmaxNextpnr) && (std::isnan(fmax) || l.d == t.d)) {
+          fmax = l.fmaxNextpnr;
+          fmaxD = l.d;
+        }
     o << I << "\"fmax_mhz\": " << jsonNum(fmax, 2) << ",\n";
+    if (t.tech == Tech::Ice40) o << I << "\"fmax_source\": " << (fmaxD ? jsonStr("ice40-loop-d" + std::to_string(fmaxD)) : "null") << ",\n";
     if (t.tech == Tech::Xilinx)
       o << I << "\"lut_per_pixel_per_clock\": " << t.total.sliceLuts() << ",\n";
     o << I << "\"path_buffers\": {\"bits\": " << t.pbBits << ", \"eq7_bits\": " << eq7Bits(t.d, t.w)
@@ -700,8 +706,11 @@ void writeMarkdown(const std::string &path, const std::vector<Target> &ts, const
       return t.ltp.length < 0 ? na : std::to_string(t.ltp.length) + " (" + stageShort(t.ltpStage) + ")";
     });
     row("fmax", "", [&](const Target &t) {
-      if (t.tech != Tech::Ice40 || !bestLoop || std::isnan(bestLoop->fmaxNextpnr)) return std::string("");
-      return fixed(bestLoop->fmaxNextpnr, 1) + " MHz (0 degree loop, D = " + std::to_string(bestLoop->d) + ", routed)";
+      const Loop *lp = bestLoop;
+      for (auto &l : loops)
+        if (l.d == t.d) lp = &l;
+      if (t.tech != Tech::Ice40 || !lp || std::isnan(lp->fmaxNextpnr)) return std::string("");
+      return fixed(lp->fmaxNextpnr, 1) + " MHz (0 degree loop, D = " + std::to_string(lp->d) + ", routed)";
     });
     row("fits the largest iCE40 (HX8K: 7,680 LCs, 32 RAM)", "", [&](const Target &t) {
       if (t.tech != Tech::Ice40) return std::string("");
