@@ -85,7 +85,7 @@ define synth_yosys
 	@rm -rf $(@D) && mkdir -p $(@D)
 	@echo "synth: $(1), D=$(D) MAX_WIDTH=$(MAX_WIDTH) (log: $(@D)/yosys.log)"
 	@start=$$(date +%s); \
-	 commit=$$(git rev-parse --short HEAD 2>/dev/null)$$(git status --porcelain -- rtl 2>/dev/null | grep -q . && echo -dirty); \
+	 commit=$$(git log -1 --format=%h -- rtl 2>/dev/null)$$(git status --porcelain -- rtl 2>/dev/null | grep -q . && echo -dirty); \
 	 SYNTH_RTL=rtl SYNTH_D=$(D) SYNTH_MAX_WIDTH=$(MAX_WIDTH) SYNTH_MAX_HEIGHT=$(SYNTH_MAX_HEIGHT) SYNTH_OUT=$(@D) $(3) \
 	   flock $(SYNTH_LOCK) timeout $(SYNTH_TIMEOUT) yosys -q -l $(@D)/yosys.log -c $(2) > $(@D)/yosys.out 2>&1; rc=$$?; \
 	 if [ $$rc != 0 ]; then \

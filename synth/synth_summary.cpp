@@ -633,7 +633,8 @@ void writeMarkdown(const std::string &path, const std::vector<Target> &ts, const
   o << "# Synthesis summary\n\n";
   o << "Written by `make synth` (synth/README.md). Yosys synthesizes every pipeline stage of `sgm_top` as its own "
        "top with everything inside the stage flattened; totals are the sum over the stage instances (the census "
-       "unit twice). LUT figures for Xilinx: *slice LUTs* = LUTs as logic + LUTs as distributed RAM + SRLs, the "
+       "unit twice); the xc7-flat column, when present, is `make synth-flat`, the whole core in one flattened "
+       "run (optimisation across stages, longest path across stages). LUT figures for Xilinx: *slice LUTs* = LUTs as logic + LUTs as distributed RAM + SRLs, the "
        "figure ISE reports as \"Number of Slice LUTs\". Logic levels = `ltp` on the mapped netlist: LUT, carry and "
        "wide-mux cells between sequential cells (FF, RAM, SRL, DSP). Block RAM in KB = primitive capacity "
        "(18 Kbit per RAMB18/RAMB16, parity bits included) / 8 / 1024.\n\n";
@@ -656,7 +657,7 @@ void writeMarkdown(const std::string &path, const std::vector<Target> &ts, const
 
   for (auto &cfg : cfgs) {
     std::vector<const Target *> cols;
-    for (const char *want : {"xc6s", "xc7", "ice40", "generic"})
+    for (const char *want : {"xc6s", "xc7", "xc7-flat", "ice40", "generic"})
       for (auto &t : ts)
         if (t.config == cfg && t.target == want) cols.push_back(&t);
     if (cols.empty()) continue;
@@ -750,7 +751,7 @@ void writeMarkdown(const std::string &path, const std::vector<Target> &ts, const
 
     // Per stage.
     for (auto *c : cols) {
-      if (c->tech != Tech::Xilinx) continue;
+      if (c->tech != Tech::Xilinx || c->target == "xc7-flat") continue;
       o << "**Where the area goes** (" << c->target << ", per stage, all instances):\n\n";
       o << "| stage | inst. | slice LUTs | share | LUT logic | LUTRAM | SRL | FF | block RAM | carry | levels | Yosys s |\n";
       o << "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
@@ -866,6 +867,9 @@ int main(int argc, char **argv) {
     if (!t->pbFound) {
       std::cerr << "synth-summary: FAIL: " << c << ": the path buffers mem45 / mem90 / mem135 of sgm_path_engine were "
                 << "not found among the inferred memories (renamed, or no longer inferred as memories)\n";
+      rc = 1;
+    } else if (t->tech == Tech::Generic) {
+      std::cerr << "synth-summary: FAIL: " << c << ": the generic target does not map memories; check an xc7, xc6s or ice40 result\n";
       rc = 1;
     } else if (!t->pbInBram) {
       std::cerr << "synth-summary: FAIL: " << c << ": the path buffers are not (only) in block RAM: "
