@@ -53,7 +53,7 @@ include scripts/deps.mk
 -include synth/synth.mk
 
 # ---------------------------------------------------------------- golden model
-$(OBJ)/%.o: %.cpp $(GOLDEN_HDR) $(wildcard tools/*.hpp) | check-tools
+$(OBJ)/%.o: %.cpp $(GOLDEN_HDR) $(wildcard tools/*.hpp tests/*.hpp) | check-tools
 	@mkdir -p $(dir $@)
 	$(CXX) $(CXXFLAGS) $(OPENCV_CFLAGS) -c $< -o $@
 

@@ -3,6 +3,8 @@
 #include "sgm/image_io.hpp"
 #include "sgm/params.hpp"
 
+#include "expect_error.hpp"
+
 #include <gtest/gtest.h>
 
 #include <opencv2/imgcodecs.hpp>
@@ -41,21 +43,6 @@ struct TempDir {
 void writeText(const std::string& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
   out << text;
-}
-
-// Runs f, expects an sgm::Error whose message contains every needle.
-template <typename F>
-void expectError(F&& f, std::initializer_list<std::string> needles) {
-  try {
-    f();
-    ADD_FAILURE() << "no sgm::Error thrown";
-  } catch (const sgm::Error& e) {
-    const std::string msg = e.what();
-    EXPECT_EQ(msg.find('\n'), std::string::npos) << "multi-line message: " << msg;
-    for (const std::string& n : needles) EXPECT_NE(msg.find(n), std::string::npos) << "'" << n << "' not in: " << msg;
-  } catch (const std::exception& e) {
-    ADD_FAILURE() << "wrong exception type: " << e.what();
-  }
 }
 
 // ------------------------------------------------------------------ toGray

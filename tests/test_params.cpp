@@ -2,6 +2,8 @@
 #include "sgm/params.hpp"
 #include "sgm/pipeline.hpp"
 
+#include "expect_error.hpp"
+
 #include <gtest/gtest.h>
 
 #include <opencv2/core.hpp>
@@ -10,20 +12,6 @@ namespace {
 
 using sgm::CostMode;
 using sgm::Params;
-
-template <typename F>
-void expectError(F&& f, std::initializer_list<std::string> needles) {
-  try {
-    f();
-    ADD_FAILURE() << "no sgm::Error thrown";
-  } catch (const sgm::Error& e) {
-    const std::string msg = e.what();
-    EXPECT_EQ(msg.find('\n'), std::string::npos) << "multi-line message: " << msg;
-    for (const std::string& n : needles) EXPECT_NE(msg.find(n), std::string::npos) << "'" << n << "' not in: " << msg;
-  } catch (const std::exception& e) {
-    ADD_FAILURE() << "wrong exception type: " << e.what();
-  }
-}
 
 Params withD(int d) {
   Params p;
