@@ -49,8 +49,13 @@ help:
 
 # ---------------------------------------------------------------- dependencies
 include scripts/deps.mk
+# Fragments add their own targets; each appends the targets CI must run to
+# TEST_EXTRA (run by `make test` after the GoogleTest binaries).
+TEST_EXTRA :=
 # `make synth` and its reports (synth/synth.mk, when present).
 -include synth/synth.mk
+# `make regress` (constrained-random regression), `make fuzz` (bad input), `make coverage`, `make bench`.
+-include tests/regress.mk tests/fuzz.mk tests/coverage.mk bench/bench.mk
 
 # ---------------------------------------------------------------- golden model
 $(OBJ)/%.o: %.cpp $(GOLDEN_HDR) $(wildcard tools/*.hpp tests/*.hpp) | check-tools
@@ -171,6 +176,7 @@ unit-test: $(BIN)/unit-tests golden
 
 # One closing line over every GoogleTest binary of this run.
 test: lint unit-test rtl-tests
+	@for t in $(TEST_EXTRA); do $(MAKE) --no-print-directory $$t || exit 1; done
 	@scripts/test-summary.sh $(RESULTS)
 
 clean:

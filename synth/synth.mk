@@ -26,6 +26,8 @@ SYNTH_TARGETS     ?= xc7 xc6s generic ice40
 SYNTH_TIMEOUT     ?= 10800
 SYNTH_CI_D        ?= 16
 SYNTH_CI_MAX_WIDTH ?= 128
+# CI runs the small configuration (see the main Makefile's TEST_EXTRA).
+TEST_EXTRA += synth-ci
 # Loop harness on iCE40: D, device, package, nextpnr target frequency (MHz).
 ICE40_LOOP_D      ?= 16
 ICE40_DEVICE      ?= hx8k
