@@ -54,8 +54,6 @@ include scripts/deps.mk
 TEST_EXTRA :=
 # `make synth` and its reports (synth/synth.mk, when present).
 -include synth/synth.mk
-# `make regress` (constrained-random regression), `make fuzz` (bad input), `make coverage`, `make bench`.
--include tests/regress.mk tests/fuzz.mk tests/coverage.mk bench/bench.mk
 
 # ---------------------------------------------------------------- golden model
 $(OBJ)/%.o: %.cpp $(GOLDEN_HDR) $(wildcard tools/*.hpp tests/*.hpp) | check-tools
@@ -173,6 +171,10 @@ $(BIN)/unit-tests: $(TEST_OBJ) $(EVAL_OBJ) $(GOLDEN_LIB)
 unit-test: $(BIN)/unit-tests golden
 	@mkdir -p $(RESULTS)
 	SGM_DATA="$(DATA)" SGM_BIN="$(abspath $(BIN))" $(BIN)/unit-tests --gtest_output=xml:$(RESULTS)/unit-tests.xml
+
+# `make regress` (constrained-random regression), `make fuzz` (bad input), `make coverage`,
+# `make bench`: included here, after every variable and the rtl_test macro are defined.
+-include tests/regress.mk tests/fuzz.mk tests/coverage.mk bench/bench.mk
 
 # One closing line over every GoogleTest binary of this run.
 test: lint unit-test rtl-tests
