@@ -6,18 +6,23 @@
 #if VM_TRACE
 #include <verilated_fst_c.h>
 #endif
+#if VM_COVERAGE
+#include <verilated_cov.h>
+#endif
 
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <string>
 
+#include <unistd.h>
+
 namespace sgm::tb {
 
 template <class Model>
 class VerilatedTop {
  public:
-  explicit VerilatedTop(const std::string& name) : context_(std::make_unique<VerilatedContext>()) {
+  explicit VerilatedTop(const std::string& name) : name_(name), context_(std::make_unique<VerilatedContext>()) {
     context_->randReset(2);  // randomise initial state: the design must not rely on it
     model_ = std::make_unique<Model>(context_.get(), name.c_str());
 #if VM_TRACE
@@ -35,6 +40,16 @@ class VerilatedTop {
   }
   ~VerilatedTop() {
     model_->final();
+#if VM_COVERAGE
+    // Coverage builds (make coverage) leave one data file per model instance.
+    if (const char* dir = std::getenv("SGM_COVERAGE_DIR")) {
+      static int serial = 0;
+      std::filesystem::create_directories(dir);
+      const std::string file = std::string(dir) + "/" + name_ + "-" + std::to_string(::getpid()) + "-" +
+                               std::to_string(serial++) + ".dat";
+      context_->coveragep()->write(file.c_str());
+    }
+#endif
 #if VM_TRACE
     if (trace_) trace_->close();
 #endif
@@ -74,6 +89,7 @@ class VerilatedTop {
 #endif
   }
 
+  std::string name_;
   std::unique_ptr<VerilatedContext> context_;
   std::unique_ptr<Model> model_;
 #if VM_TRACE

@@ -220,8 +220,8 @@ void drawLegend(cv::Mat& img, const Layout& l, const TableReport& r) {
   if (!r.derivedNonocc.empty()) text(img, "* nonocc mask derived from GT", {x, y + 46}, 0.45, kMuted);
 }
 
-void drawTitle(cv::Mat& img, const TableReport& r) {
-  text(img, "SGM golden model vs Yao & Cheng, Table I", {90, 42}, 0.95, kBlack, 2);
+void drawTitle(cv::Mat& img, const TableReport& r, const std::string& title) {
+  text(img, title, {90, 42}, 0.95, kBlack, 2);
   text(img,
        "error in non-occluded regions (%, delta = " + fmt(r.delta, 0) + " px, invalid = error), D = " +
            std::to_string(r.disparities) + ".  Solid: ours.  Hatched: the paper's figure.",
@@ -230,14 +230,14 @@ void drawTitle(cv::Mat& img, const TableReport& r) {
 
 }  // namespace
 
-cv::Mat table1Chart(const TableReport& r) {
+cv::Mat table1Chart(const TableReport& r, const std::string& title) {
   const int width = std::max(1500, 420 + 380 * int(r.scenes.size()));
   cv::Mat img(900, width, CV_8UC3, kWhite);
   const Layout l = makeLayout(r, img.size());
   drawAxes(img, l);
   drawGroups(img, l, r);
   drawLegend(img, l, r);
-  drawTitle(img, r);
+  drawTitle(img, r, title);
   return img;
 }
 

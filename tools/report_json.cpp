@@ -2,10 +2,14 @@
 
 #include "sgm/params.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <stdexcept>
 
 namespace sgm::eval {
 
@@ -114,6 +118,68 @@ void writeTextFile(const std::string& path, const std::string& text) {
     std::filesystem::remove(tmp, ec);
     throw Error("cannot write '" + path + "': " + ec.message());
   }
+}
+
+}  // namespace sgm::eval
+
+namespace sgm::eval {
+
+std::map<std::string, std::string> readFlatJson(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error("cannot open '" + path + "'");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  size_t i = 0;
+  const auto fail = [&](const char* what) -> Error {
+    return Error("'" + path + "' is not a flat JSON object: " + what + " at byte " + std::to_string(i));
+  };
+  const auto skipSpace = [&] {
+    while (i < text.size() && std::isspace((unsigned char)text[i])) ++i;
+  };
+  const auto readString = [&]() {
+    if (text[i] != '"') throw fail("expected a string");
+    std::string s;
+    for (++i; i < text.size() && text[i] != '"'; ++i) {
+      if (text[i] == '\\') {
+        if (++i >= text.size()) break;
+        const char c = text[i];
+        s += c == 'n' ? '\n' : c == 't' ? '\t' : c;
+      } else {
+        s += text[i];
+      }
+    }
+    if (i >= text.size()) throw fail("unterminated string");
+    ++i;
+    return s;
+  };
+  std::map<std::string, std::string> out;
+  skipSpace();
+  if (i >= text.size() || text[i++] != '{') throw fail("expected '{'");
+  for (;;) {
+    skipSpace();
+    if (i < text.size() && text[i] == '}') break;
+    if (i >= text.size()) throw fail("unexpected end");
+    const std::string key = readString();
+    skipSpace();
+    if (i >= text.size() || text[i++] != ':') throw fail("expected ':'");
+    skipSpace();
+    if (i >= text.size()) throw fail("unexpected end");
+    if (text[i] == '"') {
+      out[key] = readString();
+    } else {
+      const size_t start = i;
+      while (i < text.size() && (std::isalnum((unsigned char)text[i]) || std::strchr("+-.", text[i]))) ++i;
+      if (i == start) throw fail("nested or empty value");
+      out[key] = text.substr(start, i - start);
+    }
+    skipSpace();
+    if (i < text.size() && text[i] == ',') {
+      ++i;
+      continue;
+    }
+    skipSpace();
+    if (i >= text.size() || text[i] != '}') throw fail("expected ',' or '}'");
+  }
+  return out;
 }
 
 }  // namespace sgm::eval

@@ -2,6 +2,7 @@
 // all-or-nothing text file writer, shared by the table and bench reports.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -45,5 +46,10 @@ std::string jsonEscape(const std::string& text);  // with the surrounding quotes
 // Writes text to path via a temporary file and a rename, so readers never see
 // a partial file. Throws Error on failure.
 void writeTextFile(const std::string& path, const std::string& text);
+
+// Reads a flat JSON object ({"key": number | string | true | false | null, ...}, as
+// the tools write for one run) into key -> text (strings without their quotes).
+// Throws Error naming the file on anything else (nested values included).
+std::map<std::string, std::string> readFlatJson(const std::string& path);
 
 }  // namespace sgm::eval

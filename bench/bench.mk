@@ -1,0 +1,75 @@
+# `make bench [DATA=...]`: accuracy and speed of the core, the golden model and
+# OpenCV StereoSGBM on the same pairs, in one run (included by the main Makefile).
+#
+#   1. verilates sgm_top (D, BENCH_MAX_WIDTH) as sgm-sim, once per Verilator
+#      option set in BENCH_VARIANTS (fast / threads2 / checked);
+#   2. runs the fast build on every Middlebury scene under DATA and on Aloe, and
+#      on one frame of each video format (the paper's Table II sizes and 1080p);
+#      sgm-sim compares every output pixel with the golden model as it goes;
+#   3. runs every variant on Cones for the simulation speed;
+#   4. sgm-bench report: OpenCV (MODE_SGBM, MODE_HH, MODE_SGBM_3WAY), golden vs
+#      OpenCV timing, and build/bench/report.{md,json}, accuracy.png.
+#
+# Builds take a few minutes per variant (D = 64); the runs about two minutes.
+# Timing figures are only meaningful on an otherwise idle machine.
+
+BENCH_DIR       := $(BUILD)/bench
+BENCH_MAX_WIDTH ?= 1920
+BENCH_REPEATS   ?= 3
+BENCH_VARIANTS  ?= fast threads2 checked
+BENCH_FLAGS_fast     = $(SIM_VFLAGS)
+BENCH_FLAGS_threads2 = $(SIM_VFLAGS) --threads 2
+BENCH_FLAGS_checked  = --x-assign unique --x-initial unique
+BENCH_SIM        = $(BIN)/sgm-sim-d$(D)-w$(BENCH_MAX_WIDTH)-$(1)
+BENCH_SCENES     = cones teddy sawtooth venus
+BENCH_FRAMES    := 450x375 640x480 1280x720 1920x1080
+BENCH_TOOL      := $(BIN)/sgm-bench
+ALOE_DIR        := /usr/share/doc/opencv-doc/examples/data
+
+.PHONY: bench bench-help
+
+bench-help:
+	@echo "make bench [DATA=dir] [D=64] [BENCH_MAX_WIDTH=1920] [BENCH_VARIANTS='fast threads2 checked'] [BENCH_REPEATS=3]"
+
+$(BENCH_TOOL): bench/sgm_bench.cpp $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
+	@mkdir -p $(dir $@)
+	$(CXX) $(CXXFLAGS) $(OPENCV_CFLAGS) -o $@ $^ $(LDLIBS)
+
+# One sgm-sim build per variant, through the main Makefile's sgm-sim rule.
+define bench_variant
+$(call BENCH_SIM,$(1)): $(RTL_SRC) tb/sim_main.cpp $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
+	@$$(MAKE) --no-print-directory BENCH_INNER=1 D=$(D) MAX_WIDTH=$(BENCH_MAX_WIDTH) SIM_VFLAGS="$(BENCH_FLAGS_$(1))" $$@
+endef
+# (BENCH_INNER: the inner make builds with the pattern rule, not this one.)
+ifndef BENCH_INNER
+$(foreach v,$(BENCH_VARIANTS),$(eval $(call bench_variant,$(v))))
+endif
+
+bench: $(BENCH_TOOL) $(foreach v,$(BENCH_VARIANTS),$(call BENCH_SIM,$(v))) | check-tools
+	@test -d "$(DATA)" || { echo "bench: DATA=$(DATA) not found: point DATA at the Middlebury scenes (README, 'Data')"; exit 1; }
+	@rm -rf $(BENCH_DIR) && mkdir -p $(BENCH_DIR)/rtl $(BENCH_DIR)/formats $(BENCH_DIR)/simspeed
+	@echo $(BENCH_MAX_WIDTH) > $(BENCH_DIR)/max_width.txt
+	@set -e; sim=$(call BENCH_SIM,fast); \
+	 for s in $(BENCH_SCENES); do \
+	   if [ -f "$(DATA)/$$s/left.png" ]; then \
+	     echo "bench: RTL on $$s"; \
+	     $$sim --left "$(DATA)/$$s/left.png" --right "$(DATA)/$$s/right.png" --gt "$(DATA)/$$s/gt.png" \
+	       --out $(BENCH_DIR)/rtl/$$s > $(BENCH_DIR)/rtl/$$s.log || { cat $(BENCH_DIR)/rtl/$$s.log; exit 1; }; \
+	   fi; \
+	 done; \
+	 echo "bench: RTL on aloe"; $$sim --out $(BENCH_DIR)/rtl/aloe > $(BENCH_DIR)/rtl/aloe.log || { cat $(BENCH_DIR)/rtl/aloe.log; exit 1; }; \
+	 $(BENCH_TOOL) formats --source $(ALOE_DIR)/aloeL.jpg --out $(BENCH_DIR)/formats/images; \
+	 for f in $(BENCH_FRAMES); do \
+	   echo "bench: RTL on a $$f frame"; \
+	   $$sim --left $(BENCH_DIR)/formats/images/$${f}_left.png --right $(BENCH_DIR)/formats/images/$${f}_right.png \
+	     --out $(BENCH_DIR)/formats/$$f > $(BENCH_DIR)/formats/$$f.log || { cat $(BENCH_DIR)/formats/$$f.log; exit 1; }; \
+	 done
+	@set -e; for v in $(BENCH_VARIANTS); do \
+	   echo "bench: simulation speed, $$v build, cones"; \
+	   mkdir -p $(BENCH_DIR)/simspeed/$$v; \
+	   src="$(DATA)/cones"; [ -f "$$src/left.png" ] && args="--left $$src/left.png --right $$src/right.png" || args=""; \
+	   $(BIN)/sgm-sim-d$(D)-w$(BENCH_MAX_WIDTH)-$$v $$args --out $(BENCH_DIR)/simspeed/$$v > $(BENCH_DIR)/simspeed/$$v.log \
+	     || { cat $(BENCH_DIR)/simspeed/$$v.log; exit 1; }; \
+	 done
+	@$(foreach v,$(BENCH_VARIANTS),echo '$(strip $(BENCH_FLAGS_$(v)))' > $(BENCH_DIR)/simspeed/$(v)/flags.txt;)
+	@$(BENCH_TOOL) report --data "$(DATA)" --bench $(BENCH_DIR) --repeats $(BENCH_REPEATS)

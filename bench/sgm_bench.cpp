@@ -1,0 +1,442 @@
+// sgm-bench: the `make bench` report. bench/bench.mk runs the verilated core
+// (sgm-sim, which checks every output pixel against the golden model in the
+// same process) on every scene and on one frame of each video format, and the
+// simulation-speed variants on Cones; this tool then runs OpenCV StereoSGBM
+// (three modes) and the golden-vs-OpenCV timing on the same pairs, reads the
+// simulator's reports, and writes build/bench/report.{md,json} and the charts.
+//
+//   sgm-bench formats --source IMAGE --out DIR   writes DIR/<format>_{left,right}.png
+//   sgm-bench report  --data DIR --bench DIR [--repeats N]
+#include "eval_lib.hpp"
+#include "report_bench.hpp"
+#include "report_chart.hpp"
+#include "report_json.hpp"
+#include "report_table.hpp"
+
+#include "sgm/cli_args.hpp"
+#include "sgm/image_io.hpp"
+#include "sgm/pipeline.hpp"
+
+#include <opencv2/calib3d.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+using namespace sgm;
+using namespace sgm::eval;
+
+namespace {
+
+const char* kUsage =
+    "usage: sgm-bench formats --source IMAGE --out DIR\n"
+    "       sgm-bench report --data DIR --bench DIR [--repeats N]\n";
+
+const char* kAloeDir = "/usr/share/doc/opencv-doc/examples/data";
+
+// The paper's Table II formats plus 1080p30; paperMhz is the paper's clock
+// (it runs at 9 cycles per pixel), 0 where the paper has no column.
+struct VideoFormat {
+  const char* name;
+  int width, height, fps;
+  double paperMhz;
+};
+const VideoFormat kFormats[] = {
+    {"450x375p30", 450, 375, 30, 45.6},  {"450x375p60", 450, 375, 60, 91.1},
+    {"640x480p30", 640, 480, 30, 82.9},  {"640x480p60", 640, 480, 60, 165.9},
+    {"1280x720p30", 1280, 720, 30, 248.8}, {"1920x1080p30", 1920, 1080, 30, 0},
+};
+
+// The simulated frame sizes (one per distinct width x height).
+std::string frameName(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
+
+// The accuracy goals of issue 6 (nonocc, delta 1, invalid = error).
+const std::map<std::string, double> kGoals = {{"cones", 3.5}, {"teddy", 7.0}, {"sawtooth", 2.0}, {"venus", 1.5}};
+
+struct OpenCvMode {
+  const char* key;
+  const char* label;
+  int mode;
+};
+const OpenCvMode kOpenCvModes[] = {
+    {"opencv-sgbm", "OpenCV MODE_SGBM", cv::StereoSGBM::MODE_SGBM},
+    {"opencv-hh", "OpenCV MODE_HH", cv::StereoSGBM::MODE_HH},
+    {"opencv-3way", "OpenCV MODE_SGBM_3WAY", cv::StereoSGBM::MODE_SGBM_3WAY},
+};
+
+std::string fmt(double v, int decimals = 2) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+// A simulator report (sgm-sim --out DIR writes DIR/report.json).
+struct SimReport {
+  std::map<std::string, std::string> fields;
+  std::string path;
+  const std::string& at(const std::string& key) const {
+    const auto it = fields.find(key);
+    if (it == fields.end()) throw Error("'" + path + "' has no field '" + key + "'");
+    return it->second;
+  }
+  double number(const std::string& key) const { return std::stod(at(key)); }
+  bool flag(const std::string& key) const { return at(key) == "true"; }
+};
+
+SimReport readSimReport(const std::string& dir) {
+  const std::string path = dir + "/report.json";
+  if (!fs::exists(path)) throw Error("missing simulator report '" + path + "' (run `make bench`, not sgm-bench alone)");
+  return SimReport{readFlatJson(path), path};
+}
+
+int commandFormats(const CliArgs& args) {
+  const std::string source = args.text("source", "");
+  const std::string out = args.text("out", "");
+  if (source.empty() || out.empty()) throw Error("formats needs --source IMAGE and --out DIR");
+  const cv::Mat left = readGray(source);
+  fs::create_directories(out);
+  std::vector<std::pair<std::string, cv::Mat>> files;
+  std::map<std::string, bool> done;
+  for (const VideoFormat& f : kFormats) {
+    const std::string name = frameName(f.width, f.height);
+    if (done[name]) continue;
+    done[name] = true;
+    // Any content works for timing (the core's cycles do not depend on it);
+    // a resized real image keeps the golden comparison meaningful.
+    cv::Mat l, r;
+    cv::resize(left, l, cv::Size(f.width, f.height), 0, 0, cv::INTER_AREA);
+    const cv::Mat shift = (cv::Mat_<double>(2, 3) << 1, 0, -8, 0, 1, 0);  // right view: 8 px disparity
+    cv::warpAffine(l, r, shift, l.size(), cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+    files.push_back({out + "/" + name + "_left.png", l});
+    files.push_back({out + "/" + name + "_right.png", r});
+  }
+  writePngs(files);
+  std::printf("sgm-bench: wrote %zu format images in %s/\n", files.size(), out.c_str());
+  return 0;
+}
+
+// Everything `report` measures, then rendered.
+struct BenchData {
+  std::vector<std::string> scenes;
+  std::map<std::string, Scene> sceneData;
+  std::map<std::string, SimReport> rtl;                                      // scene -> sgm-sim report
+  std::map<std::string, std::map<std::string, ErrorFigures>> figures;       // method -> scene -> figures
+  std::map<std::string, BenchResult> speed;                                  // scene -> golden vs OpenCV
+  std::vector<std::pair<std::string, SimReport>> simVariants;                // variant -> report (cones)
+  std::map<std::string, std::string> simVariantFlags;                        // variant -> verilator flags
+  std::map<std::string, SimReport> formats;                                  // WxH -> report
+  int d = 64, maxWidth = 0;
+};
+
+ErrorFigures rtlFigures(const SimReport& r) {
+  ErrorFigures f;
+  f.errNonocc = r.number("err_nonocc");
+  f.errAll = r.number("err_all");
+  if (r.at("err_disc") != "null") f.errDisc = r.number("err_disc");
+  f.density = r.number("density");
+  f.errNonoccValid = r.number("err_nonocc_valid");
+  return f;
+}
+
+std::string readText(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  return line;
+}
+
+BenchData measure(const std::string& data, const std::string& bench, int repeats) {
+  BenchData b;
+  for (const std::string& name : paperScenes()) {
+    if (!fs::exists(data + "/" + name + "/left.png")) {
+      std::fprintf(stderr, "sgm-bench: note: scene '%s' not found under %s, skipped\n", name.c_str(), data.c_str());
+      continue;
+    }
+    b.sceneData[name] = loadScene(data + "/" + name);
+    b.scenes.push_back(name);
+  }
+  if (fs::exists(std::string(kAloeDir) + "/aloeL.jpg")) {
+    Scene aloe = loadSceneFiles(std::string(kAloeDir) + "/aloeL.jpg", std::string(kAloeDir) + "/aloeR.jpg",
+                                std::string(kAloeDir) + "/aloeGT.png", 1, 4);
+    aloe.name = "aloe";
+    b.sceneData["aloe"] = aloe;
+    b.scenes.push_back("aloe");
+  }
+  if (b.scenes.empty()) throw Error("no scene found under '" + data + "' and no Aloe pair");
+
+  const Params params;  // the hardware defaults, as sgm-sim runs them
+  b.d = params.disparities;
+  for (const std::string& name : b.scenes) {
+    const Scene& scene = b.sceneData.at(name);
+    std::fprintf(stderr, "sgm-bench: %s: RTL report, golden, OpenCV x3, timing\n", name.c_str());
+    b.rtl.emplace(name, readSimReport(bench + "/rtl/" + name));
+    b.figures["rtl"][name] = rtlFigures(b.rtl.at(name));
+    b.figures["golden"][name] = evaluate(toFloat(runPipeline(scene.left, scene.right, params)), scene);
+    for (const OpenCvMode& m : kOpenCvModes)
+      b.figures[m.key][name] =
+          evaluate(runOpenCvSgbm(scene.leftColor, scene.rightColor, opencvDisparities(b.d), m.mode), scene);
+    b.speed[name] = runBench(scene, repeats);
+  }
+  for (const auto& entry : fs::directory_iterator(bench + "/simspeed")) {
+    const std::string variant = entry.path().filename().string();
+    b.simVariants.push_back({variant, readSimReport(entry.path().string())});
+    b.simVariantFlags[variant] = readText(entry.path().string() + "/flags.txt");
+  }
+  std::sort(b.simVariants.begin(), b.simVariants.end(),
+            [](const auto& x, const auto& y) { return x.first < y.first; });
+  for (const VideoFormat& f : kFormats) {
+    const std::string name = frameName(f.width, f.height);
+    if (!b.formats.count(name)) b.formats.emplace(name, readSimReport(bench + "/formats/" + name));
+  }
+  b.maxWidth = std::stoi(readText(bench + "/max_width.txt"));
+  return b;
+}
+
+double clockMhz(const SimReport& frame, int fps) { return frame.number("cycles") * fps / 1e6; }
+
+std::string optional(const std::optional<double>& v) { return v ? fmt(*v) : "-"; }
+
+std::string markdown(const BenchData& b) {
+  std::ostringstream md;
+  md << "# Benchmark: accuracy and speed, one run\n\n"
+     << "Core: D = " << b.d << ", MAX_WIDTH = " << b.maxWidth
+     << ", hardware defaults (docs/algorithm.md). Figures: bad-1.0 error in %, invalid pixels counted as errors. "
+     << "`RTL` is the verilated core's output; every pixel of it was compared with the golden model in the same run "
+     << "(column *bit-exact*).\n\n";
+
+  md << "## Accuracy (nonocc)\n\n| scene | RTL | bit-exact | paper (Rank SAD, Table I) | goal | OpenCV SGBM | OpenCV HH "
+        "| OpenCV 3WAY |\n|---|---|---|---|---|---|---|---|\n";
+  const std::map<std::string, double> paper = tableMethods(b.d)[3].paper;  // the Rank SAD row
+  for (const std::string& s : b.scenes) {
+    const SimReport& r = b.rtl.at(s);
+    md << "| " << s << " | **" << fmt(b.figures.at("rtl").at(s).errNonocc) << "** | "
+       << (r.flag("bit_exact") ? "yes" : "NO (" + r.at("mismatches") + " px)") << " | "
+       << (paper.count(s) ? fmt(paper.at(s), 1) : "-") << " | " << (kGoals.count(s) ? fmt(kGoals.at(s), 1) : "-");
+    for (const OpenCvMode& m : kOpenCvModes) md << " | " << fmt(b.figures.at(m.key).at(s).errNonocc);
+    md << " |\n";
+  }
+  md << "\n## Every figure per scene\n\n| scene | method | nonocc | all | disc | density |\n|---|---|---|---|---|---|\n";
+  std::vector<std::pair<std::string, std::string>> methods = {{"rtl", "RTL"}, {"golden", "golden model"}};
+  for (const OpenCvMode& m : kOpenCvModes) methods.push_back({m.key, m.label});
+  for (const std::string& s : b.scenes)
+    for (const auto& [key, label] : methods) {
+      const ErrorFigures& f = b.figures.at(key).at(s);
+      md << "| " << s << " | " << label << " | " << fmt(f.errNonocc) << " | " << fmt(f.errAll) << " | "
+         << optional(f.errDisc) << " | " << fmt(f.density) << " |\n";
+    }
+  md << "\nSawtooth has no Middlebury masks here, so its nonocc mask is derived from the ground truth and it has no "
+        "disc figure; Aloe (OpenCV's copy, downscaled 4x) has no masks either.\n";
+
+  md << "\n## Speed: golden model vs OpenCV StereoSGBM (same run, same pairs)\n\n"
+     << "| scene | size | golden ms | OpenCV MODE_SGBM ms | ratio golden/OpenCV |\n|---|---|---|---|---|\n";
+  for (const std::string& s : b.scenes) {
+    const BenchResult& r = b.speed.at(s);
+    md << "| " << s << " | " << r.width << "x" << r.height << " | " << fmt(r.goldenMs, 1) << " | "
+       << fmt(r.opencvMs(), 1) << " (" << r.opencvInput() << ") | " << fmt(r.ratio()) << " |\n";
+  }
+  const BenchResult& any = b.speed.begin()->second;
+  md << "\nMedian of " << any.repeats << " interleaved rounds after a warm-up. The golden model uses "
+     << any.goldenThreads << " thread(s), OpenCV " << any.opencvThreads
+     << "; its faster input (gray or colour) is the one compared. Ratios vary with machine load.\n";
+
+  md << "\n## The core: cycles per pixel and latency (Verilator, no stalls)\n\n"
+     << "| scene | size | cycles/pixel | latency (cycles) | sim cycles/s |\n|---|---|---|---|---|\n";
+  for (const std::string& s : b.scenes) {
+    const SimReport& r = b.rtl.at(s);
+    md << "| " << s << " | " << r.at("width") << "x" << r.at("height") << " | " << fmt(r.number("cycles_per_pixel"), 4)
+       << " | " << r.at("latency_cycles") << " | " << fmt(r.number("sim_cycles_per_second"), 0) << " |\n";
+  }
+  md << "\n## Simulation speed by Verilator build options (Cones, one frame)\n\n"
+     << "| variant | Verilator options | cycles/s | frames/s | seconds per frame |\n|---|---|---|---|---|\n";
+  for (const auto& [variant, r] : b.simVariants) {
+    const double cps = r.number("sim_cycles_per_second");
+    md << "| " << variant << " | `" << b.simVariantFlags.at(variant) << "` | " << fmt(cps, 0) << " | "
+       << fmt(cps / r.number("cycles"), 3) << " | " << fmt(r.number("cycles") / cps, 2) << " |\n";
+  }
+  md << "\nThe verilated tests of `make test` use the `checked` options (random initial values).\n";
+
+  md << "\n## Clock needed per video format (the paper's Table II)\n\n"
+     << "| format | cycles per frame (simulated) | cycles/pixel | our clock (MHz) | paper's clock (MHz, 9 cycles/pixel) "
+        "|\n|---|---|---|---|---|\n";
+  for (const VideoFormat& f : kFormats) {
+    const SimReport& r = b.formats.at(frameName(f.width, f.height));
+    md << "| " << f.name << " | " << r.at("cycles") << " | " << fmt(r.number("cycles_per_pixel"), 4) << " | "
+       << fmt(clockMhz(r, f.fps), 1) << " | "
+       << (f.paperMhz > 0 ? fmt(f.paperMhz, 1) : fmt(9.0 * f.width * f.height * f.fps / 1e6, 1) + " (derived)")
+       << " |\n";
+  }
+  md << "\nCycles per frame are from the first input to the last output beat of one frame, including the flush "
+        "and the P2 table fill; back-to-back frames need the same.\n";
+
+  md << "\n## Pictures\n\n![error per scene](accuracy.png)\n\n";
+  for (const std::string& s : b.scenes)
+    md << "**" << s << "**: left | ground truth | RTL | error map (green correct, red wrong, blue invalid)\n\n"
+       << "![" << s << "](rtl/" << s << "/sidebyside.png)\n\n";
+  return md.str();
+}
+
+void figuresJson(JsonWriter& j, const ErrorFigures& f) {
+  j.beginObject();
+  j.key("err_nonocc").real(f.errNonocc);
+  j.key("err_all").real(f.errAll);
+  j.key("err_disc").real(f.errDisc);
+  j.key("density").real(f.density);
+  j.endObject();
+}
+
+std::string json(const BenchData& b) {
+  JsonWriter j;
+  j.beginObject();
+  j.key("d").integer(b.d);
+  j.key("max_width").integer(b.maxWidth);
+  j.key("delta").real(1.0);
+  j.key("scenes").beginArray();
+  for (const std::string& s : b.scenes) j.string(s);
+  j.endArray();
+  const std::map<std::string, double> paper = tableMethods(b.d)[3].paper;
+  j.key("accuracy").beginObject();
+  for (const std::string& s : b.scenes) {
+    j.key(s).beginObject();
+    j.key("rtl");
+    figuresJson(j, b.figures.at("rtl").at(s));
+    j.key("bit_exact").boolean(b.rtl.at(s).flag("bit_exact"));
+    j.key("mismatches").integer(std::stol(b.rtl.at(s).at("mismatches")));
+    j.key("golden");
+    figuresJson(j, b.figures.at("golden").at(s));
+    for (const OpenCvMode& m : kOpenCvModes) {
+      j.key(m.key);
+      figuresJson(j, b.figures.at(m.key).at(s));
+    }
+    j.key("paper_rank_sad");
+    paper.count(s) ? j.real(paper.at(s)) : j.null();
+    j.key("goal");
+    kGoals.count(s) ? j.real(kGoals.at(s)) : j.null();
+    j.endObject();
+  }
+  j.endObject();
+  j.key("speed").beginArray();
+  for (const std::string& s : b.scenes) {
+    const BenchResult& r = b.speed.at(s);
+    j.beginObject();
+    j.key("scene").string(s);
+    j.key("golden_ms").real(r.goldenMs);
+    j.key("opencv_sgbm_ms").real(r.opencvMs());
+    j.key("opencv_input").string(r.opencvInput());
+    j.key("ratio").real(r.ratio());
+    j.key("golden_threads").integer(r.goldenThreads);
+    j.key("repeats").integer(r.repeats);
+    j.endObject();
+  }
+  j.endArray();
+  j.key("core").beginArray();
+  for (const std::string& s : b.scenes) {
+    const SimReport& r = b.rtl.at(s);
+    j.beginObject();
+    j.key("scene").string(s);
+    j.key("cycles_per_pixel").real(r.number("cycles_per_pixel"));
+    j.key("latency_cycles").integer(std::stol(r.at("latency_cycles")));
+    j.key("sim_cycles_per_second").real(r.number("sim_cycles_per_second"));
+    j.endObject();
+  }
+  j.endArray();
+  j.key("simulation").beginArray();
+  for (const auto& [variant, r] : b.simVariants) {
+    j.beginObject();
+    j.key("variant").string(variant);
+    j.key("verilator_flags").string(b.simVariantFlags.at(variant));
+    j.key("cycles_per_second").real(r.number("sim_cycles_per_second"));
+    j.key("frames_per_second").real(r.number("sim_cycles_per_second") / r.number("cycles"));
+    j.endObject();
+  }
+  j.endArray();
+  j.key("formats").beginArray();
+  for (const VideoFormat& f : kFormats) {
+    const SimReport& r = b.formats.at(frameName(f.width, f.height));
+    j.beginObject();
+    j.key("format").string(f.name);
+    j.key("width").integer(f.width);
+    j.key("height").integer(f.height);
+    j.key("fps").integer(f.fps);
+    j.key("cycles_per_frame").integer(std::stol(r.at("cycles")));
+    j.key("cycles_per_pixel").real(r.number("cycles_per_pixel"));
+    j.key("clock_mhz").real(clockMhz(r, f.fps));
+    j.key("paper_mhz");
+    f.paperMhz > 0 ? j.real(f.paperMhz) : j.null();
+    j.endObject();
+  }
+  j.endArray();
+  j.endObject();
+  return j.str();
+}
+
+// The error chart: the RTL with the paper's Rank SAD figure beside it, then OpenCV.
+cv::Mat accuracyChart(const BenchData& b) {
+  TableReport t;
+  t.disparities = b.d;
+  t.scenes = b.scenes;
+  t.present.insert(b.scenes.begin(), b.scenes.end());
+  for (const auto& [name, scene] : b.sceneData)
+    if (scene.nonoccDerived) t.derivedNonocc.insert(name);
+  Method rtl;
+  rtl.key = "rtl";
+  rtl.label = "Full pipeline, this core (RTL)";
+  rtl.kind = MethodKind::kFull;
+  rtl.paper = tableMethods(b.d)[3].paper;
+  rtl.hardwareDefault = true;
+  t.methods.push_back(rtl);
+  for (const OpenCvMode& m : kOpenCvModes) {
+    Method om;
+    om.key = m.key;
+    om.label = m.label;
+    om.kind = MethodKind::kOpenCv;
+    t.methods.push_back(om);
+  }
+  for (const Method& m : t.methods) t.results[m.key] = b.figures.at(m.key);
+  return table1Chart(t, "SGM core (RTL, bit-exact) vs Yao & Cheng and OpenCV");
+}
+
+int commandReport(const CliArgs& args) {
+  const std::string data = args.text("data", "");
+  const std::string bench = args.text("bench", "");
+  if (data.empty() || bench.empty()) throw Error("report needs --data DIR and --bench DIR");
+  const int repeats = int(args.integer("repeats", 3, 1, 100));
+  const BenchData b = measure(data, bench, repeats);
+  const std::string md = markdown(b), js = json(b);
+  writePngs({{bench + "/accuracy.png", accuracyChart(b)}});
+  writeTextFile(bench + "/report.json", js);
+  writeTextFile(bench + "/report.md", md);
+  std::printf("%s", md.substr(0, md.find("\n## Every figure")).c_str());
+  std::printf("\nsgm-bench: wrote report.md, report.json, accuracy.png in %s/\n", bench.c_str());
+  bool allExact = true;
+  for (const auto& [scene, r] : b.rtl) allExact = allExact && r.flag("bit_exact");
+  for (const auto& [name, r] : b.formats) allExact = allExact && r.flag("bit_exact");
+  if (!allExact) std::fprintf(stderr, "sgm-bench: error: the RTL output differs from the golden model (see report.md)\n");
+  return allExact ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    if (argc < 2 || std::string(argv[1]) == "--help") {
+      std::fputs(kUsage, argc < 2 ? stderr : stdout);
+      return argc < 2 ? 2 : 0;
+    }
+    const std::string command = argv[1];
+    if (command == "formats") return commandFormats(CliArgs(argc - 1, argv + 1, {"source", "out"}));
+    if (command == "report") return commandReport(CliArgs(argc - 1, argv + 1, {"data", "bench", "repeats"}));
+    throw Error("unknown command '" + command + "' (formats, report)");
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "sgm-bench: error: %s\n", e.what());
+    return 2;
+  }
+}
