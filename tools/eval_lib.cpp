@@ -100,18 +100,16 @@ Scene loadScene(const std::string& dir, double scaleOverride) {
   std::string name = fs::path(dir).filename().string();
   if (name.empty()) name = fs::path(dir).parent_path().filename().string();
   const std::string leftPath = dir + "/left.png", rightPath = dir + "/right.png", gtPath = dir + "/gt.png";
-  readGray(leftPath), readGray(rightPath);  // one-line errors for unreadable or unsupported images
+  const cv::Mat left = readImage(leftPath), right = readImage(rightPath);  // one-line errors for bad files
   const cv::Mat gtRaw = readSingleChannel(gtPath);
-  Scene s = makeScene(name, cv::imread(leftPath, cv::IMREAD_UNCHANGED), cv::imread(rightPath, cv::IMREAD_UNCHANGED),
-                      gtRaw, scaleOverride > 0 ? scaleOverride : readScale(dir));
+  Scene s = makeScene(name, left, right, gtRaw, scaleOverride > 0 ? scaleOverride : readScale(dir));
   useMasksIn(dir, s);
   return s;
 }
 
 Scene loadSceneFiles(const std::string& leftPath, const std::string& rightPath, const std::string& gtPath,
                      double gtScale, int downscale) {
-  readGray(leftPath), readGray(rightPath);  // one-line errors for unreadable or unsupported images
-  cv::Mat left = cv::imread(leftPath, cv::IMREAD_UNCHANGED), right = cv::imread(rightPath, cv::IMREAD_UNCHANGED);
+  cv::Mat left = readImage(leftPath), right = readImage(rightPath);  // one-line errors for bad files
   cv::Mat gtRaw;
   if (!gtPath.empty()) {
     gtRaw = readSingleChannel(gtPath);

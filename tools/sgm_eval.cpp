@@ -36,17 +36,25 @@ std::string dataDir(const CliArgs& args) {
   if (!args.has("data")) throw Error("missing --data DIR (the Middlebury scenes directory)");
   const std::string root = args.text("data", "");
   if (root.empty()) throw Error("empty --data directory name");
-  if (!std::filesystem::is_directory(root)) throw Error("data directory '" + root + "' does not exist");
+  std::error_code ec;
+  if (!std::filesystem::exists(root, ec)) throw Error("data directory '" + root + "' does not exist");
+  if (!std::filesystem::is_directory(root, ec)) throw Error("data directory '" + root + "' is not a directory");
   return root;
 }
 
-// --out, created when missing.
+// --out: checked before the work, created (when missing) only to write the results.
 std::string outDir(const CliArgs& args) {
   const std::string out = args.text("out", kDefaultOut);
+  checkOutputDirectory(out);
+  return out;
+}
+
+// Writes the results all together (none of them on failure), creating the directory.
+void writeResults(const std::string& out, const std::vector<OutputFile>& files) {
   std::error_code ec;
   std::filesystem::create_directories(out, ec);
   if (ec || !std::filesystem::is_directory(out)) throw Error("cannot create output directory '" + out + "'");
-  return out;
+  writeFiles(files);
 }
 
 std::vector<Scene> loadAll(const std::string& root) {
@@ -84,24 +92,24 @@ int commandRun(const CliArgs& args) {
 int commandTable(const CliArgs& args) {
   const int d = int(args.integer("d", 64, kMinDisparities, kMaxDisparities));
   const double delta = deltaOption(args);
-  const std::vector<Scene> scenes = loadAll(dataDir(args));
   const std::string out = outDir(args);
+  const std::vector<Scene> scenes = loadAll(dataDir(args));
 
-  std::vector<std::pair<std::string, cv::Mat>> images;  // written with the reports, at the end
+  std::vector<OutputFile> files;  // written together at the end
   const auto keepSideBySide = [&](const eval::Method& m, const Scene& s, const cv::Mat& disparity) {
-    if (m.hardwareDefault)
-      images.emplace_back(out + "/" + s.name + "_sidebyside.png", eval::sideBySide(s, disparity, float(d), delta));
+    if (!m.hardwareDefault) return;
+    const std::string path = out + "/" + s.name + "_sidebyside.png";
+    files.push_back({path, encodePng(eval::sideBySide(s, disparity, float(d), delta), path)});
   };
   const eval::TableReport report = eval::computeTable(scenes, d, delta, keepSideBySide);
-
-  const std::string markdown = eval::reportMarkdown(report), json = eval::reportJson(report);
-  images.emplace_back(out + "/table1.png", eval::table1Chart(report));
-  eval::writeTextFile(out + "/report.md", markdown);
-  eval::writeTextFile(out + "/report.json", json);
-  for (const auto& [path, image] : images) writePng(path, image);
+  const size_t sideBySides = files.size();
+  files.push_back({out + "/table1.png", encodePng(eval::table1Chart(report), out + "/table1.png")});
+  files.push_back({out + "/report.md", eval::reportMarkdown(report)});
+  files.push_back({out + "/report.json", eval::reportJson(report)});
+  writeResults(out, files);
 
   std::cout << eval::table1Markdown(report);
-  std::cout << "wrote " << out << "/report.md, report.json, table1.png and " << images.size() - 1
+  std::cout << "wrote " << out << "/report.md, report.json, table1.png and " << sideBySides
             << " side-by-side images (" << report.hardwareDefault << ")\n";
   return 0;
 }
@@ -109,10 +117,10 @@ int commandTable(const CliArgs& args) {
 int commandBench(const CliArgs& args) {
   const std::string root = dataDir(args);
   const int repeats = int(args.integer("repeats", 5, 1, 1000));
-  const Scene scene = loadNamed(root, args.text("scene", "cones"));
   const std::string out = outDir(args);
+  const Scene scene = loadNamed(root, args.text("scene", "cones"));
   const eval::BenchResult result = eval::runBench(scene, repeats);
-  eval::writeTextFile(out + "/bench.json", eval::benchJson(result));
+  writeResults(out, {{out + "/bench.json", eval::benchJson(result)}});
   std::cout << eval::benchText(result) << "wrote " << out << "/bench.json\n";
   return 0;
 }
@@ -137,9 +145,10 @@ std::vector<Command> commands() {
 
 int main(int argc, char** argv) {
   try {
-    if (argc < 2 || std::string(argv[1]) == "--help") {
+    if (argc < 2) throw Error("missing command: run, table or bench (see --help)");
+    if (std::string(argv[1]) == "--help") {
       std::cout << kUsage;
-      return argc < 2 ? 2 : 0;
+      return 0;
     }
     const std::string name = argv[1];
     for (const Command& command : commands()) {
@@ -154,7 +163,6 @@ int main(int argc, char** argv) {
     }
     throw Error("unknown command '" + name + "' (see --help)");
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "sgm-eval: error: %s\n", e.what());
-    return 2;
+    return reportError("sgm-eval", e);
   }
 }

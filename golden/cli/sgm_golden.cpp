@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 namespace {
@@ -32,6 +33,11 @@ int main(int argc, char** argv) {
     if (args.positional().size() != 2) throw sgm::Error("expected two images, LEFT and RIGHT (see --help)");
     const sgm::Params params = args.pipelineParams();
     const std::string prefix = args.text("out", "disparity");
+    if (prefix.empty()) throw sgm::Error("empty --out prefix");
+    // Checked before the work: sgm-golden creates no directories.
+    const std::filesystem::path outDir = std::filesystem::path(prefix).parent_path();
+    if (!outDir.empty() && !std::filesystem::is_directory(outDir))
+      throw sgm::Error("cannot write '" + prefix + "_disp16.png': directory '" + outDir.string() + "' does not exist");
     const cv::Mat left = sgm::readGray(args.positional()[0]);
     const cv::Mat right = sgm::readGray(args.positional()[1]);
 
@@ -48,7 +54,6 @@ int main(int argc, char** argv) {
                 prefix.c_str());
     return 0;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "sgm-golden: error: %s\n", e.what());
-    return 2;
+    return sgm::reportError("sgm-golden", e);
   }
 }

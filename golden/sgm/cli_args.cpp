@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 namespace sgm {
@@ -94,6 +95,31 @@ Params CliArgs::pipelineParams(Params p) const {
   p.median = onOff("median", p.median);
   p.validate();
   return p;
+}
+
+std::string oneLine(const std::string& text) {
+  constexpr size_t kMaxLine = 4096;  // absurdly long option values are cut
+  std::string out;
+  for (const char c : text) {
+    if (out.size() > kMaxLine) return out + "...";
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '\n') out += "\\n";
+    else if (c == '\r') out += "\\r";
+    else if (c == '\t') out += "\\t";
+    else if (u < 0x20 || u == 0x7f) {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "\\x%02x", u);
+      out += hex;
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+int reportError(const char* tool, const std::exception& error) {
+  std::fprintf(stderr, "%s: error: %s\n", tool, oneLine(error.what()).c_str());
+  return 2;
 }
 
 }  // namespace sgm

@@ -4,6 +4,7 @@
 
 #include "sgm/params.hpp"
 
+#include <exception>
 #include <map>
 #include <set>
 #include <string>
@@ -34,5 +35,13 @@ class CliArgs {
   std::map<std::string, std::string> values_;
   std::set<std::string> flags_;
 };
+
+// The text with control characters shown as \n, \t, \xNN: one printable
+// line even when a file name or an option value holds a newline.
+std::string oneLine(const std::string& text);
+
+// A tool's error exit: prints "TOOL: error: MESSAGE" as one line on stderr
+// and returns 2, the exit status of every user error.
+int reportError(const char* tool, const std::exception& error);
 
 }  // namespace sgm
