@@ -44,6 +44,11 @@ help:
 	@echo "make rtl-tests     every verilated GoogleTest fixture (modules and the whole core)"
 	@echo "make eval          Table I and full-pipeline accuracy on DATA=$(DATA) -> build/eval/"
 	@echo "make bench-golden  golden model vs OpenCV StereoSGBM time on one frame, same run"
+	@echo "make bench         accuracy (RTL, golden, OpenCV x3, paper) and speed in one run -> build/bench/"
+	@echo "make synth         Yosys area/timing reports (D=64 MAX_WIDTH=1280) -> build/synth/; make synth-help"
+	@echo "make regress       constrained-random regression of the core (seeded, replayable)"
+	@echo "make fuzz          seeded random-corruption fuzzing of image loading and argument parsing"
+	@echo "make coverage      line and toggle coverage of rtl/ -> build/coverage/"
 	@echo "make test          everything CI runs (unit tests, end-to-end accuracy, CLI errors)"
 	@echo "make clean         remove build/"
 
