@@ -5,8 +5,11 @@
 // model has evaluated its inputs (before the edge), then tick.
 #pragma once
 
+#include "axis_checker.hpp"
+
 #include <cstdint>
 #include <deque>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <string>
@@ -14,33 +17,85 @@
 
 namespace sgm::tb {
 
-struct Beat {
-  uint16_t data = 0;
-  bool user = false;  // start of frame
-  bool last = false;  // end of line
-  bool operator==(const Beat& o) const { return data == o.data && user == o.user && last == o.last; }
+// How a side of the stream stalls (the source idles, the sink is not ready).
+// A plain number p means: each cycle stalls with probability p.
+struct StallProfile {
+  enum class Kind { kRandom, kBursts, kToggle };
+  Kind kind = Kind::kRandom;
+  double probability = 0;      // kRandom: a cycle stalls; kBursts: a burst starts on a cycle
+  int burstMin = 0, burstMax = 0;  // kBursts: burst length in cycles
+  StallProfile(double p = 0) : probability(p) {}  // NOLINT: implicit on purpose
+  static StallProfile bursts(double start, int minCycles, int maxCycles) {
+    StallProfile s(start);
+    s.kind = Kind::kBursts, s.burstMin = minCycles, s.burstMax = maxCycles;
+    return s;
+  }
+  // Every other cycle (valid or ready toggles each cycle).
+  static StallProfile toggle() {
+    StallProfile s;
+    s.kind = Kind::kToggle;
+    return s;
+  }
+  std::string describe() const {
+    std::ostringstream text;
+    if (kind == Kind::kToggle) text << "toggle";
+    else if (kind == Kind::kBursts) text << "bursts " << burstMin << ".." << burstMax << "@" << probability;
+    else text << probability;
+    return text.str();
+  }
 };
 
-// Stall densities: probability that a cycle is idle (source) or not ready (sink).
+// Stall densities of the two sides.
 struct Stalls {
-  double sourceIdle = 0.0;
-  double sinkBusy = 0.0;
+  StallProfile sourceIdle;
+  StallProfile sinkBusy;
+};
+
+// Per-cycle stall decisions of one side from a seed.
+class StallPattern {
+ public:
+  StallPattern(uint32_t seed, StallProfile profile) : rng_(seed), profile_(profile) {}
+  void setProfile(StallProfile profile) { profile_ = profile, burstLeft_ = 0; }
+  // Called once per cycle: does this cycle stall?
+  bool next() {
+    switch (profile_.kind) {
+      case StallProfile::Kind::kToggle: return (phase_ ^= 1) != 0;
+      case StallProfile::Kind::kBursts:
+        if (burstLeft_ == 0 && chance(profile_.probability))
+          burstLeft_ = std::uniform_int_distribution<int>(profile_.burstMin, profile_.burstMax)(rng_);
+        if (burstLeft_ == 0) return false;
+        --burstLeft_;
+        return true;
+      case StallProfile::Kind::kRandom: break;
+    }
+    return chance(profile_.probability);
+  }
+
+ private:
+  bool chance(double p) { return p > 0 && std::uniform_real_distribution<double>(0, 1)(rng_) < p; }
+  std::mt19937 rng_;
+  StallProfile profile_;
+  int burstLeft_ = 0;
+  unsigned phase_ = 0;
 };
 
 template <class Model>
 class AxisSource {
  public:
-  AxisSource(uint32_t seed, double idle) : rng_(seed), idle_(idle) {}
+  AxisSource(uint32_t seed, StallProfile idle) : stalls_(seed, idle) {}
 
   void push(const Beat& b) { queue_.push_back(b); }
   void push(const std::vector<Beat>& beats) { queue_.insert(queue_.end(), beats.begin(), beats.end()); }
   bool empty() const { return queue_.empty() && !valid_; }
   size_t pending() const { return queue_.size() + (valid_ ? 1 : 0); }
-  void setIdle(double idle) { idle_ = idle; }
+  void setIdle(StallProfile idle) { stalls_.setProfile(idle); }
+  // Bus reset: the beat on the bus and the queue are dropped.
+  void clear() { queue_.clear(), valid_ = false; }
 
   // Before the edge: presents a beat (valid never drops before its handshake).
   void drive(Model& m) {
-    if (!valid_ && !queue_.empty() && !chance(idle_)) {
+    const bool idle = stalls_.next();
+    if (!valid_ && !queue_.empty() && !idle) {
       current_ = queue_.front();
       queue_.pop_front();
       valid_ = true;
@@ -59,50 +114,42 @@ class AxisSource {
   uint64_t accepted() const { return accepted_; }
 
  private:
-  bool chance(double p) { return p > 0 && std::uniform_real_distribution<double>(0, 1)(rng_) < p; }
-  std::mt19937 rng_;
-  double idle_;
+  StallPattern stalls_;
   std::deque<Beat> queue_;
   Beat current_;
   bool valid_ = false;
   uint64_t accepted_ = 0;
 };
 
+// Records the output beats and checks the stream rules (AxisChecker: the
+// handshake always, the framing of the frames announced with expectFrame).
 template <class Model>
 class AxisSink {
  public:
-  AxisSink(uint32_t seed, double busy) : rng_(seed), busy_(busy) {}
-  void setBusy(double busy) { busy_ = busy; }
+  AxisSink(uint32_t seed, StallProfile busy) : stalls_(seed, busy) {}
+  void setBusy(StallProfile busy) { stalls_.setProfile(busy); }
 
-  void drive(Model& m) { m.m_tready_i = !chance(busy_); }
+  void drive(Model& m) { m.m_tready_i = !stalls_.next(); }
 
-  // Before the edge, after eval: records a handshake and checks the rules
-  // (valid holds and data stays stable until the handshake).
-  bool sample(const Model& m) {
+  // Before the edge, after eval: records a transfer and checks the rules.
+  // `cycle` names the cycle in violations (default: count of sample calls).
+  bool sample(const Model& m, std::optional<uint64_t> cycle = std::nullopt) {
     const Beat now{uint16_t(m.m_tdata_o), bool(m.m_tuser_o), bool(m.m_tlast_o)};
-    if (waiting_ && violation_.empty()) {
-      if (!m.m_tvalid_o) violation_ = "m_tvalid dropped before its handshake";
-      else if (!(now == held_)) violation_ = "m_tdata/tuser/tlast changed before the handshake";
-      if (!violation_.empty()) violation_ += " (beat " + std::to_string(beats_.size()) + ")";
-    }
-    const bool fire = m.m_tvalid_o && m.m_tready_i;
-    waiting_ = m.m_tvalid_o && !m.m_tready_i;
-    held_ = now;
+    const bool fire = checker_.observe(cycle.value_or(samples_), m.m_tvalid_o, m.m_tready_i, now);
+    ++samples_;
     if (fire) beats_.push_back(now);
     return fire;
   }
 
   std::vector<Beat>& beats() { return beats_; }
-  const std::string& violation() const { return violation_; }
+  AxisChecker& checker() { return checker_; }
+  const std::string& violation() const { return checker_.violation(); }
 
  private:
-  bool chance(double p) { return p > 0 && std::uniform_real_distribution<double>(0, 1)(rng_) < p; }
-  std::mt19937 rng_;
-  double busy_;
+  StallPattern stalls_;
+  AxisChecker checker_;
   std::vector<Beat> beats_;
-  Beat held_;
-  bool waiting_ = false;
-  std::string violation_;
+  uint64_t samples_ = 0;
 };
 
 // The beats of one well-formed frame from a left/right gray pair (row-major,
@@ -116,24 +163,6 @@ inline std::vector<Beat> frameBeats(const uint8_t* left, const uint8_t* right, i
       beats.push_back(Beat{uint16_t(left[y * leftStride + x] | right[y * rightStride + x] << 8), x == 0 && y == 0,
                            x == width - 1});
   return beats;
-}
-
-// Checks the framing of `count` output beats from `first`: tuser on the first
-// beat only, tlast exactly at every line end. Returns "" or the problem.
-inline std::string checkFraming(const std::vector<Beat>& beats, size_t first, int width, int height) {
-  const size_t count = size_t(width) * height;
-  if (beats.size() < first + count)
-    return "only " + std::to_string(beats.size() - first) + " output beats, expected " + std::to_string(count);
-  for (size_t i = 0; i < count; ++i) {
-    const Beat& b = beats[first + i];
-    const int x = int(i % width), y = int(i / width);
-    if (b.user != (i == 0) || b.last != (x == width - 1)) {
-      std::ostringstream msg;
-      msg << "framing at output (x=" << x << ", y=" << y << "): tuser=" << b.user << " tlast=" << b.last;
-      return msg.str();
-    }
-  }
-  return "";
 }
 
 }  // namespace sgm::tb

@@ -1,6 +1,10 @@
 // Streams stereo frames through a verilated sgm_top (or any top with its
-// ports) with seeded random stalls, collects the output frames, and measures
-// cycles. The golden comparison is done by the caller (compareMaps).
+// ports) with seeded stalls, collects the output frames, and measures cycles.
+// Every output cycle goes through the stream checker (axis_checker.hpp): a
+// broken handshake or framing rule, or a core that stops moving, throws
+// sgm::Error naming the cycle and the rule. A frame may reset the core in its
+// middle (FrameInput::resetAfterBeats). The golden comparison is done by the
+// caller (compareMaps).
 #pragma once
 
 #include "axis_bfm.hpp"
@@ -11,6 +15,7 @@
 
 #include <opencv2/core.hpp>
 
+#include <algorithm>
 #include <functional>
 #include <sstream>
 #include <string>
@@ -24,6 +29,10 @@ struct FrameInput {
   // When not empty, sent instead of the frame's well-formed beats (malformed
   // frames); the core still owes width x height output beats.
   std::vector<Beat> rawBeats = {};
+  // >= 0: once this many of the frame's input beats are in (and every earlier
+  // frame is out), rst_ni goes low for a few cycles; the frame owes no output
+  // and the next frame starts on a freshly reset core.
+  long resetAfterBeats = -1;
 };
 
 struct FrameOutput {
@@ -31,6 +40,7 @@ struct FrameOutput {
   uint64_t firstInCycle = 0;  // cycle of the frame's first input handshake
   uint64_t lastOutCycle = 0;  // cycle of its last output handshake
   unsigned errors = 0;        // error_o when the frame was done
+  bool aborted = false;       // the frame was cut by a reset (no map)
 };
 
 // Hardware encoding of the cost modes (cfg_mode_i).
@@ -67,6 +77,12 @@ inline std::string compareMaps(const DisparityMap& expected, const DisparityMap&
 template <class Model>
 class CoreHarness {
  public:
+  // A core moving no beat in either direction for this many cycles hangs (the
+  // longest legal pause is the P2 table fill, about 512 cycles, plus stalls).
+  static constexpr uint64_t kHangCycles = 100000;
+  // Cycles watched after the last frame: no further output beat may appear.
+  static constexpr int kDrainCycles = 64;
+
   CoreHarness(const std::string& name, uint32_t seed, Stalls stalls)
       : top_(name), source_(seed, stalls.sourceIdle), sink_(seed ^ 0x9e3779b9u, stalls.sinkBusy) {
     top_->s_tvalid_i = 0;
@@ -74,64 +90,106 @@ class CoreHarness {
     top_.reset();
   }
 
-  // Streams the frames back to back (no gap, no reset) and returns their outputs.
-  // progress(done, total) is called now and then on long runs.
+  // Streams the frames back to back (no gap, no reset unless a frame asks for
+  // one) and returns their outputs. progress(done, total) is called now and
+  // then on long runs.
   std::vector<FrameOutput> run(const std::vector<FrameInput>& frames,
                                const std::function<void(uint64_t, uint64_t)>& progress = {}) {
-    std::vector<size_t> firstBeat;
-    size_t inputBeats = 0, outputBeats = 0;
-    for (const FrameInput& f : frames) {
-      firstBeat.push_back(inputBeats);
-      const std::vector<Beat> beats = f.rawBeats.empty() ? frameBeats(f.left.data, f.right.data, f.left.cols,
-                                                                      f.left.rows, f.left.step, f.right.step)
-                                                         : f.rawBeats;
-      source_.push(beats);
-      inputBeats += beats.size();
-      outputBeats += f.left.total();
-    }
     std::vector<FrameOutput> out(frames.size());
-    std::vector<size_t> outFirst;
-    for (size_t k = 0, n = 0; k < frames.size(); n += frames[k].left.total(), ++k) outFirst.push_back(n);
-    size_t frame = 0, done = 0, doneFrames = 0;
-    present(frames[0].params, frames[0].left.size());
-    const size_t sinkStart = sink_.beats().size();
-    uint64_t guard = 0;
-    while (sink_.beats().size() - sinkStart < outputBeats) {
-      source_.drive(top_.model());
-      sink_.drive(top_.model());
-      top_->eval();
-      const uint64_t before = source_.accepted();
-      source_.sample(top_.model());
-      if (sink_.sample(top_.model())) {
-        const size_t i = sink_.beats().size() - 1 - sinkStart;
-        while (done + 1 < frames.size() && i >= outFirst[done + 1]) ++done;
-        if (i == outFirst[done] + frames[done].left.total() - 1) out[done].lastOutCycle = top_.cycles();
-      }
-      if (source_.accepted() != before) {
-        const size_t i = source_.accepted() - 1;
-        for (size_t k = 0; k < frames.size(); ++k)
-          if (i == firstBeat[k]) out[k].firstInCycle = top_.cycles();
-      }
-      top_.tick();
-      if (top_->frame_done_o && doneFrames < frames.size()) out[doneFrames++].errors = top_->error_o;
-      while (frame + 1 < frames.size() && source_.accepted() > firstBeat[frame]) {
-        ++frame;
-        present(frames[frame].params, frames[frame].left.size());
-      }
-      if (progress && (top_.cycles() & 0xfffff) == 0) progress(sink_.beats().size() - sinkStart, outputBeats);
-      if (++guard > 100 * (inputBeats + 100000)) throw Error("core made no progress (hang)");
+    for (size_t begin = 0; begin < frames.size();) {
+      size_t end = begin;  // a segment ends after the first frame that resets the core
+      while (end < frames.size() && frames[end].resetAfterBeats < 0) ++end;
+      end = std::min(end + 1, frames.size());
+      runSegment(frames, begin, end, out, progress);
+      begin = end;
     }
-    if (!sink_.violation().empty()) throw Error("output stream protocol: " + sink_.violation());
-    for (size_t k = 0; k < frames.size(); ++k) {
-      const int w = frames[k].left.cols, h = frames[k].left.rows;
-      const std::string framing = checkFraming(sink_.beats(), sinkStart + outFirst[k], w, h);
-      if (!framing.empty()) throw Error("frame " + std::to_string(k) + ": " + framing);
-      out[k].map = decode(sinkStart + outFirst[k], w, h);
-    }
+    for (int i = 0; i < kDrainCycles; ++i) cycle();
+    const std::string violation = sink_.checker().finish();
+    if (!violation.empty()) throw Error("output stream protocol: " + violation);
     return out;
   }
 
   VerilatedTop<Model>& top() { return top_; }
+
+ private:
+  static std::vector<Beat> inputBeats(const FrameInput& f) {
+    return f.rawBeats.empty() ? frameBeats(f.left.data, f.right.data, f.left.cols, f.left.rows, f.left.step, f.right.step)
+                              : f.rawBeats;
+  }
+
+  // Frames [begin, end); the last one may reset the core.
+  void runSegment(const std::vector<FrameInput>& frames, size_t begin, size_t end, std::vector<FrameOutput>& out,
+                  const std::function<void(uint64_t, uint64_t)>& progress) {
+    const bool resets = frames[end - 1].resetAfterBeats >= 0;
+    const size_t owing = resets ? end - 1 : end;  // frames [begin, owing) produce output
+    std::vector<size_t> firstBeat, outFirst;        // per frame, counted from the segment start
+    size_t inputCount = 0, outputCount = 0;
+    for (size_t k = begin; k < end; ++k) {
+      std::vector<Beat> beats = inputBeats(frames[k]);
+      if (k + 1 == end && resets) {
+        if (size_t(frames[k].resetAfterBeats) > beats.size())
+          throw Error("frame " + std::to_string(k) + ": reset after beat " + std::to_string(frames[k].resetAfterBeats) +
+                      " of a " + std::to_string(beats.size()) + "-beat frame");
+        beats.resize(size_t(frames[k].resetAfterBeats));
+        out[k].aborted = true;
+      }
+      firstBeat.push_back(inputCount);
+      outFirst.push_back(outputCount);
+      source_.push(beats);
+      inputCount += beats.size();
+      if (k < owing) outputCount += frames[k].left.total();
+      sink_.checker().expectFrame(frames[k].left.cols, frames[k].left.rows);
+    }
+    const uint64_t acceptedStart = source_.accepted();
+    const size_t sinkStart = sink_.beats().size();
+    size_t presented = 0, doneFrames = 0;
+    present(frames[begin].params, frames[begin].left.size());
+    while (sink_.beats().size() - sinkStart < outputCount || source_.accepted() - acceptedStart < inputCount) {
+      const auto [in, outBeat] = cycle();
+      if (in) {
+        const size_t i = source_.accepted() - 1 - acceptedStart;
+        for (size_t k = 0; k < firstBeat.size(); ++k)
+          if (i == firstBeat[k] && !out[begin + k].firstInCycle) out[begin + k].firstInCycle = top_.cycles() - 1;
+      }
+      if (outBeat) {
+        const size_t i = sink_.beats().size() - 1 - sinkStart;
+        for (size_t k = 0; k + begin < owing; ++k)
+          if (i + 1 == outFirst[k] + frames[begin + k].left.total()) out[begin + k].lastOutCycle = top_.cycles() - 1;
+      }
+      if (top_->frame_done_o && begin + doneFrames < owing) out[begin + doneFrames++].errors = top_->error_o;
+      while (presented + 1 < firstBeat.size() && source_.accepted() - acceptedStart > firstBeat[presented]) {
+        ++presented;
+        present(frames[begin + presented].params, frames[begin + presented].left.size());
+      }
+      if (progress && (top_.cycles() & 0xfffff) == 0) progress(sink_.beats().size() - sinkStart, outputCount);
+    }
+    for (size_t k = begin; k < owing; ++k) out[k].map = decode(sinkStart + outFirst[k - begin], frames[k].left.cols, frames[k].left.rows);
+    if (resets) {
+      top_->s_tvalid_i = 0;
+      top_.reset();
+      source_.clear();
+      sink_.checker().reset();
+      sink_.beats().resize(sinkStart + outputCount);  // whatever the cut frame had emitted
+    }
+  }
+
+  // One clock cycle with both stream models; returns {input transfer, output transfer}
+  // and throws on a protocol violation or a core that stopped moving.
+  std::pair<bool, bool> cycle() {
+    source_.drive(top_.model());
+    sink_.drive(top_.model());
+    top_->eval();
+    const bool in = source_.sample(top_.model());
+    const bool out = sink_.sample(top_.model(), top_.cycles());
+    if (!sink_.violation().empty()) throw Error("output stream protocol: " + sink_.violation());
+    top_.tick();
+    lastMove_ = in || out ? top_.cycles() : lastMove_;
+    if (top_.cycles() - lastMove_ > kHangCycles)
+      throw Error("core hangs: no beat in or out for " + std::to_string(kHangCycles) + " cycles (cycle " +
+                  std::to_string(top_.cycles()) + ", " + std::to_string(source_.accepted()) + " beats in, " +
+                  std::to_string(sink_.beats().size()) + " out)");
+    return {in, out};
+  }
 
  private:
   void present(const Params& p, cv::Size size) {
@@ -160,6 +218,7 @@ class CoreHarness {
   VerilatedTop<Model> top_;
   AxisSource<Model> source_;
   AxisSink<Model> sink_;
+  uint64_t lastMove_ = 0;  // cycle of the last transfer in either direction
 };
 
 }  // namespace sgm::tb
