@@ -24,6 +24,9 @@
 #ifndef SGM_MAX_WIDTH
 #define SGM_MAX_WIDTH 1280
 #endif
+#ifndef SGM_MAX_HEIGHT
+#define SGM_MAX_HEIGHT 1024  // sgm_top's default; make sim does not override it
+#endif
 
 using namespace sgm;
 
@@ -62,6 +65,7 @@ int main(int argc, char** argv) {
     if (params.p2 > 255) throw Error("P2'=" + std::to_string(params.p2) + " exceeds the core's 8-bit input");
     if (params.lrTolerance > 7) throw Error("LR tolerance " + std::to_string(params.lrTolerance) + " exceeds the core's 3-bit input");
     const std::string out = args.text("out", "build/sim");
+    checkOutputDirectory(out);  // before the simulation; created only to write the results
     const double stall = args.real("stall", 0.0, 0.0, 0.95);
     const uint32_t seed = uint32_t(args.integer("seed", 1, 0, 0xffffffffL));
     const int frames = int(args.integer("frames", 1, 1, 100));
@@ -79,8 +83,12 @@ int main(int argc, char** argv) {
     }
     checkInput(scene.left, scene.right, params);
     const int w = scene.left.cols, h = scene.left.rows;
-    if (w > SGM_MAX_WIDTH) throw Error("width " + std::to_string(w) + " exceeds MAX_WIDTH=" + std::to_string(SGM_MAX_WIDTH));
+    if (w > SGM_MAX_WIDTH)
+      throw Error("width " + std::to_string(w) + " exceeds this simulator's MAX_WIDTH=" + std::to_string(SGM_MAX_WIDTH) +
+                  " (make sim MAX_WIDTH=" + std::to_string(w) + " builds another)");
     if (w < std::max(SGM_D, 16)) throw Error("width " + std::to_string(w) + " is below the core's minimum " + std::to_string(std::max(SGM_D, 16)));
+    if (h > SGM_MAX_HEIGHT)
+      throw Error("height " + std::to_string(h) + " exceeds MAX_HEIGHT=" + std::to_string(SGM_MAX_HEIGHT));
 
     const DisparityMap golden = runPipeline(scene.left, scene.right, params);
 
@@ -107,7 +115,6 @@ int main(int argc, char** argv) {
     const uint64_t allCycles = outputs.back().lastOutCycle - outputs[0].firstInCycle + 1;
     const long pixels = long(w) * h;
 
-    std::filesystem::create_directories(out);
     const float maxD = float(params.disparities - 1);
     std::vector<std::pair<std::string, cv::Mat>> pictures = {
         {out + "/disparity16.png", encodeDisparity16(rtl)},
@@ -125,7 +132,6 @@ int main(int argc, char** argv) {
                                         : 0;
       pictures.push_back({out + "/mismatch.png", where});
     }
-    writePngs(pictures);
 
     eval::JsonWriter json;
     json.beginObject();
@@ -159,7 +165,14 @@ int main(int argc, char** argv) {
       json.key("err_nonocc_valid").real(f.errNonoccValid);
     }
     json.endObject();
-    eval::writeTextFile(out + "/report.json", json.str());
+    // Pictures and report together, or nothing.
+    std::vector<OutputFile> files;
+    for (const auto& [path, image] : pictures) files.push_back({path, encodePng(image, path)});
+    files.push_back({out + "/report.json", json.str()});
+    std::error_code ec;
+    std::filesystem::create_directories(out, ec);
+    if (ec || !std::filesystem::is_directory(out)) throw Error("cannot create output directory '" + out + "'");
+    writeFiles(files);
 
     std::printf("sgm-sim: %s %dx%d D=%d mode=%s, %d frame(s), stall %.2f\n", scene.name.c_str(), w, h,
                 params.disparities, costModeName(params.mode), frames, stall);
@@ -177,7 +190,6 @@ int main(int argc, char** argv) {
     std::printf("sgm-sim: wrote %s in %s/\n", (written + "report.json").c_str(), out.c_str());
     return mismatches == 0 ? 0 : 1;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "sgm-sim: error: %s\n", e.what());
-    return 2;
+    return reportError("sgm-sim", e);
   }
 }

@@ -6,22 +6,25 @@
 #include "sgm/image_io.hpp"
 #include "sgm/pipeline.hpp"
 
+#include "fuzz/cli_fixture.hpp"
+
 #include <gtest/gtest.h>
 
 #include <opencv2/imgcodecs.hpp>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <random>
 #include <set>
-#include <sstream>
-#include <stdlib.h>
-#include <sys/wait.h>
 
 namespace fs = std::filesystem;
 
 namespace {
+
+using sgm::test::ChildResult;
+using sgm::test::dirEntries;
+using sgm::test::shiftedPair;
+using sgm::test::texture;
+using sgm::test::textLines;
 
 // ------------------------------------------------------------------ CliArgs in-process
 
@@ -123,135 +126,30 @@ TEST(CliArgs, RealOption) {
   expectError([&] { a.real("delta", 1.0, 2.0, 10.0); }, "out of range");
 }
 
+TEST(CliArgs, OneLineEscapesControlCharacters) {
+  EXPECT_EQ(sgm::oneLine("plain text"), "plain text");
+  EXPECT_EQ(sgm::oneLine("a\nb\tc\rd\x01" "e\x7f"), "a\\nb\\tc\\rd\\x01e\\x7f");
+  const std::string cut = sgm::oneLine(std::string(100000, 'x'));
+  EXPECT_LT(cut.size(), 5000u);
+  EXPECT_EQ(cut.substr(cut.size() - 3), "...");
+}
+
 // ------------------------------------------------------------------ child processes
 
-struct RunResult {
-  int rc = -1;
-  std::string out, err;
-};
-
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-std::vector<std::string> lines(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  std::string line;
-  while (std::getline(in, line)) out.push_back(line);
-  return out;
-}
-
-std::set<std::string> entries(const std::string& dir) {
-  std::set<std::string> names;
-  for (const auto& e : fs::directory_iterator(dir)) names.insert(e.path().filename().string());
-  return names;
-}
-
-cv::Mat texture(int w, int h, unsigned seed) {
-  std::mt19937 rng(seed);
-  cv::Mat img(h, w, CV_8UC1);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) img.at<uint8_t>(y, x) = uint8_t(rng() % 256);
-  return img;
-}
-
-// right(x) = left(x + shift): a pair with constant disparity `shift`.
-std::pair<cv::Mat, cv::Mat> shiftedPair(int w, int h, int shift, unsigned seed) {
-  const cv::Mat wide = texture(w + shift, h, seed);
-  return {wide(cv::Rect(0, 0, w, h)).clone(), wide(cv::Rect(shift, 0, w, h)).clone()};
-}
-
-// Fixture: $SGM_BIN, an input directory and an (empty) output / working directory.
-class CliTest : public testing::Test {
+// Fixture: $SGM_BIN with sgm-golden and sgm-eval, a 40x30 pair in the input directory.
+class CliTest : public sgm::test::ToolTest {
  protected:
   void SetUp() override {
-    const char* bin = std::getenv("SGM_BIN");
-    if (!bin || !*bin || !fs::exists(std::string(bin) + "/sgm-golden"))
-      GTEST_SKIP() << "SGM_BIN not set or without sgm-golden (got '" << (bin ? bin : "") << "'); run via make unit-test";
-    bin_ = bin;
-    std::string base = testing::TempDir();
-    if (base.empty() || base.back() != '/') base += '/';
-    std::string tmpl = base + "sgm_cli_XXXXXX";
-    ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
-    root_ = tmpl;
-    in_ = root_ + "/in";
-    out_ = root_ + "/out";
-    fs::create_directory(in_);
-    fs::create_directory(out_);
+    requireBinary("sgm-golden", "run via make unit-test");
+    if (IsSkipped()) return;
+    requireBinary("sgm-eval", "run via make unit-test");
+    if (IsSkipped()) return;
+    ToolTest::SetUp();
     auto [l, r] = shiftedPair(40, 30, 3, 42);
     writeImage("left.png", l);
     writeImage("right.png", r);
   }
-  void TearDown() override {
-    if (!root_.empty()) {
-      std::error_code ec;
-      fs::remove_all(root_, ec);
-    }
-  }
-
-  void writeImage(const std::string& name, const cv::Mat& img) {
-    ASSERT_TRUE(cv::imwrite(in_ + "/" + name, img));
-    inputs_.insert(name);
-  }
-  void writeRaw(const std::string& name, const std::string& bytes) {
-    std::ofstream(in_ + "/" + name, std::ios::binary) << bytes;
-    inputs_.insert(name);
-  }
-  std::string in(const std::string& name) const { return in_ + "/" + name; }
-
-  // Runs BIN/tool with args in the output directory.
-  RunResult run(const std::string& tool, const std::vector<std::string>& args) const {
-    std::string cmd = "cd " + quote(out_) + " && " + quote(bin_ + "/" + tool);
-    for (const auto& a : args) cmd += " " + quote(a);
-    const std::string outFile = root_ + "/stdout.txt", errFile = root_ + "/stderr.txt";
-    cmd += " >" + quote(outFile) + " 2>" + quote(errFile);
-    RunResult r;
-    const int status = std::system(cmd.c_str());
-    r.rc = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = slurp(outFile);
-    r.err = slurp(errFile);
-    fs::remove(outFile);
-    fs::remove(errFile);
-    return r;
-  }
-
-  // The common contract of a user error. Returns the stderr lines.
-  std::vector<std::string> expectUserError(const RunResult& r, const std::string& tool, const std::string& needle) {
-    EXPECT_NE(r.rc, 0);
-    EXPECT_NE(r.rc, -1) << "killed by a signal";
-    const std::vector<std::string> errLines = lines(r.err);
-    const std::string prefix = tool + ": error: ";
-    EXPECT_FALSE(errLines.empty()) << "nothing on stderr";
-    if (!errLines.empty()) {
-      const std::string& last = errLines.back();
-      EXPECT_EQ(last.rfind(prefix, 0), 0u) << "stderr: " << r.err;
-      EXPECT_NE(last.find(needle), std::string::npos) << "'" << needle << "' not in: " << last;
-    }
-    EXPECT_TRUE(r.out.empty()) << "stdout: " << r.out;
-    EXPECT_TRUE(entries(out_).empty()) << "output files were created";
-    EXPECT_EQ(entries(in_), inputs_) << "input directory changed";
-    return errLines;
-  }
-
-  // Exactly one stderr line, the error line.
-  void expectOneLineError(const RunResult& r, const std::string& tool, const std::string& needle) {
-    const auto errLines = expectUserError(r, tool, needle);
-    EXPECT_EQ(errLines.size(), 1u) << "stderr:\n" << r.err;
-    EXPECT_TRUE(!r.err.empty() && r.err.back() == '\n') << "stderr line not terminated";
-  }
-
-  std::string bin_, root_, in_, out_;
-  std::set<std::string> inputs_;
+  std::set<std::string> entries(const std::string& dir) const { return dirEntries(dir); }
 };
 
 using SgmGoldenCli = CliTest;
@@ -271,42 +169,73 @@ TEST_F(SgmGoldenCli, NonImageFile) {
   writeRaw("text.png", "this is not an image\n");
   expectOneLineError(run("sgm-golden", {in("left.png"), in("text.png"), "--out", out_ + "/res"}), "sgm-golden",
                      "text.png");
-  // A directory given as an image.
-  expectOneLineError(run("sgm-golden", {in_, in("right.png")}), "sgm-golden", "cannot");
+}
+
+TEST_F(SgmGoldenCli, DirectoryOrSpecialFileGivenAsImage) {
+  expectOneLineError(run("sgm-golden", {in_, in("right.png")}), "sgm-golden", "is a directory");
+  expectOneLineError(run("sgm-golden", {in("left.png"), "/dev/null"}), "sgm-golden", "not a regular file");
 }
 
 // Truncated image files: the decoder libraries' own diagnostics must not reach stderr.
 TEST_F(SgmGoldenCli, TruncatedPng) {
-  std::vector<uchar> buf;
-  ASSERT_TRUE(cv::imencode(".png", texture(40, 30, 1), buf));
-  writeRaw("cut.png", std::string(buf.begin(), buf.begin() + 200));
-  const RunResult r = run("sgm-golden", {in("cut.png"), in("right.png")});
-  const auto errLines = expectUserError(r, "sgm-golden", "cut.png");
-  EXPECT_EQ(errLines.size(), 1u) << r.err;
+  const std::string png = sgm::test::encodeImage(".png", texture(40, 30, 1));
+  writeRaw("cut.png", png.substr(0, 200));
+  expectOneLineError(run("sgm-golden", {in("cut.png"), in("right.png")}), "sgm-golden", "cut.png");
 }
 
 TEST_F(SgmGoldenCli, TruncatedJpeg) {
-  std::vector<uchar> buf;
-  cv::Mat colour;
-  cv::merge(std::vector<cv::Mat>{texture(40, 30, 1), texture(40, 30, 2), texture(40, 30, 3)}, colour);
-  ASSERT_TRUE(cv::imencode(".jpg", colour, buf));
-  writeRaw("cut.jpg", std::string(buf.begin(), buf.begin() + 300));
-  const RunResult r = run("sgm-golden", {in("cut.jpg"), in("right.png")});
-  const auto errLines = expectUserError(r, "sgm-golden", "cut.jpg");
-  EXPECT_EQ(errLines.size(), 1u) << r.err;
+  const std::string jpeg = sgm::test::encodeImage(".jpg", texture(40, 30, 1, CV_8UC3));
+  writeRaw("cut.jpg", jpeg.substr(0, 300));  // inside the headers
+  expectOneLineError(run("sgm-golden", {in("cut.jpg"), in("right.png")}), "sgm-golden", "cut.jpg");
+  // Inside the scan data: libjpeg would decode it with made-up pixels and a warning.
+  writeRaw("cut2.jpg", jpeg.substr(0, jpeg.size() * 3 / 4));
+  expectOneLineError(run("sgm-golden", {in("left.png"), in("cut2.jpg")}), "sgm-golden", "'" + in("cut2.jpg") + "': truncated");
 }
 
-TEST_F(SgmGoldenCli, UnsupportedImageFormats) {
-  writeImage("d16.png", cv::Mat(30, 40, CV_16UC1, cv::Scalar(1000)));
-  writeImage("rgba.png", cv::Mat(30, 40, CV_8UC4, cv::Scalar(1, 2, 3, 4)));
-  expectOneLineError(run("sgm-golden", {in("d16.png"), in("right.png")}), "sgm-golden", "16-bit");
-  expectOneLineError(run("sgm-golden", {in("left.png"), in("rgba.png")}), "sgm-golden", "4 channels");
+TEST_F(SgmGoldenCli, HeaderAnnouncingAHugeImage) {
+  // Rejected from the header, before a decoder allocates 30000 x 30000 pixels.
+  const cv::Mat img = texture(40, 30, 5, CV_8UC3);
+  writeRaw("huge.png", sgm::test::withAnnouncedSize(sgm::test::encodeImage(".png", img), 30000, 30000));
+  writeRaw("huge.jpg", sgm::test::withAnnouncedSize(sgm::test::encodeImage(".jpg", img), 30000, 30000));
+  expectOneLineError(run("sgm-golden", {in("huge.png"), in("right.png")}), "sgm-golden", "30000x30000: too large");
+  expectOneLineError(run("sgm-golden", {in("left.png"), in("huge.jpg")}), "sgm-golden", "30000x30000: too large");
+}
+
+TEST_F(SgmGoldenCli, SixteenBitImagesAreRejected) {
+  writeImage("d16.png", texture(40, 30, 6, CV_16UC1));
+  writeImage("c16.png", texture(40, 30, 7, CV_16UC3));
+  expectOneLineError(run("sgm-golden", {in("d16.png"), in("right.png")}), "sgm-golden",
+                     "'" + in("d16.png") + "': 16-bit samples (8-bit gray or colour required)");
+  expectOneLineError(run("sgm-golden", {in("left.png"), in("c16.png")}), "sgm-golden", "c16.png': 16-bit");
+}
+
+TEST_F(SgmGoldenCli, FourChannelImagesAreRejected) {
+  // docs/algorithm.md, section 1: 8-bit gray or 3-channel colour only; an alpha channel is an error.
+  writeImage("rgba.png", texture(40, 30, 8, CV_8UC4));
+  expectOneLineError(run("sgm-golden", {in("left.png"), in("rgba.png")}), "sgm-golden", "rgba.png': 4 channels");
+}
+
+TEST_F(SgmGoldenCli, ColourPairIsConvertedToGray) {
+  // The pinned behaviour for 3-channel input: the documented integer gray conversion,
+  // i.e. the same result as the gray pair made by sgm::toGray.
+  auto [l, r] = shiftedPair(40, 30, 2, 11, CV_8UC3);
+  writeImage("cl.png", l);
+  writeImage("cr.png", r);
+  writeImage("gl.png", sgm::toGray(l));
+  writeImage("gr.png", sgm::toGray(r));
+  ASSERT_EQ(run("sgm-golden", {in("cl.png"), in("cr.png"), "--d", "8", "--out", "colour"}).rc, 0);
+  ASSERT_EQ(run("sgm-golden", {in("gl.png"), in("gr.png"), "--d", "8", "--out", "gray"}).rc, 0);
+  const cv::Mat colour = cv::imread(out_ + "/colour_disp16.png", cv::IMREAD_UNCHANGED);
+  const cv::Mat gray = cv::imread(out_ + "/gray_disp16.png", cv::IMREAD_UNCHANGED);
+  ASSERT_FALSE(colour.empty());
+  ASSERT_EQ(colour.size(), gray.size());
+  EXPECT_EQ(cv::countNonZero(colour != gray), 0);
 }
 
 TEST_F(SgmGoldenCli, SizeMismatch) {
   writeImage("wide.png", texture(41, 30, 3));
   expectOneLineError(run("sgm-golden", {in("left.png"), in("wide.png"), "--out", out_ + "/res"}), "sgm-golden",
-                     "size mismatch");
+                     "size mismatch: 40x30 vs 41x30");
 }
 
 TEST_F(SgmGoldenCli, ImageSmallerThanTheWindow) {
@@ -332,9 +261,16 @@ TEST_F(SgmGoldenCli, BadOptionValues) {
       {{"--p1", "50", "--p2", "10"}, "P2'"},
       {{"--d", "4", "--lr", "9"}, "LR tolerance"},
       {{"--d"}, "needs a value"},
+      {{"--d", "99999999999999999999"}, "--d expects an integer"},
+      {{"--p2", "1e9"}, "--p2 expects an integer"},
+      {{"--p2", "16001"}, "--p2=16001 out of range"},
+      {{"--lr", "1000"}, "--lr=1000 out of range"},
+      {{"--mode", "a\nb"}, "'a\\nb'"},  // a newline in a value stays on one line
+      {{"--out", ""}, "empty --out"},
+      {{"--out", "no/such/dir/res"}, "directory 'no/such/dir' does not exist"},
   };
   for (const auto& [opts, needle] : cases) {
-    SCOPED_TRACE(opts[0]);
+    SCOPED_TRACE(opts[0] + " " + (opts.size() > 1 ? opts[1] : ""));
     std::vector<std::string> args = {in("left.png"), in("right.png")};
     args.insert(args.end(), opts.begin(), opts.end());
     expectOneLineError(run("sgm-golden", args), "sgm-golden", needle);
@@ -356,7 +292,7 @@ TEST_F(SgmGoldenCli, UnwritableOutputLeavesNoFile) {
 }
 
 TEST_F(SgmGoldenCli, HelpExitsZero) {
-  const RunResult r = run("sgm-golden", {"--help"});
+  const ChildResult r = run("sgm-golden", {"--help"});
   EXPECT_EQ(r.rc, 0);
   EXPECT_NE(r.out.find("usage: sgm-golden"), std::string::npos);
   EXPECT_TRUE(r.err.empty());
@@ -365,11 +301,11 @@ TEST_F(SgmGoldenCli, HelpExitsZero) {
 
 TEST_F(SgmGoldenCli, SuccessWritesThreePngsMatchingTheLibrary) {
   // Every pipeline parameter that the CLI could default differently is given explicitly.
-  const RunResult r = run("sgm-golden", {in("left.png"), in("right.png"), "--out", out_ + "/res", "--d", "16", "--mode",
-                                         "rsad", "--p1", "11", "--p2", "150"});
+  const ChildResult r = run("sgm-golden", {in("left.png"), in("right.png"), "--out", out_ + "/res", "--d", "16",
+                                           "--mode", "rsad", "--p1", "11", "--p2", "150"});
   ASSERT_EQ(r.rc, 0) << r.err;
   EXPECT_TRUE(r.err.empty()) << r.err;
-  const auto outLines = lines(r.out);
+  const auto outLines = textLines(r.out);
   ASSERT_EQ(outLines.size(), 1u) << r.out;
   EXPECT_EQ(outLines[0].rfind("sgm-golden: 40x30 D=16 mode=rsad", 0), 0u) << outLines[0];
   EXPECT_EQ(entries(out_), (std::set<std::string>{"res_disp16.png", "res_disp8.png", "res_color.png"}));
@@ -401,19 +337,15 @@ TEST_F(SgmGoldenCli, FailedLaterOutputLeavesNoEarlierOutput) {
   // res_disp8.png is a directory: the second of the three writes fails. A run
   // that reports an error should not leave a fresh res_disp16.png behind that a
   // caller could take for a result.
-  fs::create_directory(out_ + "/res_disp8.png");
-  const RunResult r = run("sgm-golden", {in("left.png"), in("right.png"), "--out", out_ + "/res", "--d", "8"});
-  EXPECT_NE(r.rc, 0);
-  const auto errLines = lines(r.err);
-  ASSERT_EQ(errLines.size(), 1u) << r.err;
-  EXPECT_EQ(errLines[0].rfind("sgm-golden: error: ", 0), 0u) << r.err;
-  EXPECT_NE(errLines[0].find("res_disp8.png"), std::string::npos) << r.err;
+  std::filesystem::create_directory(out_ + "/res_disp8.png");
+  const ChildResult r = run("sgm-golden", {in("left.png"), in("right.png"), "--out", out_ + "/res", "--d", "8"});
+  EXPECT_EQ(sgm::test::userErrorProblem(r, "sgm-golden", "res_disp8.png"), "");
   // All three outputs or none: only the blocking directory remains.
   EXPECT_EQ(entries(out_), (std::set<std::string>{"res_disp8.png"}));
 }
 
 TEST_F(SgmGoldenCli, DefaultPrefixInWorkingDirectory) {
-  const RunResult r = run("sgm-golden", {in("left.png"), in("right.png"), "--d", "8"});
+  const ChildResult r = run("sgm-golden", {in("left.png"), in("right.png"), "--d", "8"});
   ASSERT_EQ(r.rc, 0) << r.err;
   EXPECT_EQ(entries(out_),
             (std::set<std::string>{"disparity_disp16.png", "disparity_disp8.png", "disparity_color.png"}));
@@ -421,7 +353,34 @@ TEST_F(SgmGoldenCli, DefaultPrefixInWorkingDirectory) {
 
 // ------------------------------------------------------------------ sgm-eval
 
-using SgmEvalCli = CliTest;
+class SgmEvalCli : public CliTest {
+ protected:
+  // A scene directory data/NAME with the given left, right and ground truth
+  // (gt_scale 4 in meta.txt); returns the data directory.
+  std::string makeScene(const std::string& name, const cv::Mat& left, const cv::Mat& right, const cv::Mat& gt) {
+    const std::string data = root_ + "/data", scene = data + "/" + name;
+    std::filesystem::create_directories(scene);
+    EXPECT_TRUE(cv::imwrite(scene + "/left.png", left));
+    EXPECT_TRUE(cv::imwrite(scene + "/right.png", right));
+    EXPECT_TRUE(cv::imwrite(scene + "/gt.png", gt));
+    std::ofstream(scene + "/meta.txt") << "scene: " << name << "\ngt_scale: 4\n";
+    return data;
+  }
+  std::string goodScene(const std::string& name = "synthetic") {
+    auto [l, r] = shiftedPair(60, 40, 3, 9);
+    return makeScene(name, l, r, cv::Mat(40, 60, CV_8UC1, cv::Scalar(12)));  // 3 px at scale 4
+  }
+  // Every subcommand on data: the same one-line error naming needle, nothing written.
+  void expectErrorInEveryCommand(const std::string& data, const std::string& needle) {
+    for (const std::string command : {"run", "table", "bench"}) {
+      SCOPED_TRACE(command);
+      std::vector<std::string> args = {command, "--data", data, "--out", out_ + "/report"};
+      if (command == "run") args.resize(3);
+      if (command == "bench") args.insert(args.end(), {"--scene", "synthetic"});
+      expectOneLineError(run("sgm-eval", args), "sgm-eval", needle);
+    }
+  }
+};
 
 TEST_F(SgmEvalCli, MissingDataDirectory) {
   const std::string missing = root_ + "/no-such-data";
@@ -429,36 +388,79 @@ TEST_F(SgmEvalCli, MissingDataDirectory) {
   expectOneLineError(run("sgm-eval", {"run"}), "sgm-eval", "--data");
   expectOneLineError(run("sgm-eval", {"table", "--data", missing, "--out", out_ + "/report"}), "sgm-eval", missing);
   expectOneLineError(run("sgm-eval", {"bench", "--data", missing, "--out", out_ + "/report"}), "sgm-eval", missing);
-  // An existing directory without scenes.
+  // An existing directory without scenes, a file instead of a directory.
   expectOneLineError(run("sgm-eval", {"run", "--data", in_}), "sgm-eval", "no scenes");
+  expectOneLineError(run("sgm-eval", {"table", "--data", in("left.png")}), "sgm-eval", "is not a directory");
 }
 
 TEST_F(SgmEvalCli, BadArguments) {
+  expectOneLineError(run("sgm-eval", {}), "sgm-eval", "missing command");
   expectOneLineError(run("sgm-eval", {"frobnicate"}), "sgm-eval", "unknown command");
   expectOneLineError(run("sgm-eval", {"run", "--data", in_, "--d", "1"}), "sgm-eval", "--d");
   expectOneLineError(run("sgm-eval", {"run", "--data", in_, "--bogus", "1"}), "sgm-eval", "unknown option --bogus");
   expectOneLineError(run("sgm-eval", {"run", "--data", in_, "--delta", "x"}), "sgm-eval", "--delta");
+  expectOneLineError(run("sgm-eval", {"run", "--data", in_, "--delta", "nan"}), "sgm-eval", "--delta");
+  expectOneLineError(run("sgm-eval", {"run", "--data", in_, "extra"}), "sgm-eval", "unexpected argument 'extra'");
+  expectOneLineError(run("sgm-eval", {"table", "--data", in_, "--d", "100000"}), "sgm-eval", "--d=100000");
+  expectOneLineError(run("sgm-eval", {"table", "--data", in_, "--mode", "rt"}), "sgm-eval", "unknown option --mode");
+  expectOneLineError(run("sgm-eval", {"bench", "--data", in_, "--repeats", "0"}), "sgm-eval", "--repeats=0");
+  expectOneLineError(run("sgm-eval", {"bench", "--data", in_, "--repeats", "-99999999999999999999"}), "sgm-eval",
+                     "--repeats");
 }
 
 TEST_F(SgmEvalCli, SceneWithoutScaleIsAnError) {
-  const std::string data = root_ + "/data", scene = data + "/synthetic";
-  fs::create_directories(scene);
-  auto [l, r] = shiftedPair(40, 30, 3, 9);
-  ASSERT_TRUE(cv::imwrite(scene + "/left.png", l));
-  ASSERT_TRUE(cv::imwrite(scene + "/right.png", r));
-  ASSERT_TRUE(cv::imwrite(scene + "/gt.png", cv::Mat(30, 40, CV_8UC1, cv::Scalar(12))));
+  const std::string data = goodScene();
+  std::filesystem::remove(data + "/synthetic/meta.txt");
   expectOneLineError(run("sgm-eval", {"run", "--data", data}), "sgm-eval", "gt_scale");
 }
 
-TEST_F(SgmEvalCli, RunsOnASyntheticScene) {
-  const std::string data = root_ + "/data", scene = data + "/synthetic";
-  fs::create_directories(scene);
+TEST_F(SgmEvalCli, BadSceneImagesInEveryCommand) {
   auto [l, r] = shiftedPair(60, 40, 3, 9);
+  const cv::Mat gt(40, 60, CV_8UC1, cv::Scalar(12));
+  const std::string data = makeScene("synthetic", l, r, gt);
+  const std::string scene = data + "/synthetic";
+  sgm::test::writeBytes(scene + "/left.png", sgm::test::encodeImage(".png", l).substr(0, 100));
+  expectErrorInEveryCommand(data, scene + "/left.png");
+  ASSERT_TRUE(cv::imwrite(scene + "/left.png", texture(60, 40, 1, CV_16UC1)));
+  expectErrorInEveryCommand(data, "left.png': 16-bit samples");
+  ASSERT_TRUE(cv::imwrite(scene + "/left.png", texture(60, 40, 1, CV_8UC4)));
+  expectErrorInEveryCommand(data, "left.png': 4 channels");
   ASSERT_TRUE(cv::imwrite(scene + "/left.png", l));
+  ASSERT_TRUE(cv::imwrite(scene + "/right.png", texture(61, 40, 1)));
+  expectErrorInEveryCommand(data, "size mismatch: 60x40 vs 61x40");
   ASSERT_TRUE(cv::imwrite(scene + "/right.png", r));
-  ASSERT_TRUE(cv::imwrite(scene + "/gt.png", cv::Mat(40, 60, CV_8UC1, cv::Scalar(12))));  // 3 px at scale 4
-  std::ofstream(scene + "/meta.txt") << "scene: synthetic\ngt_scale: 4\n";
-  const RunResult res = run("sgm-eval", {"run", "--data", data, "--d", "16"});
+  ASSERT_TRUE(cv::imwrite(scene + "/gt.png", cv::Mat(41, 60, CV_8UC1, cv::Scalar(12))));
+  expectErrorInEveryCommand(data, "ground truth size");
+  ASSERT_TRUE(cv::imwrite(scene + "/gt.png", cv::Mat(40, 60, CV_8UC3, cv::Scalar::all(12))));
+  expectErrorInEveryCommand(data, "gt.png");
+  sgm::test::writeBytes(scene + "/gt.png", "");
+  expectErrorInEveryCommand(data, "gt.png': file is empty");
+}
+
+TEST_F(SgmEvalCli, SceneSmallerThanTheWindow) {
+  const std::string data = makeScene("synthetic", texture(8, 8, 1), texture(8, 8, 2), cv::Mat(8, 8, CV_8UC1, cv::Scalar(4)));
+  expectOneLineError(run("sgm-eval", {"run", "--data", data}), "sgm-eval", "smaller than the 9x9 window");
+}
+
+TEST_F(SgmEvalCli, UnusableOutputDirectoryFailsBeforeTheWork) {
+  const std::string data = goodScene();
+  sgm::test::writeBytes(out_ + "/file", "x");
+  for (const std::string command : {"table", "bench"}) {
+    const ChildResult r = run("sgm-eval", {command, "--data", data, "--out", out_ + "/file/sub"});
+    EXPECT_EQ(sgm::test::userErrorProblem(r, "sgm-eval", "is not a directory"), "") << command;
+    EXPECT_EQ(entries(out_), (std::set<std::string>{"file"}));
+  }
+}
+
+TEST_F(SgmEvalCli, BenchSceneNotFound) {
+  const std::string data = goodScene();
+  expectOneLineError(run("sgm-eval", {"bench", "--data", data, "--scene", "nope", "--out", out_ + "/r"}), "sgm-eval",
+                     "scene 'nope'");
+}
+
+TEST_F(SgmEvalCli, RunsOnASyntheticScene) {
+  const std::string data = goodScene();
+  const ChildResult res = run("sgm-eval", {"run", "--data", data, "--d", "16"});
   ASSERT_EQ(res.rc, 0) << res.err;
   EXPECT_TRUE(res.err.empty()) << res.err;
   EXPECT_NE(res.out.find("synthetic"), std::string::npos) << res.out;

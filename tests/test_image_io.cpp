@@ -4,6 +4,7 @@
 #include "sgm/params.hpp"
 
 #include "expect_error.hpp"
+#include "fuzz/bad_images.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,6 +14,7 @@
 #include <fstream>
 #include <set>
 #include <stdlib.h>
+#include <sys/stat.h>
 
 namespace fs = std::filesystem;
 
@@ -152,6 +154,73 @@ TEST(ReadGray, FourChannelImage) {
   expectError([&] { sgm::readGray(dir / "rgba.png"); }, {"rgba.png", "4 channels"});
 }
 
+TEST(ReadGray, SixteenBitMessageSaysEightBitIsRequired) {
+  TempDir dir;
+  ASSERT_TRUE(cv::imwrite(dir / "d16.png", cv::Mat(10, 10, CV_16UC1, cv::Scalar(1000))));
+  expectError([&] { sgm::readGray(dir / "d16.png"); }, {"'" + (dir / "d16.png") + "': 16-bit samples", "8-bit"});
+  ASSERT_TRUE(cv::imwrite(dir / "f.tiff", cv::Mat(10, 10, CV_32FC1, cv::Scalar(0.5))));
+  expectError([&] { sgm::readGray(dir / "f.tiff"); }, {"f.tiff", "32-bit float", "8-bit"});
+}
+
+TEST(ReadImage, KeepsGrayAndColourAsDecoded) {
+  TempDir dir;
+  const cv::Mat colour = sgm::test::texture(7, 5, 1, CV_8UC3), gray = sgm::test::texture(7, 5, 2);
+  ASSERT_TRUE(cv::imwrite(dir / "c.png", colour));
+  ASSERT_TRUE(cv::imwrite(dir / "g.pgm", gray));
+  const cv::Mat c = sgm::readImage(dir / "c.png"), g = sgm::readImage(dir / "g.pgm");
+  ASSERT_EQ(c.type(), CV_8UC3);
+  ASSERT_EQ(g.type(), CV_8UC1);
+  EXPECT_EQ(cv::norm(c, colour, cv::NORM_INF), 0);
+  EXPECT_EQ(cv::norm(g, gray, cv::NORM_INF), 0);
+  EXPECT_EQ(cv::norm(sgm::readGray(dir / "c.png"), sgm::toGray(colour), cv::NORM_INF), 0);
+}
+
+TEST(ReadImage, FifoAndDeviceAreNotRegularFiles) {
+  // Opening a FIFO for reading would block: rejected before any open.
+  TempDir dir;
+  ASSERT_EQ(::mkfifo((dir / "pipe.png").c_str(), 0600), 0);
+  expectError([&] { sgm::readImage(dir / "pipe.png"); }, {"pipe.png", "not a regular file"});
+  expectError([] { sgm::readImage("/dev/zero"); }, {"/dev/zero", "not a regular file"});
+}
+
+TEST(ReadImage, HeaderAnnouncingTooLargeAnImage) {
+  // Checked from the header, before a decoder allocates the pixels.
+  TempDir dir;
+  const cv::Mat img = sgm::test::texture(40, 30, 3, CV_8UC3);
+  sgm::test::writeBytes(dir / "a.png", sgm::test::withAnnouncedSize(sgm::test::encodeImage(".png", img), 20000, 10));
+  sgm::test::writeBytes(dir / "b.jpg", sgm::test::withAnnouncedSize(sgm::test::encodeImage(".jpg", img), 5000, 5000));
+  sgm::test::writeBytes(dir / "c.pgm", "P5\n# comment\n100000 3\n255\nabc");
+  std::string bmp = sgm::test::encodeImage(".bmp", img);
+  bmp[22] = char(0x30), bmp[23] = char(0x75);  // height 30000 (little endian)
+  sgm::test::writeBytes(dir / "d.bmp", bmp);
+  expectError([&] { sgm::readImage(dir / "a.png"); }, {"a.png", "20000x10: too large"});
+  expectError([&] { sgm::readImage(dir / "b.jpg"); }, {"b.jpg", "5000x5000: too large"});
+  expectError([&] { sgm::readImage(dir / "c.pgm"); }, {"c.pgm", "100000x3: too large"});
+  expectError([&] { sgm::readImage(dir / "d.bmp"); }, {"d.bmp", "40x30000: too large"});
+  expectError([&] { sgm::readSingleChannel(dir / "a.png"); }, {"a.png", "too large"});
+  // At the limits themselves the header check passes (the decoder then fails on the short data).
+  sgm::test::writeBytes(dir / "e.png", sgm::test::withAnnouncedSize(sgm::test::encodeImage(".png", img), 4096, 4096));
+  expectError([&] { sgm::readImage(dir / "e.png"); }, {"e.png", "cannot decode"});
+}
+
+TEST(ReadImage, JpegCutInsideTheScanIsTruncated) {
+  // libjpeg decodes it with a warning and made-up pixels; the I/O layer refuses it.
+  TempDir dir;
+  const std::string jpeg = sgm::test::encodeImage(".jpg", sgm::test::texture(64, 48, 4, CV_8UC3));
+  sgm::test::writeBytes(dir / "whole.jpg", jpeg);
+  sgm::test::writeBytes(dir / "cut.jpg", jpeg.substr(0, jpeg.size() * 2 / 3));
+  EXPECT_EQ(sgm::readImage(dir / "whole.jpg").size(), cv::Size(64, 48));
+  expectError([&] { sgm::readImage(dir / "cut.jpg"); }, {"'" + (dir / "cut.jpg") + "': truncated image data"});
+}
+
+TEST(ReadImage, OnlyOneOrThreeChannelsOfEightBits) {
+  TempDir dir;
+  ASSERT_TRUE(cv::imwrite(dir / "rgba.png", sgm::test::texture(6, 6, 5, CV_8UC4)));
+  ASSERT_TRUE(cv::imwrite(dir / "c16.png", sgm::test::texture(6, 6, 5, CV_16UC3)));
+  expectError([&] { sgm::readImage(dir / "rgba.png"); }, {"rgba.png", "4 channels", "3-channel colour required"});
+  expectError([&] { sgm::readImage(dir / "c16.png"); }, {"c16.png", "16-bit"});
+}
+
 TEST(ReadSingleChannel, AcceptsEightAndSixteenBitRejectsColour) {
   TempDir dir;
   const cv::Mat m16(3, 4, CV_16UC1, cv::Scalar(1234));
@@ -242,6 +311,35 @@ TEST(WritePng, NonExistentDirectoryThrowsAndLeavesNothing) {
   const std::string p = dir / "missing/out.png";
   expectError([&] { sgm::writePng(p, cv::Mat(4, 4, CV_8UC1, cv::Scalar(1))); }, {p});
   EXPECT_TRUE(dir.entries().empty());
+}
+
+TEST(WriteFiles, AllOrNothingWithTextAndImages) {
+  TempDir dir;
+  fs::create_directory(dir / "blocked.json");
+  const std::string png = sgm::encodePng(cv::Mat(3, 3, CV_8UC1, cv::Scalar(7)), dir / "a.png");
+  expectError([&] { sgm::writeFiles({{dir / "a.png", png}, {dir / "b.txt", "text"}, {dir / "blocked.json", "{}"}}); },
+              {"blocked.json"});
+  EXPECT_EQ(dir.entries(), (std::set<std::string>{"blocked.json"}));
+  sgm::writeFiles({{dir / "a.png", png}, {dir / "b.txt", "text"}});
+  EXPECT_EQ(dir.entries(), (std::set<std::string>{"a.png", "b.txt", "blocked.json"}));
+  EXPECT_EQ(cv::imread(dir / "a.png", cv::IMREAD_UNCHANGED).at<uint8_t>(2, 2), 7);
+  expectError([&] { sgm::encodePng(cv::Mat(), dir / "empty.png"); }, {"empty.png"});
+}
+
+TEST(CheckOutputDirectory, ExistingOrCreatableOnly) {
+  TempDir dir;
+  sgm::checkOutputDirectory(dir.path);
+  sgm::checkOutputDirectory(dir / "new/deeper");
+  EXPECT_TRUE(dir.entries().empty());  // creates nothing
+  std::ofstream(dir / "file") << "x";
+  expectError([&] { sgm::checkOutputDirectory(dir / "file"); }, {"file", "is not a directory"});
+  expectError([&] { sgm::checkOutputDirectory(dir / "file/sub"); }, {"file/sub", "is not a directory"});
+  expectError([] { sgm::checkOutputDirectory(""); }, {"empty output directory"});
+  if (::geteuid() != 0) {  // root writes anywhere
+    fs::create_directory(dir / "ro");
+    fs::permissions(dir / "ro", fs::perms::owner_read | fs::perms::owner_exec);
+    expectError([&] { sgm::checkOutputDirectory(dir / "ro/out"); }, {"not writable"});
+  }
 }
 
 TEST(WritePng, TargetIsADirectoryThrowsAndLeavesNoTemporary) {

@@ -124,6 +124,24 @@ std::optional<std::pair<long, long>> announcedSize(const std::string& b) {
   return std::nullopt;
 }
 
+// A JPEG whose data ends before its EOI marker. Entropy-coded data never holds
+// FF D9 (an FF there is followed by 00 or a restart marker), so the first FF D9
+// after the first scan header is the end of the image. OpenCV's in-memory
+// decoder pads such data silently with made-up pixels.
+bool jpegWithoutEnd(const std::string& b) {
+  if (b.size() < 4 || uint8_t(b[0]) != 0xff || uint8_t(b[1]) != 0xd8) return false;
+  for (size_t at = 2; at + 4 <= b.size();) {
+    if (uint8_t(b[at]) != 0xff) return false;  // broken marker structure: the decoder judges
+    const int marker = uint8_t(b[at + 1]);
+    if (marker == 0xff) { ++at; continue; }
+    if (marker == 0x01 || (marker >= 0xd0 && marker <= 0xd8)) { at += 2; continue; }
+    if (marker == 0xd9) return false;
+    if (marker == 0xda) return b.find("\xff\xd9", at + 2) == std::string::npos;
+    at += 2 + bigEndian(b, at + 2, 2);
+  }
+  return true;  // cut inside the headers
+}
+
 void checkImageSize(const std::string& path, long w, long h) {
   if (w > kMaxImageSide || h > kMaxImageSide || w * h > kMaxImagePixels)
     throw Error("image '" + path + "' is " + std::to_string(w) + "x" + std::to_string(h) +
@@ -180,8 +198,8 @@ cv::Mat decode(const std::string& path) {
     diagnostics = captured.text();
   }
   if (image.empty()) throw Error("cannot decode '" + path + "': not a readable image file");
-  // libjpeg decodes a cut or damaged stream with a warning and made-up pixels.
-  if (diagnostics.find("Premature end of JPEG") != std::string::npos)
+  // libjpeg decodes a cut or damaged stream with made-up pixels (and a warning for damage).
+  if (jpegWithoutEnd(bytes) || diagnostics.find("Premature end of JPEG") != std::string::npos)
     throw Error("cannot decode '" + path + "': truncated image data");
   if (diagnostics.find("Corrupt JPEG data") != std::string::npos)
     throw Error("cannot decode '" + path + "': corrupt image data");
