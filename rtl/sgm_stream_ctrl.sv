@@ -14,8 +14,8 @@
 // next frame. A frame whose configuration is out of range (width outside
 // MIN_WIDTH .. MAX_WIDTH, height outside 9 .. MAX_HEIGHT) is dropped whole.
 //
-// Configuration is sampled with the tuser beat's handshake and applied when
-// that frame starts; the P2 table is refilled then (lut_start_o) and the
+// Configuration is sampled with the tuser beat's handshake (kept per input
+// buffer entry) and applied when that frame starts; the P2 table is refilled then (lut_start_o) and the
 // frame's first slot follows when lut_ready_i is high. A two-entry input
 // buffer keeps s_tready_o and the pipeline enable en_o free of combinational
 // paths from the stream inputs.
@@ -106,29 +106,28 @@ module sgm_stream_ctrl #(
   logic        in_pop;
   assign s_tready_o = in_count_q != 2'd2;
 
-  // Configuration at the start-of-frame handshake, applied when that frame starts.
-  logic [XW-1:0] pend_width_q;
-  logic [YW-1:0] pend_height_q;
-  logic [PW-1:0] pend_p1_q, pend_p2_q;
-  logic [1:0]    pend_mode_q;
-  logic          pend_subpixel_q, pend_lr_en_q, pend_fill_q, pend_median_q;
-  logic [2:0]    pend_lr_tol_q;
+  // Configuration at the start-of-frame handshake, applied when that frame
+  // starts: one word per input buffer entry, so that a tuser beat keeps its own
+  // configuration even when the next frame's tuser enters the buffer behind it
+  // (a one-beat malformed frame).
+  localparam int CFGW = XW + YW + 2 * PW + 9;
+  logic [CFGW-1:0] pend_q [0:1];
   always_ff @(posedge clk_i) begin
-    if (in_push && s_tuser_i) begin
-      pend_width_q    <= cfg_width_i;
-      pend_height_q   <= cfg_height_i;
-      pend_p1_q       <= cfg_p1_i;
-      pend_p2_q       <= cfg_p2_i;
-      pend_mode_q     <= cfg_mode_i;
-      pend_subpixel_q <= cfg_subpixel_i;
-      pend_lr_en_q    <= cfg_lr_en_i;
-      pend_lr_tol_q   <= cfg_lr_tol_i;
-      pend_fill_q     <= cfg_fill_i;
-      pend_median_q   <= cfg_median_i;
-    end
+    if (in_push && s_tuser_i)
+      pend_q[in_wr_q] <= {cfg_width_i, cfg_height_i, cfg_p1_i, cfg_p2_i, cfg_mode_i, cfg_subpixel_i,
+                          cfg_lr_en_i, cfg_lr_tol_i, cfg_fill_i, cfg_median_i};
   end
-  wire pend_ok = pend_width_q >= XW'(MIN_WIDTH) && pend_width_q <= XW'(MAX_WIDTH) &&
-                 pend_height_q >= YW'(9) && pend_height_q <= YW'(MAX_HEIGHT);
+  // The configuration of the head beat (meaningful when it is a tuser beat).
+  logic [XW-1:0] pend_width;
+  logic [YW-1:0] pend_height;
+  logic [PW-1:0] pend_p1, pend_p2;
+  logic [1:0]    pend_mode;
+  logic          pend_subpixel, pend_lr_en, pend_fill, pend_median;
+  logic [2:0]    pend_lr_tol;
+  assign {pend_width, pend_height, pend_p1, pend_p2, pend_mode, pend_subpixel, pend_lr_en,
+          pend_lr_tol, pend_fill, pend_median} = pend_q[in_rd_q];
+  wire pend_ok = pend_width >= XW'(MIN_WIDTH) && pend_width <= XW'(MAX_WIDTH) &&
+                 pend_height >= YW'(9) && pend_height <= YW'(MAX_HEIGHT);
 
   // ---------------------------------------------------------------- output FIFO
   localparam int FAW = $clog2(FIFO_DEPTH);
@@ -184,16 +183,16 @@ module sgm_stream_ctrl #(
         IDLE: if (head_sof) begin
           error_o <= {~pend_ok, 3'b000};
           if (pend_ok) begin
-            width_o     <= pend_width_q;
-            height_o    <= pend_height_q;
-            p1_o        <= pend_p1_q;
-            p2_o        <= pend_p2_q;
-            mode_o      <= pend_mode_q;
-            subpixel_o  <= pend_subpixel_q;
-            lr_en_o     <= pend_lr_en_q;
-            lr_tol_o    <= pend_lr_tol_q;
-            fill_o      <= pend_fill_q;
-            median_o    <= pend_median_q;
+            width_o     <= pend_width;
+            height_o    <= pend_height;
+            p1_o        <= pend_p1;
+            p2_o        <= pend_p2;
+            mode_o      <= pend_mode;
+            subpixel_o  <= pend_subpixel;
+            lr_en_o     <= pend_lr_en;
+            lr_tol_o    <= pend_lr_tol;
+            fill_o      <= pend_fill;
+            median_o    <= pend_median;
             lut_start_o <= 1'b1;
             state_q     <= FILL;
           end

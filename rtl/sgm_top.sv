@@ -7,7 +7,8 @@
 //   -> sgm_cost_volume (D PEs) -> sgm_path_engine (4 paths, S) -> sgm_wta
 //   -> sgm_lr_check -> sgm_hole_fill -> sgm_median5x5 -> sgm_stream_ctrl -> m_axis
 //
-// Parameters: D disparities (16, 32, 64, 128), MAX_WIDTH, MAX_HEIGHT.
+// Parameters: D disparities (16, 32, 64, 128), MAX_WIDTH, MAX_HEIGHT (public to
+// the Verilator testbenches, which read the build's limits from the model).
 // Frame constraints: max(D, 16) <= width <= MAX_WIDTH, 9 <= height <= MAX_HEIGHT
 // (frames outside are dropped and flagged in error_o[3]).
 // Throughput: one pixel per clock while a frame streams; after its last input
@@ -16,9 +17,9 @@
 // Latency: about 8 lines + D + a few tens of pixels from a pixel in to its
 // disparity out.
 module sgm_top #(
-  parameter int D          = 64,
-  parameter int MAX_WIDTH  = 1280,
-  parameter int MAX_HEIGHT = 1024,
+  parameter int D          /*verilator public*/ = 64,
+  parameter int MAX_WIDTH  /*verilator public*/ = 1280,
+  parameter int MAX_HEIGHT /*verilator public*/ = 1024,
   localparam int XW        = $clog2(MAX_WIDTH + 1),
   localparam int YW        = $clog2(MAX_HEIGHT + 16),
   localparam int LD        = $clog2(D),

@@ -1,8 +1,12 @@
 // The whole core (sgm_top) against the golden model: every output pixel of
-// every frame, frames back to back without reset, random stalls on both
-// streams, several parameter sets, real scenes in the D = 64 build.
+// every frame, frames back to back, random stalls on both streams, several
+// parameter sets, every kind of malformed frame, reset in the middle of a
+// frame, real scenes in the D = 64 build. The stream checker of the harness
+// watches every output cycle; its own test is here too.
 #include "Vsgm_top.h"
+#include "Vsgm_top_sgm_top.h"
 #include "core_harness.hpp"
+#include "malformed_frames.hpp"
 
 #include "eval_lib.hpp"
 #include "sgm/pipeline.hpp"
@@ -19,12 +23,16 @@
 #define SGM_D 16
 #endif
 
+
 namespace {
 
 using Harness = sgm::tb::CoreHarness<Vsgm_top>;
 using sgm::tb::FrameInput;
+using sgm::tb::Malformation;
+using sgm::tb::MalformedFrames;
 
 constexpr int kD = SGM_D;
+constexpr int kMaxWidth = Vsgm_top_sgm_top::MAX_WIDTH;  // of this build
 
 // A textured left image and a right image shifted by a few pixels plus noise.
 FrameInput syntheticPair(int w, int h, std::mt19937& rng, const sgm::Params& params) {
@@ -49,9 +57,13 @@ sgm::Params hardwareDefaults() {
   return p;
 }
 
-void expectBitExact(Harness& core, const std::vector<FrameInput>& frames, const std::string& what) {
+// Every frame but those in `cut` (reset in their middle) equals the golden model.
+void expectBitExact(Harness& core, const std::vector<FrameInput>& frames, const std::string& what,
+                    const std::vector<size_t>& cut = {}) {
   const std::vector<sgm::tb::FrameOutput> outputs = core.run(frames);
   for (size_t k = 0; k < frames.size(); ++k) {
+    EXPECT_EQ(outputs[k].aborted, std::count(cut.begin(), cut.end(), k) == 1) << what << ", frame " << k;
+    if (outputs[k].aborted) continue;
     const sgm::DisparityMap golden = sgm::runPipeline(frames[k].left, frames[k].right, frames[k].params);
     EXPECT_EQ(sgm::tb::compareMaps(golden, outputs[k].map, "sgm_top output"), "")
         << what << ", frame " << k << " (" << frames[k].left.cols << "x" << frames[k].left.rows << ")";
@@ -86,26 +98,104 @@ TEST(SgmTop, ParameterSetsChangeFromFrameToFrame) {
   expectBitExact(core, frames, "parameter sets");
 }
 
-TEST(SgmTop, MalformedFrameThenCleanFrame) {
-  Harness core("sgm_top_malformed", 9, {0.1, 0.1});
+// Every malformed kind, in two places each, between good frames: the core
+// flags it in error_o, emits W x H beats for every frame it started (checked by
+// the harness's stream checker), and the next good frame is bit-exact.
+TEST(SgmTop, EveryMalformedFrameKindIsFlaggedAndRecovered) {
   std::mt19937 rng(6);
-  const int w = std::max(kD, 16) + 8, h = 16;
-  const FrameInput first = syntheticPair(w, h, rng, hardwareDefaults());
-  // Line 3 ends early (tlast at column 10), then the source moves on to the
-  // next frame: the core flags it, still emits w x h beats, and is exact again.
-  FrameInput broken = syntheticPair(w, h, rng, hardwareDefaults());
-  broken.rawBeats = sgm::tb::frameBeats(broken.left.data, broken.right.data, w, h, broken.left.step, broken.right.step);
-  broken.rawBeats[3 * w + 10].last = true;
-  broken.rawBeats.resize(3 * w + 11);
-  const FrameInput after = syntheticPair(w + 5, 12, rng, hardwareDefaults());
-  const auto out = core.run({first, broken, after});
-  for (int k : {0, 2}) {
-    const FrameInput& f = k == 0 ? first : after;
-    EXPECT_EQ(sgm::tb::compareMaps(sgm::runPipeline(f.left, f.right, f.params), out[k].map, "sgm_top output"), "")
-        << "frame " << k;
-    EXPECT_EQ(out[k].errors, 0u) << "frame " << k;
+  const int w = std::max(kD, 16) + 8, h = 12;
+  for (const Malformation kind : sgm::tb::kAllMalformations)
+    for (const unsigned at : {0u, unsigned(rng())}) {
+      Harness core("sgm_top_malformed", 9 + at, {0.2, 0.2});
+      const FrameInput first = syntheticPair(w + 3, 10, rng, hardwareDefaults());
+      const MalformedFrames bad = malform(syntheticPair(w, h, rng, hardwareDefaults()), kind, kMaxWidth, at, rng());
+      const FrameInput after = syntheticPair(w + 5, 11, rng, hardwareDefaults());
+      std::vector<FrameInput> frames = {first};
+      frames.insert(frames.end(), bad.frames.begin(), bad.frames.end());
+      frames.push_back(after);
+      std::vector<sgm::tb::FrameOutput> out;
+      try {
+        out = core.run(frames);
+      } catch (const sgm::Error& e) {
+        ADD_FAILURE() << bad.description << ": " << e.what();
+        continue;
+      }
+      for (size_t k = 0; k < bad.frames.size(); ++k)
+        EXPECT_EQ(out[1 + k].errors, bad.errors[k]) << bad.description << ": error_o of frame " << 1 + k;
+      for (const size_t k : {size_t(0), frames.size() - 1}) {
+        EXPECT_EQ(sgm::tb::compareMaps(sgm::runPipeline(frames[k].left, frames[k].right, frames[k].params), out[k].map,
+                                       "sgm_top output"), "")
+            << bad.description << ", frame " << k;
+        EXPECT_EQ(out[k].errors, 0u) << bad.description << ", frame " << k;
+      }
+    }
+}
+
+// Reset in the middle of a frame (before its first beat, after one beat, in
+// the middle, after its last beat): the next frame is bit-exact.
+TEST(SgmTop, ResetInTheMiddleOfAFrameThenCleanFrame) {
+  std::mt19937 rng(8);
+  const int w = std::max(kD, 16) + 11, h = 14;
+  for (const long resetAfter : {0L, 1L, long(w) * 7 + 3, long(w) * h}) {
+    Harness core("sgm_top_reset", 3, {0.15, 0.15});
+    FrameInput cut = syntheticPair(w, h, rng, hardwareDefaults());
+    cut.resetAfterBeats = resetAfter;
+    sgm::Params other = hardwareDefaults();
+    other.mode = sgm::CostMode::kUnified, other.median = false;
+    expectBitExact(core, {syntheticPair(w - 4, 10, rng, hardwareDefaults()), cut, syntheticPair(w + 6, 9, rng, other)},
+                   "reset after " + std::to_string(resetAfter) + " beats", {1});
   }
-  EXPECT_EQ(out[1].errors, 0x1u) << "early tlast flagged in error_o[0]";
+}
+
+// The stream checker on hand-made beat sequences: quiet on a good frame, and
+// naming the cycle and the rule for each kind of violation.
+TEST(AxisChecker, NamesTheCycleAndTheRuleOfEachViolation) {
+  using sgm::tb::AxisChecker;
+  using sgm::tb::Beat;
+  const int w = 3, h = 2;
+  std::vector<Beat> frame;
+  for (int i = 0; i < w * h; ++i) frame.push_back(Beat{uint16_t(i), i == 0, i % w == w - 1});
+  // Feeds the beats one per cycle (valid and ready high) after `prefix` cycles of other bus states.
+  const auto check = [&](const std::vector<Beat>& beats, int frames) {
+    AxisChecker c;
+    for (int f = 0; f < frames; ++f) c.expectFrame(w, h);
+    for (size_t i = 0; i < beats.size(); ++i) c.observe(10 + i, true, true, beats[i]);
+    return c.finish();
+  };
+  EXPECT_EQ(check(frame, 1), "");
+  std::vector<Beat> b = frame;
+  b[0].user = false;
+  EXPECT_EQ(check(b, 1), "cycle 10, output beat 0 (frame 0, x=0, y=0): tuser missing on the first beat of a frame");
+  b = frame, b[4].user = true;
+  EXPECT_EQ(check(b, 1), "cycle 14, output beat 4 (frame 0, x=1, y=1): tuser on a beat inside a frame");
+  b = frame, b[2].last = false;
+  EXPECT_EQ(check(b, 1), "cycle 12, output beat 2 (frame 0, x=2, y=0): tlast missing on the last beat of a line");
+  b = frame, b[1].last = true;
+  EXPECT_EQ(check(b, 1), "cycle 11, output beat 1 (frame 0, x=1, y=0): tlast before the last beat of a line");
+  b = frame, b.pop_back();
+  EXPECT_EQ(check(b, 1), "frame 0 ended after 5 of 3 x 2 output beats");
+  b = frame, b.push_back(frame[0]);
+  EXPECT_EQ(check(b, 1), "cycle 16, output beat 6: beat after the last announced frame (more than W x H beats)");
+  // A frame one beat short shows up as a missing tlast or tuser of the next one.
+  b = frame, b.erase(b.begin() + 5), b.insert(b.end(), frame.begin(), frame.end());
+  EXPECT_EQ(check(b, 2), "cycle 15, output beat 5 (frame 0, x=2, y=1): tuser on a beat inside a frame");
+  // Handshake: valid drops, or data changes, while ready is low.
+  AxisChecker drop;
+  drop.observe(0, true, false, frame[0]);
+  drop.observe(1, false, true, frame[0]);
+  EXPECT_EQ(drop.violation(), "cycle 1, output beat 0: tvalid dropped before its handshake");
+  AxisChecker change;
+  change.observe(0, true, false, frame[0]);
+  change.observe(1, true, false, frame[0]);
+  change.observe(2, true, true, frame[1]);
+  EXPECT_EQ(change.violation(), "cycle 2, output beat 0: tdata/tuser/tlast changed while tvalid was high and tready low");
+  // Legal: valid low without a pending beat, data changing while valid is low, a reset dropping a held beat.
+  AxisChecker legal;
+  legal.observe(0, false, false, frame[3]);
+  legal.observe(1, true, false, frame[0]);
+  legal.reset();
+  legal.observe(2, false, true, frame[1]);
+  EXPECT_EQ(legal.finish(), "");
 }
 
 // Real scenes, in the D = 64 build only.
