@@ -85,7 +85,8 @@ golden: $(BIN)/sgm-golden $(BIN)/sgm-eval
 OUT       ?= $(BUILD)/sim
 D         ?= 64
 MAX_WIDTH ?= 1280
-SIM_BIN    = $(BIN)/sgm-sim-d$(D)-w$(MAX_WIDTH)$(if $(filter 1,$(TRACE)),-trace)
+MAX_HEIGHT ?= 1024
+SIM_BIN    = $(BIN)/sgm-sim-d$(D)-w$(MAX_WIDTH)$(if $(filter-out 1024,$(MAX_HEIGHT)),-h$(MAX_HEIGHT))$(if $(filter 1,$(TRACE)),-trace)
 SIM_ARGS   = --out $(OUT) --d $(D) $(if $(LEFT),--left $(LEFT)) $(if $(RIGHT),--right $(RIGHT)) \
              $(if $(GT),--gt $(GT)) $(if $(GT_SCALE),--gt-scale $(GT_SCALE)) $(if $(STALL),--stall $(STALL)) \
              $(if $(SEED),--seed $(SEED)) $(if $(FRAMES),--frames $(FRAMES))
@@ -95,9 +96,9 @@ $(BIN)/sgm-sim-d%: tb/sim_main.cpp $(RTL_SRC) $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB
 	@mkdir -p $(BIN) $(BUILD)/verilator
 	@echo "verilating sgm_top (D=$(D), MAX_WIDTH=$(MAX_WIDTH)) for $@"
 	@$(VERILATOR) --cc --exe --build -j $(JOBS) -Wall $(VLT) $(SIM_VFLAGS) $(VL_TRACE) -y rtl --top-module sgm_top \
-	  -GD=$(D) -GMAX_WIDTH=$(MAX_WIDTH) -Mdir $(BUILD)/verilator/$(notdir $@) -o $(abspath $@) \
+	  -GD=$(D) -GMAX_WIDTH=$(MAX_WIDTH) -GMAX_HEIGHT=$(MAX_HEIGHT) -Mdir $(BUILD)/verilator/$(notdir $@) -o $(abspath $@) \
 	  rtl/sgm_top.sv $(abspath tb/sim_main.cpp) $(abspath $(EVAL_OBJ)) $(abspath $(GOLDEN_LIB)) \
-	  -CFLAGS "$(VL_CFLAGS) -DSGM_D=$(D) -DSGM_MAX_WIDTH=$(MAX_WIDTH)" -LDFLAGS "$(OPENCV_LIBS) -pthread" \
+	  -CFLAGS "$(VL_CFLAGS) -DSGM_D=$(D) -DSGM_MAX_WIDTH=$(MAX_WIDTH) -DSGM_MAX_HEIGHT=$(MAX_HEIGHT)" -LDFLAGS "$(OPENCV_LIBS) -pthread" \
 	  > $(BUILD)/verilator-$(notdir $@).log || { tail -30 $(BUILD)/verilator-$(notdir $@).log; exit 1; }
 
 sim: $(SIM_BIN)

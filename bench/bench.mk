@@ -15,12 +15,14 @@
 
 BENCH_DIR       := $(BUILD)/bench
 BENCH_MAX_WIDTH ?= 1920
+BENCH_MAX_HEIGHT ?= 1088
+
 BENCH_REPEATS   ?= 3
 BENCH_VARIANTS  ?= fast threads2 checked
 BENCH_FLAGS_fast     = $(SIM_VFLAGS)
 BENCH_FLAGS_threads2 = $(SIM_VFLAGS) --threads 2
 BENCH_FLAGS_checked  = --x-assign unique --x-initial unique
-BENCH_SIM        = $(BIN)/sgm-sim-d$(D)-w$(BENCH_MAX_WIDTH)-$(1)
+BENCH_SIM        = $(BIN)/sgm-sim-d$(D)-w$(BENCH_MAX_WIDTH)-h$(BENCH_MAX_HEIGHT)-$(1)
 BENCH_SCENES     = cones teddy sawtooth venus
 BENCH_FRAMES    := 450x375 640x480 1280x720 1920x1080
 BENCH_TOOL      := $(BIN)/sgm-bench
@@ -38,7 +40,7 @@ $(BENCH_TOOL): bench/sgm_bench.cpp $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
 # One sgm-sim build per variant, through the main Makefile's sgm-sim rule.
 define bench_variant
 $(call BENCH_SIM,$(1)): $(RTL_SRC) tb/sim_main.cpp $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
-	@$$(MAKE) --no-print-directory BENCH_INNER=1 D=$(D) MAX_WIDTH=$(BENCH_MAX_WIDTH) SIM_VFLAGS="$(BENCH_FLAGS_$(1))" $$@
+	@$$(MAKE) --no-print-directory BENCH_INNER=1 D=$(D) MAX_WIDTH=$(BENCH_MAX_WIDTH) MAX_HEIGHT=$(BENCH_MAX_HEIGHT) SIM_VFLAGS="$(BENCH_FLAGS_$(1))" $$@
 endef
 # (BENCH_INNER: the inner make builds with the pattern rule, not this one.)
 ifndef BENCH_INNER
@@ -68,7 +70,7 @@ bench: $(BENCH_TOOL) $(foreach v,$(BENCH_VARIANTS),$(call BENCH_SIM,$(v))) | che
 	   echo "bench: simulation speed, $$v build, cones"; \
 	   mkdir -p $(BENCH_DIR)/simspeed/$$v; \
 	   src="$(DATA)/cones"; [ -f "$$src/left.png" ] && args="--left $$src/left.png --right $$src/right.png" || args=""; \
-	   $(BIN)/sgm-sim-d$(D)-w$(BENCH_MAX_WIDTH)-$$v $$args --out $(BENCH_DIR)/simspeed/$$v > $(BENCH_DIR)/simspeed/$$v.log \
+	   $(BIN)/sgm-sim-d$(D)-w$(BENCH_MAX_WIDTH)-h$(BENCH_MAX_HEIGHT)-$$v $$args --out $(BENCH_DIR)/simspeed/$$v > $(BENCH_DIR)/simspeed/$$v.log \
 	     || { cat $(BENCH_DIR)/simspeed/$$v.log; exit 1; }; \
 	 done
 	@$(foreach v,$(BENCH_VARIANTS),echo '$(strip $(BENCH_FLAGS_$(v)))' > $(BENCH_DIR)/simspeed/$(v)/flags.txt;)
