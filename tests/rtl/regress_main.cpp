@@ -37,6 +37,7 @@ constexpr int kD = Vsgm_top_sgm_top::D;
 constexpr int kMaxWidth = Vsgm_top_sgm_top::MAX_WIDTH;
 constexpr int kMinWidth = kD > 16 ? kD : 16;
 constexpr int kMinHeight = 9;
+constexpr int kDefaultMaxHeight = 40;
 
 const char* kUsage =
     "usage: sgm-regress [--seed S] [--frames N] [--case K] [--max-height H] [--xml FILE] [--quiet]\n"
@@ -255,7 +256,7 @@ int main(int argc, char** argv) {
     const uint64_t master = args.has("seed") ? uint64_t(args.integer("seed", 0, 0, 0x7fffffffffffffffL))
                                              : uint64_t(std::chrono::system_clock::now().time_since_epoch().count()) % 1000000007u;
     const long frames = args.integer("frames", 500, 1, 100000000);
-    const int maxHeight = int(args.integer("max-height", 40, kMinHeight, 1024));
+    const int maxHeight = int(args.integer("max-height", kDefaultMaxHeight, kMinHeight, 1024));
     const bool quiet = args.has("quiet");
     const bool oneCase = args.has("case");
     const long only = args.integer("case", 0, 0, 0x7fffffffL);
@@ -288,7 +289,8 @@ int main(int argc, char** argv) {
         ++totals.failed;
         std::cout << line.str() << ": FAILED\n  " << failure << "\n";
         for (size_t i = 0; i < c.frames.size(); ++i) std::cout << "  frame " << i << ": " << c.frames[i].text << "\n";
-        std::cout << "  replay: " << argv[0] << " --seed " << master << " --case " << k << "\n";
+        std::cout << "  replay: " << argv[0] << " --seed " << master << " --case " << k
+                  << (maxHeight != kDefaultMaxHeight ? " --max-height " + std::to_string(maxHeight) : "") << "\n";
       } else if (!quiet || oneCase) {
         std::cout << line.str() << ": ok\n";
         if (oneCase)
