@@ -25,7 +25,7 @@
 #define SGM_MAX_WIDTH 1280
 #endif
 #ifndef SGM_MAX_HEIGHT
-#define SGM_MAX_HEIGHT 1024  // sgm_top's default; make sim does not override it
+#define SGM_MAX_HEIGHT 1024  // sgm_top's default (make sim passes MAX_HEIGHT)
 #endif
 
 using namespace sgm;

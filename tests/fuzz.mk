@@ -22,9 +22,11 @@ FUZZ_HDR          := $(wildcard tests/fuzz/*.hpp)
 # tests/*.cpp and tests/fuzz/*.cpp include the tests/fuzz/ headers.
 $(TEST_OBJ) $(OBJ)/tests/fuzz/fuzz_main.o $(OBJ)/tests/fuzz/test_sim_cli.o: $(FUZZ_HDR)
 
-# The small simulator build the bad-input tests run: D = 16, MAX_WIDTH = 128, whatever D= says.
+# The small simulator build the bad-input tests run: D = 16, MAX_WIDTH = 128, MAX_HEIGHT = 1024,
+# whatever the command line says.
 $(BIN)/$(FUZZ_SIM): override D := 16
 $(BIN)/$(FUZZ_SIM): override MAX_WIDTH := 128
+$(BIN)/$(FUZZ_SIM): override MAX_HEIGHT := 1024
 
 $(BIN)/sgm-fuzz: $(OBJ)/tests/fuzz/fuzz_main.o $(EVAL_OBJ) $(GOLDEN_LIB)
 	@mkdir -p $(dir $@)
