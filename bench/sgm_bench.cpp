@@ -187,6 +187,7 @@ BenchData measure(const std::string& data, const std::string& bench, int repeats
     b.speed[name] = runBench(scene, repeats);
   }
   for (const auto& entry : fs::directory_iterator(bench + "/simspeed")) {
+    if (!entry.is_directory()) continue;  // the runs' logs sit beside their directories
     const std::string variant = entry.path().filename().string();
     b.simVariants.push_back({variant, readSimReport(entry.path().string())});
     b.simVariantFlags[variant] = readText(entry.path().string() + "/flags.txt");
