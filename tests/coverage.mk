@@ -15,6 +15,10 @@ COV_VFLAGS   := --coverage-line --coverage-toggle
 COV_SUMMARY  := $(BIN)/coverage-summary
 COV_REGRESS_FRAMES ?= 120
 COV_REGRESS_SEED   ?= 1
+# The regression (tests/regress.mk) built the same way, D = 16.
+COV_REGRESS_BIN    := $(BIN)/cov-regress-d16-w128
+COV_REGRESS_ARGS    = --seed $(COV_REGRESS_SEED) --frames $(COV_REGRESS_FRAMES) --max-height 40 --quiet
+$(eval $(call regress_build,$(COV_REGRESS_BIN),16,128,$(COV_VFLAGS)))
 
 # The coverage variants reuse the rtl_test macro under other names; they are
 # kept out of RTL_TEST_BINS so that `make rtl-tests` does not run them.
