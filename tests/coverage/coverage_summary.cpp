@@ -9,8 +9,9 @@
 //
 // Writes DIR/summary.json, DIR/summary.md (per file, then every uncovered
 // line point with its source line), and prints the totals. A waiver file
-// lists "file:line reason" for line points that cannot be reached; waived
-// points are listed with their reason and counted apart.
+// lists "file | source line | reason" for line points that cannot be reached
+// (matched by the trimmed source text, so edits elsewhere in the file keep the
+// waiver valid); waived points are listed with their reason and counted apart.
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -26,6 +27,7 @@ namespace {
 struct Point {
   std::string file, kind, signal;
   int line = 0, column = 0;
+  std::string instance;  // hierarchy; not part of the ordering (points merge over instances)
   bool operator<(const Point& o) const {
     return std::tie(file, line, column, kind, signal) < std::tie(o.file, o.line, o.column, o.kind, o.signal);
   }
@@ -67,6 +69,7 @@ bool parseLine(const std::string& text, Point& point, long& count) {
   const std::string page = fields["page"];
   point.kind = page.substr(0, page.find('/'));
   point.signal = fields["o"];
+  point.instance = fields["h"];
   return true;
 }
 
@@ -116,6 +119,7 @@ int main(int argc, char** argv) {
   if (out.empty() || inputs.empty()) fail("usage: coverage-summary --out DIR [--waivers FILE] DATA.dat...");
 
   std::map<Point, long> counts;
+  std::map<std::pair<std::string, std::string>, long> toggleByInstance;  // (instance, signal bit) -> changes
   for (const std::string& path : inputs) {
     std::ifstream in(path);
     if (!in) fail("cannot open '" + path + "'");
@@ -126,26 +130,34 @@ int main(int argc, char** argv) {
       if (!parseLine(line, p, c)) continue;
       if (p.file.rfind("rtl/", 0) != 0) continue;  // only the core's sources
       counts[p] += c;
+      if (p.kind == "v_toggle") toggleByInstance[{p.instance, p.signal}] += c;
       ++n;
     }
     if (n == 0) fail("'" + path + "' holds no coverage point of rtl/");
   }
 
-  std::map<std::string, std::string> waivers;  // "file:line" -> reason
+  std::map<std::string, std::vector<std::string>> sources;
+  const auto sourceLine = [&](const Point& p) {
+    auto& src = sources[p.file];
+    if (src.empty()) src = readSource(p.file);
+    return p.line >= 1 && p.line <= int(src.size()) ? trim(src[p.line - 1]) : std::string();
+  };
+  std::map<std::string, std::string> waivers;  // "file | source line" -> reason
   if (!waiverFile.empty()) {
     std::ifstream in(waiverFile);
     if (!in) fail("cannot open '" + waiverFile + "'");
     for (std::string line; std::getline(in, line);) {
       line = trim(line);
       if (line.empty() || line[0] == '#') continue;
-      const size_t space = line.find(' ');
-      if (space == std::string::npos) fail("waiver without a reason: '" + line + "'");
-      waivers[line.substr(0, space)] = trim(line.substr(space + 1));
+      const size_t a = line.find(" | "), b = a == std::string::npos ? a : line.find(" | ", a + 3);
+      if (b == std::string::npos) fail("waiver is not 'file | source line | reason': '" + line + "'");
+      waivers[trim(line.substr(0, a)) + " | " + trim(line.substr(a + 3, b - a - 3))] = trim(line.substr(b + 3));
     }
   }
 
   std::map<std::string, Totals> lineByFile, toggleByFile;
-  Totals line, toggle;
+  Totals line, toggle, toggleInstances;
+  for (const auto& [key, c] : toggleByInstance) ++toggleInstances.points, toggleInstances.covered += c >= 2;
   std::vector<std::pair<Point, std::string>> uncovered;  // line points, with waiver reason or ""
   std::set<std::string> usedWaivers;
   for (const auto& [p, c] : counts) {
@@ -154,12 +166,13 @@ int main(int argc, char** argv) {
     Totals& file = isLine ? lineByFile[p.file] : toggleByFile[p.file];
     Totals& all = isLine ? line : toggle;
     ++file.points, ++all.points;
-    if (c > 0) {
+    // A bit toggled both ways when it changed at least twice (changes alternate direction).
+    if (c >= (isLine ? 1 : 2)) {
       ++file.covered, ++all.covered;
       continue;
     }
     if (!isLine) continue;
-    const std::string where = p.file + ":" + std::to_string(p.line);
+    const std::string where = p.file + " | " + sourceLine(p);
     const auto w = waivers.find(where);
     if (w != waivers.end()) ++file.waived, ++all.waived, usedWaivers.insert(where);
     uncovered.push_back({p, w == waivers.end() ? "" : w->second});
@@ -168,14 +181,15 @@ int main(int argc, char** argv) {
     if (!usedWaivers.count(where))
       std::cerr << "coverage-summary: note: waiver " << where << " matches no uncovered point (stale?)\n";
 
-  std::map<std::string, std::vector<std::string>> sources;
   std::ostringstream md;
   md << "# RTL coverage\n\nLine coverage: " << line.covered << " of " << line.points << " points, **"
      << percent(line.percent()) << " %** (" << percent(line.percentWithWaivers()) << " % counting the "
      << line.waived << " waived unreachable points). Toggle coverage: " << toggle.covered << " of " << toggle.points
-     << " signal bits, **" << percent(toggle.percent()) << " %**.\n\n"
+     << " signal bits of the source, **" << percent(toggle.percent()) << " %**; counted per instance (every PE, path and "
+        "stage separately): " << toggleInstances.covered << " of " << toggleInstances.points << ", **"
+     << percent(toggleInstances.percent()) << " %**.\n\n"
      << "A point is covered when any instance in any run reached it at least once. Line points are Verilator's "
-        "v_line and v_branch points (statements, both arms of each if/case); toggle points are signal bits.\n\n"
+        "v_line and v_branch points (statements, both arms of each if/case); toggle points are signal bits, covered when the bit rose and fell (changed at least twice). Modules made only of continuous assignments (sgm_top, sgm_min_tree, sgm_path_pe) have toggle points but no line points.\n\n"
      << "| file | line points | covered | % | toggle bits | toggled | % |\n|---|---|---|---|---|---|---|\n";
   for (const auto& [file, t] : lineByFile) {
     const Totals& g = toggleByFile[file];
@@ -185,9 +199,7 @@ int main(int argc, char** argv) {
   md << "\n## Uncovered line points\n\n";
   if (uncovered.empty()) md << "None.\n";
   for (const auto& [p, reason] : uncovered) {
-    auto& src = sources[p.file];
-    if (src.empty()) src = readSource(p.file);
-    const std::string text = p.line >= 1 && p.line <= int(src.size()) ? trim(src[p.line - 1]) : "";
+    const std::string text = sourceLine(p);
     md << "- `" << p.file << ":" << p.line << "` (" << p.kind.substr(2) << ") `" << text << "`"
        << (reason.empty() ? "" : " — waived: " + reason) << "\n";
   }
@@ -197,7 +209,8 @@ int main(int argc, char** argv) {
      << ", \"waived\": " << line.waived << ", \"percent\": " << percent(line.percent())
      << ", \"percent_with_waivers\": " << percent(line.percentWithWaivers()) << "},\n  \"toggle\": {\"points\": "
      << toggle.points << ", \"covered\": " << toggle.covered << ", \"percent\": " << percent(toggle.percent())
-     << "},\n  \"files\": {";
+     << ", \"instance_points\": " << toggleInstances.points << ", \"instance_covered\": " << toggleInstances.covered
+     << ", \"instance_percent\": " << percent(toggleInstances.percent()) << "},\n  \"files\": {";
   bool first = true;
   for (const auto& [file, t] : lineByFile) {
     const Totals& g = toggleByFile[file];
@@ -222,9 +235,12 @@ int main(int argc, char** argv) {
     f << text;
     if (!f) fail("cannot write '" + out + "/" + name + "'");
   }
-  std::printf("coverage: line %s %% (%ld/%ld points, %s %% with %ld waived), toggle %s %% (%ld/%ld bits)\n",
-              percent(line.percent()).c_str(), line.covered, line.points, percent(line.percentWithWaivers()).c_str(),
-              line.waived, percent(toggle.percent()).c_str(), toggle.covered, toggle.points);
+  std::printf(
+      "coverage: line %s %% (%ld/%ld points, %s %% with %ld waived), toggle %s %% (%ld/%ld source bits; %s %% per "
+      "instance, %ld/%ld)\n",
+      percent(line.percent()).c_str(), line.covered, line.points, percent(line.percentWithWaivers()).c_str(),
+      line.waived, percent(toggle.percent()).c_str(), toggle.covered, toggle.points,
+      percent(toggleInstances.percent()).c_str(), toggleInstances.covered, toggleInstances.points);
   std::printf("coverage: wrote %s/summary.md, %s/summary.json\n", out.c_str(), out.c_str());
   return 0;
 }
