@@ -58,6 +58,7 @@ module sgm_stream_ctrl #(
   input  wire                 cfg_lr_en_i,
   input  wire  [2:0]          cfg_lr_tol_i,
   input  wire                 cfg_fill_i,
+  input  wire                 cfg_snap_i,
   input  wire                 cfg_median_i,
   // The latched configuration, constant while a frame's slots flow.
   output logic [XW-1:0]       width_o,
@@ -69,6 +70,7 @@ module sgm_stream_ctrl #(
   output logic                lr_en_o,
   output logic [2:0]          lr_tol_o,
   output logic                fill_o,
+  output logic                snap_o,
   output logic                median_o,
   output logic                lut_start_o,
   input  wire                 lut_ready_i,
@@ -111,7 +113,7 @@ module sgm_stream_ctrl #(
   logic [YW-1:0] pend_height_q;
   logic [PW-1:0] pend_p1_q, pend_p2_q;
   logic [1:0]    pend_mode_q;
-  logic          pend_subpixel_q, pend_lr_en_q, pend_fill_q, pend_median_q;
+  logic          pend_subpixel_q, pend_lr_en_q, pend_fill_q, pend_snap_q, pend_median_q;
   logic [2:0]    pend_lr_tol_q;
   always_ff @(posedge clk_i) begin
     if (in_push && s_tuser_i) begin
@@ -124,6 +126,7 @@ module sgm_stream_ctrl #(
       pend_lr_en_q    <= cfg_lr_en_i;
       pend_lr_tol_q   <= cfg_lr_tol_i;
       pend_fill_q     <= cfg_fill_i;
+      pend_snap_q     <= cfg_snap_i;
       pend_median_q   <= cfg_median_i;
     end
   end
@@ -193,6 +196,7 @@ module sgm_stream_ctrl #(
             lr_en_o     <= pend_lr_en_q;
             lr_tol_o    <= pend_lr_tol_q;
             fill_o      <= pend_fill_q;
+            snap_o      <= pend_snap_q;
             median_o    <= pend_median_q;
             lut_start_o <= 1'b1;
             state_q     <= FILL;
