@@ -1,8 +1,9 @@
 `default_nettype none
 // sgm_hole_fill: hole filling along each row (docs/algorithm.md section 8).
-// An invalid pixel takes the smaller of the nearest valid disparities to its
-// left and to its right in the same row, or the one that exists; a pixel with
-// neither stays invalid (value passed through). Filled pixels are valid.
+// An invalid pixel keeps its own disparity when it is within 16 (1 px) of the
+// nearest valid disparity to its left or to its right in the same row, else it
+// takes the smaller of the two, or the one that exists; a pixel with neither
+// stays invalid (value passed through). Filled pixels are valid.
 // fill_en_i = 0 passes every pixel through unchanged, with the same latency.
 //
 // Row y is written while it streams in; it is read back during row y + 1:
@@ -151,7 +152,7 @@ module sgm_hole_fill #(
     end
   end
 
-  // Stage 3: min of the existing neighbours.
+  // Stage 3: own disparity if it agrees with a neighbour, else min of the existing neighbours.
   wire [DW-1:0] disp2   = word2_q[PW-2 -: DW];
   wire          valid2  = word2_q[PW-2-DW];
   wire          left_e2 = word2_q[DW+RIW];
@@ -159,10 +160,19 @@ module sgm_hole_fill #(
   wire          right_e2 = right2_q[DW];
   wire [DW-1:0] right2  = right2_q[DW-1:0];
 
+  // |own - n| <= 16 (1 px), on DW + 1 bits.
+  function automatic logic agrees(input logic [DW-1:0] own, input logic [DW-1:0] n);
+    logic [DW:0] diff;
+    diff   = own >= n ? {1'b0, own} - {1'b0, n} : {1'b0, n} - {1'b0, own};
+    agrees = diff <= (DW+1)'(16);
+  endfunction
+
+  wire          keep_own = (left_e2 && agrees(disp2, left2)) || (right_e2 && agrees(disp2, right2));
   logic [DW-1:0] fill;
   always_comb begin
-    if (left_e2 && (!right_e2 || left2 <= right2)) fill = left2;
-    else                                           fill = right2;
+    if (keep_own)                                       fill = disp2;
+    else if (left_e2 && (!right_e2 || left2 <= right2)) fill = left2;
+    else                                                fill = right2;
   end
 
   always_ff @(posedge clk_i) begin

@@ -1,10 +1,10 @@
 `default_nettype none
 // sgm_p2_lut: the adaptive P2 table of docs/algorithm.md section 4,
-//   P2r(k) = P2'                 for k = 0
-//   P2r(k) = max(P1, P2' / k)    for k = 1 .. 255 (floor),
-// filled after start_i without a divider: for k = 1, 2, .. it keeps
-// q = floor(P2' / k) and prod = q * k, decrementing q while prod > P2' and
-// moving on with prod += q. At most 2 x 255 + 2 cycles; ready_o rises when done.
+//   P2r(k) = max(P1, floor(4 P2' / (k + 4)))   for k = 0 .. 255,
+// filled after start_i without a divider: with N = 4 P2' and, for k = 0, 1, ..,
+// the divisor k + 4, it keeps q = floor(N / (k + 4)) and prod = q * (k + 4),
+// decrementing q (prod -= k + 4) while prod > N, then writing entry k and
+// moving on with prod += q. At most 256 + 255 + 1 cycles; ready_o rises when done.
 //
 // Parameters: PW penalty width (P1, P2' and the entries).
 // Latency: lookups are registered (one enabled cycle). Throughput: NPORTS
@@ -29,12 +29,14 @@ module sgm_p2_lut #(
   logic [PW-1:0] table_q [0:255];
 
   logic          busy_q;
-  logic [8:0]    k_q;        // 1 .. 256
-  logic [PW-1:0] q_q;        // floor(P2' / k) once prod_q <= P2'
-  logic [PW:0]   prod_q;     // q_q * k_q, at most 2 P2'
+  logic [8:0]    k_q;        // 0 .. 255
+  logic [PW-1:0] q_q;        // floor(N / (k + 4)) once prod_q <= N
+  logic [PW+2:0] prod_q;     // q_q * (k_q + 4), at most N + q_q < 5 P2'
   logic [PW-1:0] p1_q, p2_q;
 
-  wire             too_big = prod_q > {1'b0, p2_q};
+  wire [PW+2:0]    num     = {1'b0, p2_q, 2'b00};       // N = 4 P2'
+  wire [PW+2:0]    den     = (PW+3)'(k_q) + (PW+3)'(4);
+  wire             too_big = prod_q > num;
   wire [PW-1:0]    entry   = q_q > p1_q ? q_q : p1_q;
 
   always_ff @(posedge clk_i) begin
@@ -46,16 +48,16 @@ module sgm_p2_lut #(
       ready_o <= 1'b0;
       p1_q    <= p1_i;
       p2_q    <= p2_i;
-      k_q     <= 9'd1;
+      k_q     <= 9'd0;
       q_q     <= p2_i;
-      prod_q  <= {1'b0, p2_i};
+      prod_q  <= {1'b0, p2_i, 2'b00};
     end else if (busy_q) begin
       if (too_big) begin
         q_q    <= q_q - 1'b1;
-        prod_q <= prod_q - k_q[PW:0];
+        prod_q <= prod_q - den;
       end else begin
         k_q    <= k_q + 1'b1;
-        prod_q <= prod_q + {1'b0, q_q};
+        prod_q <= prod_q + {3'b000, q_q};
         if (k_q == 9'd255) begin
           busy_q  <= 1'b0;
           ready_o <= 1'b1;
@@ -64,10 +66,9 @@ module sgm_p2_lut #(
     end
   end
 
-  // One write port: entry 0 on start, entry k when q is settled.
+  // One write port: entry k when q is settled.
   always_ff @(posedge clk_i) begin
-    if (start_i) table_q[0] <= p2_i;
-    else if (busy_q && !too_big) table_q[k_q[7:0]] <= entry;
+    if (busy_q && !too_big) table_q[k_q[7:0]] <= entry;
   end
 
   for (genvar p = 0; p < NPORTS; p++) begin : g_port

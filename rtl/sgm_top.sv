@@ -5,7 +5,7 @@
 //
 //   s_axis (left + right gray) -> sgm_stream_ctrl -> 2 x sgm_census_unit
 //   -> sgm_cost_volume (D PEs) -> sgm_path_engine (4 paths, S) -> sgm_wta
-//   -> sgm_lr_check -> sgm_hole_fill -> sgm_median5x5 -> sgm_stream_ctrl -> m_axis
+//   -> sgm_lr_check -> sgm_hole_fill -> sgm_edge_snap -> sgm_median5x5 -> sgm_stream_ctrl -> m_axis
 //
 // Parameters: D disparities (16, 32, 64, 128), MAX_WIDTH, MAX_HEIGHT (public to
 // the Verilator testbenches, which read the build's limits from the model).
@@ -52,6 +52,7 @@ module sgm_top #(
   input  wire          cfg_lr_en_i,
   input  wire  [2:0]   cfg_lr_tol_i,
   input  wire          cfg_fill_i,
+  input  wire          cfg_snap_i,
   input  wire          cfg_median_i,
   // Status.
   output logic         busy_o,
@@ -66,7 +67,7 @@ module sgm_top #(
   logic [YW-1:0] row0, height;
   logic [7:0]    p1, p2;
   logic [1:0]    mode;
-  logic          subpixel, lr_en, fill_en, median_en;
+  logic          subpixel, lr_en, fill_en, snap_en, median_en;
   logic [2:0]    lr_tol;
   logic          lut_start, lut_ready;
   logic          res_valid, res_ok;
@@ -103,6 +104,7 @@ module sgm_top #(
     .cfg_lr_en_i   (cfg_lr_en_i),
     .cfg_lr_tol_i  (cfg_lr_tol_i),
     .cfg_fill_i    (cfg_fill_i),
+    .cfg_snap_i    (cfg_snap_i),
     .cfg_median_i  (cfg_median_i),
     .width_o       (width),
     .height_o      (height),
@@ -113,6 +115,7 @@ module sgm_top #(
     .lr_en_o       (lr_en),
     .lr_tol_o      (lr_tol),
     .fill_o        (fill_en),
+    .snap_o        (snap_en),
     .median_o      (median_en),
     .lut_start_o   (lut_start),
     .lut_ready_i   (lut_ready),
@@ -323,9 +326,40 @@ module sgm_top #(
     .out_valid_o (fill_valid)
   );
 
+  // ------------------------------------------------------------ edge snapping
+  // The left gray of each pixel goes into the stage's row memory as it leaves
+  // the census unit, about two rows before the pixel's disparity arrives.
+  logic [DW-1:0] snap_disp;
+  logic          snap_ok, snap_valid;
+  logic [XW-1:0] col7;
+  logic [YW-1:0] row7;
+
+  sgm_edge_snap #(.DW(DW), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(YW)) u_snap (
+    .clk_i       (clk_i),
+    .rst_ni      (rst_ni),
+    .en_i        (en),
+    .snap_en_i   (snap_en),
+    .width_i     (width),
+    .height_i    (height),
+    .gray_we_i   (valid1),
+    .gray_col_i  (col1),
+    .gray_row_i  (row1),
+    .gray_i      (centre),
+    .disp_i      (fill_disp),
+    .valid_i     (fill_ok),
+    .in_valid_i  (fill_valid),
+    .col_i       (col6),
+    .row_i       (row6),
+    .disp_o      (snap_disp),
+    .valid_o     (snap_ok),
+    .col_o       (col7),
+    .row_o       (row7),
+    .out_valid_o (snap_valid)
+  );
+
   // ------------------------------------------------------------ median
-  logic [XW-1:0] unused_col7;
-  logic [YW-1:0] unused_row7;
+  logic [XW-1:0] unused_col8;
+  logic [YW-1:0] unused_row8;
 
   sgm_median5x5 #(.DW(DW), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(YW)) u_median (
     .clk_i       (clk_i),
@@ -334,15 +368,15 @@ module sgm_top #(
     .median_en_i (median_en),
     .width_i     (width),
     .height_i    (height),
-    .disp_i      (fill_disp),
-    .valid_i     (fill_ok),
-    .in_valid_i  (fill_valid),
-    .col_i       (col6),
-    .row_i       (row6),
+    .disp_i      (snap_disp),
+    .valid_i     (snap_ok),
+    .in_valid_i  (snap_valid),
+    .col_i       (col7),
+    .row_i       (row7),
     .disp_o      (res_disp),
     .valid_o     (res_ok),
-    .col_o       (unused_col7),
-    .row_o       (unused_row7),
+    .col_o       (unused_col8),
+    .row_o       (unused_row8),
     .out_valid_o (res_valid)
   );
 

@@ -202,6 +202,7 @@ class CoreHarness {
     top_->cfg_lr_en_i = p.lrTolerance >= 0;
     top_->cfg_lr_tol_i = p.lrTolerance >= 0 ? p.lrTolerance : 0;
     top_->cfg_fill_i = p.fill;
+    top_->cfg_snap_i = p.snap;
     top_->cfg_median_i = p.median;
   }
 

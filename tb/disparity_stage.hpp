@@ -1,5 +1,5 @@
-// GoogleTest fixture for the disparity-map stages sgm_hole_fill and
-// sgm_median5x5 (same ports: disp_i/valid_i/in_valid_i/col_i/row_i/width_i/
+// GoogleTest fixture for the disparity-map stages sgm_hole_fill,
+// sgm_edge_snap and sgm_median5x5 (same ports: disp_i/valid_i/in_valid_i/col_i/row_i/width_i/
 // height_i and the stage's enable in, disp_o/valid_o/col_o/row_o/out_valid_o
 // out), against their golden function. Frames are streamed slot by slot in
 // raster order, each followed by flush slots until its last output has left,
@@ -21,6 +21,11 @@
 //   static void setEnable(Model&, bool);                  the stage enable (fill_en_i, ...)
 //   static DisparityMap golden(const DisparityMap&);      the golden stage
 //   static DisparityMap structured(int w, int h, std::mt19937&);  the stage's hard cases
+// A stage that also reads the left gray image (sgm_edge_snap) declares instead
+//   static DisparityMap golden(const DisparityMap&, const cv::Mat& gray);
+//   static void setGray(Model&, bool we, int x, int y, int gray);   its gray write port
+// and gets each pixel's gray written in the pixel's own slot (frames without a
+// gray image get a random one).
 #pragma once
 
 #include "cones.hpp"
@@ -44,7 +49,13 @@ struct DisparityFrame {
   DisparityMap map;
   bool enable = true;
   std::string name;
+  cv::Mat gray = {};  // left gray (CV_8U), for stages that read it; random when empty
 };
+
+template <class Stage, class = void>
+struct StageReadsGray : std::false_type {};
+template <class Stage>
+struct StageReadsGray<Stage, std::void_t<decltype(&Stage::setGray)>> : std::true_type {};
 
 template <class Stage>
 class DisparityStageTest : public ::testing::Test {
@@ -81,7 +92,13 @@ class DisparityStageTest : public ::testing::Test {
     return m;
   }
 
-  static DisparityMap expected(const Frame& f) { return f.enable ? Stage::golden(f.map) : f.map; }
+  static constexpr bool kReadsGray = StageReadsGray<Stage>::value;
+
+  static DisparityMap expected(const Frame& f) {
+    if (!f.enable) return f.map;
+    if constexpr (kReadsGray) return Stage::golden(f.map, f.gray);
+    else return Stage::golden(f.map);
+  }
 
   static std::string describe(const Frame& f) {
     std::ostringstream s;
@@ -108,6 +125,7 @@ class DisparityStageTest : public ::testing::Test {
 
     // State of the frame being streamed.
     int fi = 0, w = 0, h = 0, lat = 0, received = 0;
+    Frame frame;  // the frame being streamed, with its gray image
     DisparityMap got;
     cv::Mat seen;
 
@@ -125,6 +143,9 @@ class DisparityStageTest : public ::testing::Test {
             m.in_valid_i = real;
             m.disp_i = disp;
             m.valid_i = valid;
+            if constexpr (kReadsGray)
+              Stage::setGray(m, real || (junk() & 1), x, y & kRowMask,
+                             real ? frame.gray.at<uint8_t>(y, x) : int(junk() & 0xff));
           },
           [&] { return describe(f); });
       if (!ok) return;
@@ -146,8 +167,14 @@ class DisparityStageTest : public ::testing::Test {
 
     int prevX = 0, prevY = 0, prevW = 0;  // next raster position of the previous frame
     for (; fi < int(frames.size()); ++fi) {
-      const Frame& f = frames[fi];
+      frame = frames[fi];
+      const Frame& f = frame;
       w = f.map.disp.cols, h = f.map.disp.rows, lat = latency(w), received = 0;
+      if (kReadsGray && f.gray.empty()) {
+        frame.gray = cv::Mat(h, w, CV_8UC1);
+        for (int y = 0; y < h; ++y)
+          for (int x = 0; x < w; ++x) frame.gray.at<uint8_t>(y, x) = uint8_t(junk() & 0xff);
+      }
       ASSERT_LE(w, kMaxWidth) << describe(f);
       ASSERT_GE(w, 16) << describe(f);
       ASSERT_GE(h, 9) << describe(f);
@@ -196,13 +223,14 @@ class DisparityStageTest : public ::testing::Test {
   }
 
   // The map itself when it fits MAX_WIDTH, else full-height tiles (left, middle, right).
-  static std::vector<Frame> tiles(const DisparityMap& m, const std::string& name) {
+  static std::vector<Frame> tiles(const DisparityMap& m, const std::string& name, const cv::Mat& gray = {}) {
     const int w = m.disp.cols;
-    if (w <= kMaxWidth) return {{m, true, name}};
+    if (w <= kMaxWidth) return {{m, true, name, gray}};
     std::vector<Frame> out;
     for (int x0 : {0, (w - kMaxWidth) / 2, w - kMaxWidth}) {
       const cv::Rect r(x0, 0, kMaxWidth, m.disp.rows);
-      out.push_back({{m.disp(r).clone(), m.valid(r).clone()}, true, name + " columns " + std::to_string(x0) + ".."});
+      out.push_back({{m.disp(r).clone(), m.valid(r).clone()}, true, name + " columns " + std::to_string(x0) + "..",
+                     gray.empty() ? cv::Mat() : gray(r).clone()});
     }
     return out;
   }
@@ -294,7 +322,8 @@ class DisparityStageTest : public ::testing::Test {
     Top top(topName("cones"));
     runFrames(top,
               tiles(conesStages(d).*Stage::kConesInput,
-                    "cones D=" + std::to_string(d) + " " + Stage::kConesInputName),
+                    "cones D=" + std::to_string(d) + " " + Stage::kConesInputName,
+                    kReadsGray ? conesGray("left") : cv::Mat()),
               700 + d);
   }
 
@@ -312,6 +341,8 @@ class DisparityStageTest : public ::testing::Test {
     m.width_i = junk() % (kMaxWidth + 1);
     m.height_i = junk() & kRowMask;
     Stage::setEnable(m, junk() & 1);
+    if constexpr (kReadsGray)
+      Stage::setGray(m, junk() & 1, int(junk() % (kMaxWidth + 1)), int(junk() & kRowMask), int(junk() & 0xff));
   }
 
   static std::vector<uint32_t> outputs(Model& m) {

@@ -41,22 +41,23 @@ CostVolume randomCost(int w, int h, int d, int cmax, std::mt19937& rng) {
 // ------------------------------------------------------------------ P2 table
 
 TEST(P2Table, DocumentedExample) {
+  // P2r(k) = max(P1, floor(4 P2' / (k + 4))).
   const sgm::P2Table t = sgm::makeP2Table(7, 100);
   EXPECT_EQ(t[0], 100);
-  EXPECT_EQ(t[1], 100);
-  EXPECT_EQ(t[2], 50);
-  EXPECT_EQ(t[3], 33);   // floor(100 / 3)
-  EXPECT_EQ(t[14], 7);   // floor(100 / 14) = 7
-  EXPECT_EQ(t[15], 7);   // max(P1, 6)
+  EXPECT_EQ(t[1], 80);
+  EXPECT_EQ(t[2], 66);   // floor(400 / 6)
+  EXPECT_EQ(t[3], 57);   // floor(400 / 7)
+  EXPECT_EQ(t[53], 7);   // floor(400 / 57) = 7
+  EXPECT_EQ(t[54], 7);   // max(P1, 6)
   EXPECT_EQ(t[255], 7);
 }
 
 TEST(P2Table, ClampedAtP1AndMonotone) {
   const sgm::P2Table t = sgm::makeP2Table(20, 100);
   EXPECT_EQ(t[0], 100);
-  EXPECT_EQ(t[4], 25);
-  EXPECT_EQ(t[5], 20);
-  EXPECT_EQ(t[6], 20);  // 16 < P1
+  EXPECT_EQ(t[12], 25);
+  EXPECT_EQ(t[16], 20);
+  EXPECT_EQ(t[17], 20);  // 19 < P1
   for (int k = 1; k < 256; ++k) {
     EXPECT_LE(t[k], t[k - 1]);
     EXPECT_GE(t[k], 20);
@@ -283,7 +284,7 @@ std::vector<int> referencePath(const CostVolume& c, const cv::Mat& gray, int dx,
       int m = 1 << 30;
       for (int d = 0; d < nd; ++d) m = std::min(m, L(px, py, d));
       const int di = std::abs(int(gray.at<uint8_t>(y, x)) - int(gray.at<uint8_t>(py, px)));
-      const int p2r = di == 0 ? p2 : std::max(p1, p2 / di);
+      const int p2r = std::max(p1, 4 * p2 / (di + 4));
       for (int d = 0; d < nd; ++d) {
         int best = std::min(L(px, py, d), m + p2r);
         if (d > 0) best = std::min(best, L(px, py, d - 1) + p1);

@@ -95,6 +95,7 @@ TEST(CliArgs, LrToleranceAndOnOffValues) {
   EXPECT_TRUE(parse({"--subpixel", "1"}).pipelineParams().subpixel);
   EXPECT_TRUE(parse({"--subpixel", "on"}).pipelineParams().subpixel);
   EXPECT_FALSE(parse({"--fill", "off"}).pipelineParams().fill);
+  EXPECT_FALSE(parse({"--snap", "off"}).pipelineParams().snap);
 }
 
 TEST(CliArgs, Errors) {

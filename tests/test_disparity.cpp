@@ -1,5 +1,5 @@
 // Disparity selection and refinement (docs/algorithm.md sections 6 to 9):
-// WTA, sub-pixel, right disparity, LR check, hole filling, 5x5 median.
+// WTA, sub-pixel, right disparity, LR check, hole filling, edge snapping, 5x5 median.
 #include "sgm/disparity.hpp"
 #include "sgm/params.hpp"
 
@@ -177,7 +177,7 @@ TEST(SelectDisparity, SubpixelOnlyInsideTheRange) {
 // ------------------------------------------------------------------ fillHoles
 
 TEST(FillHoles, BackgroundSideBordersAndEmptyRows) {
-  const int X = 999;  // value of an invalid pixel: must not matter
+  const int X = 999;  // value of an invalid pixel, far from every neighbour: background rule
   const DisparityMap in = makeMap(
       {
           {X, 48, X, X, 32, X},     // both sides -> smaller; borders -> the one side
@@ -215,6 +215,106 @@ TEST(FillHoles, UsesOnlyOriginallyValidNeighbours) {
   // i.e. x=2 does not take the value just filled into x=1 as its left neighbour.
   const DisparityMap in = makeMap({{80, 0, 0, 20}}, {{1, 0, 0, 1}});
   EXPECT_EQ(dispRow(sgm::fillHoles(in), 0), (V{80, 20, 20, 20}));
+}
+
+TEST(FillHoles, KeepsAnOwnDisparityThatAgreesWithANeighbour) {
+  // Invalid pixels keep their own disparity when it is within 16 (1 px) of the
+  // nearest valid pixel on either side, else they take the smaller neighbour.
+  const DisparityMap in = makeMap(
+      {
+          {160, 176, 150, 320},   // 176: 16 from 160 (kept); 150: 10 from 160 (kept)
+          {160, 177, 143, 320},   // 177: 17 from 160, far from 320 -> 160; 143 likewise
+          {160, 310, 336, 320},   // 310 / 336: within 16 of the right neighbour 320
+          {160, 304, 90, 320},    // 304 is 16 from 320 (kept), 90 agrees with neither
+          {999, 40, 999, 999},    // no left neighbour for x=0; 999 agrees with nothing
+          {30, 999, 999, 999},    // only a left neighbour
+      },
+      {
+          {1, 0, 0, 1},
+          {1, 0, 0, 1},
+          {1, 0, 0, 1},
+          {1, 0, 0, 1},
+          {0, 1, 0, 0},
+          {1, 0, 0, 0},
+      });
+  const DisparityMap out = sgm::fillHoles(in);
+  EXPECT_EQ(dispRow(out, 0), (V{160, 176, 150, 320}));
+  EXPECT_EQ(dispRow(out, 1), (V{160, 160, 160, 320}));
+  EXPECT_EQ(dispRow(out, 2), (V{160, 310, 336, 320}));
+  EXPECT_EQ(dispRow(out, 3), (V{160, 304, 160, 320}));
+  EXPECT_EQ(dispRow(out, 4), (V{40, 40, 40, 40}));
+  EXPECT_EQ(dispRow(out, 5), (V{30, 30, 30, 30}));
+  for (int y = 0; y < 6; ++y) EXPECT_EQ(validRow(out, y), (V{1, 1, 1, 1})) << "row " << y;
+}
+
+// ------------------------------------------------------------------ snapEdges
+
+cv::Mat grayRow(const std::vector<std::vector<int>>& rows) {
+  cv::Mat g(int(rows.size()), int(rows[0].size()), CV_8UC1);
+  for (int y = 0; y < g.rows; ++y)
+    for (int x = 0; x < g.cols; ++x) g.at<uint8_t>(y, x) = uint8_t(rows[y][x]);
+  return g;
+}
+
+TEST(SnapEdges, MovesADropOntoTheStrongestIntensityStep) {
+  // Drop 640 -> 160 between x=5 and x=6 (more than 2 px). Candidate steps
+  // k = 3 .. 6 (|I(k) - I(k-1)|): the strongest one decides the new edge.
+  const std::vector<int> d = {640, 640, 640, 640, 640, 640, 160, 160};
+  const std::vector<int> ones(8, 1);
+  const DisparityMap in = makeMap({d, d, d, d}, {ones, ones, ones, ones});
+  const cv::Mat g = grayRow({
+      {10, 10, 10, 90, 90, 90, 90, 90},   // step at k=3 (80): pixels 3..5 take 160
+      {10, 10, 10, 10, 50, 50, 50, 50},   // step at k=4: pixels 4..5
+      {10, 10, 10, 10, 10, 10, 90, 90},   // step at k=6 = e+1: nothing moves
+      {90, 10, 10, 10, 10, 10, 10, 10},   // step at k=1 is out of reach: all steps 0 -> k=6
+  });
+  const DisparityMap out = sgm::snapEdges(in, g);
+  EXPECT_EQ(dispRow(out, 0), (V{640, 640, 640, 160, 160, 160, 160, 160}));
+  EXPECT_EQ(dispRow(out, 1), (V{640, 640, 640, 640, 160, 160, 160, 160}));
+  EXPECT_EQ(dispRow(out, 2), d);
+  EXPECT_EQ(dispRow(out, 3), d);
+  EXPECT_EQ(validRow(out, 0), ones);
+  EXPECT_EQ(dispRow(in, 0), d);  // the input is not modified
+}
+
+TEST(SnapEdges, TiesGoToTheSmallestMove) {
+  // Equal steps at k=4 and k=5: the edge goes to k=5 (one pixel moves).
+  const std::vector<int> ones(8, 1);
+  const DisparityMap in = makeMap({{640, 640, 640, 640, 640, 640, 160, 160}}, {ones});
+  const DisparityMap out = sgm::snapEdges(in, grayRow({{0, 0, 0, 0, 40, 80, 80, 80}}));
+  EXPECT_EQ(dispRow(out, 0), (V{640, 640, 640, 640, 640, 160, 160, 160}));
+}
+
+TEST(SnapEdges, OnlyDropsOfMoreThanTwoPixelsBetweenValidPixels) {
+  const cv::Mat g = grayRow(std::vector<std::vector<int>>(6, {0, 0, 0, 200, 200, 200}));  // step at k=3
+  const DisparityMap in = makeMap(
+      {
+          {200, 200, 200, 200, 200, 168},   // drop of exactly 32: not an edge
+          {200, 200, 200, 200, 200, 167},   // 33: edge, pixels 3..4 take 167
+          {200, 200, 200, 200, 200, 100},   // e+1 invalid: not an edge
+          {200, 200, 200, 200, 200, 100},   // e invalid: not an edge
+          {200, 200, 200, 200, 200, 100},   // pixel 3 invalid: keeps its value
+          {100, 100, 100, 200, 200, 200},   // a rise: untouched
+      },
+      {{1, 1, 1, 1, 1, 1}, {1, 1, 1, 1, 1, 1}, {1, 1, 1, 1, 1, 0}, {1, 1, 1, 1, 0, 1}, {1, 1, 1, 0, 1, 1},
+       {1, 1, 1, 1, 1, 1}});
+  const DisparityMap out = sgm::snapEdges(in, g);
+  EXPECT_EQ(dispRow(out, 0), (V{200, 200, 200, 200, 200, 168}));
+  EXPECT_EQ(dispRow(out, 1), (V{200, 200, 200, 167, 167, 167}));
+  EXPECT_EQ(dispRow(out, 2), (V{200, 200, 200, 200, 200, 100}));
+  EXPECT_EQ(dispRow(out, 3), (V{200, 200, 200, 200, 200, 100}));
+  EXPECT_EQ(dispRow(out, 4), (V{200, 200, 200, 200, 100, 100}));
+  EXPECT_EQ(validRow(out, 4), (V{1, 1, 1, 0, 1, 1}));
+  EXPECT_EQ(dispRow(out, 5), (V{100, 100, 100, 200, 200, 200}));
+}
+
+TEST(SnapEdges, NearestDropWinsAndStepsNeedAPixelOnTheLeft) {
+  // Drops at e=2 (800 -> 480) and e=3 (480 -> 160). The step at k=1 is the
+  // strongest for both, so pixels 1..2 are under both drops and take the
+  // nearest one's value (480); pixel 3 takes 160. Column 0 is never moved.
+  const DisparityMap in = makeMap({{800, 800, 800, 480, 160, 160}}, {{1, 1, 1, 1, 1, 1}});
+  const DisparityMap out = sgm::snapEdges(in, grayRow({{0, 100, 100, 100, 100, 100}}));
+  EXPECT_EQ(dispRow(out, 0), (V{800, 480, 480, 160, 160, 160}));
 }
 
 // ------------------------------------------------------------------ median

@@ -69,6 +69,7 @@ TEST(ParamsTest, RawSgmTurnsEveryPostStageOff) {
   EXPECT_FALSE(raw.subpixel);
   EXPECT_LT(raw.lrTolerance, 0);
   EXPECT_FALSE(raw.fill);
+  EXPECT_FALSE(raw.snap);
   EXPECT_FALSE(raw.median);
   EXPECT_EQ(raw.disparities, 32);
   EXPECT_EQ(raw.mode, CostMode::kRt);
@@ -85,6 +86,7 @@ TEST(ParamsTest, DefaultParamsKeepsTheModeAndPostProcessing) {
     EXPECT_EQ(p.subpixel, base.subpixel);
     EXPECT_EQ(p.lrTolerance, base.lrTolerance);
     EXPECT_EQ(p.fill, base.fill);
+    EXPECT_EQ(p.snap, base.snap);
     EXPECT_EQ(p.median, base.median);
   }
   // The documented post-processing defaults (docs/algorithm.md section 11).
@@ -92,6 +94,7 @@ TEST(ParamsTest, DefaultParamsKeepsTheModeAndPostProcessing) {
   EXPECT_TRUE(base.subpixel);
   EXPECT_EQ(base.lrTolerance, 1);
   EXPECT_TRUE(base.fill);
+  EXPECT_TRUE(base.snap);
   EXPECT_TRUE(base.median);
   EXPECT_TRUE(sgm::isHardwareMode(base.mode)) << "Params{} is the hardware default";
   // ... with the measured penalties of its own mode.

@@ -1,5 +1,5 @@
 // Bit-exact comparison of the golden pipeline with a deliberately naive,
-// independent implementation of docs/algorithm.md (sections 2 to 9), on small
+// independent implementation of docs/algorithm.md (sections 2 to 9, 8b), on small
 // random images, for every cost mode and several parameter sets. Catches
 // divergence between the optimised / streaming code paths and the contract
 // (runPipeline streams rows, runPipelineStages builds full volumes).
@@ -86,7 +86,7 @@ int birchfieldTomasi(const Img& l, const Img& r, int x, int y, int d) {
 struct Reference {
   int w, h, nd;
   std::vector<int> cost, sum;  // [y][x][d]
-  std::vector<int> selDisp, selValid, fillDisp, fillValid, outDisp, outValid;
+  std::vector<int> selDisp, selValid, fillDisp, fillValid, snapDisp, outDisp, outValid;
   int& C(int x, int y, int d) { return cost[(size_t(y) * w + x) * nd + d]; }
   int& S(int x, int y, int d) { return sum[(size_t(y) * w + x) * nd + d]; }
 };
@@ -95,7 +95,7 @@ Reference referencePipeline(const cv::Mat& lm, const cv::Mat& rm, const sgm::Par
   const Img l = fromMat(lm), r = fromMat(rm);
   const int w = l.w, h = l.h, nd = p.disparities;
   Reference ref{w, h, nd, std::vector<int>(size_t(w) * h * nd), std::vector<int>(size_t(w) * h * nd, 0),
-                {}, {}, {}, {}, {}, {}};
+                {}, {}, {}, {}, {}, {}, {}};
   const int cmax = p.mode == CostMode::kUnified ? 160
                    : p.mode == CostMode::kSad || p.mode == CostMode::kBt ? 255
                                                                          : 80;
@@ -138,7 +138,7 @@ Reference referencePipeline(const cv::Mat& lm, const cv::Mat& rm, const sgm::Par
           int m = 1 << 30;
           for (int d = 0; d < nd; ++d) m = std::min(m, L(px, py, d));
           const int di = std::abs(l.at(x, y) - l.at(px, py));
-          const int p2r = di == 0 ? p.p2 : std::max(p.p1, p.p2 / di);
+          const int p2r = std::max(p.p1, 4 * p.p2 / (di + 4));
           for (int d = 0; d < nd; ++d) {
             int best = std::min(L(px, py, d), m + p2r);
             if (d > 0) best = std::min(best, L(px, py, d - 1) + p.p1);
@@ -193,11 +193,35 @@ Reference referencePipeline(const cv::Mat& lm, const cv::Mat& rm, const sgm::Par
         for (int q = x + 1; q < w && right < 0; ++q)
           if (ref.selValid[size_t(y) * w + q]) right = ref.selDisp[size_t(y) * w + q];
         if (left < 0 && right < 0) continue;
-        ref.fillDisp[i] = left < 0 ? right : right < 0 ? left : std::min(left, right);
+        const int own = ref.selDisp[i];
+        if ((left >= 0 && std::abs(own - left) <= 16) || (right >= 0 && std::abs(own - right) <= 16))
+          ref.fillDisp[i] = own;
+        else
+          ref.fillDisp[i] = left < 0 ? right : right < 0 ? left : std::min(left, right);
         ref.fillValid[i] = 1;
       }
+  // Section 8b: pixel x takes d(e+1) of the nearest drop e >= x whose edge k(e) <= x.
+  ref.snapDisp = ref.fillDisp;
+  if (p.snap)
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        auto d = [&](int q) { return ref.fillDisp[size_t(y) * w + q]; };
+        auto v = [&](int q) { return ref.fillValid[size_t(y) * w + q] != 0; };
+        auto step = [&](int k) { return std::abs(l.at(k, y) - l.at(k - 1, y)); };
+        if (!v(x)) continue;
+        for (int e = x; e <= std::min(x + 2, w - 2); ++e) {
+          if (!v(e) || !v(e + 1) || d(e) - d(e + 1) <= 32) continue;
+          int edge = e + 1;
+          for (int k = e + 1; k >= std::max(1, e - 2); --k)
+            if (step(k) > step(edge)) edge = k;
+          if (edge <= x) {
+            ref.snapDisp[size_t(y) * w + x] = d(e + 1);
+            break;
+          }
+        }
+      }
   // Section 9.
-  ref.outDisp = ref.fillDisp;
+  ref.outDisp = ref.snapDisp;
   ref.outValid = ref.fillValid;
   if (p.median)
     for (int y = 0; y < h; ++y)
@@ -206,7 +230,7 @@ Reference referencePipeline(const cv::Mat& lm, const cv::Mat& rm, const sgm::Par
         std::vector<int> win;
         for (int qy = std::max(0, y - 2); qy <= std::min(h - 1, y + 2); ++qy)
           for (int qx = std::max(0, x - 2); qx <= std::min(w - 1, x + 2); ++qx)
-            if (ref.fillValid[size_t(qy) * w + qx]) win.push_back(ref.fillDisp[size_t(qy) * w + qx]);
+            if (ref.fillValid[size_t(qy) * w + qx]) win.push_back(ref.snapDisp[size_t(qy) * w + qx]);
         std::sort(win.begin(), win.end());
         ref.outDisp[size_t(y) * w + x] = win[(win.size() - 1) / 2];
       }
@@ -216,7 +240,7 @@ Reference referencePipeline(const cv::Mat& lm, const cv::Mat& rm, const sgm::Par
 // ------------------------------------------------------------------ comparison
 
 // Textured test pair: blocks at two disparities plus noise, so that the LR
-// check, the fill and the median all have work to do.
+// check, the fill, the edge snap and the median all have work to do.
 std::pair<cv::Mat, cv::Mat> testPair(int w, int h, unsigned seed) {
   std::mt19937 rng(seed);
   cv::Mat wide(h, w + 16, CV_8UC1);
@@ -225,7 +249,7 @@ std::pair<cv::Mat, cv::Mat> testPair(int w, int h, unsigned seed) {
   cv::Mat left = wide(cv::Rect(0, 0, w, h)).clone(), right(h, w, CV_8UC1);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
-      const int shift = x > w / 2 ? 5 : 2;
+      const int shift = x > w / 2 && x < w * 3 / 4 ? 5 : 2;  // a block in front: a rise and a drop
       right.at<uint8_t>(y, x) = wide.at<uint8_t>(y, std::min(x + shift, w + 15));
     }
   // A few flat areas (many ties) and noise in the right image.
@@ -261,12 +285,14 @@ struct Case {
   CostMode mode;
   int w, h, d, p1, p2, lr;
   bool subpixel, fill, median;
+  bool snap = true;
 };
 
 std::string caseName(const Case& c) {
   std::ostringstream s;
   s << sgm::costModeName(c.mode) << "_" << c.w << "x" << c.h << "_D" << c.d << "_P" << c.p1 << "_" << c.p2 << "_lr"
-    << c.lr << (c.subpixel ? "_sub" : "") << (c.fill ? "_fill" : "") << (c.median ? "_med" : "");
+    << c.lr << (c.subpixel ? "_sub" : "") << (c.fill ? "_fill" : "") << (c.snap ? "_snap" : "")
+    << (c.median ? "_med" : "");
   std::string n = s.str();
   for (char& ch : n)
     if (!isalnum(static_cast<unsigned char>(ch))) ch = '_';
@@ -287,6 +313,7 @@ TEST_P(ReferenceModel, GoldenMatchesTheNaiveContract) {
   p.lrTolerance = c.lr;
   p.subpixel = c.subpixel;
   p.fill = c.fill;
+  p.snap = c.snap;
   p.median = c.median;
   const auto [left, right] = testPair(c.w, c.h, 1000u + unsigned(c.w * 31 + c.d));
   const Reference ref = referencePipeline(left, right, p);
@@ -301,6 +328,7 @@ TEST_P(ReferenceModel, GoldenMatchesTheNaiveContract) {
       << "selected valid: " << firstDiff(flat(st.selected.valid), ref.selValid, c.w);
   EXPECT_TRUE(flat(st.filled.disp) == ref.fillDisp) << "filled: " << firstDiff(flat(st.filled.disp), ref.fillDisp, c.w);
   EXPECT_TRUE(flat(st.filled.valid) == ref.fillValid);
+  EXPECT_TRUE(flat(st.snapped.disp) == ref.snapDisp) << "snapped: " << firstDiff(flat(st.snapped.disp), ref.snapDisp, c.w);
   EXPECT_TRUE(flat(st.result.disp) == ref.outDisp) << "result: " << firstDiff(flat(st.result.disp), ref.outDisp, c.w);
   EXPECT_TRUE(flat(st.result.valid) == ref.outValid);
 
@@ -313,6 +341,9 @@ TEST_P(ReferenceModel, GoldenMatchesTheNaiveContract) {
   // Sanity: the case exercises the post-processing stages.
   if (c.lr >= 0 && c.d >= 8) {
     EXPECT_GT(std::count(ref.selValid.begin(), ref.selValid.end(), 0), 0) << "no invalid pixel in this case";
+  }
+  if (c.snap && c.d >= 16) {
+    EXPECT_NE(ref.snapDisp, ref.fillDisp) << "no pixel snapped in this case";
   }
 }
 
@@ -331,6 +362,8 @@ const Case kCases[] = {
     {CostMode::kUnified, 50, 12, 32, 16000, 16000, 1, true, true, true},  // largest penalties
     {CostMode::kRt, 50, 12, 32, 1, 16000, 3, true, false, true},
     {CostMode::kRsad, 70, 14, 24, 10, 200, 1, true, true, true},          // several 16-lane median blocks
+    {CostMode::kRsad, 41, 23, 16, 7, 100, 1, true, true, true, false},   // fill without snap
+    {CostMode::kRsad, 41, 23, 16, 7, 100, -1, false, false, false, true}, // snap alone
 };
 
 INSTANTIATE_TEST_SUITE_P(Cases, ReferenceModel, testing::ValuesIn(kCases),

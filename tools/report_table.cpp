@@ -164,15 +164,15 @@ std::string paramsRow(const TableReport& r, const Method& m) {
   return row + "mode " + costModeName(p.mode) + ", D=" + std::to_string(p.disparities) + ", P1=" +
          std::to_string(p.p1) + ", P2'=" + std::to_string(p.p2) + ", sub-pixel " + onOff(p.subpixel) +
          ", LR check " + (p.lrTolerance < 0 ? std::string("off") : "tol " + std::to_string(p.lrTolerance)) +
-         ", fill " + onOff(p.fill) + ", median " + onOff(p.median) + " |\n";
+         ", fill " + onOff(p.fill) + ", snap " + onOff(p.snap) + ", median " + onOff(p.median) + " |\n";
 }
 
 std::string notesMarkdown(const TableReport& r) {
   std::string md =
       "- **Table I configuration** (rows `sad` .. `unified`): the golden model with `defaultParams(mode)` but "
-      "the left-right check and hole filling off (`lrTolerance = -1`, `fill = false`); sub-pixel refinement and "
+      "the left-right check, hole filling and edge snapping off (`lrTolerance = -1`, `fill = false`, `snap = false`); sub-pixel refinement and "
       "the 5x5 median stay as in `defaultParams` (on). The paper's figure is in parentheses.\n"
-      "- **Full pipeline** (rows `full-*`): `defaultParams(mode)` as is (LR check, hole filling, sub-pixel, "
+      "- **Full pipeline** (rows `full-*`): `defaultParams(mode)` as is (LR check, hole filling, edge snapping, sub-pixel, "
       "median) for each cost mode the hardware implements; `" + r.hardwareDefault +
       "` is the hardware default (`Params{}.mode`).\n"
       "- **OpenCV** rows: `cv::StereoSGBM` (settings of OpenCV's stereo_match sample) on the colour images, "
@@ -212,6 +212,7 @@ void writeParams(JsonWriter& j, const TableReport& r, const Method& m) {
     j.key("subpixel").boolean(p.subpixel);
     j.key("lr_tolerance").integer(p.lrTolerance);  // < 0: LR check off
     j.key("fill").boolean(p.fill);
+    j.key("snap").boolean(p.snap);
     j.key("median").boolean(p.median);
   }
   j.endObject();
@@ -276,6 +277,7 @@ Params table1Params(CostMode mode, int disparities) {
   p.disparities = disparities;
   p.lrTolerance = -1;
   p.fill = false;
+  p.snap = false;
   p.validate();
   return p;
 }

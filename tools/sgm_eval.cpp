@@ -26,7 +26,7 @@ const char* kUsage =
     "       sgm-eval bench --data DIR [--out DIR] [--scene cones] [--repeats 5]\n"
     "                                                      golden vs OpenCV SGBM time -> bench.json\n"
     "pipeline options: --d D --p1 N --p2 N --mode M --subpixel on|off --lr TOL|off --fill on|off\n"
-    "                  --median on|off\n"
+    "                  --snap on|off --median on|off\n"
     "--delta X sets the error threshold (default 1); --out defaults to build/eval.\n";
 
 const char* kDefaultOut = "build/eval";

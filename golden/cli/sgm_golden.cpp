@@ -15,7 +15,7 @@ namespace {
 const char* kUsage =
     "usage: sgm-golden LEFT RIGHT [--out PREFIX] [--d D] [--p1 N] [--p2 N]\n"
     "                  [--mode rt|rsad|unified|sad|bt|sad+rt] [--subpixel on|off]\n"
-    "                  [--lr TOL|off] [--fill on|off] [--median on|off]\n"
+    "                  [--lr TOL|off] [--fill on|off] [--snap on|off] [--median on|off]\n"
     "Writes PREFIX_disp16.png (disparity x 256, 0 = invalid), PREFIX_disp8.png\n"
     "(the paper's [0, 255] scaling) and PREFIX_color.png. PREFIX defaults to 'disparity'.\n";
 

@@ -12,8 +12,7 @@ namespace sgm {
 
 P2Table makeP2Table(int p1, int p2) {
   P2Table table{};
-  table[0] = uint16_t(p2);
-  for (int k = 1; k < 256; ++k) table[k] = uint16_t(std::max(p1, p2 / k));
+  for (int k = 0; k < 256; ++k) table[k] = uint16_t(std::max(p1, kP2Knee * p2 / (k + kP2Knee)));
   return table;
 }
 

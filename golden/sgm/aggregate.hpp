@@ -13,7 +13,7 @@
 
 namespace sgm {
 
-// P2r indexed by |I(p) - I(p - r)|: P2' at 0, max(P1, floor(P2' / k)) otherwise.
+// P2r indexed by k = |I(p) - I(p - r)|: max(P1, floor(4 P2' / (k + 4))) (kP2Knee = 4).
 using P2Table = std::array<uint16_t, 256>;
 P2Table makeP2Table(int p1, int p2);
 

@@ -76,7 +76,7 @@ bool CliArgs::onOff(const std::string& name, bool fallback) const {
 }
 
 const std::set<std::string>& CliArgs::pipelineOptions() {
-  static const std::set<std::string> names = {"d", "p1", "p2", "mode", "subpixel", "lr", "fill", "median"};
+  static const std::set<std::string> names = {"d", "p1", "p2", "mode", "subpixel", "lr", "fill", "snap", "median"};
   return names;
 }
 
@@ -92,6 +92,7 @@ Params CliArgs::pipelineParams(Params p) const {
   if (text("lr", "") == "off") p.lrTolerance = -1;
   else p.lrTolerance = int(integer("lr", p.lrTolerance, 0, kMaxDisparities));
   p.fill = onOff("fill", p.fill);
+  p.snap = onOff("snap", p.snap);
   p.median = onOff("median", p.median);
   p.validate();
   return p;

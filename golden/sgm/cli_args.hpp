@@ -25,7 +25,7 @@ class CliArgs {
   double real(const std::string& name, double fallback, double min, double max) const;
   bool onOff(const std::string& name, bool fallback) const;
 
-  // Reads --d, --p1, --p2, --mode, --subpixel, --lr, --fill, --median into params;
+  // Reads --d, --p1, --p2, --mode, --subpixel, --lr, --fill, --snap, --median into params;
   // --mode also brings that mode's default P1 / P2' (defaultParams).
   static const std::set<std::string>& pipelineOptions();
   Params pipelineParams(Params base = Params{}) const;

@@ -96,11 +96,35 @@ DisparityMap fillHoles(const DisparityMap& in) {
         last = d[x];
         continue;
       }
-      const int left = last, right = fromRight[x];
+      const int left = last, right = fromRight[x], own = d[x];
       if (left == kNone && right == kNone) continue;
-      const int fill = left == kNone ? right : right == kNone ? left : std::min(left, right);
+      const auto agrees = [own](int n) { return n != kNone && std::abs(own - n) <= kFillAgree; };
+      const int background = left == kNone ? right : right == kNone ? left : std::min(left, right);
+      const int fill = agrees(left) || agrees(right) ? own : background;
       out.disp.at<uint16_t>(y, x) = uint16_t(fill);
       out.valid.at<uint8_t>(y, x) = 1;
+    }
+  }
+  return out;
+}
+
+DisparityMap snapEdges(const DisparityMap& in, const cv::Mat& grayLeft) {
+  const int w = in.disp.cols, h = in.disp.rows, r = kSnapReach;
+  DisparityMap out{in.disp.clone(), in.valid.clone()};
+  for (int y = 0; y < h; ++y) {
+    const uint16_t* d = in.disp.ptr<uint16_t>(y);
+    const uint8_t* v = in.valid.ptr<uint8_t>(y);
+    const uint8_t* g = grayLeft.ptr<uint8_t>(y);
+    uint16_t* o = out.disp.ptr<uint16_t>(y);
+    const auto step = [g](int k) { return std::abs(int(g[k]) - int(g[k - 1])); };
+    // Drops from right to left, so that the nearest drop right of a pixel writes last.
+    for (int e = w - 2; e >= 0; --e) {
+      if (!v[e] || !v[e + 1] || d[e] <= d[e + 1] + kSnapStep) continue;
+      int edge = e + 1;  // the strongest step in k = e+1-R .. e+1, ties to the largest k
+      for (int k = e; k >= std::max(1, e + 1 - r); --k)
+        if (step(k) > step(edge)) edge = k;
+      for (int x = edge; x <= e; ++x)
+        if (v[x]) o[x] = d[e + 1];
     }
   }
   return out;

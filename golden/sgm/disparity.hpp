@@ -1,5 +1,6 @@
 // Disparity selection and refinement: winner-take-all, sub-pixel, left-right
-// validation and the 5x5 median (docs/algorithm.md, sections 6 to 9).
+// validation, hole filling, edge snapping and the 5x5 median
+// (docs/algorithm.md, sections 6 to 9).
 #pragma once
 
 #include "sgm/image_io.hpp"
@@ -38,10 +39,18 @@ class RowSelector {
 // The same over a whole volume.
 DisparityMap selectDisparity(const PathVolume& s, const Params& params);
 
-// Hole filling along each row: an invalid pixel takes the smaller (background)
-// of the nearest valid disparities to its left and right in the same row, or
-// the one that exists; a row with no valid pixel stays invalid.
+// Hole filling along each row: an invalid pixel keeps its own disparity when it
+// is within kFillAgree (1 px) of the nearest valid disparity to its left or to
+// its right in the same row, else it takes the smaller (background) of the two,
+// or the one that exists; a row with no valid pixel stays invalid.
 DisparityMap fillHoles(const DisparityMap& in);
+
+// Edge snapping along each row (docs/algorithm.md section 8b): a drop of more
+// than kSnapStep between valid neighbours e, e+1 (foreground on the left) moves
+// left to the strongest step |I(k) - I(k-1)| of the left gray image among
+// k = e+1-kSnapReach .. e+1 (ties to the largest k): the valid pixels k .. e
+// take the disparity of e+1. A pixel under several drops takes the nearest.
+DisparityMap snapEdges(const DisparityMap& in, const cv::Mat& grayLeft);
 
 // 5x5 median over the valid pixels of the window (window clipped to the image);
 // an invalid centre stays invalid. Lower median of an even count.

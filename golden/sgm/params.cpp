@@ -61,7 +61,7 @@ Params defaultParams(CostMode mode) {
   switch (mode) {
     // Measured on cones, teddy, sawtooth, venus: docs/algorithm.md, section 11.
     case CostMode::kRt: p.p1 = 40, p.p2 = 255; break;
-    case CostMode::kRsad: p.p1 = 20, p.p2 = 200; break;
+    case CostMode::kRsad: p.p1 = 24, p.p2 = 160; break;
     case CostMode::kUnified: p.p1 = 40, p.p2 = 255; break;
     case CostMode::kSad: p.p1 = 8, p.p2 = 255; break;
     case CostMode::kBt: p.p1 = 16, p.p2 = 600; break;
@@ -75,6 +75,7 @@ Params Params::rawSgm() const {
   raw.subpixel = false;
   raw.lrTolerance = -1;
   raw.fill = false;
+  raw.snap = false;
   raw.median = false;
   return raw;
 }

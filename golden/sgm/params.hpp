@@ -31,17 +31,22 @@ constexpr int kCensusBits = 80;                   // 9*9 - 1
 constexpr int kSubpixelBits = 4;                  // disparities carry 1/16 px
 constexpr int kSubpixelOne = 1 << kSubpixelBits;  // 16
 constexpr int kMedianRadius = 2;                  // 5x5 median
+constexpr int kP2Knee = 4;                        // P2r = max(P1, kP2Knee P2' / (|dI| + kP2Knee))
+constexpr int kFillAgree = kSubpixelOne;          // fill keeps an own disparity within 1 px of a neighbour
+constexpr int kSnapReach = 3;                     // edge snap moves a disparity edge by up to 3 px
+constexpr int kSnapStep = 2 * kSubpixelOne;       // edge snap acts on drops of more than 2 px
 constexpr int kMaxPenalty = 16000;                // keeps 4 * (Cmax + P2') < 2^16
 constexpr int kPathCount = 4;                     // 0, 45, 90, 135 degrees
 
 struct Params {
   int disparities = 64;        // D: candidates 0 .. D-1
-  int p1 = 20;                 // small-change penalty
-  int p2 = 200;                // P2' of the adaptive P2r = max(P1, P2' / |dI|)
+  int p1 = 24;                 // small-change penalty
+  int p2 = 160;                // P2' of the adaptive P2r = max(P1, 4 P2' / (|dI| + 4))
   CostMode mode = CostMode::kRsad;  // the hardware default (measured best)
   bool subpixel = true;        // quadratic refinement to 1/16 px
   int lrTolerance = 1;         // left-right check tolerance in px; < 0 disables it
   bool fill = true;            // fill invalid pixels along the row from the background side
+  bool snap = true;            // move disparity drops onto the nearby intensity edge
   bool median = true;          // 5x5 median over valid pixels
 
   // Throws Error naming the first parameter that is out of range.

@@ -26,7 +26,8 @@ PipelineStages runPipelineStages(const cv::Mat& gl, const cv::Mat& gr, const Par
   st.aggregated = aggregateCost(st.cost, gl, params.p1, params.p2);
   st.selected = selectDisparity(st.aggregated, params);
   st.filled = params.fill ? fillHoles(st.selected) : st.selected;
-  st.result = params.median ? median5x5(st.filled) : st.filled;
+  st.snapped = params.snap ? snapEdges(st.filled, gl) : st.filled;
+  st.result = params.median ? median5x5(st.snapped) : st.snapped;
   return st;
 }
 
@@ -56,7 +57,8 @@ DisparityMap runPipeline(const cv::Mat& gl, const cv::Mat& gr, const Params& par
     selectors[worker].select(sum, selected.disp.ptr<uint16_t>(y), selected.valid.ptr<uint8_t>(y));
   });
   const DisparityMap filled = params.fill ? fillHoles(selected) : selected;
-  return params.median ? median5x5(filled) : filled;
+  const DisparityMap snapped = params.snap ? snapEdges(filled, gl) : filled;
+  return params.median ? median5x5(snapped) : snapped;
 }
 
 }  // namespace sgm

@@ -15,7 +15,8 @@ struct PipelineStages {
   PathVolume aggregated;   // S(p, d)
   DisparityMap selected;   // after WTA, sub-pixel and LR check
   DisparityMap filled;     // after hole filling (== selected when filling is off)
-  DisparityMap result;     // after the median (== filled when the median is off)
+  DisparityMap snapped;    // after edge snapping (== filled when snapping is off)
+  DisparityMap result;     // after the median (== snapped when the median is off)
 };
 
 // Throws Error for bad input: size mismatch, non-gray images, images smaller

@@ -104,7 +104,7 @@ std::vector<SeedFile> makeSeeds() {
 
 const std::vector<std::string>& optionNames() {  // of the three tools, plus strangers
   static const std::vector<std::string> names = {
-      "d",    "p1",   "p2",     "mode",     "subpixel", "lr",  "fill",  "median", "out",    "left", "right",
+      "d",    "p1",   "p2",     "mode",     "subpixel", "lr",  "fill",  "snap",  "median", "out",    "left", "right",
       "gt",   "gt-scale", "stall", "seed",  "frames",   "data", "delta", "scene",  "repeats", "help", "",
       "bogus", "D",   "d="};
   return names;

@@ -84,6 +84,7 @@ Params drawParams(Rng& rng) {
   p.subpixel = rng.chance(0.5);
   p.lrTolerance = rng.chance(0.3) ? -1 : rng.chance(0.7) ? rng.uniform(0, 2) : rng.uniform(0, 7);
   p.fill = rng.chance(0.5);
+  p.snap = rng.chance(0.5);
   p.median = rng.chance(0.5);
   return p;
 }
@@ -91,13 +92,14 @@ Params drawParams(Rng& rng) {
 std::string paramText(const Params& p) {
   std::ostringstream t;
   t << costModeName(p.mode) << " P1=" << p.p1 << " P2'=" << p.p2 << " sub=" << p.subpixel << " lr=" << p.lrTolerance
-    << " fill=" << p.fill << " median=" << p.median;
+    << " fill=" << p.fill << " snap=" << p.snap << " median=" << p.median;
   return t.str();
 }
 
-// Which of the 3 x 2 x 2 x 2 x 2 switch combinations a parameter set is.
+// Which of the 3 x 2 x 2 x 2 x 2 x 2 switch combinations a parameter set is.
 int paramCombination(const Params& p) {
-  return ((tb::hardwareModeCode(p.mode) * 2 + p.subpixel) * 2 + (p.lrTolerance >= 0)) * 4 + p.fill * 2 + p.median;
+  return (((tb::hardwareModeCode(p.mode) * 2 + p.subpixel) * 2 + (p.lrTolerance >= 0)) * 4 + p.fill * 2 + p.median) * 2 +
+         p.snap;
 }
 
 Frame goodFrame(Rng& rng, int maxHeight) {
@@ -305,7 +307,7 @@ int main(int argc, char** argv) {
               << " resets mid-frame; mean bad-1.0 (non-occluded) vs the scenes' ground truth "
               << (totals.goodFrames ? totals.badNonocc / double(totals.goodFrames) : 0.0) << " %; "
               << totals.combinations.size()
-              << " of 48 switch combinations (mode x sub-pixel x LR x fill x median); stalls: source "
+              << " of 96 switch combinations (mode x sub-pixel x LR x fill x median x snap); stalls: source "
               << totals.sourceStalls.size() << " of 5, sink " << totals.sinkStalls.size() << " of 5 profiles; case kinds "
               << totals.kinds.size() << "; " << seconds << " s; master seed " << master << "\n";
     if (!xmlPath.empty()) writeXml(xmlPath, results);

@@ -25,8 +25,8 @@ struct Median {
   static constexpr const char* kStage = "5x5 median (sgm_median5x5)";
   static constexpr const char* kSwitch = "median";
   static constexpr const char* kStructured = "patterns";
-  static constexpr DisparityMap sgm::PipelineStages::*kConesInput = &sgm::PipelineStages::filled;
-  static constexpr const char* kConesInputName = "filled";
+  static constexpr DisparityMap sgm::PipelineStages::*kConesInput = &sgm::PipelineStages::snapped;
+  static constexpr const char* kConesInputName = "snapped";
   static void setEnable(Model& m, bool on) { m.median_en_i = on; }
   static DisparityMap golden(const DisparityMap& m) { return sgm::median5x5(m); }
   static DisparityMap structured(int w, int h, std::mt19937& rng);

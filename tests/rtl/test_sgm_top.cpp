@@ -92,7 +92,7 @@ TEST(SgmTop, ParameterSetsChangeFromFrameToFrame) {
   sgm::Params rt = hardwareDefaults();
   rt.mode = sgm::CostMode::kRt, rt.lrTolerance = -1, rt.fill = false, rt.subpixel = false;
   sgm::Params strict = hardwareDefaults();
-  strict.lrTolerance = 0, strict.p1 = 0, strict.p2 = 0;
+  strict.lrTolerance = 0, strict.p1 = 0, strict.p2 = 0, strict.snap = false;
   sgm::Params raw = hardwareDefaults().rawSgm();
   for (const sgm::Params& p : {unified, rt, strict, raw, hardwareDefaults()}) frames.push_back(syntheticPair(kD + 20, 20, rng, p));
   expectBitExact(core, frames, "parameter sets");

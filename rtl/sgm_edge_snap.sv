@@ -1,0 +1,183 @@
+`default_nettype none
+// sgm_edge_snap: edge snapping along each row (docs/algorithm.md section 8b).
+// With step(k) = |I(k) - I(k-1)| of the left gray image, a drop at e (pixels e
+// and e+1 valid, disp(e) > disp(e+1) + 32) has its edge at the k in
+// max(1, e-2) .. e+1 with the largest step (ties to the largest k); a valid
+// pixel x with a drop e, x <= e <= x+2, edge(e) <= x takes disp(e+1) of the
+// nearest such e. Invalid pixels and validity pass through unchanged.
+// snap_en_i = 0 passes every pixel through unchanged, with the same latency.
+//
+// Left gray: written through its own port (gray_we_i at gray_col_i /
+// gray_row_i, any time before the disparity of that pixel arrives, at most
+// three rows earlier) into a memory of 4 row banks x 2^ceil(log2 MAX_WIDTH)
+// x 8 bit, and read back for each disparity slot one slot after it entered.
+//
+// Pipeline (all stages advance only when en_i):
+//   P0    input registers (pixel, position, frame-pixel flag)
+//   P1    gray read of the P0 pixel
+//   W     a window along the stream, w[0] the newest; the pixel leaving is
+//         x = w[3], with x+1 .. x+3 in w[2] .. w[0]; x-1, x-2 keep only their
+//         step and row-continuation flags (w[4], w[5]). Each pixel's step
+//         |I(n) - I(n-1)| and its drop flag (a drop at n-1) are computed once,
+//         when it enters; an entry takes part only if it continues the row of
+//         x (frame pixels of the same row: positions arrive in raster order).
+//   out   the snapping decision, output registers.
+// Parameters: DW disparity width (4 fractional bits), MAX_WIDTH, CW column /
+// width bits, RW row / height bits.
+// Positions: every slot carries (col_i, row_i) of a virtual raster. width_i
+// and height_i complete the interface the other row stages share; positions
+// and in_valid_i say everything this stage needs.
+// Latency: LATENCY = 7 slots, LATENCY_ROWS = 0. Throughput: one pixel per slot.
+// Reset: control only (frame-pixel flags).
+module sgm_edge_snap #(
+  parameter int DW        /*verilator public*/ = 8,
+  parameter int MAX_WIDTH /*verilator public*/ = 128,
+  parameter int CW                             = $clog2(MAX_WIDTH + 1),
+  parameter int RW        /*verilator public*/ = 11
+) (
+  input  wire           clk_i,
+  input  wire           rst_ni,
+  input  wire           en_i,
+  input  wire           snap_en_i,
+  input  wire  [CW-1:0] width_i,
+  input  wire  [RW-1:0] height_i,
+  // Left gray of pixel (gray_col_i, gray_row_i).
+  input  wire           gray_we_i,
+  input  wire  [CW-1:0] gray_col_i,
+  input  wire  [RW-1:0] gray_row_i,
+  input  wire  [7:0]    gray_i,
+  // Disparity stream.
+  input  wire  [DW-1:0] disp_i,
+  input  wire           valid_i,
+  input  wire           in_valid_i,
+  input  wire  [CW-1:0] col_i,
+  input  wire  [RW-1:0] row_i,
+  output logic [DW-1:0] disp_o,
+  output logic          valid_o,
+  output logic [CW-1:0] col_o,
+  output logic [RW-1:0] row_o,
+  output logic          out_valid_o
+);
+
+  localparam int LATENCY_ROWS /*verilator public*/ = 0;
+  localparam int LATENCY      /*verilator public*/ = 7;
+
+  localparam int AW = $clog2(MAX_WIDTH);
+  localparam int NW = 4;                  // window entries with the full pixel
+  localparam int EW = DW + 1 + CW + RW;   // entry data {valid, disp, col, row}
+
+  // ------------------------------------------------------------ gray memory
+  logic [7:0] gray_mem [0:(4 << AW)-1];
+  always_ff @(posedge clk_i) begin
+    if (en_i && gray_we_i) gray_mem[{gray_row_i[1:0], gray_col_i[AW-1:0]}] <= gray_i;
+  end
+
+  // ------------------------------------------------------------ P0, P1
+  logic [EW-1:0] p0_q, p1_q;
+  logic          p0_real_q, p1_real_q;
+  logic          p0_en_q, p1_en_q;
+  logic [7:0]    p1_gray_q;
+
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      p0_q      <= {valid_i & in_valid_i, disp_i, col_i, row_i};
+      p0_en_q   <= snap_en_i;
+      p1_q      <= p0_q;
+      p1_en_q   <= p0_en_q;
+      p1_gray_q <= gray_mem[{p0_q[1:0], p0_q[RW +: AW]}];
+    end
+  end
+
+  // ------------------------------------------------------------ window
+  // Entering pixel n (from P1) against the newest entry, pixel n-1:
+  //   cont  n and n-1 are frame pixels of the same row
+  //   step  step(n) = |I(n) - I(n-1)| with bit 8 set when cont (0: absent, never wins)
+  //   drop  a drop at e = n-1 (cont, both valid, disp(n-1) > disp(n) + 32)
+  logic [NW*EW-1:0] win_q;     // {valid, disp, col, row} of w[0] .. w[3]
+  logic [4:0]       wcont_q;   // w[0] .. w[4]
+  logic [(NW+2)*9-1:0] wstep_q;
+  logic [2:0]       wdrop_q;   // w[0] .. w[2]
+  logic [NW-1:0]    wreal_q;
+  logic [NW-1:0]    wen_q;     // snap enable
+  logic [7:0]       wgray_q;   // gray of w[0]
+
+  wire [DW-1:0] prev_disp = win_q[CW + RW +: DW];
+  wire          prev_vld  = win_q[EW - 1];
+  wire          new_vld   = p1_q[EW - 1];
+  wire [DW-1:0] new_disp  = p1_q[CW + RW +: DW];
+  wire          new_cont  = p1_real_q && wreal_q[0] && p1_q[0 +: RW] == win_q[0 +: RW];
+  wire [7:0]    new_mag   = p1_gray_q >= wgray_q ? p1_gray_q - wgray_q : wgray_q - p1_gray_q;
+  wire          new_drop  = new_cont && prev_vld && new_vld &&
+                            {1'b0, prev_disp} > {1'b0, new_disp} + (DW+1)'(32);
+
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      win_q   <= {win_q[(NW-1)*EW-1:0], p1_q};
+      wcont_q <= {wcont_q[3:0], new_cont};
+      wstep_q <= {wstep_q[(NW+1)*9-1:0], new_cont ? {1'b1, new_mag} : 9'd0};
+      wdrop_q <= {wdrop_q[1:0], new_drop};
+      wgray_q <= p1_gray_q;
+      wen_q   <= {wen_q[NW-2:0], p1_en_q};
+    end
+  end
+
+  // Pixel x = w[3]; w[j] holds x + 3 - j.
+  wire [DW-1:0] d_x   = win_q[3*EW + CW + RW +: DW];
+  wire          v_x   = win_q[3*EW + EW - 1];
+  wire          c1    = wcont_q[2], c2 = wcont_q[1];      // x+1 / x+2 continue the row
+  // Drops e = x, x+1, x+2 (stored with e+1), inside the row of x.
+  wire [2:0]    drop  = {wdrop_q[0] && c1 && c2, wdrop_q[1] && c1, wdrop_q[2]};
+  // Steps: right of x present whenever their drop is; left of x masked to the row.
+  wire [8:0] st_p3 = wstep_q[0*9 +: 9], st_p2 = wstep_q[1*9 +: 9], st_p1 = wstep_q[2*9 +: 9];
+  wire [8:0] st_0  = wstep_q[3*9 +: 9];
+  wire [8:0] st_m1 = wcont_q[3] ? wstep_q[4*9 +: 9] : 9'd0;
+  wire [8:0] st_m2 = wcont_q[3] && wcont_q[4] ? wstep_q[5*9 +: 9] : 9'd0;
+
+  function automatic logic [8:0] max9(input logic [8:0] a, input logic [8:0] b);
+    max9 = a > b ? a : b;
+  endfunction
+
+  // edge(e) <= x iff the best left candidate (max(1, e-2) .. x) beats every
+  // right one (x+1 .. e+1) strictly (ties go to the larger k). An absent left
+  // step is 0 and never beats.
+  wire [8:0] left1  = max9(st_m1, st_0);
+  wire [8:0] left0  = max9(st_m2, left1);
+  wire [8:0] left2  = st_0;
+  wire [8:0] right0 = st_p1;
+  wire [8:0] right1 = max9(st_p1, st_p2);
+  wire [8:0] right2 = max9(right1, st_p3);
+  wire [2:0] hit = drop & {left2 > right2, left1 > right1, left0 > right0};
+
+  logic [DW-1:0] snapped;
+  always_comb begin
+    if (hit[0])      snapped = win_q[2*EW + CW + RW +: DW];
+    else if (hit[1]) snapped = win_q[1*EW + CW + RW +: DW];
+    else             snapped = win_q[0*EW + CW + RW +: DW];
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      col_o   <= win_q[3*EW + RW +: CW];
+      row_o   <= win_q[3*EW +: RW];
+      valid_o <= v_x;
+      disp_o  <= wen_q[3] && v_x && hit != '0 ? snapped : d_x;
+    end
+  end
+
+  // ------------------------------------------------------------ control
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      p0_real_q   <= 1'b0;
+      p1_real_q   <= 1'b0;
+      wreal_q     <= '0;
+      out_valid_o <= 1'b0;
+    end else if (en_i) begin
+      p0_real_q   <= in_valid_i;
+      p1_real_q   <= p0_real_q;
+      wreal_q     <= {wreal_q[NW-2:0], p1_real_q};
+      out_valid_o <= wreal_q[3];
+    end
+  end
+
+endmodule
+`default_nettype wire
