@@ -7,9 +7,12 @@
 //   outside_i (x - d < 0, decided by the caller): Cmax of the mode (80, 80, 160).
 //
 // Parameters: none (the disparity only enters through outside_i).
-// Latency: 2 enabled cycles. Stage A registers |rank difference|, Hamming
-// distance and the out-of-image flag of the slot; stage B selects by mode_i,
-// which belongs to stage B's slot (the slot entered one enabled cycle earlier).
+// Latency: 2 enabled cycles. Stage A registers the rank difference (signed),
+// Hamming distance and the out-of-image flag of the slot; stage B selects by
+// mode_i, which belongs to stage B's slot (the slot entered one enabled cycle
+// earlier). Stage B is one adder: the mode and the out-of-image case select
+// its operands, and |rank difference| = (diff xor sign) + sign takes its
+// +sign as the carry in, so no separate absolute value or output mux.
 // Throughput: one cost per enabled cycle. No control registers, no reset.
 module sgm_cost_pe (
   input  wire             clk_i,
@@ -30,26 +33,32 @@ module sgm_cost_pe (
   );
 
   // Stage A
-  logic [6:0] rt_q, ham_q;
+  logic [7:0] diff_q;  // lrank - rrank, two's complement (-80 .. 80)
+  logic [6:0] ham_q;
   logic       out_q;
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      rt_q  <= lrank_i >= rrank_i ? lrank_i - rrank_i : rrank_i - lrank_i;
-      ham_q <= hamming;
-      out_q <= outside_i;
+      diff_q <= {1'b0, lrank_i} - {1'b0, rrank_i};
+      ham_q  <= hamming;
+      out_q  <= outside_i;
     end
   end
 
-  // Stage B
+  // Stage B: cost = rt_op + ham_op + rt_cin.
+  //   out_q:   80 + (unified ? 80 : 0)
+  //   mode 0:  (diff ^ sign) + sign      = rt
+  //   mode 1:  ham
+  //   unified: (diff ^ sign) + ham + sign = rt + rsad
+  wire       neg     = diff_q[7];
+  wire       use_rt  = mode_i != 2'd1;
+  wire       use_ham = mode_i != 2'd0;
+  wire [7:0] rt_op   = out_q ? 8'd80 : use_rt ? {1'b0, diff_q[6:0] ^ {7{neg}}} : 8'd0;
+  wire [7:0] ham_op  = out_q ? (mode_i[1] ? 8'd80 : 8'd0) : use_ham ? {1'b0, ham_q} : 8'd0;
+  wire       rt_cin  = !out_q && use_rt && neg;
+
   always_ff @(posedge clk_i) begin
-    if (en_i) begin
-      case (mode_i)
-        2'd0:    cost_o <= out_q ? 8'd80  : {1'b0, rt_q};
-        2'd1:    cost_o <= out_q ? 8'd80  : {1'b0, ham_q};
-        default: cost_o <= out_q ? 8'd160 : {1'b0, rt_q} + {1'b0, ham_q};
-      endcase
-    end
+    if (en_i) cost_o <= rt_op + ham_op + 8'(rt_cin);
   end
 
 endmodule

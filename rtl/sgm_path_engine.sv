@@ -13,10 +13,12 @@
 //      to the path memories at the pixel's column
 // Path memories (one per vertical path, MAX_WIDTH words of (D + 1) x LW bits,
 // synchronous read with enable -> block RAM): at the slot where pixel p enters
-// stage A the engine reads M90[p], M45[p] and M135[p + 1] (raster order);
-// they are used at stage B of p (90, 135) and of p + 1 (45, one register
-// later). Pixel p is written at its stage C, two slots after its reads, so a
-// word is always read for the next row before that row overwrites it.
+// stage A the engine reads M90[p], M45[p - 1] (at col_b, the column of the
+// previous slot) and M135[p + 1] (raster order, the previous row's words),
+// all used at stage B of p. Pixel p is written at its stage C, two slots
+// after its reads (M45[p - 1] is rewritten by pixel p - 1 one slot after the
+// read), so a word is always read for the next row before that row
+// overwrites it.
 //
 // Parameters: D disparities, CW cost width, LW path-cost width (Cmax + P2'max
 // must fit), PW penalty width, MAX_WIDTH, XW column bits, YW row bits.
@@ -110,14 +112,13 @@ module sgm_path_engine #(
   logic [WORD-1:0] mem45  [0:MAX_WIDTH-1];
   logic [WORD-1:0] mem90  [0:MAX_WIDTH-1];
   logic [WORD-1:0] mem135 [0:MAX_WIDTH-1];
-  logic [WORD-1:0] rd45_b, rd45_c, rd90_b, rd135_b;
+  logic [WORD-1:0] rd45_b, rd90_b, rd135_b;
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      rd45_b  <= mem45[AW'(col_i)];
+      rd45_b  <= mem45[AW'(col_b)];  // col_b = column of p - 1 (unused at col 0: 45 deg start)
       rd90_b  <= mem90[AW'(col_i)];
       rd135_b <= mem135[col_next];
-      rd45_c  <= rd45_b;  // M45[p - 1] at stage B of p
     end
   end
 
@@ -130,7 +131,7 @@ module sgm_path_engine #(
   logic [LW-1:0]   min0_q;
 
   // Previous-pixel path costs per path: 0 = 0 deg, 1 = 45, 2 = 90, 3 = 135.
-  wire [4*WORD-1:0] prev = {rd135_b, rd90_b, rd45_c, min0_q, lr0_q};
+  wire [4*WORD-1:0] prev = {rd135_b, rd90_b, rd45_b, min0_q, lr0_q};
   wire [3:0]        start = {at_right | at_top, at_top, at_left | at_top, at_left};
 
   logic [4*D*LW-1:0] lr_b;  // path r, disparity d at lr_b[(r*D+d)*LW +: LW]

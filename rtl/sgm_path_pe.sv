@@ -7,7 +7,7 @@
 // exist (0 for d = 0 / d = D-1). start_i selects the path start, Lr = C.
 //
 // Parameters: CW cost width, LW path-cost width (must hold Cmax + P2'max),
-// PW penalty width.
+// PW penalty width (P1, P2r; LW >= CW, PW).
 // Latency: 0 (combinational).
 module sgm_path_pe #(
   parameter int CW = 8,
@@ -30,20 +30,26 @@ module sgm_path_pe #(
   // One bit of headroom over LW for the penalised terms.
   localparam int EW = LW + 1;
 
-  wire [EW-1:0] same  = {1'b0, prev_i};
-  wire [EW-1:0] lower = has_lo_i ? {1'b0, prev_lo_i} + EW'(p1_i) : {EW{1'b1}};
-  wire [EW-1:0] upper = has_hi_i ? {1'b0, prev_hi_i} + EW'(p1_i) : {EW{1'b1}};
-  wire [EW-1:0] jump  = {1'b0, min_prev_i} + EW'(p2r_i);
+  // L(d-1) + P1 and L(d+1) + P1 compete only with each other's P1 added, so
+  // the smaller neighbour is picked first and P1 added once:
+  // min(L(d-1), L(d+1)) + P1 (all ones when neither neighbour exists).
+  wire [LW-1:0] nb   = !has_lo_i ? prev_hi_i :
+                       !has_hi_i ? prev_lo_i :
+                       prev_hi_i < prev_lo_i ? prev_hi_i : prev_lo_i;
+  wire [EW-1:0] side = has_lo_i || has_hi_i ? {1'b0, nb} + EW'(p1_i) : {EW{1'b1}};
+  wire [EW-1:0] same = {1'b0, prev_i};
+  wire [EW-1:0] jump = {1'b0, min_prev_i} + EW'(p2r_i);
 
-  wire [EW-1:0] m01  = lower < same ? lower : same;
-  wire [EW-1:0] m23  = jump < upper ? jump : upper;
-  wire [EW-1:0] best = m23 < m01 ? m23 : m01;
+  wire [EW-1:0] m01  = side < same ? side : same;
 
-  // best - minL lies in 0 .. P2r, so the sum fits LW bits (Lr <= Cmax + P2').
-  wire [EW-1:0] step = best - {1'b0, min_prev_i};
-  wire [LW-1:0] sum  = LW'(EW'(cost_i) + step);
+  // best - minL lies in 0 .. P2r, so it fits PW bits (modulo 2^PW is exact)
+  // and only the low PW bits of best are selected; Lr = C + step <= Cmax +
+  // P2' fits LW bits. At the path start the step is masked to 0 (Lr = C) in
+  // front of the adder instead of a mux behind it.
+  wire [PW-1:0] best = jump < m01 ? jump[PW-1:0] : m01[PW-1:0];
+  wire [PW-1:0] step = start_i ? {PW{1'b0}} : best - min_prev_i[PW-1:0];
 
-  assign lr_o = start_i ? LW'(cost_i) : sum;
+  assign lr_o = LW'(cost_i) + LW'(step);
 
 endmodule
 `default_nettype wire
