@@ -730,6 +730,11 @@ void writeMarkdown(const std::string &path, const std::vector<Target> &ts, const
                             : "**missed** (" + fixed(100.0 * l / kPaperLut, 0) + " %)";
     });
     row("Yosys run time", "", [&](const Target &t) { return std::isnan(t.seconds) ? na : fixed(t.seconds, 0) + " s"; });
+    // Columns synthesized from different RTL are not comparable: say which RTL each one is.
+    row("RTL (last commit touching rtl/)", "", [&](const Target &t) {
+      const std::string c = metaGet(t.meta, "rtl_commit");
+      return c.empty() ? na : "`" + c + "`";
+    });
     o << "\n";
 
     // Path buffers.
