@@ -189,7 +189,7 @@ int main(int argc, char** argv) {
         "stage separately): " << toggleInstances.covered << " of " << toggleInstances.points << ", **"
      << percent(toggleInstances.percent()) << " %**.\n\n"
      << "A point is covered when any instance in any run reached it at least once. Line points are Verilator's "
-        "v_line and v_branch points (statements, both arms of each if/case); toggle points are signal bits, covered when the bit rose and fell (changed at least twice). Modules made only of continuous assignments (sgm_top, sgm_min_tree, sgm_path_pe) have toggle points but no line points.\n\n"
+        "v_line and v_branch points (statements, both arms of each if/case); toggle points are signal bits, covered when the bit rose and fell (changed at least twice). Modules made only of continuous assignments (sgm_top, sgm_path_pe) have toggle points but no line points.\n\n"
      << "| file | line points | covered | % | toggle bits | toggled | % |\n|---|---|---|---|---|---|---|\n";
   for (const auto& [file, t] : lineByFile) {
     const Totals& g = toggleByFile[file];
