@@ -49,7 +49,7 @@ help:
 	@echo "make regress       constrained-random regression of the core (seeded, replayable)"
 	@echo "make fuzz          seeded random-corruption fuzzing of image loading and argument parsing"
 	@echo "make coverage      line and toggle coverage of rtl/ -> build/coverage/"
-	@echo "make test          everything CI runs (unit tests, end-to-end accuracy, CLI errors)"
+	@echo "make test          everything CI runs (lint, unit tests, RTL fixtures, synth-ci, regress-ci, fuzz-ci)"
 	@echo "make clean         remove build/"
 
 # ---------------------------------------------------------------- dependencies
