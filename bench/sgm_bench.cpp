@@ -41,8 +41,6 @@ const char* kUsage =
     "usage: sgm-bench formats --source IMAGE --out DIR\n"
     "       sgm-bench report --data DIR --bench DIR [--repeats N]\n";
 
-const char* kAloeDir = "/usr/share/doc/opencv-doc/examples/data";
-
 // The paper's Table II formats plus 1080p30; paperMhz is the paper's clock
 // (it runs at 9 cycles per pixel), 0 where the paper has no column.
 struct VideoFormat {
@@ -164,11 +162,8 @@ BenchData measure(const std::string& data, const std::string& bench, int repeats
     b.sceneData[name] = loadScene(data + "/" + name);
     b.scenes.push_back(name);
   }
-  if (fs::exists(std::string(kAloeDir) + "/aloeL.jpg")) {
-    Scene aloe = loadSceneFiles(std::string(kAloeDir) + "/aloeL.jpg", std::string(kAloeDir) + "/aloeR.jpg",
-                                std::string(kAloeDir) + "/aloeGT.png", 1, 4);
-    aloe.name = "aloe";
-    b.sceneData["aloe"] = aloe;
+  if (aloeAvailable()) {
+    b.sceneData["aloe"] = loadAloe();
     b.scenes.push_back("aloe");
   }
   if (b.scenes.empty()) throw Error("no scene found under '" + data + "' and no Aloe pair");

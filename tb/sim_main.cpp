@@ -40,7 +40,6 @@ const char* kUsage =
     "stalls the output with probability P per cycle; --frames N sends the pair N times back\n"
     "to back. TRACE=1 (at build and run time) writes build/trace/sgm_top.fst.\n";
 
-const char* kAloeDir = "/usr/share/doc/opencv-doc/examples/data";
 
 }  // namespace
 
@@ -75,11 +74,7 @@ int main(int argc, char** argv) {
       scene = eval::loadSceneFiles(args.text("left", ""), args.text("right", ""), args.text("gt", ""),
                                    args.real("gt-scale", 0, 0, 1e6));
     } else {
-      const std::string dir = kAloeDir;
-      if (!std::filesystem::exists(dir + "/aloeL.jpg"))
-        throw Error("default scene not found in " + dir + " (run 'make deps' to install opencv-doc)");
-      scene = eval::loadSceneFiles(dir + "/aloeL.jpg", dir + "/aloeR.jpg", dir + "/aloeGT.png", 1.0, 4);
-      scene.name = "aloe";
+      scene = eval::loadAloe();
     }
     checkInput(scene.left, scene.right, params);
     const int w = scene.left.cols, h = scene.left.rows;

@@ -42,6 +42,18 @@ cv::Mat readMaskIfPresent(const std::string& path, cv::Size size) {
 
 }  // namespace
 
+const char* const kAloeDir = "/usr/share/doc/opencv-doc/examples/data";
+
+bool aloeAvailable() { return std::filesystem::exists(std::string(kAloeDir) + "/aloeL.jpg"); }
+
+Scene loadAloe() {
+  const std::string dir = kAloeDir;
+  if (!aloeAvailable()) throw Error("default scene not found in " + dir + " (run 'make deps' to install opencv-doc)");
+  Scene scene = loadSceneFiles(dir + "/aloeL.jpg", dir + "/aloeR.jpg", dir + "/aloeGT.png", 1.0, 4);
+  scene.name = "aloe";
+  return scene;
+}
+
 cv::Mat deriveNonOccluded(const cv::Mat& gtRaw, double scale) {
   cv::Mat mask(gtRaw.size(), CV_8UC1, cv::Scalar(0));
   for (int y = 0; y < gtRaw.rows; ++y) {

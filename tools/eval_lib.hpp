@@ -44,6 +44,13 @@ Scene makeScene(const std::string& name, const cv::Mat& leftColor, const cv::Mat
 Scene loadSceneFiles(const std::string& leftPath, const std::string& rightPath, const std::string& gtPath,
                      double gtScale, int downscale = 1);
 
+// The Middlebury Aloe pair with ground truth shipped by opencv-doc
+// (kAloeDir/aloe{L,R}.jpg, aloeGT.png), scaled by 1/4 so its disparities fit
+// D = 64, named "aloe". aloeAvailable() says whether the files are there;
+// loadAloe() throws Error (pointing at `make deps`) when they are not.
+extern const char* const kAloeDir;
+bool aloeAvailable();
+Scene loadAloe();
 // Non-occluded mask from the left ground truth: a pixel is occluded when its
 // match x - d falls outside the right image or a pixel to its right lands on
 // or left of that match. Unknown gt (0) is excluded.

@@ -207,9 +207,7 @@ TEST(SgmTop, MiddleburyAndAloe) {
     const std::string dir = std::string(data ? data : "") + "/" + name;
     if (data && std::filesystem::exists(dir + "/left.png")) scenes.push_back(sgm::eval::loadScene(dir));
   }
-  const std::string aloe = "/usr/share/doc/opencv-doc/examples/data";
-  if (std::filesystem::exists(aloe + "/aloeL.jpg"))
-    scenes.push_back(sgm::eval::loadSceneFiles(aloe + "/aloeL.jpg", aloe + "/aloeR.jpg", aloe + "/aloeGT.png", 1, 4));
+  if (sgm::eval::aloeAvailable()) scenes.push_back(sgm::eval::loadAloe());
   if (scenes.size() < 5) std::cout << "[ note     ] Middlebury data not found at " << (data ? data : "(SGM_DATA unset)") << "; set DATA=...\n";
   if (scenes.empty()) GTEST_SKIP() << "no scenes";
   for (const sgm::eval::Scene& s : scenes) {
