@@ -320,9 +320,9 @@ TEST(PathCost, BoundedByMaxCostPlusP2) {
   std::mt19937 rng(5);
   const int w = 48, h = 32, nd = 32;
   const cv::Mat gray = randomGray(w, h, rng);
-  for (int cmax : {80, 160, 255}) {
+  for (int cmax : {44, 88, 255}) {
     const CostVolume c = randomCost(w, h, nd, cmax, rng);
-    for (auto [p1, p2] : {std::pair{7, 100}, std::pair{0, 0}, std::pair{16000, 16000}, std::pair{3, 16000}}) {
+    for (auto [p1, p2] : {std::pair{7, 100}, std::pair{0, 0}, std::pair{6000, 6000}, std::pair{3, 6000}}) {
       int maxSeen = 0;
       for (int path = 0; path < 4; ++path) {
         const PathVolume lr = sgm::pathCost(c, gray, path, p1, p2);
@@ -333,11 +333,11 @@ TEST(PathCost, BoundedByMaxCostPlusP2) {
   }
 }
 
-TEST(AggregateCost, EqualsSumOfTheFourPaths) {
+TEST(AggregateCost, EqualsWeightedSumOfTheFourPaths) {
   std::mt19937 rng(11);
   const int w = 40, h = 30, nd = 24;
   const cv::Mat gray = randomGray(w, h, rng);
-  for (auto [cmax, p1, p2] : {std::tuple{160, 7, 100}, std::tuple{255, 16000, 16000}}) {
+  for (auto [cmax, p1, p2] : {std::tuple{88, 7, 100}, std::tuple{255, 6000, 6000}}) {
     const CostVolume c = randomCost(w, h, nd, cmax, rng);
     const PathVolume s = sgm::aggregateCost(c, gray, p1, p2);
     ASSERT_EQ(s.width, w);
@@ -347,11 +347,11 @@ TEST(AggregateCost, EqualsSumOfTheFourPaths) {
     std::vector<int> sum(s.data.size(), 0);
     for (int path = 0; path < 4; ++path) {
       const PathVolume lr = sgm::pathCost(c, gray, path, p1, p2);
-      for (size_t i = 0; i < sum.size(); ++i) sum[i] += lr.data[i];
+      for (size_t i = 0; i < sum.size(); ++i) sum[i] += sgm::kPathWeights[path] * lr.data[i];
     }
     for (size_t i = 0; i < sum.size(); ++i) {
       ASSERT_EQ(int(s.data[i]), sum[i]) << "index " << i << " P2 " << p2;
-      ASSERT_LE(sum[i], 4 * (cmax + p2));
+      ASSERT_LE(sum[i], sgm::kPathWeightSum * (cmax + p2));
     }
   }
 }

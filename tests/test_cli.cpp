@@ -264,7 +264,7 @@ TEST_F(SgmGoldenCli, BadOptionValues) {
       {{"--d"}, "needs a value"},
       {{"--d", "99999999999999999999"}, "--d expects an integer"},
       {{"--p2", "1e9"}, "--p2 expects an integer"},
-      {{"--p2", "16001"}, "--p2=16001 out of range"},
+      {{"--p2", "6001"}, "--p2=6001 out of range"},
       {{"--lr", "1000"}, "--lr=1000 out of range"},
       {{"--mode", "a\nb"}, "'a\\nb'"},  // a newline in a value stays on one line
       {{"--out", ""}, "empty --out"},
@@ -440,7 +440,7 @@ TEST_F(SgmEvalCli, BadSceneImagesInEveryCommand) {
 
 TEST_F(SgmEvalCli, SceneSmallerThanTheWindow) {
   const std::string data = makeScene("synthetic", texture(8, 8, 1), texture(8, 8, 2), cv::Mat(8, 8, CV_8UC1, cv::Scalar(4)));
-  expectOneLineError(run("sgm-eval", {"run", "--data", data}), "sgm-eval", "smaller than the 9x9 window");
+  expectOneLineError(run("sgm-eval", {"run", "--data", data}), "sgm-eval", "smaller than the 9x9 minimum frame");
 }
 
 TEST_F(SgmEvalCli, UnusableOutputDirectoryFailsBeforeTheWork) {

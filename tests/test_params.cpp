@@ -44,12 +44,12 @@ TEST(ParamsValidate, Penalties) {
   p.p2 = 100;
   expectError([&] { p.validate(); }, {"P1=-1"});
   p.p1 = 0;
-  p.p2 = 16000;
+  p.p2 = 6000;
   EXPECT_NO_THROW(p.validate());
-  p.p2 = 16001;
-  expectError([&] { p.validate(); }, {"P2'=16001"});
-  p.p1 = 16001;
-  expectError([&] { p.validate(); }, {"P1=16001"});
+  p.p2 = 6001;
+  expectError([&] { p.validate(); }, {"P2'=6001"});
+  p.p1 = 6001;
+  expectError([&] { p.validate(); }, {"P1=6001"});
 }
 
 TEST(ParamsValidate, LrTolerance) {

@@ -33,10 +33,10 @@ Img fromMat(const cv::Mat& m) {
   return i;
 }
 
-// Census as a list of 80 bools, bit order of section 2.
+// Census as a list of 44 bools (9x5 window), bit order of section 2.
 std::vector<bool> census(const Img& im, int x, int y) {
   std::vector<bool> bits;
-  for (int dy = -4; dy <= 4; ++dy)
+  for (int dy = -2; dy <= 2; ++dy)
     for (int dx = -4; dx <= 4; ++dx) {
       if (dx == 0 && dy == 0) continue;
       const int qx = x + dx, qy = y + dy;
@@ -56,7 +56,7 @@ int hamming(const std::vector<bool>& a, const std::vector<bool>& b) {
 
 int sadMean(const Img& l, const Img& r, int x, int y, int d) {
   int sum = 0, n = 0;
-  for (int qy = y - 4; qy <= y + 4; ++qy)
+  for (int qy = y - 2; qy <= y + 2; ++qy)
     for (int qx = x - 4; qx <= x + 4; ++qx) {
       if (qy < 0 || qy >= l.h || qx < 0 || qx >= l.w || qx - d < 0) continue;
       sum += std::abs(l.at(qx, qy) - r.at(qx - d, qy));
@@ -96,9 +96,9 @@ Reference referencePipeline(const cv::Mat& lm, const cv::Mat& rm, const sgm::Par
   const int w = l.w, h = l.h, nd = p.disparities;
   Reference ref{w, h, nd, std::vector<int>(size_t(w) * h * nd), std::vector<int>(size_t(w) * h * nd, 0),
                 {}, {}, {}, {}, {}, {}, {}};
-  const int cmax = p.mode == CostMode::kUnified ? 160
+  const int cmax = p.mode == CostMode::kUnified ? 88
                    : p.mode == CostMode::kSad || p.mode == CostMode::kBt ? 255
-                                                                         : 80;
+                                                                         : 44;
   // Section 3: C(p, d).
   std::vector<std::vector<bool>> cl, cr;
   for (int y = 0; y < h; ++y)
@@ -120,12 +120,12 @@ Reference referencePipeline(const cv::Mat& lm, const cv::Mat& rm, const sgm::Par
           case CostMode::kUnified: c = rt + rsad; break;
           case CostMode::kSad: c = sadMean(l, r, x, y, d); break;
           case CostMode::kBt: c = birchfieldTomasi(l, r, x, y, d); break;
-          case CostMode::kSadRt: c = (2 * ((sadMean(l, r, x, y, d) * 80 + 127) / 255) + 8 * rt + 5) / 10; break;
+          case CostMode::kSadRt: c = (2 * ((sadMean(l, r, x, y, d) * 44 + 127) / 255) + 8 * rt + 5) / 10; break;
         }
         ref.C(x, y, d) = c;
       }
-  // Sections 4 and 5: four paths, summed.
-  const int dirs[4][2] = {{-1, 0}, {-1, -1}, {0, -1}, {1, -1}};
+  // Sections 4 and 5: four paths, summed with weights 3, 2, 3, 2.
+  const int dirs[4][3] = {{-1, 0, 3}, {-1, -1, 2}, {0, -1, 3}, {1, -1, 2}};  // dx, dy, weight
   for (const auto& dir : dirs) {
     std::vector<int> lr(size_t(w) * h * nd);
     auto L = [&](int x, int y, int d) -> int& { return lr[(size_t(y) * w + x) * nd + d]; };
@@ -146,7 +146,7 @@ Reference referencePipeline(const cv::Mat& lm, const cv::Mat& rm, const sgm::Par
             L(x, y, d) = ref.C(x, y, d) + best - m;
           }
         }
-        for (int d = 0; d < nd; ++d) ref.S(x, y, d) += L(x, y, d);
+        for (int d = 0; d < nd; ++d) ref.S(x, y, d) += dir[2] * L(x, y, d);
       }
   }
   // Sections 6 and 7.
@@ -359,8 +359,8 @@ const Case kCases[] = {
     {CostMode::kRsad, 37, 19, 8, 0, 0, -1, true, false, false},
     {CostMode::kUnified, 12, 10, 20, 7, 100, 2, true, true, true},        // D > W
     {CostMode::kUnified, 9, 9, 2, 7, 100, 1, true, true, true},          // smallest image and D
-    {CostMode::kUnified, 50, 12, 32, 16000, 16000, 1, true, true, true},  // largest penalties
-    {CostMode::kRt, 50, 12, 32, 1, 16000, 3, true, false, true},
+    {CostMode::kUnified, 50, 12, 32, 6000, 6000, 1, true, true, true},  // largest penalties
+    {CostMode::kRt, 50, 12, 32, 1, 6000, 3, true, false, true},
     {CostMode::kRsad, 70, 14, 24, 10, 200, 1, true, true, true},          // several 16-lane median blocks
     {CostMode::kRsad, 41, 23, 16, 7, 100, 1, true, true, true, false},   // fill without snap
     {CostMode::kRsad, 41, 23, 16, 7, 100, -1, false, false, false, true}, // snap alone

@@ -126,7 +126,9 @@ void aggregateRows(int width, int height, int nd, const cv::Mat& gray, int p1, i
       const uint16_t* l2 = paths[2].step(x, y, c);
       const uint16_t* l3 = paths[3].step(x, y, c);
       uint16_t* s = sum + size_t(x) * nd;
-      for (int d = 0; d < nd; ++d) s[d] = uint16_t(l0[d] + l1[d] + l2[d] + l3[d]);
+      for (int d = 0; d < nd; ++d)
+        s[d] = uint16_t(kPathWeights[0] * l0[d] + kPathWeights[1] * l1[d] + kPathWeights[2] * l2[d] +
+                        kPathWeights[3] * l3[d]);
       if (x == x0) afterFirst();
     }
   };

@@ -50,42 +50,38 @@ namespace {
 // reversed (index W-1-x) so that the D candidates of one left pixel are
 // contiguous.
 inline __attribute__((always_inline)) void censusCostKernel(CostMode mode, const Census* left,
-                                                            const uint64_t* rightLo, const uint64_t* rightHi,
-                                                            const uint8_t* rightRank, int width, int x0, int x1,
-                                                            int nd, uint8_t* row) {
+                                                            const uint64_t* rightBits, const uint8_t* rightRank,
+                                                            int width, int x0, int x1, int nd, uint8_t* row) {
   const int cmax = maxCost(mode);
   for (int x = x0; x < x1; ++x) {
     uint8_t* c = row + size_t(x) * nd;
     const int inside = std::min(nd, x + 1), k0 = width - 1 - x;  // d <= x: the match is in the image
-    const uint64_t lo = left[x].lo, hi = left[x].hi;
+    const uint64_t bits = left[x].bits;
     const int rank = left[x].rank();
-    const uint64_t* rLo = rightLo + k0;
-    const uint64_t* rHi = rightHi + k0;
+    const uint64_t* rBits = rightBits + k0;
     const uint8_t* rRank = rightRank + k0;
     if (mode == CostMode::kRsad)
-      for (int d = 0; d < inside; ++d)
-        c[d] = uint8_t(__builtin_popcountll(lo ^ rLo[d]) + __builtin_popcountll(hi ^ rHi[d]));
+      for (int d = 0; d < inside; ++d) c[d] = uint8_t(__builtin_popcountll(bits ^ rBits[d]));
     else if (mode == CostMode::kRt)
       for (int d = 0; d < inside; ++d) c[d] = uint8_t(std::abs(rank - rRank[d]));
     else
       for (int d = 0; d < inside; ++d)
-        c[d] = uint8_t(std::abs(rank - rRank[d]) + __builtin_popcountll(lo ^ rLo[d]) +
-                       __builtin_popcountll(hi ^ rHi[d]));
+        c[d] = uint8_t(std::abs(rank - rRank[d]) + __builtin_popcountll(bits ^ rBits[d]));
     for (int d = inside; d < nd; ++d) c[d] = uint8_t(cmax);
   }
 }
 
 // The same kernel built for CPUs with a vector popcount, chosen at run time.
-using CostKernel = void (*)(CostMode, const Census*, const uint64_t*, const uint64_t*, const uint8_t*, int, int,
-                            int, int, uint8_t*);
+using CostKernel = void (*)(CostMode, const Census*, const uint64_t*, const uint8_t*, int, int, int, int,
+                            uint8_t*);
 __attribute__((target("avx512f,avx512vl,avx512bw,avx512vpopcntdq"))) void censusCostKernelVectorPopcount(
-    CostMode mode, const Census* left, const uint64_t* lo, const uint64_t* hi, const uint8_t* rank, int width,
-    int x0, int x1, int nd, uint8_t* row) {
-  censusCostKernel(mode, left, lo, hi, rank, width, x0, x1, nd, row);
+    CostMode mode, const Census* left, const uint64_t* bits, const uint8_t* rank, int width, int x0, int x1,
+    int nd, uint8_t* row) {
+  censusCostKernel(mode, left, bits, rank, width, x0, x1, nd, row);
 }
-void censusCostKernelPortable(CostMode mode, const Census* left, const uint64_t* lo, const uint64_t* hi,
-                              const uint8_t* rank, int width, int x0, int x1, int nd, uint8_t* row) {
-  censusCostKernel(mode, left, lo, hi, rank, width, x0, x1, nd, row);
+void censusCostKernelPortable(CostMode mode, const Census* left, const uint64_t* bits, const uint8_t* rank,
+                              int width, int x0, int x1, int nd, uint8_t* row) {
+  censusCostKernel(mode, left, bits, rank, width, x0, x1, nd, row);
 }
 const CostKernel kCostKernel =
     __builtin_cpu_supports("avx512vpopcntdq") ? censusCostKernelVectorPopcount : censusCostKernelPortable;
@@ -106,7 +102,7 @@ void sadRtVolume(const std::vector<Census>& cl, const std::vector<Census>& cr,
   });
 }
 
-// 9x9 mean absolute difference per disparity over the window pixels whose left
+// Mean absolute difference (census window, 9x5) per disparity over the window pixels whose left
 // and right positions are both inside the image (rounded half up).
 std::vector<cv::Mat> sadMeans(const cv::Mat& gl, const cv::Mat& gr, int disparities) {
   const int w = gl.cols, h = gl.rows;
@@ -124,8 +120,8 @@ std::vector<cv::Mat> sadMeans(const cv::Mat& gl, const cv::Mat& gr, int disparit
       cv::Mat mean(h, w, CV_8UC1, cv::Scalar(255));
       for (int y = 0; y < h; ++y)
         for (int x = d; x < w; ++x) {
-          const int y0 = std::max(0, y - kCensusRadius), y1 = std::min(h - 1, y + kCensusRadius);
-          const int x0 = std::max(d, x - kCensusRadius), x1 = std::min(w - 1, x + kCensusRadius);
+          const int y0 = std::max(0, y - kCensusRadiusY), y1 = std::min(h - 1, y + kCensusRadiusY);
+          const int x0 = std::max(d, x - kCensusRadiusX), x1 = std::min(w - 1, x + kCensusRadiusX);
           const int sum = integral.at<int>(y1 + 1, x1 + 1) - integral.at<int>(y0, x1 + 1) -
                           integral.at<int>(y1 + 1, x0) + integral.at<int>(y0, x0);
           const int n = (y1 - y0 + 1) * (x1 - x0 + 1);
@@ -178,16 +174,14 @@ void censusCostRow(CostMode mode, const Census* left, const Census* right, int w
                    uint8_t* row) {
   if (!isHardwareMode(mode)) throw Error(std::string("cost mode ") + costModeName(mode) + " is not a census mode");
   // The right pixels x0-D+1 .. x1-1, reversed.
-  thread_local std::vector<uint64_t> lo;
-  thread_local std::vector<uint64_t> hi;  // 64 bits wide: one vector popcount width
+  thread_local std::vector<uint64_t> bits;
   thread_local std::vector<uint8_t> rank;
-  lo.resize(width), hi.resize(width), rank.resize(width);
+  bits.resize(width), rank.resize(width);
   for (int x = std::max(0, x0 - nd + 1); x < x1; ++x) {
-    lo[width - 1 - x] = right[x].lo;
-    hi[width - 1 - x] = right[x].hi;
+    bits[width - 1 - x] = right[x].bits;
     rank[width - 1 - x] = uint8_t(right[x].rank());
   }
-  kCostKernel(mode, left, lo.data(), hi.data(), rank.data(), width, x0, x1, nd, row);
+  kCostKernel(mode, left, bits.data(), rank.data(), width, x0, x1, nd, row);
 }
 
 CostVolume computeCost(const cv::Mat& gl, const cv::Mat& gr, CostMode mode, int disparities) {

@@ -10,12 +10,12 @@ struct ModeInfo {
   bool hardware;
 };
 constexpr ModeInfo kModes[] = {
-    {CostMode::kRt, "rt", 80, true},
-    {CostMode::kRsad, "rsad", 80, true},
-    {CostMode::kUnified, "unified", 160, true},
+    {CostMode::kRt, "rt", kCensusBits, true},
+    {CostMode::kRsad, "rsad", kCensusBits, true},
+    {CostMode::kUnified, "unified", 2 * kCensusBits, true},
     {CostMode::kSad, "sad", 255, false},
     {CostMode::kBt, "bt", 255, false},
-    {CostMode::kSadRt, "sad+rt", 80, false},
+    {CostMode::kSadRt, "sad+rt", kCensusBits, false},
 };
 
 const ModeInfo& info(CostMode mode) {
@@ -61,7 +61,7 @@ Params defaultParams(CostMode mode) {
   switch (mode) {
     // Measured on cones, teddy, sawtooth, venus: docs/algorithm.md, section 11.
     case CostMode::kRt: p.p1 = 40, p.p2 = 255; break;
-    case CostMode::kRsad: p.p1 = 24, p.p2 = 160; break;
+    case CostMode::kRsad: p.p1 = 18, p.p2 = 100; break;
     case CostMode::kUnified: p.p1 = 40, p.p2 = 255; break;
     case CostMode::kSad: p.p1 = 8, p.p2 = 255; break;
     case CostMode::kBt: p.p1 = 16, p.p2 = 600; break;

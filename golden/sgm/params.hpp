@@ -26,8 +26,12 @@ std::vector<CostMode> allCostModes();
 // match falls outside the right image).
 int maxCost(CostMode mode);
 
-constexpr int kCensusRadius = 4;                  // 9x9 window
-constexpr int kCensusBits = 80;                   // 9*9 - 1
+constexpr int kCensusRadiusX = 4;                 // 9x5 window: dx = -4..4
+constexpr int kCensusRadiusY = 2;                 //             dy = -2..2
+constexpr int kCensusWidth = 2 * kCensusRadiusX + 1;   // 9
+constexpr int kCensusHeight = 2 * kCensusRadiusY + 1;  // 5
+constexpr int kCensusBits = kCensusWidth * kCensusHeight - 1;  // 44
+constexpr int kMinFrameSide = 9;                  // smallest width and height (9x9 frame)
 constexpr int kSubpixelBits = 4;                  // disparities carry 1/16 px
 constexpr int kSubpixelOne = 1 << kSubpixelBits;  // 16
 constexpr int kMedianRadius = 2;                  // 5x5 median
@@ -35,13 +39,16 @@ constexpr int kP2Knee = 4;                        // P2r = max(P1, kP2Knee P2' /
 constexpr int kFillAgree = kSubpixelOne;          // fill keeps an own disparity within 1 px of a neighbour
 constexpr int kSnapReach = 3;                     // edge snap moves a disparity edge by up to 3 px
 constexpr int kSnapStep = 2 * kSubpixelOne;       // edge snap acts on drops of more than 2 px
-constexpr int kMaxPenalty = 16000;                // keeps 4 * (Cmax + P2') < 2^16
 constexpr int kPathCount = 4;                     // 0, 45, 90, 135 degrees
+// S = sum of kPathWeights[r] Lr: the horizontal and vertical paths count 3, the diagonals 2.
+constexpr int kPathWeights[kPathCount] = {3, 2, 3, 2};  // 0, 45, 90, 135 degrees
+constexpr int kPathWeightSum = 10;
+constexpr int kMaxPenalty = 6000;                 // keeps kPathWeightSum * (Cmax + P2') < 2^16
 
 struct Params {
   int disparities = 64;        // D: candidates 0 .. D-1
-  int p1 = 24;                 // small-change penalty
-  int p2 = 160;                // P2' of the adaptive P2r = max(P1, 4 P2' / (|dI| + 4))
+  int p1 = 18;                 // small-change penalty
+  int p2 = 100;                // P2' of the adaptive P2r = max(P1, 4 P2' / (|dI| + 4))
   CostMode mode = CostMode::kRsad;  // the hardware default (measured best)
   bool subpixel = true;        // quadratic refinement to 1/16 px
   int lrTolerance = 1;         // left-right check tolerance in px; < 0 disables it

@@ -13,10 +13,9 @@ void checkInput(const cv::Mat& gl, const cv::Mat& gr, const Params& params) {
   if (gl.size() != gr.size())
     throw Error("left/right size mismatch: " + std::to_string(gl.cols) + "x" + std::to_string(gl.rows) +
                 " vs " + std::to_string(gr.cols) + "x" + std::to_string(gr.rows));
-  const int window = 2 * kCensusRadius + 1;
-  if (gl.cols < window || gl.rows < window)
-    throw Error("image " + std::to_string(gl.cols) + "x" + std::to_string(gl.rows) +
-                " is smaller than the " + std::to_string(window) + "x" + std::to_string(window) + " window");
+  if (gl.cols < kMinFrameSide || gl.rows < kMinFrameSide)
+    throw Error("image " + std::to_string(gl.cols) + "x" + std::to_string(gl.rows) + " is smaller than the " +
+                std::to_string(kMinFrameSide) + "x" + std::to_string(kMinFrameSide) + " minimum frame");
 }
 
 PipelineStages runPipelineStages(const cv::Mat& gl, const cv::Mat& gr, const Params& params) {

@@ -61,7 +61,7 @@ TEST_F(SgmSimCli, FrameSizesOutsideTheBuild) {
   pair("tall_l.png", "tall_r.png", 16, 1025);
   expectSimError(sim("tall_l.png", "tall_r.png"), "height 1025 exceeds MAX_HEIGHT=1024");
   pair("flat_l.png", "flat_r.png", 40, 8);
-  expectSimError(sim("flat_l.png", "flat_r.png"), "smaller than the 9x9 window");
+  expectSimError(sim("flat_l.png", "flat_r.png"), "smaller than the 9x9 minimum frame");
 }
 
 TEST_F(SgmSimCli, BadImageFiles) {
