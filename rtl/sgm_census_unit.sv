@@ -1,15 +1,15 @@
 `default_nettype none
-// sgm_census_unit: 9-line buffer, 9x9 window, census and rank of ONE image
+// sgm_census_unit: 5-line buffer, 9x5 window, census and rank of ONE image
 // (docs/algorithm.md section 2, docs/rtl.md "Window and census"). The core
 // instantiates it twice (left, right).
 //
 // Input: one slot of the step stream per enabled cycle, (col_i, row_i) = (x, y)
 // in the virtual raster, pix_i the gray pixel (0 on flush slots, row_i >= height).
 // Output: the census of the centre of that slot,
-//   (cx, cy) = (x - 4, y - 4)          if x >= 4
-//            = (width + x - 4, y - 5)  otherwise,
+//   (cx, cy) = (x - 4, y - 2)          if x >= 4
+//            = (width + x - 4, y - 3)  otherwise,
 // with census bit k = I(q) < I(p) in golden censusBitIndex order (row-major over
-// dy = -4..4, dx = -4..4, centre skipped), 0 for window pixels outside the frame;
+// dy = -2..2, dx = -4..4, centre skipped), 0 for window pixels outside the frame;
 // rank = popcount; centre = I(cx, cy); nbr = I of the four path predecessors,
 // 8 bits each LSB first: 0 deg (cx-1, cy), 45 deg (cx-1, cy-1), 90 deg (cx, cy-1),
 // 135 deg (cx+1, cy-1) (don't care outside the frame); valid_o = the slot came
@@ -17,14 +17,14 @@
 // by construction). col_o/row_o = (cx, cy) (row_o meaningless when !valid_o).
 //
 // Structure (stage = one enabled cycle):
-//   s1  line buffer read mem[x] (rows y-8 .. y-1 of column x), input registers;
+//   s1  line buffer read mem[x] (rows y-4 .. y-1 of column x), input registers;
 //       width/height are captured here and travel with the slot, so a new frame
 //       may enter while the previous one is still in the pipeline.
-//   s2  window shift (column x, rows y-8 .. y enters), line buffer write-back of
-//       {rows y-7 .. y} to mem[x] (the address read one slot earlier; read and
+//   s2  window shift (column x, rows y-4 .. y enters), line buffer write-back of
+//       {rows y-3 .. y} to mem[x] (the address read one slot earlier; read and
 //       write addresses of one cycle differ because consecutive slots of a frame
-//       have different columns), centre position and the 9 + 9 row/column masks.
-//   s3  census: 80 masked compares, centre and neighbours.
+//       have different columns), centre position and the 5 + 9 row/column masks.
+//   s3  census: 44 masked compares, centre and neighbours.
 //   s4  rank (popcount tree), all outputs registered.
 // Rows of an earlier frame or of flush slots still in the buffer are never
 // used: every such window pixel is masked by the centre position (rows above 0
@@ -33,13 +33,13 @@
 // across a frame boundary) the second read misses the first write-back; the
 // missed rows are the previous frame's and masked.
 //
-// Memory: one MAX_WIDTH x 64 bit simple dual-port RAM (synchronous read with
-// enable, write with enable, no same-address read and write) + 81 x 8 bit
+// Memory: one MAX_WIDTH x 32 bit simple dual-port RAM (synchronous read with
+// enable, write with enable, no same-address read and write) + 45 x 8 bit
 // window registers.
 //
 // Parameters: MAX_WIDTH largest frame width; CW column/width bits
-// (2^CW > MAX_WIDTH); RW row/height bits (row_i must hold height + 4, the last
-// flush row the core needs).
+// (2^CW > MAX_WIDTH); RW row/height bits (row_i must hold height + 2, the last
+// flush row the census needs).
 // Frame: width_i >= 16, height_i >= 9, constant during a frame (sampled with
 // every slot).
 // Latency: LATENCY = 4 slots for every parameter value (s1 .. s4): the outputs
@@ -59,8 +59,8 @@ module sgm_census_unit #(
   input  wire  [RW-1:0]    row_i,
   input  wire  [CW-1:0]    width_i,
   input  wire  [RW-1:0]    height_i,
-  output logic [79:0]      census_o,
-  output logic [6:0]       rank_o,
+  output logic [43:0]      census_o,
+  output logic [5:0]       rank_o,
   output logic [7:0]       centre_o,
   output logic [31:0]      nbr_o,
   output logic [CW-1:0]    col_o,
@@ -69,13 +69,20 @@ module sgm_census_unit #(
 );
 
   localparam int LATENCY /*verilator public*/ = 4;
+  localparam int RX = 4;                // window columns dx = -RX .. RX
+  localparam int RY = 2;                // window rows    dy = -RY .. RY
+  localparam int WC = 2 * RX + 1;       // 9 columns
+  localparam int WR = 2 * RY + 1;       // 5 rows
+  localparam int MID = RY * WC + RX;    // window index of the centre (22)
+  localparam int NB = WR * WC - 1;      // census bits (44)
+  localparam int LB = 8 * (WR - 1);     // line buffer word: WR - 1 rows of 8 bits
   localparam int AW = MAX_WIDTH > 1 ? $clog2(MAX_WIDTH) : 1;  // line buffer address bits (<= CW)
 
   // ------------------------------------------------------------ s1: line buffer read
-  // mem_q[c][8k +: 8] = row y-8+k of column c (k = 7 the newest), seen from the next
+  // mem_q[c][8k +: 8] = row y-4+k of column c (k = 3 the newest), seen from the next
   // slot y of that column.
-  logic [63:0]   mem_q [0:MAX_WIDTH-1];
-  logic [63:0]   rd_q;
+  logic [LB-1:0] mem_q [0:MAX_WIDTH-1];
+  logic [LB-1:0] rd_q;
   logic [7:0]    pix1_q;
   logic [CW-1:0] col1_q, width1_q;
   logic [RW-1:0] row1_q, height1_q;
@@ -86,7 +93,7 @@ module sgm_census_unit #(
   end
 
   always_ff @(posedge clk_i) begin
-    if (en_i && v1_q) mem_q[col1_q[AW-1:0]] <= {pix1_q, rd_q[63:8]};
+    if (en_i && v1_q) mem_q[col1_q[AW-1:0]] <= {pix1_q, rd_q[LB-1:8]};
   end
 
   always_ff @(posedge clk_i) begin
@@ -100,44 +107,48 @@ module sgm_census_unit #(
   end
 
   // ------------------------------------------------------------ s2: window, position, masks
-  // win_q[(9 i + j) * 8 +: 8]: window row i (dy = i - 4, i = 0 the oldest row),
-  // column j (dx = j - 4, j = 8 the newest column).
-  logic [647:0]  win_q;
-  wire  [71:0]   new_col = {pix1_q, rd_q};  // byte i = row y-8+i
+  // win_q[(WC i + j) * 8 +: 8]: window row i (dy = i - RY, i = 0 the oldest row),
+  // column j (dx = j - RX, j = WC - 1 the newest column).
+  logic [WR*WC*8-1:0] win_q;
+  wire  [WR*8-1:0]    new_col = {pix1_q, rd_q};  // byte i = row y-4+i
 
-  for (genvar i = 0; i < 9; i++) begin : g_win_row
-    for (genvar j = 0; j < 9; j++) begin : g_win_col
-      if (j < 8) begin : g_shift
+  for (genvar i = 0; i < WR; i++) begin : g_win_row
+    for (genvar j = 0; j < WC; j++) begin : g_win_col
+      if (j < WC - 1) begin : g_shift
         always_ff @(posedge clk_i) begin
-          if (en_i) win_q[(9*i+j)*8 +: 8] <= win_q[(9*i+j+1)*8 +: 8];
+          if (en_i) win_q[(WC*i+j)*8 +: 8] <= win_q[(WC*i+j+1)*8 +: 8];
         end
       end else begin : g_load
         always_ff @(posedge clk_i) begin
-          if (en_i) win_q[(9*i+j)*8 +: 8] <= new_col[i*8 +: 8];
+          if (en_i) win_q[(WC*i+j)*8 +: 8] <= new_col[i*8 +: 8];
         end
       end
     end
   end
 
-  // Centre of the slot: x >= 4 -> (x - 4, y - 4), else (width + x - 4, y - 5).
-  // Window row i holds raster row y - 8 + i (x >= 4) or y - 9 + i (x < 4, the
-  // centre column is in the previous virtual row), i.e. row cy + i - 4, inside
-  // the frame when off <= y + i < height + off with off = 8 or 9. Window column
+  // Centre of the slot: x >= 4 -> (x - 4, y - 2), else (width + x - 4, y - 3).
+  // Window row i holds raster row y - 4 + i (x >= 4) or y - 5 + i (x < 4, the
+  // centre column is in the previous virtual row), i.e. row cy + i - 2, inside
+  // the frame when off <= y + i < height + off with off = 4 or 5. Window column
   // j holds cx + j - 4, inside when 4 <= cx + j < width + 4.
-  wire             wrap   = col1_q < CW'(4);
-  wire  [CW-1:0]   cx     = wrap ? width1_q + col1_q - CW'(4) : col1_q - CW'(4);
-  wire  [RW+1:0]   roff   = wrap ? (RW+2)'(9) : (RW+2)'(8);
-  wire  [RW-1:0]   cy     = row1_q - (wrap ? RW'(5) : RW'(4));
-  logic [8:0]      row_ok, col_ok;
+  wire             wrap   = col1_q < CW'(RX);
+  wire  [CW-1:0]   cx     = wrap ? width1_q + col1_q - CW'(RX) : col1_q - CW'(RX);
+  wire  [RW+1:0]   roff   = wrap ? (RW+2)'(2 * RY + 1) : (RW+2)'(2 * RY);
+  wire  [RW-1:0]   cy     = row1_q - (wrap ? RW'(RY + 1) : RW'(RY));
+  logic [WR-1:0]   row_ok;
+  logic [WC-1:0]   col_ok;
 
-  for (genvar i = 0; i < 9; i++) begin : g_mask
+  for (genvar i = 0; i < WR; i++) begin : g_row_mask
     wire [RW+1:0] yi = {2'b00, row1_q} + (RW+2)'(i);
-    wire [CW+1:0] xj = {2'b00, cx} + (CW+2)'(i);
     assign row_ok[i] = yi >= roff && yi < {2'b00, height1_q} + roff;
-    assign col_ok[i] = xj >= (CW+2)'(4) && xj < {2'b00, width1_q} + (CW+2)'(4);
+  end
+  for (genvar j = 0; j < WC; j++) begin : g_col_mask
+    wire [CW+1:0] xj = {2'b00, cx} + (CW+2)'(j);
+    assign col_ok[j] = xj >= (CW+2)'(RX) && xj < {2'b00, width1_q} + (CW+2)'(RX);
   end
 
-  logic [8:0]    row_ok2_q, col_ok2_q;
+  logic [WR-1:0] row_ok2_q;
+  logic [WC-1:0] col_ok2_q;
   logic [CW-1:0] cx2_q;
   logic [RW-1:0] cy2_q;
   logic          v2_q;
@@ -152,39 +163,42 @@ module sgm_census_unit #(
   end
 
   // ------------------------------------------------------------ s3: census
-  wire  [7:0]    centre = win_q[(9*4+4)*8 +: 8];
-  logic [79:0]   census;
+  wire  [7:0]    centre = win_q[MID*8 +: 8];
+  logic [NB-1:0] census;
 
-  for (genvar i = 0; i < 9; i++) begin : g_cen_row
-    for (genvar j = 0; j < 9; j++) begin : g_cen_col
-      if (9 * i + j < 40) begin : g_before
-        assign census[9*i+j] = row_ok2_q[i] && col_ok2_q[j] && win_q[(9*i+j)*8 +: 8] < centre;
-      end else if (9 * i + j > 40) begin : g_after
-        assign census[9*i+j-1] = row_ok2_q[i] && col_ok2_q[j] && win_q[(9*i+j)*8 +: 8] < centre;
+  for (genvar i = 0; i < WR; i++) begin : g_cen_row
+    for (genvar j = 0; j < WC; j++) begin : g_cen_col
+      if (WC * i + j < MID) begin : g_before
+        assign census[WC*i+j] = row_ok2_q[i] && col_ok2_q[j] && win_q[(WC*i+j)*8 +: 8] < centre;
+      end else if (WC * i + j > MID) begin : g_after
+        assign census[WC*i+j-1] = row_ok2_q[i] && col_ok2_q[j] && win_q[(WC*i+j)*8 +: 8] < centre;
       end
     end
   end
 
-  logic [79:0]   census3_q;
+  logic [NB-1:0] census3_q;
   logic [7:0]    centre3_q;
   logic [31:0]   nbr3_q;
   logic [CW-1:0] cx3_q;
   logic [RW-1:0] cy3_q;
   logic          v3_q;
 
+  // Path predecessors: 0 deg (row RY, column RX-1), 45 / 90 / 135 deg (row RY-1,
+  // columns RX-1, RX, RX+1).
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       census3_q <= census;
       centre3_q <= centre;
-      nbr3_q    <= {win_q[(9*3+5)*8 +: 8], win_q[(9*3+4)*8 +: 8], win_q[(9*3+3)*8 +: 8], win_q[(9*4+3)*8 +: 8]};
+      nbr3_q    <= {win_q[(MID-WC+1)*8 +: 8], win_q[(MID-WC)*8 +: 8], win_q[(MID-WC-1)*8 +: 8],
+                    win_q[(MID-1)*8 +: 8]};
       cx3_q     <= cx2_q;
       cy3_q     <= cy2_q;
     end
   end
 
   // ------------------------------------------------------------ s4: rank, outputs
-  logic [6:0] rank3;
-  sgm_popcount80 u_rank (
+  logic [5:0] rank3;
+  sgm_popcount44 u_rank (
     .bits_i  (census3_q),
     .count_o (rank3)
   );
@@ -209,7 +223,7 @@ module sgm_census_unit #(
       valid_o <= 1'b0;
     end else if (en_i) begin
       v1_q    <= 1'b1;
-      v2_q    <= v1_q && row_ok[4];
+      v2_q    <= v1_q && row_ok[RY];
       v3_q    <= v2_q;
       valid_o <= v3_q;
     end

@@ -4,7 +4,7 @@
 //   rt      = |rank_L - rank_R|                      (mode 0)
 //   rsad    = popcount(census_L xor census_R)        (mode 1)
 //   unified = rt + rsad                              (mode 2, also 3)
-//   outside_i (x - d < 0, decided by the caller): Cmax of the mode (80, 80, 160).
+//   outside_i (x - d < 0, decided by the caller): Cmax of the mode (44, 44, 88).
 //
 // Parameters: none (the disparity only enters through outside_i).
 // Latency: 2 enabled cycles. Stage A registers the rank difference (signed),
@@ -18,23 +18,23 @@ module sgm_cost_pe (
   input  wire             clk_i,
   input  wire             en_i,
   input  wire  [1:0]      mode_i,
-  input  wire  [79:0]     lcensus_i,
-  input  wire  [6:0]      lrank_i,
-  input  wire  [79:0]     rcensus_i,
-  input  wire  [6:0]      rrank_i,
+  input  wire  [43:0]     lcensus_i,
+  input  wire  [5:0]      lrank_i,
+  input  wire  [43:0]     rcensus_i,
+  input  wire  [5:0]      rrank_i,
   input  wire             outside_i,
-  output logic [7:0]      cost_o
+  output logic [6:0]      cost_o
 );
 
-  logic [6:0] hamming;
-  sgm_popcount80 u_hamming (
+  logic [5:0] hamming;
+  sgm_popcount44 u_hamming (
     .bits_i  (lcensus_i ^ rcensus_i),
     .count_o (hamming)
   );
 
   // Stage A
-  logic [7:0] diff_q;  // lrank - rrank, two's complement (-80 .. 80)
-  logic [6:0] ham_q;
+  logic [6:0] diff_q;  // lrank - rrank, two's complement (-44 .. 44)
+  logic [5:0] ham_q;
   logic       out_q;
 
   always_ff @(posedge clk_i) begin
@@ -46,19 +46,19 @@ module sgm_cost_pe (
   end
 
   // Stage B: cost = rt_op + ham_op + rt_cin.
-  //   out_q:   80 + (unified ? 80 : 0)
+  //   out_q:   44 + (unified ? 44 : 0)
   //   mode 0:  (diff ^ sign) + sign      = rt
   //   mode 1:  ham
   //   unified: (diff ^ sign) + ham + sign = rt + rsad
-  wire       neg     = diff_q[7];
+  wire       neg     = diff_q[6];
   wire       use_rt  = mode_i != 2'd1;
   wire       use_ham = mode_i != 2'd0;
-  wire [7:0] rt_op   = out_q ? 8'd80 : use_rt ? {1'b0, diff_q[6:0] ^ {7{neg}}} : 8'd0;
-  wire [7:0] ham_op  = out_q ? (mode_i[1] ? 8'd80 : 8'd0) : use_ham ? {1'b0, ham_q} : 8'd0;
+  wire [6:0] rt_op   = out_q ? 7'd44 : use_rt ? {1'b0, diff_q[5:0] ^ {6{neg}}} : 7'd0;
+  wire [6:0] ham_op  = out_q ? (mode_i[1] ? 7'd44 : 7'd0) : use_ham ? {1'b0, ham_q} : 7'd0;
   wire       rt_cin  = !out_q && use_rt && neg;
 
   always_ff @(posedge clk_i) begin
-    if (en_i) cost_o <= rt_op + ham_op + 8'(rt_cin);
+    if (en_i) cost_o <= rt_op + ham_op + 7'(rt_cin);
   end
 
 endmodule

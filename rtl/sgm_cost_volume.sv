@@ -13,14 +13,14 @@
 // consecutive raster positions, flush slots included). Entries from another
 // row or frame are only reached when col - d < 0, where the PE outputs Cmax.
 //
-// Structure: s1 input registers and the delay line (D x 87 bit registers,
+// Structure: s1 input registers and the delay line (D x 50 bit registers,
 // entry 0 = the slot's own right census), s2 + s3 the two PE stages
 // (sgm_cost_pe).
 //
 // Parameters: D disparities, CW column bits.
 // Latency: LATENCY = 3 slots (1 + the PE's 2) for every parameter value:
 // cost_o, col_o, valid_o during slot t belong to the input of slot t - 3.
-// cost_o[d*8 +: 8] = C(p, d). Throughput: one slot per enabled cycle.
+// cost_o[d*7 +: 7] = C(p, d) (0 .. 88). Throughput: one slot per enabled cycle.
 module sgm_cost_volume #(
   parameter int D  = 64,
   parameter int CW = 11
@@ -29,23 +29,23 @@ module sgm_cost_volume #(
   input  wire              rst_ni,
   input  wire              en_i,
   input  wire  [1:0]       mode_i,
-  input  wire  [79:0]      lcensus_i,
-  input  wire  [6:0]       lrank_i,
+  input  wire  [43:0]      lcensus_i,
+  input  wire  [5:0]       lrank_i,
   input  wire  [CW-1:0]    col_i,
-  input  wire  [79:0]      rcensus_i,
-  input  wire  [6:0]       rrank_i,
+  input  wire  [43:0]      rcensus_i,
+  input  wire  [5:0]       rrank_i,
   input  wire              valid_i,
-  output logic [D*8-1:0]   cost_o,
+  output logic [D*7-1:0]   cost_o,
   output logic [CW-1:0]    col_o,
   output logic             valid_o
 );
 
   localparam int LATENCY /*verilator public*/ = 3;
-  localparam int EW = 87;  // delay line entry: {rank, census}
+  localparam int EW = 50;  // delay line entry: {rank, census}
 
   // ------------------------------------------------------------ s1
-  logic [79:0]   lcensus1_q;
-  logic [6:0]    lrank1_q;
+  logic [43:0]   lcensus1_q;
+  logic [5:0]    lrank1_q;
   logic [CW-1:0] col1_q, col2_q;
   logic [1:0]    mode1_q, mode2_q;
   logic          valid1_q, valid2_q;
@@ -90,10 +90,10 @@ module sgm_cost_volume #(
       .mode_i    (mode2_q),
       .lcensus_i (lcensus1_q),
       .lrank_i   (lrank1_q),
-      .rcensus_i (line_q[d*EW +: 80]),
-      .rrank_i   (line_q[d*EW+80 +: 7]),
+      .rcensus_i (line_q[d*EW +: 44]),
+      .rrank_i   (line_q[d*EW+44 +: 6]),
       .outside_i (outside),
-      .cost_o    (cost_o[d*8 +: 8])
+      .cost_o    (cost_o[d*7 +: 7])
     );
   end
 

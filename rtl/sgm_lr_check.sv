@@ -68,7 +68,7 @@
 // dR write enable, out_valid pipeline).
 module sgm_lr_check #(
   parameter int D         /*verilator public*/ = 64,
-  parameter int SW        /*verilator public*/ = 11,
+  parameter int SW        /*verilator public*/ = 13,
   parameter int DW        /*verilator public*/ = $clog2(D) + 4,
   parameter int MAX_WIDTH /*verilator public*/ = 1024,
   parameter int CW        /*verilator public*/ = $clog2(MAX_WIDTH + 1),

@@ -25,13 +25,13 @@
 // Latency: LATENCY = 3 slots from cost_i to s_o. Throughput: 1 pixel per slot.
 module sgm_path_engine #(
   parameter int D         = 64,
-  parameter int CW        = 8,
+  parameter int CW        = 7,
   parameter int LW        = 9,
   parameter int PW        = 8,
   parameter int MAX_WIDTH = 1280,
   parameter int XW        = 11,
   parameter int YW        = 11,
-  localparam int SW       = LW + 2,
+  localparam int SW       = LW + 4,
   localparam int LATENCY  = 3
 ) (
   input  wire                 clk_i,
@@ -193,10 +193,13 @@ module sgm_path_engine #(
     end
   end
 
+  // S = 3 (L0 + L90) + 2 (L45 + L135) = (a << 1) + a + (b << 1), a = L0 + L90,
+  // b = L45 + L135 (docs/algorithm.md section 5: path weights 3, 2, 3, 2).
   logic [D*SW-1:0] s_c;
   for (genvar d = 0; d < D; d++) begin : g_sum
-    assign s_c[d*SW +: SW] = SW'(lr_c[(0*D+d)*LW +: LW]) + SW'(lr_c[(1*D+d)*LW +: LW]) +
-                             SW'(lr_c[(2*D+d)*LW +: LW]) + SW'(lr_c[(3*D+d)*LW +: LW]);
+    wire [LW:0] a = {1'b0, lr_c[(0*D+d)*LW +: LW]} + {1'b0, lr_c[(2*D+d)*LW +: LW]};
+    wire [LW:0] b = {1'b0, lr_c[(1*D+d)*LW +: LW]} + {1'b0, lr_c[(3*D+d)*LW +: LW]};
+    assign s_c[d*SW +: SW] = {2'b00, a, 1'b0} + {3'b000, a} + {2'b00, b, 1'b0};
   end
 
   always_ff @(posedge clk_i) begin

@@ -24,9 +24,9 @@ module sgm_top #(
   localparam int YW        = $clog2(MAX_HEIGHT + 16),
   localparam int LD        = $clog2(D),
   localparam int DW        = LD + 4,
-  localparam int CBITS     = 8,    // matching cost
-  localparam int LW        = 9,    // path cost: Cmax + P2'max = 160 + 255 < 512
-  localparam int SW        = LW + 2
+  localparam int CBITS     = 7,    // matching cost: Cmax = 88 (unified)
+  localparam int LW        = 9,    // path cost: Cmax + P2'max = 88 + 255 < 512
+  localparam int SW        = LW + 4  // S = 3 L0 + 2 L45 + 3 L90 + 2 L135 < 10 x 512
 ) (
   input  wire          clk_i,
   input  wire          rst_ni,
@@ -133,8 +133,8 @@ module sgm_top #(
   );
 
   // ------------------------------------------------------------ census
-  logic [79:0]   census_l, census_r;
-  logic [6:0]    rank_l, rank_r;
+  logic [43:0]   census_l, census_r;
+  logic [5:0]    rank_l, rank_r;
   logic [7:0]    centre;
   logic [31:0]   nbr;
   logic [XW-1:0] col1;

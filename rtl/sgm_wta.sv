@@ -27,7 +27,7 @@
 // Reset: only the valid_o pipeline (control); data registers start unknown.
 module sgm_wta #(
   parameter int D  /*verilator public*/ = 64,
-  parameter int SW /*verilator public*/ = 11,
+  parameter int SW /*verilator public*/ = 13,
   parameter int CW /*verilator public*/ = 11,
   parameter int RW /*verilator public*/ = 11,
   localparam int LD          = $clog2(D),

@@ -2,7 +2,7 @@
 // sgm_cost_volume fixtures (docs/rtl.md "Window and census"): every frame is
 // streamed in raster order, followed by flush slots (rows height, height+1,
 // ..., pixel 0) until its last centre has entered the window; the centre of
-// the slot at input (x, y) is (x - 4, y - 4), or (w + x - 4, y - 5) for x < 4.
+// the slot at input (x, y) is (x - 4, y - 2), or (w + x - 4, y - 3) for x < 4.
 #pragma once
 
 #include "port_bits.hpp"
@@ -19,9 +19,9 @@
 
 namespace sgm::tb {
 
-// How a frame's flush ends: right after the slot of its last centre, (3, H+4)
+// How a frame's flush ends: right after the slot of its last centre, (3, H+2)
 // (the next frame enters while this one is still in the pipeline), or after
-// complete flush rows H .. H+4.
+// complete flush rows H .. H+2.
 enum class Flush { kMinimal, kFullRows };
 
 struct CensusStreamOptions {
@@ -57,7 +57,7 @@ struct RasterSlot {
 struct Centre {
   int x, y;
 };
-inline Centre centreOf(int x, int y, int w) { return x >= 4 ? Centre{x - 4, y - 4} : Centre{w + x - 4, y - 5}; }
+inline Centre centreOf(int x, int y, int w) { return x >= 4 ? Centre{x - 4, y - 2} : Centre{w + x - 4, y - 3}; }
 
 // Every slot of the frames of these sizes, back to back; after the last frame
 // `trailing` more flush slots so that its last outputs leave the pipeline.
@@ -69,7 +69,7 @@ inline std::vector<RasterSlot> censusRaster(const std::vector<cv::Size>& sizes, 
       for (int x = 0; x < w; ++x) slots.push_back({f, x, y});
     int extra = f + 1 == int(sizes.size()) ? trailing : 0;
     for (int x = 0, y = h;;) {
-      const bool done = y > h + 4 || (y == h + 4 && flush == Flush::kMinimal && x > 3);
+      const bool done = y > h + 2 || (y == h + 2 && flush == Flush::kMinimal && x > 3);
       if (done && extra-- <= 0) break;
       slots.push_back({f, x, y});
       if (++x == w) x = 0, ++y;
@@ -83,19 +83,18 @@ inline uint8_t pixelOf(const cv::Mat& img, const RasterSlot& s) {
   return s.y < img.rows ? img.at<uint8_t>(s.y, s.x) : 0;
 }
 
-// Empty when the 80-bit census port (3 words) holds `want`, else
+// Empty when the 44-bit census port (2 words) holds `want`, else
 // "expected <hex> got <hex>".
 template <typename Port>
 std::string censusMismatch(const Port& port, const sgm::Census& want) {
-  const uint64_t lo = uint64_t(wordOf(port, 0)) | uint64_t(wordOf(port, 1)) << 32;
-  const uint32_t hi = wordOf(port, 2) & 0xffff;
-  if (lo == want.lo && hi == want.hi) return "";
-  auto hex = [](uint64_t l, uint32_t h) {
+  const uint64_t got = uint64_t(wordOf(port, 0)) | uint64_t(wordOf(port, 1) & 0xfffu) << 32;
+  if (got == want.bits) return "";
+  auto hex = [](uint64_t v) {
     char buf[32];
-    std::snprintf(buf, sizeof buf, "%04x%016llx", unsigned(h & 0xffff), static_cast<unsigned long long>(l));
+    std::snprintf(buf, sizeof buf, "%011llx", static_cast<unsigned long long>(v));
     return std::string(buf);
   };
-  return "expected " + hex(want.lo, want.hi) + " got " + hex(lo, hi);
+  return "expected " + hex(want.bits) + " got " + hex(got);
 }
 
 }  // namespace sgm::tb

@@ -159,7 +159,7 @@ void runStream(Top& top, const std::vector<Frame>& frames, const StreamOptions& 
     ASSERT_EQ(uint32_t(top->col_o), uint32_t(c.x)) << "stage cost (col): " << where(*o, c, s);
     const uint8_t* e = golden[slots[*o].frame].cost.at(c.x, c.y);
     for (int d = 0; d < kD; ++d)
-      ASSERT_EQ(int(sgm::tb::getBits(top->cost_o, 8 * d, 8)), int(e[d]))
+      ASSERT_EQ(int(sgm::tb::getBits(top->cost_o, 7 * d, 7)), int(e[d]))
           << "stage cost d=" << d << ": " << where(*o, c, s);
   }
   for (size_t f = 0; f < frames.size(); ++f)
@@ -252,8 +252,8 @@ TEST(SgmCostVolume, RandomSizesAndModesBackToBack) {
 
 TEST(SgmCostVolume, FlatAndSaturatedPairs) {
   // Extreme costs: equal flat images (all costs 0 inside), saturated left vs
-  // black right, a checkerboard against its inverse (rsad up to 80, unified up
-  // to 160 inside the image as well as at the border).
+  // black right, a checkerboard against its inverse (rsad up to 44, unified up
+  // to 88 inside the image as well as at the border).
   Top top("tb_cost_front_flat");
   cv::Mat checker(12, 24, CV_8UC1), inverse(12, 24, CV_8UC1);
   for (int y = 0; y < checker.rows; ++y)

@@ -31,7 +31,7 @@ using sgm::tb::getBits;
 using sgm::tb::setBits;
 
 constexpr int kD = SGM_D;
-constexpr int kCostBits = 8, kSumBits = 11;
+constexpr int kCostBits = 7, kSumBits = 13;
 
 struct Frame {
   cv::Mat gray;           // left gray image (P2 gradients)
@@ -51,7 +51,7 @@ Frame syntheticFrame(int w, int h, int p1, int p2, std::mt19937& rng) {
   Frame f;
   f.gray = randomImage(w, h, rng);
   f.cost = sgm::CostVolume(w, h, kD);
-  for (auto& c : f.cost.data) c = uint8_t(rng() % 161);  // anything a hardware mode can produce
+  for (auto& c : f.cost.data) c = uint8_t(rng() % 89);  // anything a hardware mode can produce (0 .. 88)
   f.p1 = p1, f.p2 = p2;
   return f;
 }
