@@ -3,6 +3,7 @@
 // Over the 5x5 window clipped to the image, taking only valid pixels, the
 // output is the lower median of the n valid values (element (n - 1) / 2 of the
 // ascending order). An invalid centre stays invalid (value passed through).
+// The last two rows (window clipped by the bottom edge) pass through unchanged.
 // median_en_i = 0 passes every pixel through unchanged, with the same latency.
 //
 // Window: 4 line buffers of MAX_WIDTH x (DW + 2) bit {frame pixel, valid,
@@ -156,7 +157,7 @@ module sgm_median5x5 #(
       colok_q <= col_ok;
       cxa_q   <= cx;
       cya_q   <= ycb[RW-1:0] - RW'(2);
-      mena_q  <= men0_q;
+      mena_q  <= men0_q && ycb < {1'b0, h0_q};  // centre row < height - 2: the last 2 rows pass through
     end
   end
 

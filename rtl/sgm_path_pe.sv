@@ -10,7 +10,7 @@
 // PW penalty width (P1, P2r; LW >= CW, PW).
 // Latency: 0 (combinational).
 module sgm_path_pe #(
-  parameter int CW = 8,
+  parameter int CW = 7,
   parameter int LW = 9,
   parameter int PW = 8
 ) (

@@ -17,7 +17,7 @@
 // Parameters: D disparities, CW cost width, LW path-cost width, PW penalty width.
 module sgm_path_loop #(
   parameter int D  = 16,
-  parameter int CW = 8,
+  parameter int CW = 7,
   parameter int LW = 9,
   parameter int PW = 8
 ) (

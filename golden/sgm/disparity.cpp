@@ -167,7 +167,7 @@ DisparityMap median5x5(const DisparityMap& in) {
   DisparityMap out{in.disp.clone(), in.valid.clone()};
   parallelFor(h, [&](int y0, int y1) {
     Lanes window[kMedianWindow];
-    for (int y = y0; y < y1; ++y)
+    for (int y = y0; y < std::min(y1, h - r); ++y)  // the last r rows pass through (section 9)
       for (int x0 = 0; x0 < w; x0 += kLanes) {
         Lanes count = {};
         for (int k = 0; k < kMedianWindow; ++k) {

@@ -53,7 +53,8 @@ DisparityMap fillHoles(const DisparityMap& in);
 DisparityMap snapEdges(const DisparityMap& in, const cv::Mat& grayLeft);
 
 // 5x5 median over the valid pixels of the window (window clipped to the image);
-// an invalid centre stays invalid. Lower median of an even count.
+// an invalid centre stays invalid. Lower median of an even count. The last
+// kMedianRadius rows (window clipped by the bottom edge) pass through.
 DisparityMap median5x5(const DisparityMap& in);
 
 }  // namespace sgm
