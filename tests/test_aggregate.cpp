@@ -91,13 +91,13 @@ TEST(PathStep, EachBranchOfEquationOne) {
 }
 
 TEST(PathStep, SentinelsNeverWinAtTheEnds) {
-  // prev = [500, 100, 500], minPrev 100, P1 3, huge P2r: the ends can only come
+  // prev = [500, 100, 500], minPrev 100, P1 3, P2r at kMaxPenalty: the ends can only come
   // from prev[d] or the inner neighbour (100 + 3). Were prev[-1] / prev[D] read
   // as anything small (e.g. 0), out[0] / out[2] would wrap below zero.
   const uint16_t prevBuf[] = {S, 500, 100, 500, S};
   const uint8_t cost[] = {0, 0, 0};
   uint16_t out[3];
-  const uint16_t m = sgm::pathStep(cost, prevBuf + 1, 100, 3, 3, 16000, out);
+  const uint16_t m = sgm::pathStep(cost, prevBuf + 1, 100, 3, 3, sgm::kMaxPenalty, out);
   EXPECT_EQ(out[0], 3);  // prev[1] + P1 - minPrev
   EXPECT_EQ(out[1], 0);
   EXPECT_EQ(out[2], 3);
@@ -218,11 +218,14 @@ TEST(PathCost, HandExampleTwoByTwoAllPathsAndSum) {
   EXPECT_EQ(lrAt(l135, 1, 1), row1);  // x = W-1: path start
   EXPECT_EQ(lrAt(l135, 0, 1), afterRow0);
 
+  // S = 3 L0 + 2 L45 + 3 L90 + 2 L135 (section 5).
   const PathVolume s = sgm::aggregateCost(c, gray, 3, 100);
-  EXPECT_EQ(lrAt(s, 0, 0), (V{0, 20, 36}));       // 4 x row0
-  EXPECT_EQ(lrAt(s, 1, 0), (V{0, 23, 44}));       // [0,8,17] + 3 x row0
-  EXPECT_EQ(lrAt(s, 0, 1), (V{24, 6, 48}));       // row1 + row1 + 2 x afterRow0
-  EXPECT_EQ(lrAt(s, 1, 1), (V{27, 6, 51}));       // [9,0,11] + 2 x afterRow0 + row1
+  EXPECT_EQ(lrAt(s, 0, 0), (V{0, 50, 90}));       // (3+2+3+2) x row0
+  EXPECT_EQ(lrAt(s, 1, 0), (V{0, 59, 114}));      // 3 x [0,8,17] + (2+3+2) x row0
+  EXPECT_EQ(lrAt(s, 0, 1), (V{60, 15, 120}));     // (3+2) x row1 + (3+2) x afterRow0
+  // 3 x [9,0,11] + 2 x afterRow0 + 3 x afterRow0 + 2 x row1 = [27,0,33] + [30,15,80] + [12,0,16];
+  // four different Lr here, so a weight on the wrong path shows.
+  EXPECT_EQ(lrAt(s, 1, 1), (V{69, 15, 129}));
 }
 
 TEST(PathCost, PathStartsAtTheDocumentedBorders) {

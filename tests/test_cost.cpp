@@ -37,25 +37,27 @@ cv::Mat randomImage(int w, int h, unsigned seed, int lo = 0, int hi = 255) {
 }
 
 TEST(CensusCost, ModesOnHandPairs) {
-  const Census left = censusOf({0, 1, 2, 70});      // rank 4
-  const Census right = censusOf({1, 2, 3, 4, 79});  // rank 5; xor = {0,3,4,70,79}
-  EXPECT_EQ(sgm::censusCost(CostMode::kRt, left, right), 1);
-  EXPECT_EQ(sgm::censusCost(CostMode::kRsad, left, right), 5);
-  EXPECT_EQ(sgm::censusCost(CostMode::kUnified, left, right), 6);
-  // Same rank, different bits: rt is blind to it, rsad is not.
-  const Census a = censusOf({5, 64}), b = censusOf({6, 65});
+  // Bits 0..43 of the 44-bit signature; 43 (offset (4,2)) is the last one.
+  const Census left = censusOf({0, 1, 2, 40});      // rank 4
+  const Census right = censusOf({1, 2, 3, 4, 43});  // rank 5; xor = {0,3,4,40,43}
+  EXPECT_EQ(sgm::censusCost(CostMode::kRt, left, right), 1);       // |4 - 5|
+  EXPECT_EQ(sgm::censusCost(CostMode::kRsad, left, right), 5);     // |xor|
+  EXPECT_EQ(sgm::censusCost(CostMode::kUnified, left, right), 6);  // 1 + 5
+  // Same rank, different bits: rt is blind to it, rsad is not (xor = {5,6,42,43}).
+  const Census a = censusOf({5, 42}), b = censusOf({6, 43});
   EXPECT_EQ(sgm::censusCost(CostMode::kRt, a, b), 0);
   EXPECT_EQ(sgm::censusCost(CostMode::kRsad, a, b), 4);
   EXPECT_EQ(sgm::censusCost(CostMode::kUnified, a, b), 4);
 }
 
 TEST(CensusCost, ExtremesReachMaxCost) {
+  // All 44 bits against none: rank 44 vs 0, Hamming 44; unified adds both.
   Census all;
-  for (int k = 0; k < 80; ++k) all.set(k);
+  for (int k = 0; k < 44; ++k) all.set(k);
   const Census none;
-  EXPECT_EQ(sgm::censusCost(CostMode::kRt, all, none), 80);
-  EXPECT_EQ(sgm::censusCost(CostMode::kRsad, none, all), 80);
-  EXPECT_EQ(sgm::censusCost(CostMode::kUnified, all, none), 160);
+  EXPECT_EQ(sgm::censusCost(CostMode::kRt, all, none), 44);
+  EXPECT_EQ(sgm::censusCost(CostMode::kRsad, none, all), 44);
+  EXPECT_EQ(sgm::censusCost(CostMode::kUnified, all, none), 88);
   EXPECT_EQ(sgm::censusCost(CostMode::kUnified, all, all), 0);
 }
 
@@ -66,12 +68,14 @@ TEST(CensusCost, SoftwareModesThrow) {
 }
 
 TEST(MaxCost, DocumentedValues) {
-  EXPECT_EQ(sgm::maxCost(CostMode::kRt), 80);
-  EXPECT_EQ(sgm::maxCost(CostMode::kRsad), 80);
-  EXPECT_EQ(sgm::maxCost(CostMode::kUnified), 160);
+  // 9x5 census: 44 bits, so rank differences and Hamming distances are 0..44;
+  // unified is their sum (0..88); sad+rt is rescaled to the rank scale (0..44).
+  EXPECT_EQ(sgm::maxCost(CostMode::kRt), 44);
+  EXPECT_EQ(sgm::maxCost(CostMode::kRsad), 44);
+  EXPECT_EQ(sgm::maxCost(CostMode::kUnified), 88);
   EXPECT_EQ(sgm::maxCost(CostMode::kSad), 255);
   EXPECT_EQ(sgm::maxCost(CostMode::kBt), 255);
-  EXPECT_EQ(sgm::maxCost(CostMode::kSadRt), 80);
+  EXPECT_EQ(sgm::maxCost(CostMode::kSadRt), 44);
 }
 
 TEST(ComputeCost, MatchOutsideRightImageCostsMax) {
@@ -79,8 +83,8 @@ TEST(ComputeCost, MatchOutsideRightImageCostsMax) {
   const struct {
     CostMode mode;
     int expected;
-  } cases[] = {{CostMode::kRt, 80},  {CostMode::kRsad, 80}, {CostMode::kUnified, 160},
-               {CostMode::kSad, 255}, {CostMode::kBt, 255},  {CostMode::kSadRt, 80}};
+  } cases[] = {{CostMode::kRt, 44},  {CostMode::kRsad, 44}, {CostMode::kUnified, 88},
+               {CostMode::kSad, 255}, {CostMode::kBt, 255},  {CostMode::kSadRt, 44}};
   for (const auto& c : cases) {
     const CostVolume v = sgm::computeCost(l, r, c.mode, 9);
     for (int y = 0; y < v.height; ++y)
@@ -117,18 +121,19 @@ TEST(ComputeCost, CensusModesOnShiftedDarkPixel) {
   cv::Mat l(10, 12, CV_8UC1, cv::Scalar(100)), r(10, 12, CV_8UC1, cv::Scalar(100));
   l.at<uint8_t>(5, 5) = 50;
   r.at<uint8_t>(5, 3) = 50;
-  // At p = (7,6) the left census has the single bit of offset (-2,-1) = 29; the
-  // right census at (7-d, 6) has the single bit of offset (-4+d, -1) = 27 + d for
-  // d = 0..7 (the dark pixel stays in the window). So rsad = 2 except at d = 2,
-  // rt = 0 (both ranks 1), and d = 8, 9 fall outside the right image.
-  const std::vector<int> rt = {0, 0, 0, 0, 0, 0, 0, 0, 80, 80};
-  const std::vector<int> rsad = {2, 2, 0, 2, 2, 2, 2, 2, 80, 80};
-  const std::vector<int> unified = {2, 2, 0, 2, 2, 2, 2, 2, 160, 160};
+  // At p = (7,6) the left census has the single bit of offset (-2,-1):
+  // k = 9(dy+2) + (dx+4) = 9 + 2 = 11; the right census at (7-d, 6) has the
+  // single bit of offset (-4+d, -1) = 9 + d for d = 0..7 (the dark pixel stays
+  // in the window). So rsad = 2 except at d = 2, rt = 0 (both ranks 1), and
+  // d = 8, 9 fall outside the right image: Cmax = 44 (rt, rsad), 88 (unified).
+  const std::vector<int> rt = {0, 0, 0, 0, 0, 0, 0, 0, 44, 44};
+  const std::vector<int> rsad = {2, 2, 0, 2, 2, 2, 2, 2, 44, 44};
+  const std::vector<int> unified = {2, 2, 0, 2, 2, 2, 2, 2, 88, 88};
   EXPECT_EQ(costsAt(sgm::computeCost(l, r, CostMode::kRt, 10), 7, 6), rt);
   EXPECT_EQ(costsAt(sgm::computeCost(l, r, CostMode::kRsad, 10), 7, 6), rsad);
   EXPECT_EQ(costsAt(sgm::computeCost(l, r, CostMode::kUnified, 10), 7, 6), unified);
   // At p = (5,5), d = 0: left census is empty (the dark centre), the right
-  // census has the bit of offset (-2,0) = 38: ranks 0 vs 1, Hamming 1.
+  // census has the bit of offset (-2,0) = 9*2 + 2 = 20: ranks 0 vs 1, Hamming 1.
   EXPECT_EQ(sgm::computeCost(l, r, CostMode::kRt, 4).at(5, 5)[0], 1);
   EXPECT_EQ(sgm::computeCost(l, r, CostMode::kRsad, 4).at(5, 5)[0], 1);
   EXPECT_EQ(sgm::computeCost(l, r, CostMode::kUnified, 4).at(5, 5)[0], 2);
@@ -188,9 +193,9 @@ TEST(ComputeCost, SadOnConstantOffsetPair) {
 }
 
 TEST(ComputeCost, SadRoundsTheMeanHalfUp) {
-  // |left - right| = 1 on odd columns, 0 on even ones. An interior window
-  // centred on an odd column holds 5 odd columns: 45 / 81 = 0.56 -> 1; on an
-  // even column 4 odd columns: 36 / 81 = 0.44 -> 0.
+  // |left - right| = 1 on odd columns, 0 on even ones. An interior 9x5 window
+  // centred on an odd column holds 5 odd columns: 25 / 45 = 0.56 -> 1; on an
+  // even column 4 odd columns: 20 / 45 = 0.44 -> 0.
   cv::Mat l(12, 14, CV_8UC1), r(12, 14, CV_8UC1, cv::Scalar(100));
   for (int y = 0; y < 12; ++y)
     for (int x = 0; x < 14; ++x) l.at<uint8_t>(y, x) = uint8_t(100 + (x & 1));
@@ -200,23 +205,33 @@ TEST(ComputeCost, SadRoundsTheMeanHalfUp) {
     EXPECT_EQ(v.at(6, y)[0], 0);
     EXPECT_EQ(v.at(7, y)[0], 1);
   }
-  // Corner (0,0): window clipped to columns 0..4 (2 odd of 5), rows 0..4:
-  // 10 / 25 = 0.4 -> 0. Column 1 at row 0: columns 0..5 (3 odd of 6): 15/30 = 0.5 -> 1.
+  // Corner (0,0): window clipped to columns 0..4 (2 odd of 5), rows 0..2:
+  // 6 / 15 = 0.4 -> 0. Column 1 at row 0: columns 0..5 (3 odd of 6): 9 / 18 = 0.5 -> 1.
   EXPECT_EQ(v.at(0, 0)[0], 0);
   EXPECT_EQ(v.at(1, 0)[0], 1);
 }
 
 TEST(ComputeCost, SadRtOnConstantImages) {
   // Constant images: all census signatures empty -> rt = 0; SAD = 100.
-  // SADn = (100*80 + 127) / 255 = 31; cost = (2*31 + 0 + 5) / 10 = 6.
+  // SADn = (100*44 + 127) / 255 = 4527 / 255 = 17; cost = (2*17 + 0 + 5) / 10 = 3.
+  // Outside the right image: Cmax = 44.
   const cv::Mat l(12, 12, CV_8UC1, cv::Scalar(100)), r(12, 12, CV_8UC1, cv::Scalar(200));
   const CostVolume v = sgm::computeCost(l, r, CostMode::kSadRt, 3);
   for (int y = 0; y < 12; ++y)
     for (int x = 0; x < 12; ++x)
-      for (int d = 0; d < 3; ++d) ASSERT_EQ(v.at(x, y)[d], x - d >= 0 ? 6 : 80);
-  // SAD 255 (0 vs 255): SADn = 80 -> (160 + 5) / 10 = 16.
+      for (int d = 0; d < 3; ++d) ASSERT_EQ(v.at(x, y)[d], x - d >= 0 ? 3 : 44);
+  // SAD 255 (0 vs 255): SADn = (255*44 + 127) / 255 = 44 -> (88 + 5) / 10 = 9.
   const cv::Mat black(12, 12, CV_8UC1, cv::Scalar(0)), white(12, 12, CV_8UC1, cv::Scalar(255));
-  EXPECT_EQ(sgm::computeCost(black, white, CostMode::kSadRt, 2).at(6, 6)[0], 16);
+  EXPECT_EQ(sgm::computeCost(black, white, CostMode::kSadRt, 2).at(6, 6)[0], 9);
+  // The rank term: constant 100, one dark pixel (50) at (5,5) on the left and at
+  // (3,5) on the right. At p = (5,5), d = 0 the left census is empty (rank 0), the
+  // right one holds the dark pixel (rank 1): rt = 1. The 9x5 window (45 pixels,
+  // all inside) differs at (5,5) and (3,5) by 50 each: SAD = 100 / 45 = 2.2 -> 2,
+  // SADn = (2*44 + 127) / 255 = 0; cost = (0 + 8*1 + 5) / 10 = 1.
+  cv::Mat dl(10, 12, CV_8UC1, cv::Scalar(100)), dr(10, 12, CV_8UC1, cv::Scalar(100));
+  dl.at<uint8_t>(5, 5) = 50;
+  dr.at<uint8_t>(5, 3) = 50;
+  EXPECT_EQ(sgm::computeCost(dl, dr, CostMode::kSadRt, 4).at(5, 5)[0], 1);
 }
 
 }  // namespace

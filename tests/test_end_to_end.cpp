@@ -23,9 +23,9 @@ namespace {
 
 struct SceneBar {
   const char* name;
-  double maxErrNonocc;  // percent: the accuracy goals of issue 6 (Teddy: 7.0 not reached, 7.8 kept)
+  double maxErrNonocc;  // percent: the accuracy goals of issue 6 (nonocc bad-1.0 at most this)
 };
-constexpr SceneBar kScenes[] = {{"cones", 3.5}, {"teddy", 7.8}, {"sawtooth", 2.0}, {"venus", 1.5}};
+constexpr SceneBar kScenes[] = {{"cones", 3.5}, {"teddy", 7.0}, {"sawtooth", 2.0}, {"venus", 1.5}};
 
 enum class ParamSet { kRsadDefaults, kHardwareDefault };
 
@@ -69,7 +69,7 @@ TEST_P(Middlebury, ErrNonoccBelowTheBar) {
   RecordProperty("errAll", std::to_string(f.errAll));
   RecordProperty("density", std::to_string(f.density));
 
-  EXPECT_LT(f.errNonocc, bar.maxErrNonocc) << figures.str();
+  EXPECT_LE(f.errNonocc, bar.maxErrNonocc) << figures.str();
   // Fill is on: every pixel of a row with at least one valid pixel is valid.
   EXPECT_GT(f.density, 99.0) << figures.str();
 }

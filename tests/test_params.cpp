@@ -102,6 +102,28 @@ TEST(ParamsTest, DefaultParamsKeepsTheModeAndPostProcessing) {
   EXPECT_EQ(base.p2, sgm::defaultParams(base.mode).p2);
 }
 
+TEST(ParamsTest, DocumentedPenaltyDefaults) {
+  // docs/algorithm.md, "Defaults": rsad (the hardware default) P1 18, P2' 100.
+  EXPECT_EQ(Params{}.mode, CostMode::kRsad);
+  EXPECT_EQ(Params{}.p1, 18);
+  EXPECT_EQ(Params{}.p2, 100);
+  EXPECT_EQ(sgm::defaultParams(CostMode::kRsad).p1, 18);
+  EXPECT_EQ(sgm::defaultParams(CostMode::kRsad).p2, 100);
+}
+
+TEST(ParamsTest, PenaltyLimitKeepsTheWeightedSumInSixteenBits) {
+  // S = 3 L0 + 2 L45 + 3 L90 + 2 L135 and Lr <= Cmax + P2': with the largest
+  // Cmax (255, sad and bt) and P2' = kMaxPenalty, 10 (255 + 6000) = 62550 < 65536.
+  EXPECT_EQ(sgm::kPathWeights[0], 3);
+  EXPECT_EQ(sgm::kPathWeights[1], 2);
+  EXPECT_EQ(sgm::kPathWeights[2], 3);
+  EXPECT_EQ(sgm::kPathWeights[3], 2);
+  EXPECT_EQ(sgm::kPathWeightSum, 10);
+  EXPECT_EQ(sgm::kMaxPenalty, 6000);
+  for (CostMode m : sgm::allCostModes())
+    EXPECT_LT(sgm::kPathWeightSum * (sgm::maxCost(m) + sgm::kMaxPenalty), 65536) << sgm::costModeName(m);
+}
+
 TEST(CostModes, NamesRoundTripAndUnknownThrows) {
   const std::vector<std::string> names = {"rt", "rsad", "unified", "sad", "bt", "sad+rt"};
   const auto modes = sgm::allCostModes();
@@ -134,9 +156,11 @@ TEST(CheckInput, SizeMismatch) {
   expectError([] { sgm::checkInput(gray(20, 16), gray(20, 15), Params{}); }, {"size mismatch"});
 }
 
-TEST(CheckInput, SmallerThanTheWindow) {
-  expectError([] { sgm::checkInput(gray(8, 9), gray(8, 9), Params{}); }, {"8x9", "smaller", "9x9"});
+TEST(CheckInput, SmallerThanTheMinimumFrame) {
+  expectError([] { sgm::checkInput(gray(8, 9), gray(8, 9), Params{}); }, {"8x9", "smaller", "9x9 minimum frame"});
+  // The census window is only 5 rows high, but the minimum frame stays 9x9.
   expectError([] { sgm::checkInput(gray(9, 8), gray(9, 8), Params{}); }, {"9x8", "smaller"});
+  expectError([] { sgm::checkInput(gray(40, 5), gray(40, 5), Params{}); }, {"40x5", "smaller"});
   expectError([] { sgm::checkInput(gray(1, 1), gray(1, 1), Params{}); }, {"smaller"});
 }
 

@@ -41,7 +41,7 @@ uint16_t pathStart(const uint8_t* cost, int disparities, uint16_t* out);
 // Lr of one path (index into kPathDirections) for the whole image.
 PathVolume pathCost(const CostVolume& cost, const cv::Mat& grayLeft, int pathIndex, int p1, int p2);
 
-// S(p, d) = sum over the four paths of Lr(p, d), for the whole volume.
+// S(p, d) = sum over the four paths of kPathWeights[r] Lr(p, d) (3, 2, 3, 2), for the whole volume.
 PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1, int p2);
 
 // The streaming form used by the pipeline: rows in order, never more than a

@@ -20,7 +20,7 @@ struct PipelineStages {
 };
 
 // Throws Error for bad input: size mismatch, non-gray images, images smaller
-// than the 9x9 window, invalid parameters.
+// than the 9x9 minimum frame, invalid parameters.
 void checkInput(const cv::Mat& grayLeft, const cv::Mat& grayRight, const Params& params);
 
 PipelineStages runPipelineStages(const cv::Mat& grayLeft, const cv::Mat& grayRight, const Params& params);
