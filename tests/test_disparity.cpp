@@ -329,8 +329,11 @@ TEST(Median5x5, FullWindowAndClippedBorders) {
   EXPECT_EQ(out.disp.at<uint16_t>(2, 2), 16 * 12);
   // (0,0): i in {0,1,2,5,6,7,10,11,12} -> {0,7,14,10,17,24,20,2,9}, sorted element 4 = 10.
   EXPECT_EQ(out.disp.at<uint16_t>(0, 0), 16 * 10);
-  // (4,4): i in {12,13,14,17,18,19,22,23,24} -> {9,16,23,19,1,8,4,11,18} -> 11.
-  EXPECT_EQ(out.disp.at<uint16_t>(4, 4), 16 * 11);
+  // (4,4) lies in one of the last two rows (window clipped by the bottom edge):
+  // passed through, i = 24 -> 7 * 24 mod 25 = 18 (its clipped median would be 11).
+  EXPECT_EQ(out.disp.at<uint16_t>(4, 4), 16 * 18);
+  // Likewise row 3: (x=0, y=3), i = 15 -> 105 mod 25 = 5.
+  EXPECT_EQ(out.disp.at<uint16_t>(3, 0), 16 * 5);
   // (x=2, y=0): rows 0..2, i = 0..14 -> 15 values, element 7 of
   // {0,2,3,6,7,9,10,13,14,16,17,20,21,23,24} = 13.
   EXPECT_EQ(out.disp.at<uint16_t>(0, 2), 16 * 13);
@@ -339,14 +342,18 @@ TEST(Median5x5, FullWindowAndClippedBorders) {
   for (int y = 0; y < 5; ++y) EXPECT_EQ(validRow(out, y), (V{1, 1, 1, 1, 1}));
 }
 
+// The one-row cases below get two invalid rows underneath, so that row 0 is
+// not one of the last two rows (which pass through); invalid pixels never count.
 TEST(Median5x5, EvenCountTakesTheLowerMedian) {
-  const DisparityMap out = sgm::median5x5(makeMap({{10, 40, 20, 30}}, {{1, 1, 1, 1}}));
+  const DisparityMap out =
+      sgm::median5x5(makeMap({{10, 40, 20, 30}, {0, 0, 0, 0}, {0, 0, 0, 0}}, {{1, 1, 1, 1}, {0, 0, 0, 0}, {0, 0, 0, 0}}));
   // x=0: {10,40,20} -> 20; x=1: {10,20,30,40} -> 20; x=2: same -> 20; x=3: {40,20,30} -> 30.
   EXPECT_EQ(dispRow(out, 0), (V{20, 20, 20, 30}));
 }
 
 TEST(Median5x5, OnlyValidPixelsCountAndInvalidCentreStays) {
-  const DisparityMap out = sgm::median5x5(makeMap({{100, 0, 50, 60, 0}}, {{1, 0, 1, 1, 0}}));
+  const DisparityMap out = sgm::median5x5(makeMap({{100, 0, 50, 60, 0}, {0, 0, 0, 0, 0}, {0, 0, 0, 0, 0}},
+                                                  {{1, 0, 1, 1, 0}, {0, 0, 0, 0, 0}, {0, 0, 0, 0, 0}}));
   // x=0: valid {100, 50} -> 50; x=2: valid {100, 50, 60} -> 60 (with the two
   // invalid zeros counted it would be 50); x=3: valid {50, 60} -> 50.
   EXPECT_EQ(dispRow(out, 0), (V{50, 0, 60, 50, 0}));
@@ -362,6 +369,18 @@ TEST(Median5x5, InvalidCentreValuePassesThrough) {
   EXPECT_EQ(out.valid.at<uint8_t>(3, 3), 0);
   EXPECT_EQ(out.disp.at<uint16_t>(3, 2), 32);  // 777 is not part of its neighbours' windows
   EXPECT_EQ(out.disp.at<uint16_t>(5, 5), 32);
+}
+
+TEST(Median5x5, LastTwoRowsPassThrough) {
+  // 9 rows of 16, one outlier 800 in each row: every row above the last two
+  // loses its outlier to the median, the last two keep it (docs/algorithm.md 9).
+  std::vector<std::vector<int>> disp(9, std::vector<int>(7, 16)), valid(9, std::vector<int>(7, 1));
+  for (int y = 0; y < 9; ++y) disp[y][y % 7] = 800;
+  const DisparityMap out = sgm::median5x5(makeMap(disp, valid));
+  for (int y = 0; y < 9; ++y) {
+    EXPECT_EQ(out.disp.at<uint16_t>(y, y % 7), y < 7 ? 16 : 800) << "y=" << y;
+    EXPECT_EQ(validRow(out, y), (V{1, 1, 1, 1, 1, 1, 1})) << "y=" << y;
+  }
 }
 
 }  // namespace
