@@ -60,9 +60,9 @@ Params defaultParams(CostMode mode) {
   p.mode = mode;
   switch (mode) {
     // Measured on cones, teddy, sawtooth, venus: docs/algorithm.md, section 11.
-    case CostMode::kRt: p.p1 = 40, p.p2 = 255; break;
+    case CostMode::kRt: p.p1 = 28, p.p2 = 130; break;
     case CostMode::kRsad: p.p1 = 18, p.p2 = 100; break;
-    case CostMode::kUnified: p.p1 = 40, p.p2 = 255; break;
+    case CostMode::kUnified: p.p1 = 40, p.p2 = 200; break;
     case CostMode::kSad: p.p1 = 8, p.p2 = 255; break;
     case CostMode::kBt: p.p1 = 16, p.p2 = 600; break;
     case CostMode::kSadRt: p.p1 = 28, p.p2 = 400; break;
