@@ -113,7 +113,7 @@ const std::vector<std::string>& optionNames() {  // of the three tools, plus str
 const std::vector<std::string>& absurdValues() {
   static const std::vector<std::string> values = {
       "",      "0",     "1",       "-1",       "2",          "7",          "8",   "9",
-      "16",    "64",    "255",     "256",      "257",        "6000",       "6001" , "4294967295",
+      "16",    "64",    "255",     "256",      "257",        "6000",       "6001", "4294967295",
       "4294967296", "99999999999999999999", "-99999999999999999999", "0.5", "0.95", "1e309", "-1e309",
       "nan",   "inf",   "-0",      "0x10",     " 16",        "16 ",        "on",  "off",
       "yes",   "rt",    "rsad",    "unified",  "sad",        "bt",         "sad+rt", "RT",
