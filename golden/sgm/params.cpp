@@ -63,9 +63,9 @@ Params defaultParams(CostMode mode) {
     case CostMode::kRt: p.p1 = 28, p.p2 = 130; break;
     case CostMode::kRsad: p.p1 = 18, p.p2 = 100; break;
     case CostMode::kUnified: p.p1 = 40, p.p2 = 200; break;
-    case CostMode::kSad: p.p1 = 8, p.p2 = 255; break;
-    case CostMode::kBt: p.p1 = 16, p.p2 = 600; break;
-    case CostMode::kSadRt: p.p1 = 28, p.p2 = 400; break;
+    case CostMode::kSad: p.p1 = 8, p.p2 = 80; break;
+    case CostMode::kBt: p.p1 = 14, p.p2 = 200; break;
+    case CostMode::kSadRt: p.p1 = 20, p.p2 = 100; break;
   }
   return p;
 }
