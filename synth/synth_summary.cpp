@@ -33,7 +33,7 @@ constexpr long kPaperLut = 31495;
 constexpr long kPaperFf = 13084;
 constexpr double kPaperSramKB = 183.0;
 constexpr double kPaperPixelsPerClock = 1.0 / 9.0;
-constexpr int kLw = 9;  // path-cost width of the core = ceil(log2(Lmax + 1)), Lmax = 415
+constexpr int kLw = 9;  // path-cost width of the core = ceil(log2(Lmax + 1)), Lmax = 343
 
 // Eq. (7): path-cost buffer bits (D + 5)(3W + 1) ceil(log2(Lmax + 1)).
 long eq7Bits(long d, long w) { return (d + 5) * (3 * w + 1) * kLw; }
@@ -739,7 +739,7 @@ void writeMarkdown(const std::string &path, const std::vector<Target> &ts, const
 
     // Path buffers.
     o << "**Path buffers** (`sgm_path_engine` mem45 / mem90 / mem135, 3 x " << f.w << " x " << (f.d + 1) << " x " << kLw
-      << " bit) against eq. (7), (D + 5)(3W + 1) ceil(log2(Lmax + 1)) with Lmax = 415:\n\n";
+      << " bit) against eq. (7), (D + 5)(3W + 1) ceil(log2(Lmax + 1)) with Lmax = 343:\n\n";
     o << "| target | bits | eq. (7) bits | ratio | blocks | block capacity | in block RAM |\n| --- | --- | --- | --- | --- | --- | --- |\n";
     for (auto *c : cols) {
       if (c->tech == Tech::Generic) continue;
