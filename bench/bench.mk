@@ -6,7 +6,9 @@
 #   2. runs the fast build on every Middlebury scene under DATA and on Aloe, and
 #      on one frame of each video format (the paper's Table II sizes and 1080p);
 #      sgm-sim compares every output pixel with the golden model as it goes;
-#   3. runs every variant on Cones for the simulation speed;
+#   3. runs every variant on Cones for the simulation speed, BENCH_REPEATS
+#      interleaved rounds (one run of each variant per round), so that the
+#      report gives each variant's median and spread;
 #   4. sgm-bench report: OpenCV (MODE_SGBM, MODE_HH, MODE_SGBM_3WAY), golden vs
 #      OpenCV timing, and build/bench/report.{md,json}, accuracy.png.
 #
@@ -66,12 +68,12 @@ bench: $(BENCH_TOOL) $(foreach v,$(BENCH_VARIANTS),$(call BENCH_SIM,$(v))) | che
 	   $$sim --left $(BENCH_DIR)/formats/images/$${f}_left.png --right $(BENCH_DIR)/formats/images/$${f}_right.png \
 	     --out $(BENCH_DIR)/formats/$$f > $(BENCH_DIR)/formats/$$f.log || { cat $(BENCH_DIR)/formats/$$f.log; exit 1; }; \
 	 done
-	@set -e; for v in $(BENCH_VARIANTS); do \
-	   echo "bench: simulation speed, $$v build, cones"; \
-	   mkdir -p $(BENCH_DIR)/simspeed/$$v; \
-	   src="$(DATA)/cones"; [ -f "$$src/left.png" ] && args="--left $$src/left.png --right $$src/right.png" || args=""; \
-	   $(BIN)/sgm-sim-d$(D)-w$(BENCH_MAX_WIDTH)-h$(BENCH_MAX_HEIGHT)-$$v $$args --out $(BENCH_DIR)/simspeed/$$v > $(BENCH_DIR)/simspeed/$$v.log \
-	     || { cat $(BENCH_DIR)/simspeed/$$v.log; exit 1; }; \
-	 done
+	@set -e; src="$(DATA)/cones"; [ -f "$$src/left.png" ] && args="--left $$src/left.png --right $$src/right.png" || args=""; \
+	 for r in $$(seq 1 $(BENCH_REPEATS)); do for v in $(BENCH_VARIANTS); do \
+	   echo "bench: simulation speed, $$v build, cones, round $$r of $(BENCH_REPEATS)"; \
+	   run=$(BENCH_DIR)/simspeed/$$v/run$$r; mkdir -p $$run; \
+	   $(BIN)/sgm-sim-d$(D)-w$(BENCH_MAX_WIDTH)-h$(BENCH_MAX_HEIGHT)-$$v $$args --out $$run > $$run.log \
+	     || { cat $$run.log; exit 1; }; \
+	 done; done
 	@$(foreach v,$(BENCH_VARIANTS),echo '$(strip $(BENCH_FLAGS_$(v)))' > $(BENCH_DIR)/simspeed/$(v)/flags.txt;)
 	@$(BENCH_TOOL) report --data "$(DATA)" --bench $(BENCH_DIR) --repeats $(BENCH_REPEATS)

@@ -122,6 +122,45 @@ int commandFormats(const CliArgs& args) {
   return 0;
 }
 
+std::string readText(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  return line;
+}
+
+// One Verilator build option set, run BENCH_REPEATS times on Cones in
+// interleaved rounds (simspeed/<variant>/run<k>/): one frame's simulation speed
+// varies by some 10 % from run to run, so the report gives the median and the spread.
+struct SimVariant {
+  std::string name, flags;
+  std::vector<SimReport> runs;
+  std::vector<double> cyclesPerSecond;  // one per run, sorted
+  double median() const {
+    const size_t n = cyclesPerSecond.size();
+    return n % 2 ? cyclesPerSecond[n / 2] : (cyclesPerSecond[n / 2 - 1] + cyclesPerSecond[n / 2]) / 2;
+  }
+  double min() const { return cyclesPerSecond.front(); }
+  double max() const { return cyclesPerSecond.back(); }
+  double cyclesPerFrame() const { return runs.front().number("cycles"); }
+};
+
+SimVariant readSimVariant(const fs::path& dir) {
+  SimVariant v;
+  v.name = dir.filename().string();
+  const fs::path flags = dir / "flags.txt";
+  if (!fs::exists(flags)) throw Error("missing '" + flags.string() + "' (run `make bench`, not sgm-bench alone)");
+  v.flags = readText(flags.string());
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    if (!entry.is_directory()) continue;  // flags.txt and the runs' logs sit beside the run directories
+    v.runs.push_back(readSimReport(entry.path().string()));
+    v.cyclesPerSecond.push_back(v.runs.back().number("sim_cycles_per_second"));
+  }
+  if (v.runs.empty()) throw Error("no simulation-speed run under '" + dir.string() + "'");
+  std::sort(v.cyclesPerSecond.begin(), v.cyclesPerSecond.end());
+  return v;
+}
+
 // Everything `report` measures, then rendered.
 struct BenchData {
   std::vector<std::string> scenes;
@@ -129,8 +168,7 @@ struct BenchData {
   std::map<std::string, SimReport> rtl;                                      // scene -> sgm-sim report
   std::map<std::string, std::map<std::string, ErrorFigures>> figures;       // method -> scene -> figures
   std::map<std::string, BenchResult> speed;                                  // scene -> golden vs OpenCV
-  std::vector<std::pair<std::string, SimReport>> simVariants;                // variant -> report (cones)
-  std::map<std::string, std::string> simVariantFlags;                        // variant -> verilator flags
+  std::vector<SimVariant> simVariants;                                       // by name (cones)
   std::map<std::string, SimReport> formats;                                  // WxH -> report
   int d = 64, maxWidth = 0;
 };
@@ -143,13 +181,6 @@ ErrorFigures rtlFigures(const SimReport& r) {
   f.density = r.number("density");
   f.errNonoccValid = r.number("err_nonocc_valid");
   return f;
-}
-
-std::string readText(const std::string& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  return line;
 }
 
 BenchData measure(const std::string& data, const std::string& bench, int repeats) {
@@ -183,12 +214,10 @@ BenchData measure(const std::string& data, const std::string& bench, int repeats
   }
   for (const auto& entry : fs::directory_iterator(bench + "/simspeed")) {
     if (!entry.is_directory()) continue;  // the runs' logs sit beside their directories
-    const std::string variant = entry.path().filename().string();
-    b.simVariants.push_back({variant, readSimReport(entry.path().string())});
-    b.simVariantFlags[variant] = readText(entry.path().string() + "/flags.txt");
+    b.simVariants.push_back(readSimVariant(entry.path()));
   }
   std::sort(b.simVariants.begin(), b.simVariants.end(),
-            [](const auto& x, const auto& y) { return x.first < y.first; });
+            [](const SimVariant& x, const SimVariant& y) { return x.name < y.name; });
   for (const VideoFormat& f : kFormats) {
     const std::string name = frameName(f.width, f.height);
     if (!b.formats.count(name)) b.formats.emplace(name, readSimReport(bench + "/formats/" + name));
@@ -252,13 +281,16 @@ std::string markdown(const BenchData& b) {
        << " | " << r.at("latency_cycles") << " | " << fmt(r.number("sim_cycles_per_second"), 0) << " |\n";
   }
   md << "\n## Simulation speed by Verilator build options (Cones, one frame)\n\n"
-     << "| variant | Verilator options | cycles/s | frames/s | seconds per frame |\n|---|---|---|---|---|\n";
-  for (const auto& [variant, r] : b.simVariants) {
-    const double cps = r.number("sim_cycles_per_second");
-    md << "| " << variant << " | `" << b.simVariantFlags.at(variant) << "` | " << fmt(cps, 0) << " | "
-       << fmt(cps / r.number("cycles"), 3) << " | " << fmt(r.number("cycles") / cps, 2) << " |\n";
+     << "| variant | Verilator options | runs | cycles/s (median) | min .. max | frames/s | seconds per frame "
+        "|\n|---|---|---|---|---|---|---|\n";
+  for (const SimVariant& v : b.simVariants) {
+    md << "| " << v.name << " | `" << v.flags << "` | " << v.runs.size() << " | " << fmt(v.median(), 0) << " | "
+       << fmt(v.min(), 0) << " .. " << fmt(v.max(), 0) << " | " << fmt(v.median() / v.cyclesPerFrame(), 3) << " | "
+       << fmt(v.cyclesPerFrame() / v.median(), 2) << " |\n";
   }
-  md << "\nThe verilated tests of `make test` use the `checked` options (random initial values).\n";
+  md << "\nMedian of interleaved rounds (one run of each variant per round); where two variants' ranges overlap, "
+        "this machine does not tell them apart. Every run is also a bit-exact check against the golden model. "
+        "The verilated tests of `make test` use the `checked` options (random initial values).\n";
 
   md << "\n## Clock needed per video format (the paper's Table II)\n\n"
      << "| format | cycles per frame (simulated) | cycles/pixel | our clock (MHz) | paper's clock (MHz, 9 cycles/pixel) "
@@ -345,12 +377,15 @@ std::string json(const BenchData& b) {
   }
   j.endArray();
   j.key("simulation").beginArray();
-  for (const auto& [variant, r] : b.simVariants) {
+  for (const SimVariant& v : b.simVariants) {
     j.beginObject();
-    j.key("variant").string(variant);
-    j.key("verilator_flags").string(b.simVariantFlags.at(variant));
-    j.key("cycles_per_second").real(r.number("sim_cycles_per_second"));
-    j.key("frames_per_second").real(r.number("sim_cycles_per_second") / r.number("cycles"));
+    j.key("variant").string(v.name);
+    j.key("verilator_flags").string(v.flags);
+    j.key("cycles_per_second").real(v.median());
+    j.key("frames_per_second").real(v.median() / v.cyclesPerFrame());
+    j.key("cycles_per_second_min").real(v.min());
+    j.key("cycles_per_second_max").real(v.max());
+    j.key("runs").integer(long(v.runs.size()));
     j.endObject();
   }
   j.endArray();
