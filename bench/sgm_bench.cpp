@@ -134,15 +134,11 @@ std::string readText(const std::string& path) {
 // varies by some 10 % from run to run, so the report gives the median and the spread.
 struct SimVariant {
   std::string name, flags;
-  std::vector<SimReport> runs;
   std::vector<double> cyclesPerSecond;  // one per run, sorted
-  double median() const {
-    const size_t n = cyclesPerSecond.size();
-    return n % 2 ? cyclesPerSecond[n / 2] : (cyclesPerSecond[n / 2 - 1] + cyclesPerSecond[n / 2]) / 2;
-  }
+  double cyclesPerFrame = 0;            // the same in every run
+  double median() const { return eval::median(cyclesPerSecond); }
   double min() const { return cyclesPerSecond.front(); }
   double max() const { return cyclesPerSecond.back(); }
-  double cyclesPerFrame() const { return runs.front().number("cycles"); }
 };
 
 SimVariant readSimVariant(const fs::path& dir) {
@@ -153,10 +149,11 @@ SimVariant readSimVariant(const fs::path& dir) {
   v.flags = readText(flags.string());
   for (const auto& entry : fs::directory_iterator(dir)) {
     if (!entry.is_directory()) continue;  // flags.txt and the runs' logs sit beside the run directories
-    v.runs.push_back(readSimReport(entry.path().string()));
-    v.cyclesPerSecond.push_back(v.runs.back().number("sim_cycles_per_second"));
+    const SimReport run = readSimReport(entry.path().string());
+    v.cyclesPerSecond.push_back(run.number("sim_cycles_per_second"));
+    v.cyclesPerFrame = run.number("cycles");
   }
-  if (v.runs.empty()) throw Error("no simulation-speed run under '" + dir.string() + "'");
+  if (v.cyclesPerSecond.empty()) throw Error("no simulation-speed run under '" + dir.string() + "'");
   std::sort(v.cyclesPerSecond.begin(), v.cyclesPerSecond.end());
   return v;
 }
@@ -213,7 +210,7 @@ BenchData measure(const std::string& data, const std::string& bench, int repeats
     b.speed[name] = runBench(scene, repeats);
   }
   for (const auto& entry : fs::directory_iterator(bench + "/simspeed")) {
-    if (!entry.is_directory()) continue;  // the runs' logs sit beside their directories
+    if (!entry.is_directory()) continue;
     b.simVariants.push_back(readSimVariant(entry.path()));
   }
   std::sort(b.simVariants.begin(), b.simVariants.end(),
@@ -284,9 +281,9 @@ std::string markdown(const BenchData& b) {
      << "| variant | Verilator options | runs | cycles/s (median) | min .. max | frames/s | seconds per frame "
         "|\n|---|---|---|---|---|---|---|\n";
   for (const SimVariant& v : b.simVariants) {
-    md << "| " << v.name << " | `" << v.flags << "` | " << v.runs.size() << " | " << fmt(v.median(), 0) << " | "
-       << fmt(v.min(), 0) << " .. " << fmt(v.max(), 0) << " | " << fmt(v.median() / v.cyclesPerFrame(), 3) << " | "
-       << fmt(v.cyclesPerFrame() / v.median(), 2) << " |\n";
+    md << "| " << v.name << " | `" << v.flags << "` | " << v.cyclesPerSecond.size() << " | " << fmt(v.median(), 0) << " | "
+       << fmt(v.min(), 0) << " .. " << fmt(v.max(), 0) << " | " << fmt(v.median() / v.cyclesPerFrame, 3) << " | "
+       << fmt(v.cyclesPerFrame / v.median(), 2) << " |\n";
   }
   md << "\nMedian of interleaved rounds (one run of each variant per round); where two variants' ranges overlap, "
         "this machine does not tell them apart. Every run is also a bit-exact check against the golden model. "
@@ -382,10 +379,10 @@ std::string json(const BenchData& b) {
     j.key("variant").string(v.name);
     j.key("verilator_flags").string(v.flags);
     j.key("cycles_per_second").real(v.median());
-    j.key("frames_per_second").real(v.median() / v.cyclesPerFrame());
+    j.key("frames_per_second").real(v.median() / v.cyclesPerFrame);
     j.key("cycles_per_second_min").real(v.min());
     j.key("cycles_per_second_max").real(v.max());
-    j.key("runs").integer(long(v.runs.size()));
+    j.key("runs").integer(long(v.cyclesPerSecond.size()));
     j.endObject();
   }
   j.endArray();

@@ -24,12 +24,6 @@ double timeMs(const std::function<void()>& job) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n == 0 ? 0 : n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
-}
-
 std::string line(const char* format, double a, double b = 0) {
   char buf[160];
   std::snprintf(buf, sizeof buf, format, a, b);
@@ -37,6 +31,12 @@ std::string line(const char* format, double a, double b = 0) {
 }
 
 }  // namespace
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n == 0 ? 0 : n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+}
 
 double BenchResult::opencvMs() const { return std::min(opencvColorMs, opencvGrayMs); }
 std::string BenchResult::opencvInput() const { return opencvGrayMs <= opencvColorMs ? "gray" : "color"; }

@@ -6,6 +6,7 @@
 #include "eval_lib.hpp"
 
 #include <string>
+#include <vector>
 
 namespace sgm::eval {
 
@@ -23,6 +24,9 @@ struct BenchResult {
   std::string opencvInput() const;  // "gray" or "color": which variant that is
   double ratio() const;      // goldenMs / opencvMs()
 };
+
+// The median of the values (0 when there are none).
+double median(std::vector<double> values);
 
 // One warm-up of each, then `repeats` rounds of golden, OpenCV colour, OpenCV
 // gray, one after the other; median time of each.
