@@ -9,8 +9,16 @@ DATA       ?= $(abspath ../shared/data/middlebury)
 JOBS       ?= 2
 
 CXX        ?= g++
-ARCH       ?= x86-64-v3
-CXXFLAGS   ?= -O3 -march=$(ARCH) -g
+# Portable by default: no -march unless the compiler targets x86-64 and this
+# machine has the x86-64-v3 features (AVX2, BMI2, FMA), or ARCH= names one
+# (ARCH=native, ARCH=armv8.2-a, ...; ARCH= empty for none). Results are
+# bit-exact whatever ARCH is (the model is integer); only its speed changes.
+CXX_MACHINE := $(shell $(CXX) -dumpmachine 2>/dev/null)
+HOST_X86_V3 := $(shell grep -qw avx2 /proc/cpuinfo 2>/dev/null && grep -qw bmi2 /proc/cpuinfo && \
+                 grep -qw fma /proc/cpuinfo && echo yes)
+ARCH       ?= $(if $(and $(filter x86_64-%,$(CXX_MACHINE)),$(HOST_X86_V3)),x86-64-v3)
+MARCH      := $(if $(strip $(ARCH)),-march=$(strip $(ARCH)))
+CXXFLAGS   ?= -O3 $(MARCH) -g
 override CXXFLAGS += -std=c++17 -Wall -Wextra -pthread -Igolden -Itools
 OPENCV_CFLAGS = $(shell pkg-config --cflags opencv4 2>/dev/null)
 OPENCV_LIBS   = $(shell pkg-config --libs opencv4 2>/dev/null)
@@ -115,7 +123,7 @@ RTL_TOPS   := $(wildcard tb/tops/*.sv)
 RTL_MODULES = $(basename $(notdir $(RTL_SRC)))
 VERILATOR  := verilator
 VLT        := rtl/lint.vlt
-VL_CFLAGS   = -std=c++17 -O2 -march=$(ARCH) -I$(abspath golden) -I$(abspath tools) -I$(abspath tb) $(OPENCV_CFLAGS)
+VL_CFLAGS   = -std=c++17 -O2 $(MARCH) -I$(abspath golden) -I$(abspath tools) -I$(abspath tb) $(OPENCV_CFLAGS)
 VL_LDFLAGS  = -lgtest -lgtest_main $(OPENCV_LIBS) -pthread
 # TRACE=1 builds the verilated models with FST tracing (then run with TRACE=1 to write build/trace/*.fst).
 VL_TRACE    = $(if $(filter 1,$(TRACE)),--trace-fst)

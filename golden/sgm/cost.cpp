@@ -71,20 +71,25 @@ inline __attribute__((always_inline)) void censusCostKernel(CostMode mode, const
   }
 }
 
-// The same kernel built for CPUs with a vector popcount, chosen at run time.
+// The same kernel built for x86-64 CPUs with a vector popcount, chosen at run
+// time; every other target (and x86-64 without it) runs the portable build.
 using CostKernel = void (*)(CostMode, const Census*, const uint64_t*, const uint8_t*, int, int, int, int,
                             uint8_t*);
+void censusCostKernelPortable(CostMode mode, const Census* left, const uint64_t* bits, const uint8_t* rank,
+                              int width, int x0, int x1, int nd, uint8_t* row) {
+  censusCostKernel(mode, left, bits, rank, width, x0, x1, nd, row);
+}
+#if defined(__x86_64__)
 __attribute__((target("avx512f,avx512vl,avx512bw,avx512vpopcntdq"))) void censusCostKernelVectorPopcount(
     CostMode mode, const Census* left, const uint64_t* bits, const uint8_t* rank, int width, int x0, int x1,
     int nd, uint8_t* row) {
   censusCostKernel(mode, left, bits, rank, width, x0, x1, nd, row);
 }
-void censusCostKernelPortable(CostMode mode, const Census* left, const uint64_t* bits, const uint8_t* rank,
-                              int width, int x0, int x1, int nd, uint8_t* row) {
-  censusCostKernel(mode, left, bits, rank, width, x0, x1, nd, row);
-}
 const CostKernel kCostKernel =
     __builtin_cpu_supports("avx512vpopcntdq") ? censusCostKernelVectorPopcount : censusCostKernelPortable;
+#else
+const CostKernel kCostKernel = censusCostKernelPortable;
+#endif
 
 // sad+rt: eq. (2) with alpha = 0.2, the SAD mean rescaled to the rank range.
 void sadRtVolume(const std::vector<Census>& cl, const std::vector<Census>& cr,
