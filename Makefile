@@ -38,7 +38,7 @@ EVAL_OBJ   := $(patsubst %.cpp,$(OBJ)/%.o,$(EVAL_SRC))
 TEST_SRC   := $(wildcard tests/*.cpp)
 TEST_OBJ   := $(patsubst %.cpp,$(OBJ)/%.o,$(TEST_SRC))
 
-.PHONY: all help deps check-tools golden eval bench-golden test unit-test rtl-tests sim synth lint clean
+.PHONY: all help deps check-tools golden eval eval-ci bench-golden test unit-test rtl-tests rtl-tests-ci sim sim-ci synth lint clean
 .DEFAULT_GOAL := all
 
 all: golden
@@ -64,7 +64,7 @@ help:
 include scripts/deps.mk
 # Fragments add their own targets; each appends the targets CI must run to
 # TEST_EXTRA (run by `make test` after the GoogleTest binaries).
-TEST_EXTRA :=
+TEST_EXTRA := sim-ci eval-ci
 # `make synth` and its reports (synth/synth.mk, when present).
 -include synth/synth.mk
 
@@ -112,8 +112,19 @@ $(BIN)/sgm-sim-d%: tb/sim_main.cpp $(RTL_SRC) $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB
 sim: $(SIM_BIN)
 	TRACE=$(TRACE) $(SIM_BIN) $(SIM_ARGS)
 
+# CI smoke of `make sim`: the default scene (Aloe) at D = 64 on a MAX_WIDTH = 512 build,
+# the same binary `make bench-ci` runs; sgm-sim exits non-zero unless bit-exact.
+sim-ci:
+	@$(MAKE) --no-print-directory sim D=64 MAX_WIDTH=512 MAX_HEIGHT=1024 OUT=$(BUILD)/sim-ci STALL= SEED= FRAMES= LEFT= RIGHT=
+
+# make eval [DATA=...] [EVAL_SCENES=cones,teddy]; eval-ci is the CI smoke (one scene).
+EVAL_SCENES ?=
 eval: golden
-	$(BIN)/sgm-eval table --data "$(DATA)" --out $(BUILD)/eval
+	$(BIN)/sgm-eval table --data "$(DATA)" --out $(BUILD)/eval $(if $(EVAL_SCENES),--scenes $(EVAL_SCENES))
+
+eval-ci:
+	@if [ -d "$(DATA)/cones" ]; then $(MAKE) --no-print-directory eval EVAL_SCENES=cones; \
+	 else echo "eval-ci: skipped: DATA=$(DATA) has no cones scene (README, 'Data')"; fi
 
 bench-golden: golden
 	$(BIN)/sgm-eval bench --data "$(DATA)" --out $(BUILD)/eval
@@ -133,6 +144,8 @@ VL_TRACE    = $(if $(filter 1,$(TRACE)),--trace-fst)
 # (parameters as -GNAME=VALUE).
 define rtl_test
 RTL_TEST_BINS += $(BIN)/rtl-$(1)
+FIXTURE_TOP_$(1) := $(2)
+FIXTURE_FLAGS_$(1) := $(3)
 $(BIN)/rtl-$(1): tests/rtl/test_$(2).cpp $(RTL_SRC) $(RTL_TOPS) $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
 	@mkdir -p $(BIN) $(BUILD)/verilator
 	@echo "verilating $(2) for $$@ (log: $(BUILD)/verilator-$(1).log)"
@@ -173,6 +186,14 @@ rtl-tests: $(RTL_TEST_BINS)
 	@for t in $(RTL_TEST_BINS); do echo "== $$t"; \
 	  SGM_DATA="$(DATA)" $$t --gtest_output=xml:$(RESULTS)/$$(basename $$t).xml || exit 1; done
 
+# `make test` runs the fixtures that `make coverage` also builds (COV_FIXTURES,
+# tests/coverage.mk) once, in their coverage builds (coverage-ci), and the rest here.
+RTL_TEST_CI_BINS = $(filter-out $(foreach f,$(COV_FIXTURES),$(BIN)/rtl-$(f)),$(RTL_TEST_BINS))
+rtl-tests-ci: $(RTL_TEST_CI_BINS)
+	@mkdir -p $(RESULTS)
+	@for t in $(RTL_TEST_CI_BINS); do echo "== $$t"; \
+	  SGM_DATA="$(DATA)" $$t --gtest_output=xml:$(RESULTS)/$$(basename $$t).xml || exit 1; done
+
 # verilator --lint-only -Wall on every module; waivers live in rtl/lint.vlt.
 lint: | check-tools
 	@for m in $(RTL_MODULES); do \
@@ -193,7 +214,7 @@ unit-test: $(BIN)/unit-tests golden
 -include tests/regress.mk tests/fuzz.mk tests/coverage.mk bench/bench.mk
 
 # One closing line over every GoogleTest binary of this run.
-test: lint unit-test rtl-tests
+test: lint unit-test rtl-tests-ci
 	@for t in $(TEST_EXTRA); do $(MAKE) --no-print-directory $$t || exit 1; done
 	@scripts/test-summary.sh $(RESULTS)
 

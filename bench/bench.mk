@@ -24,16 +24,25 @@ BENCH_VARIANTS  ?= fast threads2 checked
 BENCH_FLAGS_fast     = $(SIM_VFLAGS)
 BENCH_FLAGS_threads2 = $(SIM_VFLAGS) --threads 2
 BENCH_FLAGS_checked  = --x-assign unique --x-initial unique
-BENCH_SIM        = $(BIN)/sgm-sim-d$(D)-w$(BENCH_MAX_WIDTH)-h$(BENCH_MAX_HEIGHT)-$(1)
-BENCH_SCENES     = cones teddy sawtooth venus
-BENCH_FRAMES    := 450x375 640x480 1280x720 1920x1080
+# The `fast` variant is the `make sim` build itself (same options, same binary name).
+BENCH_SIM        = $(BIN)/sgm-sim-d$(D)-w$(BENCH_MAX_WIDTH)$(if $(filter-out 1024,$(BENCH_MAX_HEIGHT)),-h$(BENCH_MAX_HEIGHT))$(if $(filter-out fast,$(1)),-$(1))
+BENCH_SCENES    ?= cones teddy sawtooth venus
+BENCH_ALOE      ?= 1
+BENCH_FRAMES    ?= 450x375 640x480 1280x720 1920x1080
+# `make bench-ci`: the smoke slice CI runs (one scene, one frame size, one build
+# shared with `make sim-ci`, one round).
+BENCH_CI_VARS   := BENCH_SCENES=cones BENCH_ALOE=0 BENCH_FRAMES=450x375 BENCH_VARIANTS=fast BENCH_REPEATS=1 \
+                   BENCH_MAX_WIDTH=512 BENCH_MAX_HEIGHT=1024 D=64
+TEST_EXTRA      += bench-ci
 BENCH_TOOL      := $(BIN)/sgm-bench
 ALOE_DIR        := /usr/share/doc/opencv-doc/examples/data
 
-.PHONY: bench bench-help
+.PHONY: bench bench-ci bench-help
 
 bench-help:
 	@echo "make bench [DATA=dir] [D=64] [BENCH_MAX_WIDTH=1920] [BENCH_VARIANTS='fast threads2 checked'] [BENCH_REPEATS=3]"
+	@echo "           [BENCH_SCENES='cones teddy sawtooth venus'] [BENCH_ALOE=1] [BENCH_FRAMES='450x375 640x480 1280x720 1920x1080']"
+	@echo "make bench-ci   the CI smoke: $(BENCH_CI_VARS)"
 
 $(BENCH_TOOL): bench/sgm_bench.cpp $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
 	@mkdir -p $(dir $@)
@@ -61,7 +70,8 @@ bench: $(BENCH_TOOL) $(foreach v,$(BENCH_VARIANTS),$(call BENCH_SIM,$(v))) | che
 	       --out $(BENCH_DIR)/rtl/$$s > $(BENCH_DIR)/rtl/$$s.log || { cat $(BENCH_DIR)/rtl/$$s.log; exit 1; }; \
 	   fi; \
 	 done; \
-	 echo "bench: RTL on aloe"; $$sim --out $(BENCH_DIR)/rtl/aloe > $(BENCH_DIR)/rtl/aloe.log || { cat $(BENCH_DIR)/rtl/aloe.log; exit 1; }; \
+	 if [ "$(BENCH_ALOE)" = 1 ]; then echo "bench: RTL on aloe"; \
+	   $$sim --out $(BENCH_DIR)/rtl/aloe > $(BENCH_DIR)/rtl/aloe.log || { cat $(BENCH_DIR)/rtl/aloe.log; exit 1; }; fi; \
 	 $(BENCH_TOOL) formats --source $(ALOE_DIR)/aloeL.jpg --out $(BENCH_DIR)/formats/images; \
 	 for f in $(BENCH_FRAMES); do \
 	   echo "bench: RTL on a $$f frame"; \
@@ -69,11 +79,13 @@ bench: $(BENCH_TOOL) $(foreach v,$(BENCH_VARIANTS),$(call BENCH_SIM,$(v))) | che
 	     --out $(BENCH_DIR)/formats/$$f > $(BENCH_DIR)/formats/$$f.log || { cat $(BENCH_DIR)/formats/$$f.log; exit 1; }; \
 	 done
 	@set -e; src="$(DATA)/cones"; [ -f "$$src/left.png" ] && args="--left $$src/left.png --right $$src/right.png" || args=""; \
-	 for r in $$(seq 1 $(BENCH_REPEATS)); do for v in $(BENCH_VARIANTS); do \
-	   echo "bench: simulation speed, $$v build, cones, round $$r of $(BENCH_REPEATS)"; \
+	 for r in $$(seq 1 $(BENCH_REPEATS)); do for vb in $(foreach v,$(BENCH_VARIANTS),$(v)=$(call BENCH_SIM,$(v))); do \
+	   v=$${vb%%=*}; echo "bench: simulation speed, $$v build, cones, round $$r of $(BENCH_REPEATS)"; \
 	   run=$(BENCH_DIR)/simspeed/$$v/run$$r; mkdir -p $$run; \
-	   $(BIN)/sgm-sim-d$(D)-w$(BENCH_MAX_WIDTH)-h$(BENCH_MAX_HEIGHT)-$$v $$args --out $$run > $$run.log \
-	     || { cat $$run.log; exit 1; }; \
+	   $${vb#*=} $$args --out $$run > $$run.log || { cat $$run.log; exit 1; }; \
 	 done; done
 	@$(foreach v,$(BENCH_VARIANTS),echo '$(strip $(BENCH_FLAGS_$(v)))' > $(BENCH_DIR)/simspeed/$(v)/flags.txt;)
 	@$(BENCH_TOOL) report --data "$(DATA)" --bench $(BENCH_DIR) --repeats $(BENCH_REPEATS)
+
+bench-ci:
+	@$(MAKE) --no-print-directory $(BENCH_CI_VARS) bench

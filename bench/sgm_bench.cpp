@@ -182,19 +182,22 @@ ErrorFigures rtlFigures(const SimReport& r) {
 
 BenchData measure(const std::string& data, const std::string& bench, int repeats) {
   BenchData b;
+  // The scenes the core ran on in this bench run (BENCH_SCENES, and Aloe unless BENCH_ALOE=0).
+  const auto simulated = [&](const std::string& name) { return fs::exists(bench + "/rtl/" + name + "/report.json"); };
   for (const std::string& name : paperScenes()) {
-    if (!fs::exists(data + "/" + name + "/left.png")) {
-      std::fprintf(stderr, "sgm-bench: note: scene '%s' not found under %s, skipped\n", name.c_str(), data.c_str());
+    if (!fs::exists(data + "/" + name + "/left.png") || !simulated(name)) {
+      std::fprintf(stderr, "sgm-bench: note: scene '%s' not found under %s or not simulated, skipped\n", name.c_str(),
+                   data.c_str());
       continue;
     }
     b.sceneData[name] = loadScene(data + "/" + name);
     b.scenes.push_back(name);
   }
-  if (aloeAvailable()) {
+  if (aloeAvailable() && simulated("aloe")) {
     b.sceneData["aloe"] = loadAloe();
     b.scenes.push_back("aloe");
   }
-  if (b.scenes.empty()) throw Error("no scene found under '" + data + "' and no Aloe pair");
+  if (b.scenes.empty()) throw Error("no simulated scene under '" + bench + "/rtl' (run `make bench`)");
 
   const Params params;  // the hardware defaults, as sgm-sim runs them
   b.d = params.disparities;
@@ -215,10 +218,12 @@ BenchData measure(const std::string& data, const std::string& bench, int repeats
   }
   std::sort(b.simVariants.begin(), b.simVariants.end(),
             [](const SimVariant& x, const SimVariant& y) { return x.name < y.name; });
-  for (const VideoFormat& f : kFormats) {
+  for (const VideoFormat& f : kFormats) {  // the frame sizes of BENCH_FRAMES
     const std::string name = frameName(f.width, f.height);
-    if (!b.formats.count(name)) b.formats.emplace(name, readSimReport(bench + "/formats/" + name));
+    if (!b.formats.count(name) && fs::exists(bench + "/formats/" + name + "/report.json"))
+      b.formats.emplace(name, readSimReport(bench + "/formats/" + name));
   }
+  if (b.formats.empty()) throw Error("no video-format frame simulated under '" + bench + "/formats' (run `make bench`)");
   b.maxWidth = std::stoi(readText(bench + "/max_width.txt"));
   return b;
 }
@@ -293,6 +298,10 @@ std::string markdown(const BenchData& b) {
      << "| format | cycles per frame (simulated) | cycles/pixel | our clock (MHz) | paper's clock (MHz, 9 cycles/pixel) "
         "|\n|---|---|---|---|---|\n";
   for (const VideoFormat& f : kFormats) {
+    if (!b.formats.count(frameName(f.width, f.height))) {
+      md << "| " << f.name << " | not simulated in this run (BENCH_FRAMES) | | | |\n";
+      continue;
+    }
     const SimReport& r = b.formats.at(frameName(f.width, f.height));
     md << "| " << f.name << " | " << r.at("cycles") << " | " << fmt(r.number("cycles_per_pixel"), 4) << " | "
        << fmt(clockMhz(r, f.fps), 1) << " | "
@@ -388,6 +397,7 @@ std::string json(const BenchData& b) {
   j.endArray();
   j.key("formats").beginArray();
   for (const VideoFormat& f : kFormats) {
+    if (!b.formats.count(frameName(f.width, f.height))) continue;  // not in BENCH_FRAMES
     const SimReport& r = b.formats.at(frameName(f.width, f.height));
     j.beginObject();
     j.key("format").string(f.name);

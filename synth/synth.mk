@@ -5,8 +5,9 @@
 #   make synth [D=64] [MAX_WIDTH=1280]   xc7, xc6s, generic and iCE40 synthesis of
 #                                        that configuration, the routed iCE40 loop
 #                                        harness, build/synth/summary.{json,md}
-#   make synth-ci                        D=16, MAX_WIDTH=128: xc7 only, then checks the
-#                                        summary and that the path buffers are block RAM
+#   make synth-ci                        D=16, MAX_WIDTH=128: xc7 and the routed iCE40 loop
+#                                        harness (ICE40_LOOP_D=16), then checks the summary
+#                                        and that the path buffers are block RAM
 #   make synth-xc7 | synth-xc6s | synth-generic | synth-ice40 | synth-ice40-loop
 #                                        one target (then make synth-summary)
 #   make synth-flat                      xc7 of the whole core flattened in one run
@@ -48,7 +49,7 @@ SYNTH_COMMON := $(RTL_SRC) synth/common.tcl
 
 synth-help:
 	@echo "make synth [D=64 MAX_WIDTH=1280]  xc7 / xc6s / generic / iCE40 synthesis + routed iCE40 loop -> build/synth/summary.{json,md}"
-	@echo "make synth-ci                     D=$(SYNTH_CI_D) MAX_WIDTH=$(SYNTH_CI_MAX_WIDTH), xc7 only; fails unless the path buffers are block RAM"
+	@echo "make synth-ci                     D=$(SYNTH_CI_D) MAX_WIDTH=$(SYNTH_CI_MAX_WIDTH), xc7 + the routed iCE40 loop harness; fails unless the path buffers are block RAM"
 	@echo "make synth-xc7 | synth-xc6s | synth-generic | synth-ice40 | synth-ice40-loop [ICE40_LOOP_D=16]"
 	@echo "make synth-flat                   xc7, whole core flattened in one Yosys run (slow for D = 64)"
 	@echo "make synth-summary                rebuild summary.{json,md} from what build/synth holds"
@@ -59,7 +60,8 @@ synth: $(foreach t,$(SYNTH_TARGETS),$(SYNTH_OUT)/$(t)/done) $(SYNTH_LOOP)/done $
 
 synth-ci: $(SYNTH_SUMMARY) | check-tools
 	@$(MAKE) --no-print-directory D=$(SYNTH_CI_D) MAX_WIDTH=$(SYNTH_CI_MAX_WIDTH) synth-xc7
-	@$(SYNTH_SUMMARY) $(SYNTH_DIR) --check d$(SYNTH_CI_D)-w$(SYNTH_CI_MAX_WIDTH)/xc7
+	@$(MAKE) --no-print-directory synth-ice40-loop
+	@$(SYNTH_SUMMARY) $(SYNTH_DIR) --check d$(SYNTH_CI_D)-w$(SYNTH_CI_MAX_WIDTH)/xc7 --check ice40-loop-d$(ICE40_LOOP_D)
 	@test -s $(SYNTH_DIR)/summary.json && test -s $(SYNTH_DIR)/summary.md || \
 	  { echo "synth-ci: FAIL: $(SYNTH_DIR)/summary.json or summary.md missing or empty"; exit 1; }
 	@echo "synth-ci: OK ($(SYNTH_DIR)/summary.json, $(SYNTH_DIR)/summary.md)"

@@ -20,25 +20,25 @@ COV_REGRESS_BIN    := $(BIN)/cov-regress-d16-w128
 COV_REGRESS_ARGS    = --seed $(COV_REGRESS_SEED) --frames $(COV_REGRESS_FRAMES) --max-height 40 --quiet
 $(eval $(call regress_build,$(COV_REGRESS_BIN),16,128,$(COV_VFLAGS)))
 
-# The coverage variants reuse the rtl_test macro under other names; they are
-# kept out of RTL_TEST_BINS so that `make rtl-tests` does not run them.
+# The coverage variants: the fixtures of COV_FIXTURES built again, with the same
+# top and options as their `make rtl-tests` builds (the rtl_test macro records
+# them) plus the coverage flags. They are kept out of RTL_TEST_BINS so that
+# `make rtl-tests` does not run them; `make test` runs them instead of their
+# plain builds (coverage-ci), so each fixture is built once in CI.
+COV_FIXTURES   := p2-lut stream-ctrl hole-fill median5x5 edge-snap census-unit cost-volume-d16 \
+                  path-engine-d16 wta-d16 lr-check-d16 top-d16
 COV_SAVED_BINS := $(RTL_TEST_BINS)
 RTL_TEST_BINS  :=
-$(eval $(call rtl_test,cov-p2-lut,sgm_p2_lut,$(COV_VFLAGS)))
-$(eval $(call rtl_test,cov-stream-ctrl,tb_stream_ctrl,$(COV_VFLAGS)))
-$(eval $(call rtl_test,cov-hole-fill,sgm_hole_fill,$(COV_VFLAGS)))
-$(eval $(call rtl_test,cov-median5x5,sgm_median5x5,$(COV_VFLAGS)))
-$(eval $(call rtl_test,cov-edge-snap,sgm_edge_snap,$(COV_VFLAGS)))
-$(eval $(call rtl_test,cov-census-unit,sgm_census_unit,-GMAX_WIDTH=128 -GCW=8 -GRW=8 $(COV_VFLAGS)))
-$(eval $(call rtl_test,cov-cost-volume-d16,sgm_cost_volume,--top-module tb_cost_front tb/tops/tb_cost_front.sv -GD=16 -GMAX_WIDTH=128 -GCW=8 -GRW=8 $(COV_VFLAGS)))
-$(eval $(call rtl_test,cov-path-engine-d16,sgm_path_engine,-GD=16 -GMAX_WIDTH=128 -GXW=8 -GYW=8 -CFLAGS -DSGM_D=16 $(COV_VFLAGS)))
-$(eval $(call rtl_test,cov-wta-d16,sgm_wta,-GD=16 $(COV_VFLAGS)))
-$(eval $(call rtl_test,cov-lr-check-d16,sgm_lr_check,-GD=16 -GMAX_WIDTH=128 $(COV_VFLAGS)))
-$(eval $(call rtl_test,cov-top-d16,sgm_top,-GD=16 -GMAX_WIDTH=128 -CFLAGS -DSGM_D=16 $(COV_VFLAGS)))
+$(foreach f,$(COV_FIXTURES),$(eval $(call rtl_test,cov-$(f),$(FIXTURE_TOP_$(f)),$(FIXTURE_FLAGS_$(f)) $(COV_VFLAGS))))
 COV_TEST_BINS  := $(RTL_TEST_BINS)
 RTL_TEST_BINS  := $(COV_SAVED_BINS)
 
-.PHONY: coverage coverage-help
+# CI: `make coverage` with a short regression, its fixtures' results counted in
+# the closing line of `make test`.
+COV_CI_REGRESS_FRAMES ?= 40
+TEST_EXTRA += coverage-ci
+
+.PHONY: coverage coverage-ci coverage-help
 
 coverage-help:
 	@echo "make coverage [COV_REGRESS_FRAMES=120 COV_REGRESS_SEED=1]   line + toggle coverage of rtl/ -> build/coverage/"
@@ -60,3 +60,7 @@ coverage: $(COV_TEST_BINS) $(COV_SUMMARY) $(COV_REGRESS_BIN) | check-tools
 	@verilator_coverage --write-info $(COV_DIR)/coverage.info $(COV_DIR)/merged.dat
 	@verilator_coverage --annotate $(COV_DIR)/annotated --annotate-min 1 $(COV_DIR)/merged.dat > /dev/null
 	@$(COV_SUMMARY) --out $(COV_DIR) --waivers tests/coverage/waivers.txt $(COV_DIR)/merged.dat
+
+coverage-ci:
+	@$(MAKE) --no-print-directory coverage COV_REGRESS_FRAMES=$(COV_CI_REGRESS_FRAMES)
+	@mkdir -p $(RESULTS) && for f in $(COV_DIR)/results/*.xml; do cp $$f $(RESULTS)/$$(basename $$f); done

@@ -9,9 +9,11 @@
 #include "sgm/cli_args.hpp"
 #include "sgm/pipeline.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <sstream>
 #include <utility>
 
 using namespace sgm;
@@ -27,7 +29,8 @@ const char* kUsage =
     "                                                      golden vs OpenCV SGBM time -> bench.json\n"
     "pipeline options: --d D --p1 N --p2 N --mode M --subpixel on|off --lr TOL|off --fill on|off\n"
     "                  --snap on|off --median on|off\n"
-    "--delta X sets the error threshold (default 1); --out defaults to build/eval.\n";
+    "--delta X sets the error threshold (default 1); --out defaults to build/eval;\n"
+    "--scenes a,b (run, table) keeps only those scenes of --data.\n";
 
 const char* kDefaultOut = "build/eval";
 
@@ -57,11 +60,24 @@ void writeResults(const std::string& out, const std::vector<OutputFile>& files) 
   writeFiles(files);
 }
 
-std::vector<Scene> loadAll(const std::string& root) {
+// Every scene under --data, or only those --scenes names (a comma-separated list).
+std::vector<Scene> loadAll(const CliArgs& args) {
+  const std::string root = dataDir(args);
   const auto dirs = eval::listScenes(root);
   if (dirs.empty()) throw Error("no scenes (left.png, right.png, gt.png) under '" + root + "'");
   std::vector<Scene> scenes;
-  for (const auto& d : dirs) scenes.push_back(eval::loadScene(d));
+  if (!args.has("scenes")) {
+    for (const auto& d : dirs) scenes.push_back(eval::loadScene(d));
+    return scenes;
+  }
+  std::stringstream names(args.text("scenes", ""));
+  for (std::string name; std::getline(names, name, ',');) {
+    const auto it = std::find_if(dirs.begin(), dirs.end(),
+                                 [&](const std::string& d) { return std::filesystem::path(d).filename() == name; });
+    if (it == dirs.end()) throw Error("--scenes: scene '" + name + "' (left.png, right.png, gt.png) not found under '" + root + "'");
+    scenes.push_back(eval::loadScene(*it));
+  }
+  if (scenes.empty()) throw Error("--scenes: empty list");
   return scenes;
 }
 
@@ -77,7 +93,7 @@ int commandRun(const CliArgs& args) {
   const Params params = args.pipelineParams();
   const double delta = deltaOption(args);
   double sum = 0;
-  const std::vector<Scene> scenes = loadAll(dataDir(args));
+  const std::vector<Scene> scenes = loadAll(args);
   for (const auto& s : scenes) {
     const DisparityMap map = runPipeline(s.left, s.right, params);
     const eval::ErrorFigures f = eval::evaluate(eval::toFloat(map), s, delta);
@@ -93,7 +109,7 @@ int commandTable(const CliArgs& args) {
   const int d = int(args.integer("d", 64, kMinDisparities, kMaxDisparities));
   const double delta = deltaOption(args);
   const std::string out = outDir(args);
-  const std::vector<Scene> scenes = loadAll(dataDir(args));
+  const std::vector<Scene> scenes = loadAll(args);
 
   std::vector<OutputFile> files;  // written together at the end
   const auto keepSideBySide = [&](const eval::Method& m, const Scene& s, const cv::Mat& disparity) {
@@ -133,10 +149,10 @@ struct Command {
 
 std::vector<Command> commands() {
   std::set<std::string> runOptions = CliArgs::pipelineOptions();
-  runOptions.insert({"data", "out", "delta"});
+  runOptions.insert({"data", "out", "delta", "scenes"});
   return {
       {"run", commandRun, runOptions},
-      {"table", commandTable, {"data", "out", "d", "delta"}},
+      {"table", commandTable, {"data", "out", "d", "delta", "scenes"}},
       {"bench", commandBench, {"data", "out", "scene", "repeats"}},
   };
 }
