@@ -8,6 +8,7 @@
 #pragma once
 
 #include "axis_bfm.hpp"
+#include "hardware_config.hpp"
 #include "verilated_top.hpp"
 
 #include "sgm/image_io.hpp"
@@ -42,16 +43,6 @@ struct FrameOutput {
   unsigned errors = 0;        // error_o when the frame was done
   bool aborted = false;       // the frame was cut by a reset (no map)
 };
-
-// Hardware encoding of the cost modes (cfg_mode_i).
-inline int hardwareModeCode(CostMode mode) {
-  switch (mode) {
-    case CostMode::kRt: return 0;
-    case CostMode::kRsad: return 1;
-    case CostMode::kUnified: return 2;
-    default: throw Error(std::string("cost mode ") + costModeName(mode) + " is not in the hardware");
-  }
-}
 
 // First differing pixel of two disparity maps as one line, or "" when equal.
 inline std::string compareMaps(const DisparityMap& expected, const DisparityMap& got, const std::string& stage,
@@ -193,17 +184,18 @@ class CoreHarness {
 
  private:
   void present(const Params& p, cv::Size size) {
-    top_->cfg_width_i = size.width;
-    top_->cfg_height_i = size.height;
-    top_->cfg_p1_i = p.p1;
-    top_->cfg_p2_i = p.p2;
-    top_->cfg_mode_i = hardwareModeCode(p.mode);
-    top_->cfg_subpixel_i = p.subpixel;
-    top_->cfg_lr_en_i = p.lrTolerance >= 0;
-    top_->cfg_lr_tol_i = p.lrTolerance >= 0 ? p.lrTolerance : 0;
-    top_->cfg_fill_i = p.fill;
-    top_->cfg_snap_i = p.snap;
-    top_->cfg_median_i = p.median;
+    const HardwareConfig c = hardwareConfig(p, size.width, size.height);
+    top_->cfg_width_i = c.width;
+    top_->cfg_height_i = c.height;
+    top_->cfg_p1_i = c.p1;
+    top_->cfg_p2_i = c.p2;
+    top_->cfg_mode_i = c.mode;
+    top_->cfg_subpixel_i = c.subpixel;
+    top_->cfg_lr_en_i = c.lrEnable;
+    top_->cfg_lr_tol_i = c.lrTolerance;
+    top_->cfg_fill_i = c.fill;
+    top_->cfg_snap_i = c.snap;
+    top_->cfg_median_i = c.median;
   }
 
   DisparityMap decode(size_t first, int w, int h) {
