@@ -186,7 +186,7 @@ unit-test: $(BIN)/unit-tests golden
 # `make regress` (constrained-random regression), `make fuzz` (bad input), `make coverage`,
 # `make bench`: included here, after every variable and the rtl_test macro are defined.
 -include tests/regress.mk tests/fuzz.mk tests/coverage.mk bench/bench.mk
--include tests/icarus.mk
+-include tests/icarus.mk tests/fusesoc.mk
 
 # One closing line over every GoogleTest binary of this run.
 test: lint unit-test rtl-tests
