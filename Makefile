@@ -58,7 +58,7 @@ include scripts/deps.mk
 # TEST_EXTRA (run by `make test` after the GoogleTest binaries).
 TEST_EXTRA :=
 # `make synth` and its reports (synth/synth.mk, when present).
--include synth/synth.mk
+-include synth/synth.mk synth/axi.mk
 
 # ---------------------------------------------------------------- golden model
 $(OBJ)/%.o: %.cpp $(GOLDEN_HDR) $(wildcard tools/*.hpp tests/*.hpp) | check-tools
