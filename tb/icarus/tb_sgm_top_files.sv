@@ -7,7 +7,8 @@
 //              fill snap median (decimal); the first line is the frame count.
 //   +in=FILE   the input beats, one per line: tdata (hex) tuser tlast.
 //   +out=FILE  written: one line per output beat, tdata (hex) tuser tlast, and
-//              one line "done <error_o>" per frame_done_o pulse.
+//              one line "done <error_o> <frame_width_o> <frame_height_o>" per
+//              frame_done_o pulse.
 //   +stall=N   the source idles and the sink is busy with probability N/256
 //              per cycle (seeded, default 64); +seed=S.
 //
@@ -38,7 +39,9 @@ module tb_sgm_top_files #(
   logic          cfg_subpixel = 1'b0, cfg_lr_en = 1'b0, cfg_fill = 1'b0, cfg_snap = 1'b0, cfg_median = 1'b0;
   logic [2:0]    cfg_lr_tol = '0;
   wire           busy, frame_done;
-  wire  [3:0]    error;
+  wire  [3:0]    error, error_event;
+  wire  [XW-1:0] frame_width;
+  wire  [YW-1:0] frame_height;
 
   sgm_top #(.D(D), .MAX_WIDTH(MAX_WIDTH), .MAX_HEIGHT(MAX_HEIGHT)) dut (
     .clk_i         (clk),
@@ -66,7 +69,10 @@ module tb_sgm_top_files #(
     .cfg_median_i  (cfg_median),
     .busy_o        (busy),
     .frame_done_o  (frame_done),
-    .error_o       (error)
+    .error_o       (error),
+    .error_event_o (error_event),
+    .frame_width_o (frame_width),
+    .frame_height_o(frame_height)
   );
 
   always #5 clk = ~clk;
@@ -91,7 +97,7 @@ module tb_sgm_top_files #(
   endtask
 
   // Reads the next input beat into s_tdata/s_tuser/s_tlast.
-  task automatic next_beat();
+  task automatic next_beat;
     int data, user, last;
     if ($fscanf(in_fd, "%h %d %d\n", data, user, last) != 3) $fatal(1, "tb: input file ends early");
     s_tdata = data[15:0];
@@ -143,7 +149,7 @@ module tb_sgm_top_files #(
       @(negedge clk);
       in_fire = s_tvalid && s_tready;
       out_fire = m_tvalid && m_tready;
-      if (frame_done) $fdisplay(out_fd, "done %0d", error);
+      if (frame_done) $fdisplay(out_fd, "done %0d %0d %0d", error, frame_width, frame_height);
       if (out_fire) $fdisplay(out_fd, "%04h %0d %0d", m_tdata, m_tuser, m_tlast);
       since_move = in_fire || out_fire ? 0 : since_move + 1;
       if (since_move > HANG_CYCLES) $fatal(1, "tb: core hangs: %0d beats in, %0d out", sent, received);
@@ -162,7 +168,7 @@ module tb_sgm_top_files #(
     // A few more cycles for the last frame_done_o pulse.
     repeat (64) begin
       @(negedge clk);
-      if (frame_done) $fdisplay(out_fd, "done %0d", error);
+      if (frame_done) $fdisplay(out_fd, "done %0d %0d %0d", error, frame_width, frame_height);
       if (m_tvalid && m_tready) $fatal(1, "tb: output beat after the last frame");
       @(posedge clk);
     end

@@ -77,7 +77,7 @@ int check(const std::string& dir) {
   std::ifstream expected(dir + "/expected.txt"), out(dir + "/out.txt");
   if (!expected || !out) throw sgm::Error("cannot read " + dir + "/expected.txt or " + dir + "/out.txt");
   const std::vector<Frame> all = frames();
-  std::vector<unsigned> errors;
+  std::vector<std::string> done;  // "done <error_o> <width> <height>" lines
   std::string line;
   long beats = 0;
   for (size_t k = 0; k < all.size(); ++k)
@@ -85,7 +85,7 @@ int check(const std::string& dir) {
       for (int x = 0; x < all[k].width; ++x) {
         std::string want, got;
         std::getline(expected, want);
-        while (std::getline(out, got) && got.rfind("done ", 0) == 0) errors.push_back(std::stoul(got.substr(5)));
+        while (std::getline(out, got) && got.rfind("done ", 0) == 0) done.push_back(got);
         if (!out) {
           std::cout << "icarus: FAIL: the output ends after " << beats << " beats (frame " << k << ", x=" << x
                     << ", y=" << y << ")\n";
@@ -104,17 +104,20 @@ int check(const std::string& dir) {
       std::cout << "icarus: FAIL: output beat after the last frame: " << line << "\n";
       return 1;
     }
-    errors.push_back(std::stoul(line.substr(5)));
+    done.push_back(line);
   }
-  if (errors.size() != all.size()) {
-    std::cout << "icarus: FAIL: " << errors.size() << " frame_done_o pulses for " << all.size() << " frames\n";
+  if (done.size() != all.size()) {
+    std::cout << "icarus: FAIL: " << done.size() << " frame_done_o pulses for " << all.size() << " frames\n";
     return 1;
   }
-  for (size_t k = 0; k < errors.size(); ++k)
-    if (errors[k]) {
-      std::cout << "icarus: FAIL: frame " << k << " ended with error_o = " << errors[k] << "\n";
+  for (size_t k = 0; k < done.size(); ++k) {
+    const std::string want = "done 0 " + std::to_string(all[k].width) + " " + std::to_string(all[k].height);
+    if (done[k] != want) {
+      std::cout << "icarus: FAIL: frame " << k << " ended with \"" << done[k] << "\", expected \"" << want
+                << "\" (error_o, frame_width_o, frame_height_o)\n";
       return 1;
     }
+  }
   std::cout << "icarus: PASS: " << all.size() << " frames, " << beats << " pixels bit-exact against the golden model\n";
   return 0;
 }
