@@ -54,6 +54,9 @@ help:
 	@echo "make bench-golden  golden model vs OpenCV StereoSGBM time on one frame, same run"
 	@echo "make bench         accuracy (RTL, golden, OpenCV x3, paper) and speed in one run -> build/bench/"
 	@echo "make synth         Yosys area/timing reports (D=64 MAX_WIDTH=1280) -> build/synth/; make synth-help"
+	@echo "make icarus        the core in Icarus Verilog: two D=16 frames vs the golden model"
+	@echo "make fusesoc-lint  FuseSoC (sgm.core) lint target; fusesoc-sim, fusesoc-synth"
+	@echo "make synth-axi     xc7 cells of the AXI4-Lite wrapper (sgm_axi) alone"
 	@echo "make regress       constrained-random regression of the core (seeded, replayable)"
 	@echo "make fuzz          seeded random-corruption fuzzing of image loading and argument parsing"
 	@echo "make coverage      line and toggle coverage of rtl/ -> build/coverage/"
@@ -66,7 +69,7 @@ include scripts/deps.mk
 # TEST_EXTRA (run by `make test` after the GoogleTest binaries).
 TEST_EXTRA := sim-ci eval-ci
 # `make synth` and its reports (synth/synth.mk, when present).
--include synth/synth.mk
+-include synth/synth.mk synth/axi.mk
 
 # ---------------------------------------------------------------- golden model
 $(OBJ)/%.o: %.cpp $(GOLDEN_HDR) $(wildcard tools/*.hpp tests/*.hpp) | check-tools
@@ -167,6 +170,9 @@ $(eval $(call rtl_test,median5x5-d64,sgm_median5x5,-GDW=10 -GMAX_WIDTH=512))
 $(eval $(call rtl_test,top-d16,sgm_top,-GD=16 -GMAX_WIDTH=128 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,top-d64,sgm_top,-GD=64 -GMAX_WIDTH=512 -CFLAGS -DSGM_D=64))
 $(eval $(call rtl_test,top-d32,sgm_top,-GD=32 -GMAX_WIDTH=128 -CFLAGS -DSGM_D=32))
+# sgm_axi configured through the driver (sw/) over an AXI4-Lite bus model.
+$(eval $(call rtl_test,axi-d16,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
+$(BIN)/rtl-axi-d16: sw/sgm_driver.cpp $(wildcard sw/include/*.h*)
 $(eval $(call rtl_test,top-d128,sgm_top,-GD=128 -GMAX_WIDTH=256 -CFLAGS -DSGM_D=128))
 $(eval $(call rtl_test,path-engine-d16,sgm_path_engine,-GD=16 -GMAX_WIDTH=128 -GXW=8 -GYW=8 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,path-engine-d64,sgm_path_engine,-GD=64 -GMAX_WIDTH=512 -GXW=10 -GYW=10 -CFLAGS -DSGM_D=64 -CFLAGS -DSGM_YW=10))
@@ -212,6 +218,7 @@ unit-test: $(BIN)/unit-tests golden
 # `make regress` (constrained-random regression), `make fuzz` (bad input), `make coverage`,
 # `make bench`: included here, after every variable and the rtl_test macro are defined.
 -include tests/regress.mk tests/fuzz.mk tests/coverage.mk bench/bench.mk
+-include tests/icarus.mk tests/fusesoc.mk
 
 # One closing line over every GoogleTest binary of this run.
 test: lint unit-test rtl-tests-ci

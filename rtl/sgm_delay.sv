@@ -14,16 +14,22 @@ module sgm_delay #(
   output logic [WIDTH-1:0] q_o
 );
 
-  logic [WIDTH-1:0] stage_q [0:DEPTH-1];
+  // One packed shift register, newest bundle in the low WIDTH bits. (Icarus 11
+  // does not propagate a word of an unpacked array written in a for loop to a
+  // continuous assignment.)
+  logic [DEPTH*WIDTH-1:0] stage_q;
 
-  always_ff @(posedge clk_i) begin
-    if (en_i) begin
-      stage_q[0] <= d_i;
-      for (int i = 1; i < DEPTH; i++) stage_q[i] <= stage_q[i-1];
+  if (DEPTH == 1) begin : g_one
+    always_ff @(posedge clk_i) begin
+      if (en_i) stage_q <= d_i;
+    end
+  end else begin : g_shift
+    always_ff @(posedge clk_i) begin
+      if (en_i) stage_q <= {stage_q[(DEPTH-1)*WIDTH-1:0], d_i};
     end
   end
 
-  assign q_o = stage_q[DEPTH-1];
+  assign q_o = stage_q[DEPTH*WIDTH-1 -: WIDTH];
 
 endmodule
 `default_nettype wire

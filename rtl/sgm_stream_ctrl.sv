@@ -87,9 +87,11 @@ module sgm_stream_ctrl #(
   // Status.
   output logic                busy_o,        // a frame is in flight
   output logic                frame_done_o,  // one-cycle pulse: last output beat of a frame queued
-  output logic [3:0]          error_o        // sticky per frame, cleared at the next start of frame:
+  output logic [3:0]          error_o,       // sticky per frame, cleared at the next start of frame:
                                              // [0] tlast early, [1] tlast missing, [2] tuser inside
                                              // a frame, [3] configuration out of range
+  output logic [3:0]          error_set_o    // one-cycle pulse per event: the error_o bits set this
+                                             // cycle (counts every event, even a bit already set)
 );
 
   typedef enum logic [2:0] {IDLE, FILL, RUN, PAD, FLUSH} state_e;
@@ -178,12 +180,15 @@ module sgm_stream_ctrl #(
       lut_start_o  <= 1'b0;
       frame_done_o <= 1'b0;
       error_o      <= '0;
+      error_set_o  <= '0;
     end else begin
       lut_start_o  <= 1'b0;
       frame_done_o <= 1'b0;
+      error_set_o  <= '0;
       case (state_q)
         IDLE: if (head_sof) begin
-          error_o <= {~pend_ok, 3'b000};
+          error_o     <= {~pend_ok, 3'b000};
+          error_set_o <= {~pend_ok, 3'b000};
           if (pend_ok) begin
             width_o     <= pend_width;
             height_o    <= pend_height;
@@ -203,11 +208,13 @@ module sgm_stream_ctrl #(
         FILL: if (lut_ready_i && !lut_start_o) state_q <= RUN;
         RUN: begin
           if (err_sof) begin
-            error_o[2] <= 1'b1;
-            state_q    <= PAD;
+            error_o[2]     <= 1'b1;
+            error_set_o[2] <= 1'b1;
+            state_q        <= PAD;
           end else if (take) begin
             if (err_early) error_o[0] <= 1'b1;
             if (err_missing) error_o[1] <= 1'b1;
+            error_set_o[1:0] <= {err_missing, err_early};
             if (last_px) state_q <= FLUSH;
             else if (err_early || err_missing) state_q <= PAD;
           end

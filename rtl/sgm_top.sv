@@ -57,7 +57,12 @@ module sgm_top #(
   // Status.
   output logic         busy_o,
   output logic         frame_done_o,
-  output logic [3:0]   error_o
+  output logic [3:0]   error_o,        // sticky per frame (sgm_stream_ctrl)
+  output logic [3:0]   error_event_o,  // one-cycle pulse per error event (the bits error_o sets)
+  // The configuration of the frame in flight (taken at its start of frame;
+  // still the finished frame's in the cycle of frame_done_o).
+  output logic [XW-1:0] frame_width_o,
+  output logic [YW-1:0] frame_height_o
 );
 
   // ------------------------------------------------------------ control
@@ -129,8 +134,11 @@ module sgm_top #(
     .res_ok_i      (res_ok),
     .busy_o        (busy_o),
     .frame_done_o  (frame_done_o),
-    .error_o       (error_o)
+    .error_o       (error_o),
+    .error_set_o   (error_event_o)
   );
+  assign frame_width_o  = width;
+  assign frame_height_o = height;
 
   // ------------------------------------------------------------ census
   logic [43:0]   census_l, census_r;

@@ -5,9 +5,17 @@
 // sgm::Error naming the cycle and the rule. A frame may reset the core in its
 // middle (FrameInput::resetAfterBeats). The golden comparison is done by the
 // caller (compareMaps).
+//
+// The harness drives sgm_top's cfg_*_i ports when the model has them; a model
+// configured another way (sgm_axi: registers on an AXI4-Lite bus) sets a
+// presenter (called where the next frame's configuration is due: before the
+// first frame, then after each frame's first input beat) and cycle hooks (a bus
+// model driven and sampled every cycle). step() clocks one cycle with every
+// model, for blocking bus transfers made from inside the presenter.
 #pragma once
 
 #include "axis_bfm.hpp"
+#include "hardware_config.hpp"
 #include "verilated_top.hpp"
 
 #include "sgm/image_io.hpp"
@@ -19,9 +27,21 @@
 #include <functional>
 #include <sstream>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace sgm::tb {
+
+// Does the model have sgm_top's configuration and status ports?
+template <class M, class = void>
+struct HasConfigPorts : std::false_type {};
+template <class M>
+struct HasConfigPorts<M, std::void_t<decltype(std::declval<M&>().cfg_width_i)>> : std::true_type {};
+template <class M, class = void>
+struct HasStatusPorts : std::false_type {};
+template <class M>
+struct HasStatusPorts<M, std::void_t<decltype(std::declval<M&>().error_o)>> : std::true_type {};
 
 struct FrameInput {
   cv::Mat left, right;  // 8-bit gray, same size
@@ -42,16 +62,6 @@ struct FrameOutput {
   unsigned errors = 0;        // error_o when the frame was done
   bool aborted = false;       // the frame was cut by a reset (no map)
 };
-
-// Hardware encoding of the cost modes (cfg_mode_i).
-inline int hardwareModeCode(CostMode mode) {
-  switch (mode) {
-    case CostMode::kRt: return 0;
-    case CostMode::kRsad: return 1;
-    case CostMode::kUnified: return 2;
-    default: throw Error(std::string("cost mode ") + costModeName(mode) + " is not in the hardware");
-  }
-}
 
 // First differing pixel of two disparity maps as one line, or "" when equal.
 inline std::string compareMaps(const DisparityMap& expected, const DisparityMap& got, const std::string& stage,
@@ -111,6 +121,16 @@ class CoreHarness {
 
   VerilatedTop<Model>& top() { return top_; }
 
+  // Replaces the cfg_*_i ports as the way a frame's configuration is given.
+  void setPresenter(std::function<void(const Params&, cv::Size)> presenter) { presenter_ = std::move(presenter); }
+  // Called every cycle before the model evaluates its inputs (drive) and
+  // after (sample: the handshakes of this cycle), before the clock edge.
+  void setCycleHooks(std::function<void()> drive, std::function<void()> sample) {
+    driveHook_ = std::move(drive), sampleHook_ = std::move(sample);
+  }
+  // One clock cycle with every model (the streams keep moving).
+  void step() { cycle(); }
+
  private:
   static std::vector<Beat> inputBeats(const FrameInput& f) {
     return f.rawBeats.empty() ? frameBeats(f.left.data, f.right.data, f.left.cols, f.left.rows, f.left.step, f.right.step)
@@ -124,6 +144,8 @@ class CoreHarness {
     const size_t owing = resets ? end - 1 : end;  // frames [begin, owing) produce output
     std::vector<size_t> firstBeat, outFirst;        // per frame, counted from the segment start
     size_t inputCount = 0, outputCount = 0;
+    // The first frame's configuration before any of its beats (a presenter may take cycles).
+    present(frames[begin].params, frames[begin].left.size());
     for (size_t k = begin; k < end; ++k) {
       std::vector<Beat> beats = inputBeats(frames[k]);
       if (k + 1 == end && resets) {
@@ -143,7 +165,6 @@ class CoreHarness {
     const uint64_t acceptedStart = source_.accepted();
     const size_t sinkStart = sink_.beats().size();
     size_t presented = 0, doneFrames = 0;
-    present(frames[begin].params, frames[begin].left.size());
     while (sink_.beats().size() - sinkStart < outputCount || source_.accepted() - acceptedStart < inputCount) {
       const auto [in, outBeat] = cycle();
       if (in) {
@@ -156,7 +177,8 @@ class CoreHarness {
         for (size_t k = 0; k + begin < owing; ++k)
           if (i + 1 == outFirst[k] + frames[begin + k].left.total()) out[begin + k].lastOutCycle = top_.cycles() - 1;
       }
-      if (top_->frame_done_o && begin + doneFrames < owing) out[begin + doneFrames++].errors = top_->error_o;
+      if constexpr (HasStatusPorts<Model>::value)
+        if (top_->frame_done_o && begin + doneFrames < owing) out[begin + doneFrames++].errors = top_->error_o;
       while (presented + 1 < firstBeat.size() && source_.accepted() - acceptedStart > firstBeat[presented]) {
         ++presented;
         present(frames[begin + presented].params, frames[begin + presented].left.size());
@@ -178,7 +200,9 @@ class CoreHarness {
   std::pair<bool, bool> cycle() {
     source_.drive(top_.model());
     sink_.drive(top_.model());
+    if (driveHook_) driveHook_();
     top_->eval();
+    if (sampleHook_) sampleHook_();
     const bool in = source_.sample(top_.model());
     const bool out = sink_.sample(top_.model(), top_.cycles());
     if (!sink_.violation().empty()) throw Error("output stream protocol: " + sink_.violation());
@@ -193,17 +217,24 @@ class CoreHarness {
 
  private:
   void present(const Params& p, cv::Size size) {
-    top_->cfg_width_i = size.width;
-    top_->cfg_height_i = size.height;
-    top_->cfg_p1_i = p.p1;
-    top_->cfg_p2_i = p.p2;
-    top_->cfg_mode_i = hardwareModeCode(p.mode);
-    top_->cfg_subpixel_i = p.subpixel;
-    top_->cfg_lr_en_i = p.lrTolerance >= 0;
-    top_->cfg_lr_tol_i = p.lrTolerance >= 0 ? p.lrTolerance : 0;
-    top_->cfg_fill_i = p.fill;
-    top_->cfg_snap_i = p.snap;
-    top_->cfg_median_i = p.median;
+    if (presenter_) return presenter_(p, size);
+    if constexpr (HasConfigPorts<Model>::value) presentPorts(p, size);
+    else throw Error("the model has no cfg_*_i ports: set a presenter");
+  }
+
+  void presentPorts(const Params& p, cv::Size size) {
+    const HardwareConfig c = hardwareConfig(p, size.width, size.height);
+    top_->cfg_width_i = c.width;
+    top_->cfg_height_i = c.height;
+    top_->cfg_p1_i = c.p1;
+    top_->cfg_p2_i = c.p2;
+    top_->cfg_mode_i = c.mode;
+    top_->cfg_subpixel_i = c.subpixel;
+    top_->cfg_lr_en_i = c.lrEnable;
+    top_->cfg_lr_tol_i = c.lrTolerance;
+    top_->cfg_fill_i = c.fill;
+    top_->cfg_snap_i = c.snap;
+    top_->cfg_median_i = c.median;
   }
 
   DisparityMap decode(size_t first, int w, int h) {
@@ -220,6 +251,8 @@ class CoreHarness {
   AxisSource<Model> source_;
   AxisSink<Model> sink_;
   uint64_t lastMove_ = 0;  // cycle of the last transfer in either direction
+  std::function<void(const Params&, cv::Size)> presenter_;
+  std::function<void()> driveHook_, sampleHook_;
 };
 
 }  // namespace sgm::tb

@@ -1,4 +1,5 @@
 #include "eval_lib.hpp"
+#include "report_chart.hpp"
 
 #include "sgm/params.hpp"
 
@@ -8,6 +9,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <cstdio>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -222,16 +224,72 @@ cv::Mat errorMap(const cv::Mat& disp, const Scene& scene, double delta) {
   return out;
 }
 
+namespace {
+
+// Tick spacing (px) giving at most about 8 ticks over [0, maxDisparity].
+float tickStep(float maxDisparity) {
+  for (const float step : {1.f, 2.f, 4.f, 5.f, 8.f, 10.f, 16.f, 20.f, 32.f, 50.f, 64.f, 100.f})
+    if (maxDisparity / step <= 8.f) return step;
+  return 128.f;
+}
+
+std::string pixels(float v) {
+  char text[16];
+  std::snprintf(text, sizeof text, "%g", double(v));
+  return text;
+}
+
+}  // namespace
+
 cv::Mat sideBySide(const Scene& scene, const cv::Mat& disp, float maxDisparity, double delta) {
   cv::Mat left;
   if (scene.leftColor.channels() == 3) left = scene.leftColor.clone();
   else cv::cvtColor(scene.left, left, cv::COLOR_GRAY2BGR);
-  cv::Mat result = colorizeDisparity(disp, maxDisparity);
-  // colorizeDisparity blacks out <= 0; keep a valid d = 0 visible is not needed here.
-  std::vector<cv::Mat> parts = {left, colorizeDisparity(scene.gt, maxDisparity), result,
-                                errorMap(disp, scene, delta)};
-  cv::Mat out;
-  cv::hconcat(parts, out);
+  const std::vector<cv::Mat> parts = {left, colorizeDisparity(scene.gt, maxDisparity), colorizeDisparity(disp, maxDisparity),
+                                      errorMap(disp, scene, delta)};
+  const int w = left.cols, h = left.rows;
+  // Text and bar sizes follow the panel width (Middlebury: about 450 px).
+  const double font = std::clamp(w / 750.0, 0.35, 0.8);
+  const int line = int(std::lround(30 * font / 0.6)), pad = line / 3;
+  const int titleH = line + pad, barH = std::max(8, line / 2), legendH = barH + 2 * line + pad;
+  const cv::Scalar ink(30, 30, 30), muted(90, 90, 90);
+  cv::Mat out(titleH + h + legendH, 4 * w, CV_8UC3, cv::Scalar::all(255));
+  char deltaText[48];
+  std::snprintf(deltaText, sizeof deltaText, "error (|d - gt| > %g px)", delta);
+  const std::string titles[] = {"left image", "ground truth (px)", "result (px)", deltaText};
+  for (int k = 0; k < 4; ++k) {
+    parts[size_t(k)].copyTo(out(cv::Rect(k * w, titleH, w, h)));
+    drawCentredText(out, titles[k], k * w + w / 2, titleH - pad, font, ink);
+  }
+  // Disparity colour bar under the ground truth and the result (their common scale).
+  const cv::Rect bar(w + w / 8, titleH + h + pad, 2 * w - w / 4, barH);
+  cv::Mat ramp(1, bar.width, CV_8UC1);
+  for (int x = 0; x < bar.width; ++x) ramp.at<uint8_t>(0, x) = uint8_t(std::lround(255.0 * x / std::max(1, bar.width - 1)));
+  cv::Mat rampColor;
+  cv::applyColorMap(ramp, rampColor, cv::COLORMAP_JET);
+  cv::resize(rampColor, out(bar), bar.size(), 0, 0, cv::INTER_NEAREST);
+  cv::rectangle(out, bar, ink, 1);
+  const float step = tickStep(maxDisparity);
+  for (float v = 0; v <= maxDisparity + 1e-3f; v += step) {
+    const int x = bar.x + int(std::lround(v / maxDisparity * (bar.width - 1)));
+    cv::line(out, {x, bar.y + bar.height}, {x, bar.y + bar.height + pad}, ink, 1);
+    drawCentredText(out, pixels(v), x, bar.y + bar.height + pad + line * 2 / 3, font * 0.8, ink);
+  }
+  drawCentredText(out, "disparity (px); black: none", bar.x + bar.width / 2, bar.y + bar.height + pad + line * 3 / 2,
+                  font * 0.8, muted);
+  // Error map legend (errorMap's colours; occluded pixels are drawn at half brightness).
+  const std::pair<cv::Scalar, std::string> keys[] = {{cv::Scalar(0, 160, 0), "within"},
+                                                     {cv::Scalar(0, 0, 255), "beyond"},
+                                                     {cv::Scalar(255, 64, 0), "invalid"}};
+  int x = 3 * w + pad;
+  const int y = titleH + h + pad;
+  for (const auto& [color, label] : keys) {
+    cv::rectangle(out, cv::Rect(x, y, barH, barH), color, cv::FILLED);
+    drawText(out, label, {x + barH + pad / 2, y + barH}, font * 0.8, ink);
+    int base = 0;
+    x += barH + pad + cv::getTextSize(label, cv::FONT_HERSHEY_SIMPLEX, font * 0.8, 1, &base).width + pad;
+  }
+  drawText(out, "dimmed: occluded", {3 * w + pad, y + barH + pad + line * 2 / 3}, font * 0.8, muted);
   return out;
 }
 

@@ -82,7 +82,8 @@ cv::Mat runOpenCvSgbm(const cv::Mat& left, const cv::Mat& right, int disparities
 // Error map for people: green = correct, red = wrong, blue = invalid, black = not evaluated.
 cv::Mat errorMap(const cv::Mat& disparity, const Scene& scene, double delta = 1.0);
 
-// left | ground truth | result | error map, side by side.
+// left | ground truth | result | error map, side by side, with panel titles, a
+// disparity colour bar (px) under the two disparity panels and the error map's legend.
 cv::Mat sideBySide(const Scene& scene, const cv::Mat& disparity, float maxDisparity, double delta = 1.0);
 
 }  // namespace sgm::eval

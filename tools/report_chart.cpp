@@ -9,6 +9,18 @@
 
 namespace sgm::eval {
 
+void drawText(cv::Mat& img, const std::string& s, cv::Point org, double scale, const cv::Scalar& color,
+              int thickness) {
+  cv::putText(img, s, org, cv::FONT_HERSHEY_SIMPLEX, scale, color, thickness, cv::LINE_AA);
+}
+
+void drawCentredText(cv::Mat& img, const std::string& s, int x, int y, double scale, const cv::Scalar& color,
+                     int thickness) {
+  int base = 0;
+  const cv::Size size = cv::getTextSize(s, cv::FONT_HERSHEY_SIMPLEX, scale, thickness, &base);
+  drawText(img, s, {x - size.width / 2, y}, scale, color, thickness);
+}
+
 namespace {
 
 const cv::Scalar kWhite(255, 255, 255), kBlack(0, 0, 0), kAxis(60, 60, 60), kGrid(225, 225, 225),
@@ -36,26 +48,13 @@ std::string fmt(double v, int decimals) {
   return buf;
 }
 
-void text(cv::Mat& img, const std::string& s, cv::Point org, double scale, const cv::Scalar& color,
-          int thickness = 1) {
-  cv::putText(img, s, org, kFont, scale, color, thickness, cv::LINE_AA);
-}
-
-// Text centred horizontally on x with its baseline at y.
-void centredText(cv::Mat& img, const std::string& s, int x, int y, double scale, const cv::Scalar& color,
-                 int thickness = 1) {
-  int base = 0;
-  const cv::Size size = cv::getTextSize(s, kFont, scale, thickness, &base);
-  text(img, s, {x - size.width / 2, y}, scale, color, thickness);
-}
-
 // Text rotated 90 degrees counter-clockwise, reading bottom to top, centred on x,
 // its lower end at bottomY. Drawn darkest-wins so it sits on a light background.
 void verticalText(cv::Mat& img, const std::string& s, int x, int bottomY, double scale, const cv::Scalar& color) {
   int base = 0;
   const cv::Size size = cv::getTextSize(s, kFont, scale, 1, &base);
   cv::Mat strip(size.height + base + 2, size.width + 2, CV_8UC3, kWhite);
-  text(strip, s, {1, size.height + 1}, scale, color);
+  drawText(strip, s, {1, size.height + 1}, scale, color);
   cv::rotate(strip, strip, cv::ROTATE_90_COUNTERCLOCKWISE);
   cv::Rect where(x - strip.cols / 2, bottomY - strip.rows, strip.cols, strip.rows);
   where &= cv::Rect(0, 0, img.cols, img.rows);
@@ -109,7 +108,7 @@ void drawAxes(cv::Mat& img, const Layout& l) {
     const std::string label = fmt(v, 0);
     int base = 0;
     const cv::Size size = cv::getTextSize(label, kFont, 0.5, 1, &base);
-    text(img, label, {l.plot.x - 10 - size.width, y + size.height / 2}, 0.5, kAxis);
+    drawText(img, label, {l.plot.x - 10 - size.width, y + size.height / 2}, 0.5, kAxis);
   }
   cv::line(img, l.plot.tl(), {l.plot.x, l.plot.br().y}, kAxis, 2);
   cv::line(img, {l.plot.x, l.plot.br().y}, l.plot.br(), kAxis, 2);
@@ -150,7 +149,7 @@ void drawClusterLabels(cv::Mat& img, const Layout& l, const std::vector<Method>&
     if (first < 0) continue;
     const int a = int(x0 + first * barWidth), b = int(x0 + last * barWidth);
     cv::line(img, {a + 1, l.plot.br().y + 6}, {b - 1, l.plot.br().y + 6}, kGrid, 2);
-    centredText(img, names[kind], (a + b) / 2, l.plot.br().y + 20, 0.38, kMuted);
+    drawCentredText(img, names[kind], (a + b) / 2, l.plot.br().y + 20, 0.38, kMuted);
   }
 }
 
@@ -189,7 +188,7 @@ void drawGroups(cv::Mat& img, const Layout& l, const TableReport& r) {
     const cv::Range span(l.plot.x + l.plot.width * i / n, l.plot.x + l.plot.width * (i + 1) / n);
     if (i > 0) cv::line(img, {span.start, l.plot.y}, {span.start, l.plot.br().y + 8}, kGrid, 1);
     drawGroup(img, l, r, r.scenes[i], span);
-    centredText(img, groupTitle(r, r.scenes[i]), (span.start + span.end) / 2, l.plot.br().y + 50, 0.75, kBlack, 2);
+    drawCentredText(img, groupTitle(r, r.scenes[i]), (span.start + span.end) / 2, l.plot.br().y + 50, 0.75, kBlack, 2);
   }
 }
 
@@ -198,31 +197,31 @@ void drawLegend(cv::Mat& img, const Layout& l, const TableReport& r) {
   const int x = l.legendX;
   MethodKind kind = r.methods.empty() ? MethodKind::kTable1 : r.methods.front().kind;
   const char* kindTitle[] = {"Table I configuration", "Full pipeline", "OpenCV StereoSGBM"};
-  text(img, kindTitle[int(kind)], {x, y}, 0.5, kMuted, 1);
+  drawText(img, kindTitle[int(kind)], {x, y}, 0.5, kMuted, 1);
   y += 12;
   for (size_t i = 0; i < r.methods.size(); ++i) {
     const Method& m = r.methods[i];
     if (m.kind != kind) {
       kind = m.kind;
       y += 16;
-      text(img, kindTitle[int(kind)], {x, y}, 0.5, kMuted, 1);
+      drawText(img, kindTitle[int(kind)], {x, y}, 0.5, kMuted, 1);
       y += 12;
     }
     cv::rectangle(img, cv::Rect(x, y, 22, 16), methodColor(i), cv::FILLED);
     std::string label = m.kind == MethodKind::kFull ? m.label.substr(m.label.find(", ") + 2) : m.label;
     if (m.hardwareDefault) label += " (hw default)";
-    text(img, label, {x + 32, y + 13}, 0.5, kBlack);
+    drawText(img, label, {x + 32, y + 13}, 0.5, kBlack);
     y += 26;
   }
   y += 14;
   hatchedBar(img, cv::Rect(x, y, 22, 16), kAxis);
-  text(img, "paper, Table I", {x + 32, y + 13}, 0.5, kBlack);
-  if (!r.derivedNonocc.empty()) text(img, "* nonocc mask derived from GT", {x, y + 46}, 0.45, kMuted);
+  drawText(img, "paper, Table I", {x + 32, y + 13}, 0.5, kBlack);
+  if (!r.derivedNonocc.empty()) drawText(img, "* nonocc mask derived from GT", {x, y + 46}, 0.45, kMuted);
 }
 
 void drawTitle(cv::Mat& img, const TableReport& r, const std::string& title) {
-  text(img, title, {90, 42}, 0.95, kBlack, 2);
-  text(img,
+  drawText(img, title, {90, 42}, 0.95, kBlack, 2);
+  drawText(img,
        "error in non-occluded regions (%, delta = " + fmt(r.delta, 0) + " px, invalid = error), D = " +
            std::to_string(r.disparities) + ".  Solid: ours.  Hatched: the paper's figure.",
        {90, 76}, 0.55, kMuted);

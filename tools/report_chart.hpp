@@ -5,7 +5,16 @@
 
 #include <opencv2/core.hpp>
 
+#include <string>
+
 namespace sgm::eval {
+
+// Text for the report pictures (Hershey simplex, anti-aliased), baseline at org;
+// centred: centred horizontally on x, baseline at y.
+void drawText(cv::Mat& img, const std::string& s, cv::Point org, double scale, const cv::Scalar& color,
+              int thickness = 1);
+void drawCentredText(cv::Mat& img, const std::string& s, int x, int y, double scale, const cv::Scalar& color,
+                     int thickness = 1);
 
 // One group per scene, one solid bar per method (err_nonocc, %), the paper's
 // figure as a hatched bar right after ours where the paper has one; value

@@ -28,6 +28,7 @@ module tb_stream_ctrl #(
   output logic        busy_o,
   output logic        frame_done_o,
   output logic [3:0]  error_o,
+  output logic [3:0]  error_set_o,
   output logic        en_o
 );
 
@@ -74,7 +75,7 @@ module tb_stream_ctrl #(
     .snap_o(unused_snap), .median_o(unused_med), .lut_start_o(lut_start), .lut_ready_i(fill_q == '0),
     .en_o, .pix_left_o(pix_l), .pix_right_o(pix_r), .col_o(col), .row_o(row),
     .res_valid_i(slot_out[SLOT-1]), .res_disp_i(slot_out[1 +: DW]), .res_ok_i(slot_out[0]),
-    .busy_o, .frame_done_o, .error_o
+    .busy_o, .frame_done_o, .error_o, .error_set_o
   );
 
   wire unused = &{1'b0, width, col, unused_p1, unused_p2, unused_mode, unused_tol, unused_sub, unused_lr,

@@ -1,0 +1,86 @@
+// sgm_driver: a small bus-agnostic driver of sgm_axi (register map:
+// sgm_regs.h, docs/registers.md). The caller supplies the 32-bit register
+// read and write functions (a memory-mapped pointer, a UIO device, a
+// simulated AXI4-Lite bus); offsets are relative to the slave's base.
+//
+//   sgm::driver::Driver core(bus);
+//   if (!core.identify(&id)) ...;          // magic / version check
+//   core.configure(frame);                 // atomic: taken at the next start of frame
+//   core.enable(true);
+//   uint32_t done = core.framesDone();
+//   ... stream the frame ...
+//   if (!core.waitFrames(done + 1, polls)) ...;
+//   sgm::driver::Errors e = core.errors();  // sticky kinds and counters
+#pragma once
+
+#include "sgm_regs.h"
+
+#include <cstdint>
+#include <functional>
+
+namespace sgm::driver {
+
+struct Bus {
+  std::function<uint32_t(uint32_t offset)> read;
+  std::function<void(uint32_t offset, uint32_t value)> write;
+};
+
+// The build of the core behind the bus.
+struct Identity {
+  uint32_t version = 0;  // low byte of ID
+  uint32_t disparities = 0, maxWidth = 0, maxHeight = 0;
+  uint32_t censusWidth = 0, censusHeight = 0;
+};
+
+// One frame's run-time configuration (the fields of FRAME_SIZE, PENALTY, CONFIG).
+struct FrameConfig {
+  uint32_t width = 0, height = 0;
+  uint32_t p1 = 18, p2 = 100;
+  uint32_t mode = SGM_MODE_RSAD;
+  bool subpixel = true;
+  bool lrCheck = true;
+  uint32_t lrTolerance = 1;
+  bool fill = true, snap = true, median = true;
+};
+
+struct Errors {
+  uint32_t sticky = 0;                 // SGM_ERROR_* bits
+  uint32_t counts[SGM_ERROR_KINDS] = {};  // events per kind (saturate at 255)
+};
+
+class Driver {
+ public:
+  explicit Driver(Bus bus) : bus_(std::move(bus)) {}
+
+  // Reads the identification registers; false when the magic or version differs.
+  bool identify(Identity* id = nullptr);
+  // Writes the configuration with CTRL.HOLD set, so that the core takes all of
+  // it, or none of it, at its next start of frame; keeps CTRL.ENABLE as it is.
+  void configure(const FrameConfig& frame);
+  FrameConfig readConfig();
+  void enable(bool on);
+  // Resets the core (not the registers) and waits until it is out of reset.
+  bool softReset(long maxPolls = 1000);
+  bool busy();
+  uint32_t framesDone();
+  // Polls FRAMES until it reaches `target` (wrapping counter); false after maxPolls reads.
+  bool waitFrames(uint32_t target, long maxPolls);
+  void lastFrameSize(uint32_t* width, uint32_t* height);
+  Errors errors();
+  // Clears the sticky kinds and the counters.
+  void clearErrors();
+  void enableInterrupts(uint32_t mask);  // SGM_IRQ_* bits
+  uint32_t interrupts();                 // IRQ_STATUS
+  void clearInterrupts(uint32_t mask);
+
+  static uint32_t encodeSize(uint32_t width, uint32_t height);
+  static uint32_t encodePenalty(const FrameConfig& frame);
+  static uint32_t encodeConfig(const FrameConfig& frame);
+
+ private:
+  uint32_t read(uint32_t offset) { return bus_.read(offset); }
+  void write(uint32_t offset, uint32_t value) { bus_.write(offset, value); }
+  Bus bus_;
+};
+
+}  // namespace sgm::driver

@@ -1,0 +1,93 @@
+/* sgm_regs.h: the register map of sgm_axi (rtl/sgm_axi.sv), the one machine
+ * source of the offsets, fields and reset values: the driver (sw/) and the
+ * tests use it, and tests/rtl/test_sgm_axi.cpp checks the RTL's localparams
+ * against it. docs/registers.md is the prose version.
+ *
+ * All registers are 32 bits wide, at byte offsets from the slave's base.
+ * Bits not named here are reserved: they read 0 and ignore writes.
+ * Undefined offsets answer SLVERR (reads return 0, writes are ignored).
+ * Plain C (C89 and C++); no dependency. */
+#ifndef SGM_REGS_H
+#define SGM_REGS_H
+
+/* ---- identification (read-only) */
+#define SGM_REG_ID              0x00u /* SGM_ID_VALUE: "SGM" and the map version */
+#define SGM_REG_D               0x04u /* D, disparities of the build */
+#define SGM_REG_MAX_WIDTH       0x08u /* MAX_WIDTH of the build */
+#define SGM_REG_MAX_HEIGHT      0x0Cu /* MAX_HEIGHT of the build */
+#define SGM_REG_CENSUS          0x10u /* census window: [7:0] width, [15:8] height */
+
+/* ---- control (read-write) */
+#define SGM_REG_CTRL            0x20u
+#define SGM_REG_FRAME_SIZE      0x24u /* [15:0] width, [31:16] height of the next frames */
+#define SGM_REG_PENALTY         0x28u /* [7:0] P1, [15:8] P2' */
+#define SGM_REG_CONFIG          0x2Cu /* cost mode and stages */
+
+/* ---- status (read-only, except the write-1-to-clear / clear-on-write ones) */
+#define SGM_REG_STATUS          0x30u
+#define SGM_REG_FRAMES          0x34u /* frames finished since reset (wraps) */
+#define SGM_REG_ERROR           0x38u /* sticky error kinds, write 1 to clear */
+#define SGM_REG_ERROR_COUNT     0x3Cu /* byte k: events of error kind k (saturating at 255);
+                                         a write clears the counters of its enabled byte lanes */
+#define SGM_REG_LAST_SIZE       0x40u /* [15:0] width, [31:16] height of the last finished frame */
+
+/* ---- interrupt */
+#define SGM_REG_IRQ_ENABLE      0x48u
+#define SGM_REG_IRQ_STATUS      0x4Cu /* write 1 to clear; irq_o = |(IRQ_STATUS & IRQ_ENABLE) */
+
+/* ---- values and fields */
+#define SGM_ID_VALUE            0x53474D01u /* 'S' 'G' 'M', version 1 */
+#define SGM_ID_MAGIC_MASK       0xFFFFFF00u
+#define SGM_ID_VERSION_MASK     0x000000FFu
+
+#define SGM_CENSUS_WIDTH_SHIFT  0
+#define SGM_CENSUS_HEIGHT_SHIFT 8
+#define SGM_CENSUS_FIELD_MASK   0xFFu
+
+#define SGM_CTRL_ENABLE         (1u << 0) /* 0: a start-of-frame beat is held back (frame boundary) */
+#define SGM_CTRL_SOFT_RESET     (1u << 1) /* write 1: reset the core (not the registers); reads 0 */
+#define SGM_CTRL_HOLD           (1u << 2) /* 1: the core keeps the configuration released last */
+#define SGM_CTRL_MASK           0x00000005u /* the bits that read back */
+
+#define SGM_SIZE_WIDTH_SHIFT    0
+#define SGM_SIZE_HEIGHT_SHIFT   16
+#define SGM_SIZE_FIELD_MASK     0xFFFFu
+
+#define SGM_PENALTY_P1_SHIFT    0
+#define SGM_PENALTY_P2_SHIFT    8
+#define SGM_PENALTY_FIELD_MASK  0xFFu
+#define SGM_PENALTY_MASK        0x0000FFFFu
+
+#define SGM_CONFIG_MODE_SHIFT   0          /* 2 bits */
+#define SGM_CONFIG_MODE_MASK    (3u << 0)
+#define SGM_MODE_RT             0u
+#define SGM_MODE_RSAD           1u
+#define SGM_MODE_UNIFIED        2u         /* 3 also means unified */
+#define SGM_CONFIG_SUBPIXEL     (1u << 4)
+#define SGM_CONFIG_LR_ENABLE    (1u << 5)
+#define SGM_CONFIG_LR_TOL_SHIFT 8          /* 3 bits: tolerance in px */
+#define SGM_CONFIG_LR_TOL_MASK  (7u << 8)
+#define SGM_CONFIG_FILL         (1u << 12)
+#define SGM_CONFIG_SNAP         (1u << 13)
+#define SGM_CONFIG_MEDIAN       (1u << 14)
+#define SGM_CONFIG_MASK         0x00007733u
+
+#define SGM_STATUS_BUSY         (1u << 0) /* a frame is in flight */
+#define SGM_STATUS_RESETTING    (1u << 1) /* the soft reset is running */
+
+#define SGM_ERROR_LAST_EARLY    (1u << 0) /* tlast before the last column */
+#define SGM_ERROR_LAST_MISSING  (1u << 1) /* no tlast at the last column */
+#define SGM_ERROR_START_INSIDE  (1u << 2) /* tuser inside a frame */
+#define SGM_ERROR_CONFIG        (1u << 3) /* frame size out of range: frame dropped */
+#define SGM_ERROR_MASK          0x0000000Fu
+#define SGM_ERROR_KINDS         4
+
+#define SGM_IRQ_FRAME_DONE      (1u << 0)
+#define SGM_IRQ_ERROR           (1u << 1)
+#define SGM_IRQ_MASK            0x00000003u
+
+/* ---- reset values (every other register resets to 0) */
+#define SGM_PENALTY_RESET       0x00006412u /* P1 18, P2' 100: the golden model's defaults */
+#define SGM_CONFIG_RESET        0x00007131u /* rsad, sub-pixel, LR check tolerance 1, fill, snap, median */
+
+#endif /* SGM_REGS_H */

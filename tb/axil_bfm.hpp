@@ -1,0 +1,117 @@
+// AXI4-Lite master bus-functional model with seeded random delays on all five
+// channels, for a verilated model with AXI4-Lite slave ports named s_axil_*
+// (sgm_axi). One transfer at a time: AW and W each wait a random number of
+// cycles before VALID (independently, so either may come first), AR likewise;
+// BREADY and RREADY are low on random cycles. While a VALID is low its payload
+// is random, so a slave that looks at it unasked gets garbage. Every cycle
+// goes through an AxilChecker.
+//
+// Call drive() before the model evaluates its inputs and sample() after (both
+// before the clock edge). transfer() runs one blocking transaction, clocking
+// the simulation with the step function given at construction.
+#pragma once
+
+#include "axil_checker.hpp"
+#include "sgm/params.hpp"  // sgm::Error
+
+#include <cstdint>
+#include <functional>
+#include <random>
+#include <string>
+
+namespace sgm::tb {
+
+struct AxilDelays {
+  int maxRequestDelay = 3;  // AW, W, AR: 0 .. this many idle cycles before VALID
+  double readyStall = 0.3;  // B, R: READY low with this probability per cycle
+};
+
+struct AxilResponse {
+  uint32_t data = 0;  // reads
+  uint32_t resp = 0;  // 0 OKAY, 2 SLVERR
+};
+
+constexpr uint32_t kAxilOkay = 0, kAxilSlvErr = 2;
+
+template <class Model>
+class AxilMaster {
+ public:
+  // step(): one clock cycle of the whole simulation (which calls drive and sample).
+  AxilMaster(Model& model, uint32_t seed, AxilDelays delays, std::function<void()> step)
+      : model_(model), rng_(seed), delays_(delays), step_(std::move(step)) {}
+
+  AxilResponse write(uint32_t addr, uint32_t data, uint32_t strb = 0xF) { return transfer(true, addr, data, strb); }
+  AxilResponse read(uint32_t addr) { return transfer(false, addr, 0, 0); }
+
+  void drive() {
+    Model& m = model_;
+    const bool w = active_ && isWrite_, r = active_ && !isWrite_;
+    m.s_axil_awvalid_i = w && !awDone_ && awDelay_ == 0;
+    m.s_axil_awaddr_i = m.s_axil_awvalid_i ? addr_ : random();
+    m.s_axil_awprot_i = 0;
+    m.s_axil_wvalid_i = w && !wDone_ && wDelay_ == 0;
+    m.s_axil_wdata_i = m.s_axil_wvalid_i ? data_ : random();
+    m.s_axil_wstrb_i = m.s_axil_wvalid_i ? strb_ : random() & 0xF;
+    m.s_axil_bready_i = !stall();
+    m.s_axil_arvalid_i = r && !arDone_ && arDelay_ == 0;
+    m.s_axil_araddr_i = m.s_axil_arvalid_i ? addr_ : random();
+    m.s_axil_arprot_i = 0;
+    m.s_axil_rready_i = !stall();
+    if (awDelay_) --awDelay_;
+    if (wDelay_) --wDelay_;
+    if (arDelay_) --arDelay_;
+  }
+
+  void sample(uint64_t cycle) {
+    const Model& m = model_;
+    checker_.observe(cycle, axilWires(m));
+    if (m.s_axil_awvalid_i && m.s_axil_awready_o) awDone_ = true;
+    if (m.s_axil_wvalid_i && m.s_axil_wready_o) wDone_ = true;
+    if (m.s_axil_arvalid_i && m.s_axil_arready_o) arDone_ = true;
+    if (m.s_axil_bvalid_o && m.s_axil_bready_i && active_ && isWrite_)
+      response_.resp = m.s_axil_bresp_o, active_ = false;
+    if (m.s_axil_rvalid_o && m.s_axil_rready_i && active_ && !isWrite_)
+      response_ = {uint32_t(m.s_axil_rdata_o), uint32_t(m.s_axil_rresp_o)}, active_ = false;
+  }
+
+  AxilChecker& checker() { return checker_; }
+
+ private:
+  static constexpr long kTimeoutCycles = 1000;
+
+  AxilResponse transfer(bool isWrite, uint32_t addr, uint32_t data, uint32_t strb) {
+    active_ = true, isWrite_ = isWrite, addr_ = addr, data_ = data, strb_ = strb;
+    awDone_ = wDone_ = arDone_ = false;
+    awDelay_ = delay(), wDelay_ = delay(), arDelay_ = delay();
+    response_ = {};
+    for (long i = 0; active_; ++i) {
+      if (i > kTimeoutCycles)
+        throw Error(std::string("AXI4-Lite ") + (isWrite ? "write" : "read") + " of 0x" + hex(addr) +
+                    " not answered in " + std::to_string(kTimeoutCycles) + " cycles");
+      step_();
+      if (!checker_.violation().empty()) throw Error("AXI4-Lite protocol: " + checker_.violation());
+    }
+    return response_;
+  }
+
+  static std::string hex(uint32_t v) {
+    char text[16];
+    std::snprintf(text, sizeof text, "%x", v);
+    return text;
+  }
+  int delay() { return std::uniform_int_distribution<int>(0, delays_.maxRequestDelay)(rng_); }
+  bool stall() { return std::uniform_real_distribution<double>(0, 1)(rng_) < delays_.readyStall; }
+  uint32_t random() { return uint32_t(rng_()); }
+
+  Model& model_;
+  std::mt19937 rng_;
+  AxilDelays delays_;
+  std::function<void()> step_;
+  AxilChecker checker_;
+  bool active_ = false, isWrite_ = false, awDone_ = false, wDone_ = false, arDone_ = false;
+  int awDelay_ = 0, wDelay_ = 0, arDelay_ = 0;
+  uint32_t addr_ = 0, data_ = 0, strb_ = 0;
+  AxilResponse response_;
+};
+
+}  // namespace sgm::tb

@@ -1,0 +1,39 @@
+// The core's run-time configuration inputs (sgm_top cfg_*_i) for a golden
+// model parameter set and a frame size: one mapping for every testbench (the
+// verilated harness, the Icarus files, the AXI4-Lite register tests).
+#pragma once
+
+#include "sgm/params.hpp"
+
+#include <algorithm>
+#include <string>
+
+namespace sgm::tb {
+
+// Hardware encoding of the cost modes (cfg_mode_i).
+inline int hardwareModeCode(CostMode mode) {
+  switch (mode) {
+    case CostMode::kRt: return 0;
+    case CostMode::kRsad: return 1;
+    case CostMode::kUnified: return 2;
+    default: throw Error(std::string("cost mode ") + costModeName(mode) + " is not in the hardware");
+  }
+}
+
+// The values of sgm_top's cfg_*_i inputs.
+struct HardwareConfig {
+  int width = 0, height = 0, p1 = 0, p2 = 0, mode = 0;
+  bool subpixel = false, lrEnable = false;
+  int lrTolerance = 0;
+  bool fill = false, snap = false, median = false;
+};
+
+inline HardwareConfig hardwareConfig(const Params& p, int width, int height) {
+  HardwareConfig c;
+  c.width = width, c.height = height, c.p1 = p.p1, c.p2 = p.p2, c.mode = hardwareModeCode(p.mode);
+  c.subpixel = p.subpixel, c.lrEnable = p.lrTolerance >= 0, c.lrTolerance = std::max(p.lrTolerance, 0);
+  c.fill = p.fill, c.snap = p.snap, c.median = p.median;
+  return c;
+}
+
+}  // namespace sgm::tb

@@ -1,0 +1,434 @@
+// sgm_axi (sgm_top + AXI4-Lite registers) configured THROUGH the driver
+// (sw/sgm_driver.cpp) over an AXI4-Lite master with random delays on all five
+// channels, every bus cycle checked by the protocol checker; the streams go
+// through the core harness (random stalls, stream checker) and every frame is
+// compared with the golden model. The register map is sw/include/sgm_regs.h.
+#include "Vsgm_axi.h"
+#include "Vsgm_axi_sgm_axi.h"
+#include "axil_bfm.hpp"
+#include "core_harness.hpp"
+#include "malformed_frames.hpp"
+#include "sgm_driver.hpp"
+#include "sgm_regs.h"
+#include "synthetic_scene.hpp"
+
+#include "sgm/pipeline.hpp"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <random>
+
+namespace {
+
+using sgm::tb::AxilMaster;
+using sgm::tb::FrameInput;
+using Harness = sgm::tb::CoreHarness<Vsgm_axi>;
+using Rtl = Vsgm_axi_sgm_axi;
+namespace drv = sgm::driver;
+
+constexpr int kD = Rtl::D;
+
+sgm::Params defaults() {
+  sgm::Params p;
+  p.disparities = kD;
+  return p;
+}
+
+FrameInput scene(int w, int h, uint32_t seed, const sgm::Params& p) {
+  const sgm::synth::SyntheticScene s = sgm::synth::makeSyntheticScene(w, h, kD, seed);
+  return FrameInput{s.left, s.right, p};
+}
+
+drv::FrameConfig frameConfig(const sgm::Params& p, cv::Size size) {
+  const sgm::tb::HardwareConfig c = sgm::tb::hardwareConfig(p, size.width, size.height);
+  drv::FrameConfig f;
+  f.width = c.width, f.height = c.height, f.p1 = c.p1, f.p2 = c.p2, f.mode = c.mode, f.subpixel = c.subpixel;
+  f.lrCheck = c.lrEnable, f.lrTolerance = c.lrTolerance, f.fill = c.fill, f.snap = c.snap, f.median = c.median;
+  return f;
+}
+
+// The core behind its bus: harness (streams), AXI4-Lite master, driver. Each
+// frame's configuration is written by the driver where the harness says it is
+// due (after the previous frame's first beat, so in the middle of that frame);
+// the first one also enables the core.
+struct AxiCore {
+  Harness core;
+  AxilMaster<Vsgm_axi> bus;
+  drv::Driver driver;
+  sgm::tb::AxisSource<Vsgm_axi> extra;  // hand-made beats outside run()
+  bool enabled = false;
+  std::vector<bool> busyWhenConfigured;
+
+  explicit AxiCore(const std::string& name, uint32_t seed = 1, sgm::tb::Stalls stalls = {0.1, 0.1},
+                   sgm::tb::AxilDelays delays = {})
+      : core(name, seed, stalls),
+        bus(core.top().model(), seed * 7 + 1, delays, [this] { core.step(); }),
+        driver(drv::Bus{[this](uint32_t a) { return okay(bus.read(a), a).data; },
+                        [this](uint32_t a, uint32_t v) { okay(bus.write(a, v), a); }}),
+        extra(seed * 13 + 5, 0.2) {
+    core.setCycleHooks(
+        [this] {
+          bus.drive();
+          if (!extra.empty()) extra.drive(core.top().model());
+        },
+        [this] {
+          bus.sample(core.top().cycles());
+          extra.sample(core.top().model());
+        });
+    core.setPresenter([this](const sgm::Params& p, cv::Size size) {
+      busyWhenConfigured.push_back(driver.busy());
+      driver.configure(frameConfig(p, size));
+      if (!enabled) driver.enable(enabled = true);
+    });
+  }
+
+  static sgm::tb::AxilResponse okay(sgm::tb::AxilResponse r, uint32_t addr) {
+    if (r.resp != sgm::tb::kAxilOkay) throw sgm::Error("register 0x" + std::to_string(addr) + " answered SLVERR");
+    return r;
+  }
+  Vsgm_axi& model() { return core.top().model(); }
+  void steps(int n) {
+    for (int i = 0; i < n; ++i) core.step();
+  }
+  // Every frame bit-exact against the golden model.
+  void expectBitExact(const std::vector<FrameInput>& frames, const std::string& what) {
+    const std::vector<sgm::tb::FrameOutput> out = core.run(frames);
+    for (size_t k = 0; k < frames.size(); ++k)
+      EXPECT_EQ(sgm::tb::compareMaps(sgm::runPipeline(frames[k].left, frames[k].right, frames[k].params), out[k].map,
+                                     "sgm_axi output"), "")
+          << what << ", frame " << k;
+  }
+  ~AxiCore() { EXPECT_EQ(bus.checker().finish(), "") << "AXI4-Lite protocol"; }
+};
+
+// ---------------------------------------------------------------- the map
+TEST(SgmAxi, RtlOffsetsAndResetValuesMatchTheHeader) {
+  const std::map<std::string, std::pair<uint32_t, uint32_t>> pairs = {
+      {"ID", {Rtl::ADDR_ID, SGM_REG_ID}},
+      {"D", {Rtl::ADDR_D, SGM_REG_D}},
+      {"MAX_WIDTH", {Rtl::ADDR_MAX_WIDTH, SGM_REG_MAX_WIDTH}},
+      {"MAX_HEIGHT", {Rtl::ADDR_MAX_HEIGHT, SGM_REG_MAX_HEIGHT}},
+      {"CENSUS", {Rtl::ADDR_CENSUS, SGM_REG_CENSUS}},
+      {"CTRL", {Rtl::ADDR_CTRL, SGM_REG_CTRL}},
+      {"FRAME_SIZE", {Rtl::ADDR_FRAME_SIZE, SGM_REG_FRAME_SIZE}},
+      {"PENALTY", {Rtl::ADDR_PENALTY, SGM_REG_PENALTY}},
+      {"CONFIG", {Rtl::ADDR_CONFIG, SGM_REG_CONFIG}},
+      {"STATUS", {Rtl::ADDR_STATUS, SGM_REG_STATUS}},
+      {"FRAMES", {Rtl::ADDR_FRAMES, SGM_REG_FRAMES}},
+      {"ERROR", {Rtl::ADDR_ERROR, SGM_REG_ERROR}},
+      {"ERROR_COUNT", {Rtl::ADDR_ERROR_COUNT, SGM_REG_ERROR_COUNT}},
+      {"LAST_SIZE", {Rtl::ADDR_LAST_SIZE, SGM_REG_LAST_SIZE}},
+      {"IRQ_ENABLE", {Rtl::ADDR_IRQ_ENABLE, SGM_REG_IRQ_ENABLE}},
+      {"IRQ_STATUS", {Rtl::ADDR_IRQ_STATUS, SGM_REG_IRQ_STATUS}},
+      {"ID_VALUE", {Rtl::ID_VALUE, SGM_ID_VALUE}},
+      {"PENALTY_RESET", {Rtl::PENALTY_RESET, SGM_PENALTY_RESET}},
+      {"CONFIG_RESET", {Rtl::CONFIG_RESET, SGM_CONFIG_RESET}},
+  };
+  for (const auto& [name, values] : pairs) EXPECT_EQ(values.first, values.second) << name << ": RTL vs sgm_regs.h";
+  // The reset configuration is the golden model's default parameter set.
+  const drv::FrameConfig golden = frameConfig(defaults(), {0, 0});
+  EXPECT_EQ(drv::Driver::encodePenalty(golden), uint32_t(SGM_PENALTY_RESET));
+  EXPECT_EQ(drv::Driver::encodeConfig(golden), uint32_t(SGM_CONFIG_RESET));
+}
+
+// Offset, reset value and the bits that read back (0: read-only).
+struct RegisterSpec {
+  const char* name;
+  uint32_t offset, reset, writable;
+};
+
+std::vector<RegisterSpec> registers() {
+  return {
+      {"ID", SGM_REG_ID, SGM_ID_VALUE, 0},
+      {"D", SGM_REG_D, uint32_t(Rtl::D), 0},
+      {"MAX_WIDTH", SGM_REG_MAX_WIDTH, uint32_t(Rtl::MAX_WIDTH), 0},
+      {"MAX_HEIGHT", SGM_REG_MAX_HEIGHT, uint32_t(Rtl::MAX_HEIGHT), 0},
+      {"CENSUS", SGM_REG_CENSUS,
+       uint32_t(sgm::kCensusWidth) << SGM_CENSUS_WIDTH_SHIFT | uint32_t(sgm::kCensusHeight) << SGM_CENSUS_HEIGHT_SHIFT, 0},
+      {"CTRL", SGM_REG_CTRL, 0, SGM_CTRL_MASK},
+      {"FRAME_SIZE", SGM_REG_FRAME_SIZE, 0, 0xFFFFFFFFu},
+      {"PENALTY", SGM_REG_PENALTY, SGM_PENALTY_RESET, SGM_PENALTY_MASK},
+      {"CONFIG", SGM_REG_CONFIG, SGM_CONFIG_RESET, SGM_CONFIG_MASK},
+      {"STATUS", SGM_REG_STATUS, 0, 0},
+      {"FRAMES", SGM_REG_FRAMES, 0, 0},
+      {"ERROR", SGM_REG_ERROR, 0, 0},              // W1C: its own test
+      {"ERROR_COUNT", SGM_REG_ERROR_COUNT, 0, 0},  // cleared by writes: its own test
+      {"LAST_SIZE", SGM_REG_LAST_SIZE, 0, 0},
+      {"IRQ_ENABLE", SGM_REG_IRQ_ENABLE, 0, SGM_IRQ_MASK},
+      {"IRQ_STATUS", SGM_REG_IRQ_STATUS, 0, 0},    // W1C: its own test
+  };
+}
+
+TEST(SgmAxi, ResetValuesAndIdentification) {
+  AxiCore c("sgm_axi_reset");
+  for (const RegisterSpec& r : registers()) EXPECT_EQ(c.bus.read(r.offset).data, r.reset) << r.name;
+  drv::Identity id;
+  EXPECT_TRUE(c.driver.identify(&id));
+  EXPECT_EQ(id.disparities, uint32_t(kD));
+  EXPECT_EQ(id.censusWidth * id.censusHeight, uint32_t(sgm::kCensusBits + 1));
+  EXPECT_EQ(c.model().irq_o, 0);
+}
+
+// Read-back of every writable bit, reserved bits reading 0, byte strobes,
+// read-only registers ignoring writes (with OKAY).
+TEST(SgmAxi, ReadBackReservedBitsAndWriteStrobes) {
+  AxiCore c("sgm_axi_readback", 2, {0, 0}, {5, 0.5});
+  std::mt19937 rng(9);
+  for (const RegisterSpec& r : registers()) {
+    const bool w1c = r.offset == SGM_REG_ERROR || r.offset == SGM_REG_IRQ_STATUS || r.offset == SGM_REG_ERROR_COUNT;
+    if (w1c) continue;
+    const uint32_t before = c.bus.read(r.offset).data;
+    std::vector<uint32_t> patterns = {0xFFFFFFFFu, 0u, 0xA5A5A5A5u, 0x5A5A5A5Au};
+    for (int i = 0; i < 6; ++i) patterns.push_back(uint32_t(rng()));
+    for (const uint32_t v : patterns) {
+      EXPECT_EQ(c.bus.write(r.offset, v).resp, sgm::tb::kAxilOkay) << r.name;
+      const uint32_t expected = r.writable ? v & r.writable : before;
+      EXPECT_EQ(c.bus.read(r.offset).data, expected) << r.name << " after writing 0x" << std::hex << v;
+    }
+    if (!r.writable) continue;
+    // Byte strobes: only the enabled lanes change.
+    for (unsigned strb = 0; strb < 16; ++strb) {
+      c.bus.write(r.offset, 0);
+      c.bus.write(r.offset, 0xFFFFFFFFu, strb);
+      uint32_t lanes = 0;
+      for (int k = 0; k < 4; ++k)
+        if (strb >> k & 1) lanes |= 0xFFu << (8 * k);
+      EXPECT_EQ(c.bus.read(r.offset).data, lanes & r.writable) << r.name << ", strobes 0x" << std::hex << strb;
+    }
+    c.bus.write(r.offset, r.reset);
+  }
+}
+
+TEST(SgmAxi, UndefinedAddressesAnswerSlverrAndChangeNothing) {
+  AxiCore c("sgm_axi_badaddr", 3);
+  std::vector<uint32_t> before;
+  for (const RegisterSpec& r : registers()) before.push_back(c.bus.read(r.offset).data);
+  int undefined = 0;
+  for (uint32_t a = 0; a < 0x100; a += 4) {
+    bool defined = false;
+    for (const RegisterSpec& r : registers()) defined |= r.offset == a;
+    if (defined) continue;
+    ++undefined;
+    const sgm::tb::AxilResponse read = c.bus.read(a);
+    EXPECT_EQ(read.resp, sgm::tb::kAxilSlvErr) << "read 0x" << std::hex << a;
+    EXPECT_EQ(read.data, 0u) << "read 0x" << std::hex << a;
+    EXPECT_EQ(c.bus.write(a, 0xFFFFFFFFu).resp, sgm::tb::kAxilSlvErr) << "write 0x" << std::hex << a;
+  }
+  EXPECT_EQ(undefined, 64 - 16);
+  for (size_t k = 0; k < registers().size(); ++k)
+    EXPECT_EQ(c.bus.read(registers()[k].offset).data, before[k]) << registers()[k].name;
+  // Address bits [1:0] are ignored.
+  for (uint32_t low = 1; low < 4; ++low) EXPECT_EQ(c.bus.read(SGM_REG_ID + low).data, SGM_ID_VALUE);
+}
+
+// ---------------------------------------------------------------- frames
+// Four parameter sets back to back; each frame's configuration is written
+// while the previous frame streams, and every frame is bit-exact with its own
+// parameters: a write takes effect from the next start of frame only.
+TEST(SgmAxi, ConfigurationWrittenMidFrameActsFromTheNextFrame) {
+  AxiCore c("sgm_axi_midframe", 4, {0.15, 0.15});
+  sgm::Params unified = defaults();
+  unified.mode = sgm::CostMode::kUnified, unified.p1 = 40, unified.p2 = 200, unified.median = false;
+  sgm::Params rt = defaults();
+  rt.mode = sgm::CostMode::kRt, rt.lrTolerance = -1, rt.fill = false, rt.subpixel = false;
+  sgm::Params strict = defaults();
+  strict.lrTolerance = 0, strict.p1 = 5, strict.p2 = 30, strict.snap = false;
+  const std::vector<FrameInput> frames = {scene(40, 14, 1, defaults()), scene(36, 12, 2, unified),
+                                          scene(48, 11, 3, rt), scene(33, 15, 4, strict),
+                                          scene(40, 10, 5, defaults().rawSgm())};
+  c.expectBitExact(frames, "mid-frame configuration");
+  ASSERT_EQ(c.busyWhenConfigured.size(), frames.size());
+  for (size_t k = 1; k < frames.size(); ++k)
+    EXPECT_TRUE(c.busyWhenConfigured[k]) << "frame " << k << "'s configuration was not written during frame " << k - 1;
+  EXPECT_EQ(c.driver.framesDone(), frames.size());
+  uint32_t w = 0, h = 0;
+  c.driver.lastFrameSize(&w, &h);
+  EXPECT_EQ(w, 40u);
+  EXPECT_EQ(h, 10u);
+  const drv::Errors e = c.driver.errors();
+  EXPECT_EQ(e.sticky, 0u);
+  EXPECT_EQ(c.driver.busy(), false);
+}
+
+// CTRL.HOLD = 1 keeps the configuration released last: a frame started while
+// it is set runs with the old one; clearing it releases the new one.
+TEST(SgmAxi, HoldKeepsTheReleasedConfigurationUntilCleared) {
+  AxiCore c("sgm_axi_hold", 8);
+  const int w = 38, h = 11;
+  sgm::Params other = defaults();
+  other.mode = sgm::CostMode::kRt, other.p1 = 10, other.p2 = 60, other.fill = false;
+  c.driver.configure(frameConfig(defaults(), {w, h}));
+  c.driver.enable(c.enabled = true);
+  c.bus.write(SGM_REG_CTRL, SGM_CTRL_ENABLE | SGM_CTRL_HOLD);
+  const drv::FrameConfig held = frameConfig(other, {w, h});
+  c.bus.write(SGM_REG_PENALTY, drv::Driver::encodePenalty(held));
+  c.bus.write(SGM_REG_CONFIG, drv::Driver::encodeConfig(held));
+  c.core.setPresenter([](const sgm::Params&, cv::Size) {});  // the registers stay as written
+  c.expectBitExact({scene(w, h, 40, defaults())}, "held: the released (default) configuration");
+  c.bus.write(SGM_REG_CTRL, SGM_CTRL_ENABLE);
+  c.expectBitExact({scene(w, h, 41, other)}, "released: the new configuration");
+  EXPECT_EQ(c.driver.readConfig().p1, 10u);
+}
+
+// Sticky error kinds (write 1 to clear, strobes honoured), per-kind event
+// counters (cleared per byte lane), the error interrupt.
+TEST(SgmAxi, ErrorsAreStickyCountedAndClearedByWritingOne) {
+  AxiCore c("sgm_axi_errors", 5, {0.1, 0.1});
+  c.driver.enableInterrupts(SGM_IRQ_ERROR);
+  std::mt19937 rng(2);
+  const int w = 36, h = 12;
+  std::vector<FrameInput> frames = {scene(w, h, 10, defaults())};
+  unsigned expected = 0;
+  for (const sgm::tb::Malformation kind : {sgm::tb::Malformation::kEarlyLast, sgm::tb::Malformation::kMissingLast,
+                                           sgm::tb::Malformation::kStartInside}) {
+    const sgm::tb::MalformedFrames bad = malform(scene(w, h, 11, defaults()), kind, Rtl::MAX_WIDTH, rng(), rng());
+    frames.insert(frames.end(), bad.frames.begin(), bad.frames.end());
+    for (const unsigned e : bad.errors) expected |= e;
+    frames.push_back(scene(w, h, 12, defaults()));
+  }
+  const std::vector<sgm::tb::FrameOutput> out = c.core.run(frames);
+  EXPECT_EQ(sgm::tb::compareMaps(sgm::runPipeline(frames.back().left, frames.back().right, frames.back().params),
+                                 out.back().map, "sgm_axi output"), "");
+  drv::Errors e = c.driver.errors();
+  EXPECT_EQ(e.sticky, expected);
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(e.counts[k], 1u) << "kind " << k;
+  EXPECT_EQ(e.counts[3], 0u);
+  EXPECT_EQ(c.model().irq_o, 1);
+
+  // A frame size out of range: the core drops the frame (error kind 3), twice.
+  drv::FrameConfig bad = frameConfig(defaults(), {0, h});
+  c.driver.configure(bad);
+  for (int n = 0; n < 2; ++n) {
+    const FrameInput f = scene(w, h, 13, defaults());
+    c.extra.push(sgm::tb::frameBeats(f.left.data, f.right.data, w, h, f.left.step, f.right.step));
+    while (!c.extra.empty()) c.steps(1);
+    c.steps(20);
+  }
+  e = c.driver.errors();
+  EXPECT_EQ(e.sticky, expected | SGM_ERROR_CONFIG);
+  EXPECT_EQ(e.counts[3], 2u) << "an event is counted even while its sticky bit is set";
+
+  // W1C: zeros, or ones without their byte strobe, clear nothing.
+  c.bus.write(SGM_REG_ERROR, 0);
+  c.bus.write(SGM_REG_ERROR, SGM_ERROR_MASK, 0x2);
+  EXPECT_EQ(c.bus.read(SGM_REG_ERROR).data, expected | SGM_ERROR_CONFIG);
+  c.bus.write(SGM_REG_ERROR, SGM_ERROR_CONFIG);
+  EXPECT_EQ(c.bus.read(SGM_REG_ERROR).data, expected);
+  // Counters: a write clears the counters of its byte lanes.
+  c.bus.write(SGM_REG_ERROR_COUNT, 0, 0x8);
+  EXPECT_EQ(c.bus.read(SGM_REG_ERROR_COUNT).data, 0x00010101u);
+  EXPECT_EQ(c.model().irq_o, 1) << "the interrupt stays until IRQ_STATUS is cleared";
+  c.driver.clearInterrupts(SGM_IRQ_ERROR);
+  EXPECT_EQ(c.model().irq_o, 0);
+  c.driver.clearErrors();
+  e = c.driver.errors();
+  EXPECT_EQ(e.sticky, 0u);
+  EXPECT_EQ(c.bus.read(SGM_REG_ERROR_COUNT).data, 0u);
+  // The core works after all that.
+  c.driver.configure(frameConfig(defaults(), {w, h}));
+  c.expectBitExact({scene(w, h, 14, defaults())}, "after errors");
+  EXPECT_EQ(c.driver.errors().sticky, 0u);
+}
+
+TEST(SgmAxi, FrameDoneInterruptRaisedMaskedAndCleared) {
+  AxiCore c("sgm_axi_irq", 6);
+  c.expectBitExact({scene(34, 10, 20, defaults())}, "first frame");
+  EXPECT_EQ(c.driver.interrupts(), uint32_t(SGM_IRQ_FRAME_DONE)) << "status is set whatever the enable";
+  EXPECT_EQ(c.model().irq_o, 0) << "masked";
+  c.driver.enableInterrupts(SGM_IRQ_FRAME_DONE);
+  EXPECT_EQ(c.model().irq_o, 1);
+  c.bus.write(SGM_REG_IRQ_STATUS, SGM_IRQ_FRAME_DONE, 0x0);  // no strobe: nothing cleared
+  EXPECT_EQ(c.model().irq_o, 1);
+  c.driver.clearInterrupts(SGM_IRQ_FRAME_DONE);
+  EXPECT_EQ(c.model().irq_o, 0);
+  EXPECT_EQ(c.driver.interrupts(), 0u);
+  c.expectBitExact({scene(40, 12, 21, defaults())}, "second frame");
+  EXPECT_EQ(c.model().irq_o, 1);
+  EXPECT_EQ(c.driver.interrupts(), uint32_t(SGM_IRQ_FRAME_DONE));
+  c.driver.enableInterrupts(0);
+  EXPECT_EQ(c.model().irq_o, 0);
+  EXPECT_EQ(c.driver.framesDone(), 2u);
+}
+
+// CTRL.ENABLE = 0 holds the start-of-frame beat back; a soft reset in the
+// middle of a frame leaves a core whose next frame is bit-exact.
+TEST(SgmAxi, EnableHoldsTheStartOfFrameAndSoftResetRecovers) {
+  AxiCore c("sgm_axi_enable", 7, {0, 0});
+  const int w = 36, h = 12;
+  c.driver.configure(frameConfig(defaults(), {w, h}));
+  const FrameInput f = scene(w, h, 30, defaults());
+  c.extra.push(sgm::tb::frameBeats(f.left.data, f.right.data, w, h, f.left.step, f.right.step));
+  c.steps(300);
+  EXPECT_EQ(c.extra.accepted(), 0u) << "a start of frame passed a disabled core";
+  EXPECT_FALSE(c.driver.busy());
+  c.driver.enable(true);
+  c.enabled = true;
+  while (c.extra.accepted() < uint64_t(w * 6)) c.steps(1);  // half the frame in
+  EXPECT_TRUE(c.driver.busy());
+  EXPECT_TRUE(c.driver.softReset());
+  c.extra.clear();
+  EXPECT_FALSE(c.driver.busy());
+  EXPECT_EQ(c.driver.framesDone(), 0u);
+  c.steps(50);
+  c.expectBitExact({scene(w + 4, h, 31, defaults())}, "after a soft reset in the middle of a frame");
+  EXPECT_EQ(c.driver.framesDone(), 1u);
+}
+
+// The checker itself: quiet on a legal exchange, naming the cycle, the channel
+// and the rule of each violation.
+TEST(AxilChecker, NamesTheCycleChannelAndRuleOfEachViolation) {
+  using sgm::tb::AxilChecker;
+  using sgm::tb::AxilWires;
+  AxilWires idle;
+  AxilWires aw = idle;
+  aw.awvalid = true, aw.awaddr = 0x20, aw.wvalid = true, aw.wdata = 1, aw.wstrb = 0xF;
+  AxilWires taken = aw;
+  taken.awready = taken.wready = true;
+  AxilWires b = idle;
+  b.bvalid = true, b.bready = true;
+  {
+    AxilChecker c;
+    c.observe(0, aw), c.observe(1, taken), c.observe(2, b);
+    EXPECT_EQ(c.finish(), "");
+  }
+  {
+    AxilChecker c;
+    c.observe(0, aw);
+    AxilWires dropped = aw;
+    dropped.awvalid = false;
+    EXPECT_EQ(c.observe(1, dropped), "cycle 1, AW: VALID dropped before its handshake");
+  }
+  {
+    AxilChecker c;
+    c.observe(0, aw);
+    AxilWires changed = aw;
+    changed.wdata = 2;
+    EXPECT_EQ(c.observe(1, changed), "cycle 1, W: payload changed while VALID was high and READY low");
+  }
+  {
+    AxilChecker c;
+    EXPECT_EQ(c.observe(5, b), "cycle 5, B: BVALID without an outstanding write");
+  }
+  {
+    AxilChecker c;
+    c.observe(0, taken);
+    AxilWires sameCycle = idle;
+    sameCycle.rvalid = true;
+    EXPECT_EQ(c.observe(1, sameCycle), "cycle 1, R: RVALID without an outstanding read");
+  }
+  {
+    AxilChecker c;
+    c.observe(0, taken), c.observe(1, b), c.observe(2, b);
+    EXPECT_EQ(c.violation(), "cycle 2, B: BVALID without an outstanding write");
+  }
+  {
+    AxilChecker c;
+    AxilWires ar = idle;
+    ar.arvalid = ar.arready = true;
+    c.observe(0, ar);
+    EXPECT_EQ(c.finish(), "end: 0 write addresses, 0 write data, 0 write responses, 1 reads, 0 read responses");
+  }
+}
+
+}  // namespace
