@@ -26,11 +26,12 @@ $(eval $(call regress_build,$(COV_REGRESS_BIN),16,128,$(COV_VFLAGS)))
 # `make rtl-tests` does not run them; `make test` runs them instead of their
 # plain builds (coverage-ci), so each fixture is built once in CI.
 COV_FIXTURES   := p2-lut stream-ctrl hole-fill median5x5 edge-snap census-unit cost-volume-d16 \
-                  path-engine-d16 wta-d16 lr-check-d16 top-d16
+                  path-engine-d16 wta-d16 lr-check-d16 top-d16 axi-d16
 COV_SAVED_BINS := $(RTL_TEST_BINS)
 RTL_TEST_BINS  :=
 $(foreach f,$(COV_FIXTURES),$(eval $(call rtl_test,cov-$(f),$(FIXTURE_TOP_$(f)),$(FIXTURE_FLAGS_$(f)) $(COV_VFLAGS))))
 COV_TEST_BINS  := $(RTL_TEST_BINS)
+$(BIN)/rtl-cov-axi-d16: sw/sgm_driver.cpp $(wildcard sw/include/*.h*)
 RTL_TEST_BINS  := $(COV_SAVED_BINS)
 
 # CI: `make coverage` with a short regression, its fixtures' results counted in

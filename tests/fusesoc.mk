@@ -7,7 +7,8 @@
 #   make fusesoc-sim     Icarus, the file-driven testbench on make icarus's files, checked
 #   make fusesoc-synth   Yosys synth_xilinx (xc7) of sgm_axi, D=16, MAX_WIDTH=128
 
-FUSESOC     ?= fusesoc  # scripts/deps.mk sets the full path of the pinned PyPI install
+# scripts/deps.mk sets FUSESOC to the full path of the pinned PyPI install.
+FUSESOC     ?= fusesoc
 FUSESOC_DIR := $(BUILD)/fusesoc
 FUSESOC_RUN  = cd $(FUSESOC_DIR) && $(FUSESOC) --cores-root $(CURDIR) run --build-root $(abspath $(FUSESOC_DIR))/$(1) --target $(1) ::sgm:1.0.0
 
