@@ -33,6 +33,11 @@ struct FrameInput {
   // frame is out), rst_ni goes low for a few cycles; the frame owes no output
   // and the next frame starts on a freshly reset core.
   long resetAfterBeats = -1;
+  // >= 0: presented on cfg_mode_i instead of the code of params.mode (3, the unused encoding).
+  int modeCode = -1;
+  // The configuration is out of range: the core drops the frame whole (no output,
+  // no frame_done_o); FrameOutput::errors is error_o once its last beat is in.
+  bool dropped = false;
 };
 
 struct FrameOutput {
@@ -122,7 +127,7 @@ class CoreHarness {
                   const std::function<void(uint64_t, uint64_t)>& progress) {
     const bool resets = frames[end - 1].resetAfterBeats >= 0;
     const size_t owing = resets ? end - 1 : end;  // frames [begin, owing) produce output
-    std::vector<size_t> firstBeat, outFirst;        // per frame, counted from the segment start
+    std::vector<size_t> firstBeat, outFirst, beatCount;  // per frame, counted from the segment start
     size_t inputCount = 0, outputCount = 0;
     for (size_t k = begin; k < end; ++k) {
       std::vector<Beat> beats = inputBeats(frames[k]);
@@ -135,35 +140,43 @@ class CoreHarness {
       }
       firstBeat.push_back(inputCount);
       outFirst.push_back(outputCount);
+      beatCount.push_back(beats.size());
       source_.push(beats);
       inputCount += beats.size();
+      if (frames[k].dropped) continue;
       if (k < owing) outputCount += frames[k].left.total();
       sink_.checker().expectFrame(frames[k].left.cols, frames[k].left.rows);
     }
     const uint64_t acceptedStart = source_.accepted();
     const size_t sinkStart = sink_.beats().size();
     size_t presented = 0, doneFrames = 0;
-    present(frames[begin].params, frames[begin].left.size());
+    present(frames[begin]);
     while (sink_.beats().size() - sinkStart < outputCount || source_.accepted() - acceptedStart < inputCount) {
       const auto [in, outBeat] = cycle();
       if (in) {
         const size_t i = source_.accepted() - 1 - acceptedStart;
         for (size_t k = 0; k < firstBeat.size(); ++k)
           if (i == firstBeat[k] && !out[begin + k].firstInCycle) out[begin + k].firstInCycle = top_.cycles() - 1;
+        for (size_t k = 0; k < firstBeat.size(); ++k)
+          if (frames[begin + k].dropped && beatCount[k] && i + 1 == firstBeat[k] + beatCount[k]) out[begin + k].errors = top_->error_o;
       }
       if (outBeat) {
         const size_t i = sink_.beats().size() - 1 - sinkStart;
         for (size_t k = 0; k + begin < owing; ++k)
-          if (i + 1 == outFirst[k] + frames[begin + k].left.total()) out[begin + k].lastOutCycle = top_.cycles() - 1;
+          if (!frames[begin + k].dropped && i + 1 == outFirst[k] + frames[begin + k].left.total()) out[begin + k].lastOutCycle = top_.cycles() - 1;
       }
-      if (top_->frame_done_o && begin + doneFrames < owing) out[begin + doneFrames++].errors = top_->error_o;
+      if (top_->frame_done_o) {
+        while (begin + doneFrames < owing && frames[begin + doneFrames].dropped) ++doneFrames;
+        if (begin + doneFrames < owing) out[begin + doneFrames++].errors = top_->error_o;
+      }
       while (presented + 1 < firstBeat.size() && source_.accepted() - acceptedStart > firstBeat[presented]) {
         ++presented;
-        present(frames[begin + presented].params, frames[begin + presented].left.size());
+        present(frames[begin + presented]);
       }
       if (progress && (top_.cycles() & 0xfffff) == 0) progress(sink_.beats().size() - sinkStart, outputCount);
     }
-    for (size_t k = begin; k < owing; ++k) out[k].map = decode(sinkStart + outFirst[k - begin], frames[k].left.cols, frames[k].left.rows);
+    for (size_t k = begin; k < owing; ++k)
+      if (!frames[k].dropped) out[k].map = decode(sinkStart + outFirst[k - begin], frames[k].left.cols, frames[k].left.rows);
     if (resets) {
       top_->s_tvalid_i = 0;
       top_.reset();
@@ -192,12 +205,13 @@ class CoreHarness {
   }
 
  private:
-  void present(const Params& p, cv::Size size) {
-    top_->cfg_width_i = size.width;
-    top_->cfg_height_i = size.height;
+  void present(const FrameInput& f) {
+    const Params& p = f.params;
+    top_->cfg_width_i = f.left.cols;
+    top_->cfg_height_i = f.left.rows;
     top_->cfg_p1_i = p.p1;
     top_->cfg_p2_i = p.p2;
-    top_->cfg_mode_i = hardwareModeCode(p.mode);
+    top_->cfg_mode_i = f.modeCode >= 0 ? f.modeCode : hardwareModeCode(p.mode);
     top_->cfg_subpixel_i = p.subpixel;
     top_->cfg_lr_en_i = p.lrTolerance >= 0;
     top_->cfg_lr_tol_i = p.lrTolerance >= 0 ? p.lrTolerance : 0;

@@ -34,7 +34,7 @@ $(eval $(call rtl_test,cov-cost-volume-d16,sgm_cost_volume,--top-module tb_cost_
 $(eval $(call rtl_test,cov-path-engine-d16,sgm_path_engine,-GD=16 -GMAX_WIDTH=128 -GXW=8 -GYW=8 -CFLAGS -DSGM_D=16 $(COV_VFLAGS)))
 $(eval $(call rtl_test,cov-wta-d16,sgm_wta,-GD=16 $(COV_VFLAGS)))
 $(eval $(call rtl_test,cov-lr-check-d16,sgm_lr_check,-GD=16 -GMAX_WIDTH=128 $(COV_VFLAGS)))
-$(eval $(call rtl_test,cov-top-d16,sgm_top,-GD=16 -GMAX_WIDTH=128 -CFLAGS -DSGM_D=16 $(COV_VFLAGS)))
+$(eval $(call rtl_test,cov-top-d16,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -CFLAGS -DSGM_D=16 $(COV_VFLAGS)))
 COV_TEST_BINS  := $(RTL_TEST_BINS)
 RTL_TEST_BINS  := $(COV_SAVED_BINS)
 
