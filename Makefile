@@ -49,7 +49,8 @@ help:
 	@echo "make regress       constrained-random regression of the core (seeded, replayable)"
 	@echo "make fuzz          seeded random-corruption fuzzing of image loading and argument parsing"
 	@echo "make coverage      line and toggle coverage of rtl/ -> build/coverage/"
-	@echo "make test          everything CI runs (lint, unit tests, RTL fixtures, synth-ci, regress-ci, fuzz-ci)"
+	@echo "make mutate        plant each bug of tests/mutate/mutations.txt in a copy of rtl/, run the tests -> build/mutate/ (MUTATE_ONLY=id,id)"
+	@echo "make test          everything CI runs (lint, unit tests, RTL fixtures, synth-ci, regress-ci, fuzz-ci, mutate-ci)"
 	@echo "make clean         remove build/"
 
 # ---------------------------------------------------------------- dependencies
