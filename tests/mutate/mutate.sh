@@ -34,7 +34,7 @@ while (($#)); do
     --check) check_only=1; shift ;;
     --out) out="$2"; shift 2 ;;
     --tree) tree="$2"; shift 2 ;;
-    -h|--help) sed -n '2,21p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,/^set -uo/p' "$0" | sed '$d'; exit 0 ;;
     -*) die "unknown option $1 (see --help)" ;;
     *) list="$1"; shift ;;
   esac
@@ -155,41 +155,10 @@ mkdir -p "$tree/build"
 tar -cf - Makefile rtl tb tests golden tools scripts $(ls -d synth bench 2>/dev/null) | tar -xf - -C "$tree"
 for d in obj lib; do [[ -d build/$d ]] && { rm -rf "$tree/build/$d"; cp -a "build/$d" "$tree/build/"; }; done
 
-# ------------------------------------------------------------------ mutations
-statuses=() killers=() secs=() notes=()
-for i in "${!ids[@]}"; do statuses+=("skipped"); killers+=(""); secs+=(0); notes+=(""); done
-for i in "${selected[@]}"; do
-  id="${ids[$i]}" file="${files[$i]}"
-  if [[ -n "${equivs[$i]}" ]]; then
-    statuses[$i]=equivalent notes[$i]="${equivs[$i]}"
-    echo "mutate: $id ($file:${lines[$i]}) equivalent: ${equivs[$i]}"
-    continue
-  fi
-  m=$(basename "$file" .sv)
-  start=$SECONDS
-  content=$(cat "$file"; echo x)
-  content="${content%x}"
-  mutated="${content/"${olds[$i]}"/"${news[$i]}"}"
-  [[ "$mutated" != "$content" ]] || die "$id: replacement did not apply"
-  printf '%s' "$mutated" > "$tree/$file"
-  status=survived killer=""
-  for t in ${tests_of[$m]}; do
-    baseline "$t"
-    log="$out/logs/$id-$t.log"
-    if ! (cd "$tree" && nice -n 5 "${MUTANT_MAKE[@]}" "build/bin/$t") > "$log" 2>&1; then
-      status=killed killer="$t (build)"; break
-    fi
-    if ! run_test "$tree" "$t" "$log.run"; then
-      status=killed killer="$t"; break
-    fi
-  done
-  cp -p "$file" "$tree/$file"
-  touch "$tree/$file"  # newer than every mutant binary: the next build starts clean
-  statuses[$i]=$status killers[$i]="$killer" secs[$i]=$((SECONDS - start))
-  echo "mutate: $id ($file:${lines[$i]}, ${classes[$i]}): $status${killer:+ by $killer} in ${secs[$i]} s"
-done
-
 # ------------------------------------------------------------------ report
+# Written after every mutation, so that an interrupted run leaves its rows so far.
+write_report() {
+local i sep
 n=0 killed=0 survived=0 equivalent=0
 for i in "${selected[@]}"; do
   case "${statuses[$i]}" in
@@ -224,6 +193,45 @@ json_str() { local s="${1//\\/\\\\}"; s="${s//\"/\\\"}"; printf '"%s"' "${s//$'\
   done
   printf '\n  ]\n}\n'
 } > "$out/report.json"
+}
+
+# ------------------------------------------------------------------ mutations
+statuses=() killers=() secs=() notes=()
+for i in "${!ids[@]}"; do statuses+=("pending"); killers+=(""); secs+=(0); notes+=(""); done
+for i in "${selected[@]}"; do
+  id="${ids[$i]}" file="${files[$i]}"
+  if [[ -n "${equivs[$i]}" ]]; then
+    statuses[$i]=equivalent notes[$i]="${equivs[$i]}"
+    echo "mutate: $id ($file:${lines[$i]}) equivalent: ${equivs[$i]}"
+    write_report
+    continue
+  fi
+  m=$(basename "$file" .sv)
+  start=$SECONDS
+  content=$(cat "$file"; echo x)
+  content="${content%x}"
+  mutated="${content/"${olds[$i]}"/"${news[$i]}"}"
+  [[ "$mutated" != "$content" ]] || die "$id: replacement did not apply"
+  printf '%s' "$mutated" > "$tree/$file"
+  status=survived killer=""
+  for t in ${tests_of[$m]}; do
+    baseline "$t"
+    log="$out/logs/$id-$t.log"
+    if ! (cd "$tree" && nice -n 5 "${MUTANT_MAKE[@]}" "build/bin/$t") > "$log" 2>&1; then
+      status=killed killer="$t (build)"; break
+    fi
+    if ! run_test "$tree" "$t" "$log.run"; then
+      status=killed killer="$t"; break
+    fi
+  done
+  cp -p "$file" "$tree/$file"
+  touch "$tree/$file"  # newer than every mutant binary: the next build starts clean
+  statuses[$i]=$status killers[$i]="$killer" secs[$i]=$((SECONDS - start))
+  echo "mutate: $id ($file:${lines[$i]}, ${classes[$i]}): $status${killer:+ by $killer} in ${secs[$i]} s"
+  write_report
+done
+
+write_report
 echo "mutate: $killed killed, $survived survived, $equivalent equivalent; kill ratio $ratio % ($out/report.md)"
 if ((require_kill && survived)); then
   echo "mutate: FAILED: a mutation survived" >&2
