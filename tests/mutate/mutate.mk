@@ -10,7 +10,7 @@
 
 MUTATE_LIST   ?= tests/mutate/mutations.txt
 MUTATE_ONLY   ?=
-MUTATE_CI_IDS := p2-entry-max,ctrl-height-max,fill-left-border,wta-tie
+MUTATE_CI_IDS := ctrl-height-max,p2-entry-max,pop-last-bit
 MUTATE_DEPS   := $(GOLDEN_LIB) $(EVAL_OBJ)
 
 .PHONY: mutate mutate-ci

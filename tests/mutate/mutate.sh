@@ -154,6 +154,13 @@ baseline() {
 mkdir -p "$tree/build"
 tar -cf - Makefile rtl tb tests golden tools scripts $(ls -d synth bench 2>/dev/null) | tar -xf - -C "$tree"
 for d in obj lib; do [[ -d build/$d ]] && { rm -rf "$tree/build/$d"; cp -a "build/$d" "$tree/build/"; }; done
+# Seed its verilator directories from this checkout's (CI has them from `make rtl-tests`):
+# the Verilator runtime and test objects are then reused, only the mutant model recompiles.
+mkdir -p "$tree/build/verilator"
+for t in "${order[@]}"; do
+  mdir="build/verilator/${t#rtl-}"
+  [[ -d "$mdir" && ! -d "$tree/$mdir" ]] && cp -a "$mdir" "$tree/$mdir"
+done
 
 # ------------------------------------------------------------------ report
 # Written after every mutation, so that an interrupted run leaves its rows so far.
