@@ -157,7 +157,11 @@ for d in obj lib; do [[ -d build/$d ]] && { rm -rf "$tree/build/$d"; cp -a "buil
 # Seed its verilator directories from this checkout's (CI has them from `make rtl-tests`):
 # the Verilator runtime and test objects are then reused, only the mutant model recompiles.
 mkdir -p "$tree/build/verilator"
-for t in "${order[@]}"; do
+declare -A needed=()
+for i in "${selected[@]}"; do
+  [[ -z "${equivs[$i]}" ]] && for t in ${tests_of[$(basename "${files[$i]}" .sv)]}; do needed[$t]=1; done
+done
+for t in "${!needed[@]}"; do
   mdir="build/verilator/${t#rtl-}"
   [[ -d "$mdir" && ! -d "$tree/$mdir" ]] && cp -a "$mdir" "$tree/$mdir"
 done
