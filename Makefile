@@ -60,7 +60,8 @@ help:
 	@echo "make regress       constrained-random regression of the core (seeded, replayable)"
 	@echo "make fuzz          seeded random-corruption fuzzing of image loading and argument parsing"
 	@echo "make coverage      line and toggle coverage of rtl/ -> build/coverage/"
-	@echo "make test          everything CI runs (lint, unit tests, RTL fixtures, synth-ci, regress-ci, fuzz-ci)"
+	@echo "make mutate        plant each bug of tests/mutate/mutations.txt in a copy of rtl/, run the tests -> build/mutate/ (MUTATE_ONLY=id,id)"
+	@echo "make test          everything CI runs (lint, unit tests, RTL fixtures, synth-ci, regress-ci, fuzz-ci, mutate-ci)"
 	@echo "make clean         remove build/"
 
 # ---------------------------------------------------------------- dependencies
@@ -167,13 +168,15 @@ $(eval $(call rtl_test,edge-snap,sgm_edge_snap,))
 $(eval $(call rtl_test,edge-snap-d64,sgm_edge_snap,-GDW=10 -GMAX_WIDTH=512))
 $(eval $(call rtl_test,median5x5,sgm_median5x5,))
 $(eval $(call rtl_test,median5x5-d64,sgm_median5x5,-GDW=10 -GMAX_WIDTH=512))
-$(eval $(call rtl_test,top-d16,sgm_top,-GD=16 -GMAX_WIDTH=128 -CFLAGS -DSGM_D=16))
-$(eval $(call rtl_test,top-d64,sgm_top,-GD=64 -GMAX_WIDTH=512 -CFLAGS -DSGM_D=64))
-$(eval $(call rtl_test,top-d32,sgm_top,-GD=32 -GMAX_WIDTH=128 -CFLAGS -DSGM_D=32))
+# Whole-core builds: small MAX_HEIGHT (384 at D = 64: the tallest Middlebury scene, venus, has
+# 383 rows) so that the whole-core test sends frames of MAX_WIDTH x MAX_HEIGHT quickly.
+$(eval $(call rtl_test,top-d16,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -CFLAGS -DSGM_D=16))
+$(eval $(call rtl_test,top-d64,sgm_top,-GD=64 -GMAX_WIDTH=512 -GMAX_HEIGHT=384 -CFLAGS -DSGM_D=64))
+$(eval $(call rtl_test,top-d32,sgm_top,-GD=32 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -CFLAGS -DSGM_D=32))
+$(eval $(call rtl_test,top-d128,sgm_top,-GD=128 -GMAX_WIDTH=256 -GMAX_HEIGHT=64 -CFLAGS -DSGM_D=128))
 # sgm_axi configured through the driver (sw/) over an AXI4-Lite bus model.
 $(eval $(call rtl_test,axi-d16,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
 $(BIN)/rtl-axi-d16: sw/sgm_driver.cpp $(wildcard sw/include/*.h*)
-$(eval $(call rtl_test,top-d128,sgm_top,-GD=128 -GMAX_WIDTH=256 -CFLAGS -DSGM_D=128))
 $(eval $(call rtl_test,path-engine-d16,sgm_path_engine,-GD=16 -GMAX_WIDTH=128 -GXW=8 -GYW=8 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,path-engine-d64,sgm_path_engine,-GD=64 -GMAX_WIDTH=512 -GXW=10 -GYW=10 -CFLAGS -DSGM_D=64 -CFLAGS -DSGM_YW=10))
 $(eval $(call rtl_test,wta-d16,sgm_wta,-GD=16))
@@ -217,7 +220,7 @@ unit-test: $(BIN)/unit-tests golden
 
 # `make regress` (constrained-random regression), `make fuzz` (bad input), `make coverage`,
 # `make bench`: included here, after every variable and the rtl_test macro are defined.
--include tests/regress.mk tests/fuzz.mk tests/coverage.mk bench/bench.mk
+-include tests/regress.mk tests/fuzz.mk tests/coverage.mk bench/bench.mk tests/mutate/mutate.mk
 -include tests/icarus.mk tests/fusesoc.mk
 
 # One closing line over every GoogleTest binary of this run.

@@ -3,7 +3,8 @@
 // section 3) from the left census/rank at x and the right census/rank at x - d:
 //   rt      = |rank_L - rank_R|                      (mode 0)
 //   rsad    = popcount(census_L xor census_R)        (mode 1)
-//   unified = rt + rsad                              (mode 2, also 3)
+//   unified = rt + rsad                              (mode 2; 3 is rejected upstream,
+//                                                     but computes unified here)
 //   outside_i (x - d < 0, decided by the caller): Cmax of the mode (44, 44, 88).
 //
 // Parameters: none (the disparity only enters through outside_i).

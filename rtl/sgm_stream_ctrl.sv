@@ -12,7 +12,8 @@
 // beats still leave, error_o records why, and input beats are then dropped
 // until the next tuser. A tuser inside a frame is not consumed: it starts the
 // next frame. A frame whose configuration is out of range (width outside
-// MIN_WIDTH .. MAX_WIDTH, height outside 9 .. MAX_HEIGHT) is dropped whole.
+// MIN_WIDTH .. MAX_WIDTH, height outside 9 .. MAX_HEIGHT, P2' below P1, cost
+// mode 3) is dropped whole.
 //
 // Configuration is sampled with the tuser beat's handshake (kept per input
 // buffer entry) and applied when that frame starts; the P2 table is refilled then (lut_start_o) and the
@@ -130,8 +131,11 @@ module sgm_stream_ctrl #(
   logic [2:0]    pend_lr_tol;
   assign {pend_width, pend_height, pend_p1, pend_p2, pend_mode, pend_subpixel, pend_lr_en,
           pend_lr_tol, pend_fill, pend_snap, pend_median} = pend_q[in_rd_q];
+  // In range: MIN_WIDTH .. MAX_WIDTH columns, 9 .. MAX_HEIGHT rows, P2' >= P1 (the golden
+  // model's contract), cost mode 0, 1 or 2 (3 is not a mode).
   wire pend_ok = pend_width >= XW'(MIN_WIDTH) && pend_width <= XW'(MAX_WIDTH) &&
-                 pend_height >= YW'(9) && pend_height <= YW'(MAX_HEIGHT);
+                 pend_height >= YW'(9) && pend_height <= YW'(MAX_HEIGHT) &&
+                 pend_p2 >= pend_p1 && pend_mode != 2'd3;
 
   // ---------------------------------------------------------------- output FIFO
   localparam int FAW = $clog2(FIFO_DEPTH);

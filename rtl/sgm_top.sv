@@ -10,7 +10,7 @@
 // Parameters: D disparities (16, 32, 64, 128), MAX_WIDTH, MAX_HEIGHT (public to
 // the Verilator testbenches, which read the build's limits from the model).
 // Frame constraints: max(D, 16) <= width <= MAX_WIDTH, 9 <= height <= MAX_HEIGHT
-// (frames outside are dropped and flagged in error_o[3]).
+// (frames outside are dropped and flagged in error_o[3], as are P2' < P1 and cfg_mode_i = 3).
 // Throughput: one pixel per clock while a frame streams; after its last input
 // pixel a frame needs about 6 more lines of flush (input stalled) and, at its
 // start, the P2 table fill (about 2 x 256 cycles).
@@ -47,7 +47,7 @@ module sgm_top #(
   input  wire [YW-1:0] cfg_height_i,
   input  wire  [7:0]   cfg_p1_i,
   input  wire  [7:0]   cfg_p2_i,
-  input  wire  [1:0]   cfg_mode_i,     // 0 rt, 1 rsad, 2 unified
+  input  wire  [1:0]   cfg_mode_i,     // 0 rt, 1 rsad, 2 unified (3: out of range, error_o[3])
   input  wire          cfg_subpixel_i,
   input  wire          cfg_lr_en_i,
   input  wire  [2:0]   cfg_lr_tol_i,

@@ -53,6 +53,11 @@ struct FrameInput {
   // frame is out), rst_ni goes low for a few cycles; the frame owes no output
   // and the next frame starts on a freshly reset core.
   long resetAfterBeats = -1;
+  // >= 0: presented on cfg_mode_i instead of the code of params.mode (3, the unused encoding).
+  int modeCode = -1;
+  // The configuration is out of range: the core drops the frame whole (no output,
+  // no frame_done_o); FrameOutput::errors is error_o once its last beat is in.
+  bool dropped = false;
 };
 
 struct FrameOutput {
@@ -142,10 +147,10 @@ class CoreHarness {
                   const std::function<void(uint64_t, uint64_t)>& progress) {
     const bool resets = frames[end - 1].resetAfterBeats >= 0;
     const size_t owing = resets ? end - 1 : end;  // frames [begin, owing) produce output
-    std::vector<size_t> firstBeat, outFirst;        // per frame, counted from the segment start
+    std::vector<size_t> firstBeat, outFirst, beatCount;  // per frame, counted from the segment start
     size_t inputCount = 0, outputCount = 0;
     // The first frame's configuration before any of its beats (a presenter may take cycles).
-    present(frames[begin].params, frames[begin].left.size());
+    present(frames[begin]);
     for (size_t k = begin; k < end; ++k) {
       std::vector<Beat> beats = inputBeats(frames[k]);
       if (k + 1 == end && resets) {
@@ -157,8 +162,10 @@ class CoreHarness {
       }
       firstBeat.push_back(inputCount);
       outFirst.push_back(outputCount);
+      beatCount.push_back(beats.size());
       source_.push(beats);
       inputCount += beats.size();
+      if (frames[k].dropped) continue;
       if (k < owing) outputCount += frames[k].left.total();
       sink_.checker().expectFrame(frames[k].left.cols, frames[k].left.rows);
     }
@@ -171,21 +178,30 @@ class CoreHarness {
         const size_t i = source_.accepted() - 1 - acceptedStart;
         for (size_t k = 0; k < firstBeat.size(); ++k)
           if (i == firstBeat[k] && !out[begin + k].firstInCycle) out[begin + k].firstInCycle = top_.cycles() - 1;
+        if constexpr (HasStatusPorts<Model>::value)  // a dropped frame's error bits, at its last beat
+          for (size_t k = 0; k < firstBeat.size(); ++k)
+            if (frames[begin + k].dropped && beatCount[k] && i + 1 == firstBeat[k] + beatCount[k])
+              out[begin + k].errors = top_->error_o;
       }
       if (outBeat) {
         const size_t i = sink_.beats().size() - 1 - sinkStart;
         for (size_t k = 0; k + begin < owing; ++k)
-          if (i + 1 == outFirst[k] + frames[begin + k].left.total()) out[begin + k].lastOutCycle = top_.cycles() - 1;
+          if (!frames[begin + k].dropped && i + 1 == outFirst[k] + frames[begin + k].left.total())
+            out[begin + k].lastOutCycle = top_.cycles() - 1;
       }
       if constexpr (HasStatusPorts<Model>::value)
-        if (top_->frame_done_o && begin + doneFrames < owing) out[begin + doneFrames++].errors = top_->error_o;
+        if (top_->frame_done_o) {
+          while (begin + doneFrames < owing && frames[begin + doneFrames].dropped) ++doneFrames;
+          if (begin + doneFrames < owing) out[begin + doneFrames++].errors = top_->error_o;
+        }
       while (presented + 1 < firstBeat.size() && source_.accepted() - acceptedStart > firstBeat[presented]) {
         ++presented;
-        present(frames[begin + presented].params, frames[begin + presented].left.size());
+        present(frames[begin + presented]);
       }
       if (progress && (top_.cycles() & 0xfffff) == 0) progress(sink_.beats().size() - sinkStart, outputCount);
     }
-    for (size_t k = begin; k < owing; ++k) out[k].map = decode(sinkStart + outFirst[k - begin], frames[k].left.cols, frames[k].left.rows);
+    for (size_t k = begin; k < owing; ++k)
+      if (!frames[k].dropped) out[k].map = decode(sinkStart + outFirst[k - begin], frames[k].left.cols, frames[k].left.rows);
     if (resets) {
       top_->s_tvalid_i = 0;
       top_.reset();
@@ -216,19 +232,20 @@ class CoreHarness {
   }
 
  private:
-  void present(const Params& p, cv::Size size) {
-    if (presenter_) return presenter_(p, size);
-    if constexpr (HasConfigPorts<Model>::value) presentPorts(p, size);
+  void present(const FrameInput& f) {
+    if (presenter_) return presenter_(f.params, f.left.size());
+    if constexpr (HasConfigPorts<Model>::value) presentPorts(f);
     else throw Error("the model has no cfg_*_i ports: set a presenter");
   }
 
-  void presentPorts(const Params& p, cv::Size size) {
-    const HardwareConfig c = hardwareConfig(p, size.width, size.height);
+  // modeCode, when set, replaces the mode's encoding (an out-of-range mode on purpose).
+  void presentPorts(const FrameInput& f) {
+    const HardwareConfig c = hardwareConfig(f.params, f.left.cols, f.left.rows);
     top_->cfg_width_i = c.width;
     top_->cfg_height_i = c.height;
     top_->cfg_p1_i = c.p1;
     top_->cfg_p2_i = c.p2;
-    top_->cfg_mode_i = c.mode;
+    top_->cfg_mode_i = f.modeCode >= 0 ? f.modeCode : c.mode;
     top_->cfg_subpixel_i = c.subpixel;
     top_->cfg_lr_en_i = c.lrEnable;
     top_->cfg_lr_tol_i = c.lrTolerance;

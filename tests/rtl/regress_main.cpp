@@ -9,34 +9,21 @@
 // its error_o bit, and every output cycle passes the stream checker of the
 // harness (handshake, framing, W x H beats, no hang). Failing cases print the
 // one command that replays them.
-#include "Vsgm_top.h"
-#include "Vsgm_top_sgm_top.h"
-#include "core_harness.hpp"
-#include "malformed_frames.hpp"
-
-#include "eval_lib.hpp"
-#include "synthetic_scene.hpp"
+#include "regress_cases.hpp"
 
 #include "sgm/cli_args.hpp"
-#include "sgm/pipeline.hpp"
 
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <set>
-#include <sstream>
 
 using namespace sgm;
-using synth::Rng;
+using namespace sgm::regress;
 
 namespace {
 
-constexpr int kD = Vsgm_top_sgm_top::D;
-constexpr int kMaxWidth = Vsgm_top_sgm_top::MAX_WIDTH;
-constexpr int kMinWidth = kD > 16 ? kD : 16;
-constexpr int kMinHeight = 9;
 constexpr int kDefaultMaxHeight = 40;
 
 const char* kUsage =
@@ -45,180 +32,6 @@ const char* kUsage =
     "(default 500) were checked, or only case K. Frame heights go up to H (default 40).\n"
     "--xml writes a GoogleTest-style report (one test per case). Exit 1 when a case fails.\n";
 
-struct Frame {
-  tb::FrameInput input;
-  unsigned expectedErrors = 0;
-  bool good = true;  // compared with the golden model
-  std::string text;  // one-line description
-  synth::SyntheticScene scene;  // ground truth of a good frame
-};
-
-struct Case {
-  uint64_t seed = 0;
-  std::string kind;
-  tb::Stalls stalls;
-  std::string sourceStalls, sinkStalls;  // profile names
-  std::string stallText;
-  std::vector<Frame> frames;
-};
-
-// Stall profiles of one side, by name (the summary counts the names seen).
-const char* const kStallNames[] = {"none", "light", "heavy", "bursts", "toggle"};
-
-tb::StallProfile drawStalls(Rng& rng, std::string& name) {
-  name = kStallNames[rng.uniform(0, 4)];
-  if (name == "light") return rng.real(0.02, 0.15);
-  if (name == "heavy") return rng.real(0.5, 0.85);
-  if (name == "bursts") return tb::StallProfile::bursts(rng.real(0.001, 0.01), 50, rng.uniform(100, 600));
-  if (name == "toggle") return tb::StallProfile::toggle();
-  return 0.0;
-}
-
-Params drawParams(Rng& rng) {
-  const CostMode modes[] = {CostMode::kRt, CostMode::kRsad, CostMode::kUnified};
-  Params p = defaultParams(modes[rng.uniform(0, 2)]);
-  p.disparities = kD;
-  if (!rng.chance(0.3)) p.p1 = rng.chance(0.1) ? (rng.chance(0.5) ? 0 : 255) : rng.uniform(0, 255);
-  // The golden model takes P2' >= P1 (docs/algorithm.md).
-  if (!rng.chance(0.3) || p.p2 < p.p1) p.p2 = rng.chance(0.1) ? (rng.chance(0.5) ? p.p1 : 255) : rng.uniform(p.p1, 255);
-  p.subpixel = rng.chance(0.5);
-  p.lrTolerance = rng.chance(0.3) ? -1 : rng.chance(0.7) ? rng.uniform(0, 2) : rng.uniform(0, 7);
-  p.fill = rng.chance(0.5);
-  p.snap = rng.chance(0.5);
-  p.median = rng.chance(0.5);
-  return p;
-}
-
-std::string paramText(const Params& p) {
-  std::ostringstream t;
-  t << costModeName(p.mode) << " P1=" << p.p1 << " P2'=" << p.p2 << " sub=" << p.subpixel << " lr=" << p.lrTolerance
-    << " fill=" << p.fill << " snap=" << p.snap << " median=" << p.median;
-  return t.str();
-}
-
-// Which of the 3 x 2 x 2 x 2 x 2 x 2 switch combinations a parameter set is.
-int paramCombination(const Params& p) {
-  return (((tb::hardwareModeCode(p.mode) * 2 + p.subpixel) * 2 + (p.lrTolerance >= 0)) * 4 + p.fill * 2 + p.median) * 2 +
-         p.snap;
-}
-
-Frame goodFrame(Rng& rng, int maxHeight) {
-  const int w = rng.chance(0.2) ? kMinWidth : rng.chance(0.15) ? kMaxWidth : rng.uniform(kMinWidth, kMaxWidth);
-  const int h = rng.chance(0.25) ? kMinHeight : rng.uniform(kMinHeight, maxHeight);
-  const uint32_t sceneSeed = uint32_t(rng.next());
-  const synth::SyntheticScene scene = synth::makeSyntheticScene(w, h, kD, sceneSeed);
-  Frame f{tb::FrameInput{scene.left, scene.right, drawParams(rng)}, 0, true, "", scene};
-  f.text = std::to_string(w) + "x" + std::to_string(h) + " scene " + std::to_string(sceneSeed) + " " +
-           paramText(f.input.params);
-  return f;
-}
-
-Case drawCase(uint64_t master, uint64_t index, int maxHeight) {
-  Case c;
-  c.seed = synth::mixSeed(master, index);
-  Rng rng(c.seed);
-  c.stalls.sourceIdle = drawStalls(rng, c.sourceStalls);
-  c.stalls.sinkBusy = drawStalls(rng, c.sinkStalls);
-  const auto text = [](const std::string& name, const tb::StallProfile& p) {
-    return name == "light" || name == "heavy" ? name + " " + p.describe() : name == "none" ? name : p.describe();
-  };
-  c.stallText = "stalls: source " + text(c.sourceStalls, c.stalls.sourceIdle) + ", sink " + text(c.sinkStalls, c.stalls.sinkBusy);
-  const double pick = rng.real();
-  const int before = rng.uniform(0, 2);
-  for (int i = 0; i < before; ++i) c.frames.push_back(goodFrame(rng, maxHeight));
-  if (pick < 0.55) {
-    c.kind = "frames";
-    c.frames.push_back(goodFrame(rng, maxHeight));
-    if (rng.chance(0.5)) c.frames.push_back(goodFrame(rng, maxHeight));
-  } else if (pick < 0.7) {
-    c.kind = "reset";
-    Frame cut = goodFrame(rng, maxHeight);
-    const long beats = long(cut.input.left.total());
-    cut.input.resetAfterBeats = rng.chance(0.1) ? 0 : rng.chance(0.1) ? beats : rng.uniform(1, int(beats) - 1);
-    cut.good = false;
-    cut.text = "reset after " + std::to_string(cut.input.resetAfterBeats) + " beats of " + cut.text;
-    c.frames.push_back(cut);
-    c.frames.push_back(goodFrame(rng, maxHeight));
-  } else {
-    Frame base = goodFrame(rng, maxHeight);
-    auto kind = tb::kAllMalformations[rng.uniform(0, int(std::size(tb::kAllMalformations)) - 1)];
-    if (kind == tb::Malformation::kLongLine && base.input.left.cols == kMaxWidth) kind = tb::Malformation::kBeyondMaxWidth;
-    // Where it breaks (malform() reduces `at` to a line or a cut): often at the
-    // edges, a one-beat frame (at 0), one beat short (W H - 2), a line boundary.
-    const int w = base.input.left.cols, h = base.input.left.rows;
-    const double where = rng.real();
-    const unsigned at = where < 0.2 ? 0u : where < 0.35 ? unsigned(w * h - 2)
-                      : where < 0.5 ? unsigned(w * rng.uniform(1, h - 1) - 1) : unsigned(rng.next());
-    const tb::MalformedFrames bad = tb::malform(base.input, kind, kMaxWidth, at, unsigned(rng.next()));
-    c.kind = std::string("malformed ") + tb::malformationName(kind);
-    for (size_t k = 0; k < bad.frames.size(); ++k)
-      c.frames.push_back(Frame{bad.frames[k], bad.errors[k], false,
-                               (k ? "rest of the frame, " : bad.description + ", ") + base.text, {}});
-    c.frames.push_back(goodFrame(rng, maxHeight));
-  }
-  return c;
-}
-
-struct Totals {
-  long cases = 0, failed = 0, goodFrames = 0, pixels = 0, malformed = 0, resets = 0;
-  double badNonocc = 0;  // sum over good frames of bad-1.0 (nonocc) vs the scene ground truth
-  std::set<std::string> kinds, sourceStalls, sinkStalls;
-  std::set<int> combinations, widths;
-  int minHeight = 1 << 30, maxHeight = 0;
-};
-
-// Compares a good frame; "" or the first mismatch with the mismatch counts
-// against the golden stages (which stage the core's output agrees with).
-std::string checkGoodFrame(const tb::FrameInput& in, const tb::FrameOutput& out) {
-  const PipelineStages golden = runPipelineStages(in.left, in.right, in.params);
-  long mismatches = 0;
-  const std::string first = tb::compareMaps(golden.result, out.map, "sgm_top output", &mismatches);
-  if (first.empty()) return first;
-  long afterLr = 0, afterFill = 0;
-  tb::compareMaps(golden.selected, out.map, "", &afterLr);
-  tb::compareMaps(golden.filled, out.map, "", &afterFill);
-  std::ostringstream msg;
-  msg << first << "; " << mismatches << " pixels differ from the golden output (" << afterFill
-      << " from its hole-filled map, " << afterLr << " from its LR-checked map)";
-  return msg.str();
-}
-
-// Runs one case; returns "" or why it failed.
-std::string runCase(const Case& c, Totals& totals) {
-  std::vector<tb::FrameInput> inputs;
-  for (const Frame& f : c.frames) inputs.push_back(f.input);
-  tb::CoreHarness<Vsgm_top> core("sgm_top", uint32_t(c.seed), c.stalls);
-  std::vector<tb::FrameOutput> outputs;
-  try {
-    outputs = core.run(inputs);
-  } catch (const Error& e) {
-    return e.what();
-  }
-  for (size_t k = 0; k < c.frames.size(); ++k) {
-    const Frame& f = c.frames[k];
-    const std::string where = "frame " + std::to_string(k) + " (" + f.text + "): ";
-    if (f.input.resetAfterBeats >= 0) {
-      ++totals.resets;
-      continue;
-    }
-    if (outputs[k].errors != f.expectedErrors)
-      return where + "error_o " + std::to_string(outputs[k].errors) + ", expected " + std::to_string(f.expectedErrors);
-    if (!f.good) {
-      ++totals.malformed;
-      continue;
-    }
-    const std::string mismatch = checkGoodFrame(f.input, outputs[k]);
-    if (!mismatch.empty()) return where + mismatch;
-    totals.badNonocc += eval::evaluate(eval::toFloat(outputs[k].map), synth::toEvalScene(f.scene, "synthetic")).errNonocc;
-    ++totals.goodFrames;
-    totals.pixels += long(f.input.left.total());
-    totals.combinations.insert(paramCombination(f.input.params));
-    totals.widths.insert(f.input.left.cols);
-    totals.minHeight = std::min(totals.minHeight, f.input.left.rows);
-    totals.maxHeight = std::max(totals.maxHeight, f.input.left.rows);
-  }
-  return "";
-}
 
 void writeXml(const std::string& path, const std::vector<std::pair<std::string, std::string>>& results) {
   long failures = 0;

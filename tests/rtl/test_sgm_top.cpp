@@ -7,6 +7,7 @@
 #include "Vsgm_top_sgm_top.h"
 #include "core_harness.hpp"
 #include "malformed_frames.hpp"
+#include "regress_cases.hpp"
 
 #include "eval_lib.hpp"
 #include "sgm/pipeline.hpp"
@@ -81,6 +82,93 @@ TEST(SgmTop, SyntheticFramesBackToBackWithStalls) {
       frames.push_back(syntheticPair(w, h, rng, hardwareDefaults()));
     expectBitExact(core, frames, "stall " + std::to_string(stall));
   }
+}
+
+
+constexpr int kMinWidth = kD > 16 ? kD : 16;
+constexpr int kMaxHeight = Vsgm_top_sgm_top::MAX_HEIGHT;  // of this build
+
+// Frames at the build's limits: MAX_WIDTH wide, MAX_HEIGHT tall, and both at
+// once where the build is small enough (the Makefile gives the small whole-core
+// builds a small MAX_HEIGHT), then a small frame (the core recovers its state).
+TEST(SgmTop, FullWidthAndFullHeightFrames) {
+  Harness core("sgm_top_full_size", 12, {0.1, 0.1});
+  std::mt19937 rng(12);
+  sgm::Params unified = hardwareDefaults();
+  unified.mode = sgm::CostMode::kUnified, unified.lrTolerance = 3, unified.p1 = 41, unified.p2 = 201;
+  std::vector<FrameInput> frames = {syntheticPair(kMaxWidth, 9, rng, hardwareDefaults()),
+                                    syntheticPair(kMinWidth, kMaxHeight, rng, unified),
+                                    syntheticPair(kMaxWidth, 10, rng, unified)};
+  if (long(kMaxWidth) * kMaxHeight <= 200000) frames.push_back(syntheticPair(kMaxWidth, kMaxHeight, rng, hardwareDefaults()));
+  frames.push_back(syntheticPair(kMinWidth + 3, 9, rng, hardwareDefaults()));
+  expectBitExact(core, frames, "full-size frames");
+}
+
+// Each kind of out-of-range configuration (width, height, penalties, mode)
+// between good frames, in one stream: the core drops the frame whole (no output
+// beat), flags error_o[3], and the next frame is bit-exact with error_o clear.
+// The limits themselves (MIN_WIDTH, 9 rows, P2' = P1) are accepted.
+TEST(SgmTop, OutOfRangeConfigurationIsDroppedThenGoodFrame) {
+  std::mt19937 rng(13);
+  sgm::Params inverted = hardwareDefaults();
+  inverted.p1 = 21, inverted.p2 = 20;
+  sgm::Params equal = hardwareDefaults();
+  equal.p1 = 33, equal.p2 = 33, equal.mode = sgm::CostMode::kRsad;
+  sgm::Params unified = hardwareDefaults();
+  unified.mode = sgm::CostMode::kUnified, unified.median = false;
+  const std::vector<std::pair<std::string, FrameInput>> bad = {
+      {"width below max(D, 16)", syntheticPair(kMinWidth - 1, 9, rng, hardwareDefaults())},
+      {"width above MAX_WIDTH", syntheticPair(kMaxWidth + 1, 9, rng, hardwareDefaults())},
+      {"height 8", syntheticPair(kMinWidth + 5, 8, rng, hardwareDefaults())},
+      {"height above MAX_HEIGHT", syntheticPair(kMinWidth, kMaxHeight + 1, rng, hardwareDefaults())},
+      {"P2' below P1", syntheticPair(kMinWidth + 2, 10, rng, inverted)},
+      {"cost mode 3", syntheticPair(kMinWidth + 4, 9, rng, hardwareDefaults())}};
+  std::vector<FrameInput> frames = {syntheticPair(kMinWidth, 9, rng, equal)};
+  for (size_t i = 0; i < bad.size(); ++i) {
+    frames.push_back(bad[i].second);
+    frames.back().dropped = true;
+    frames.back().modeCode = bad[i].first == "cost mode 3" ? 3 : -1;
+    frames.push_back(syntheticPair(kMinWidth + 7 - int(i), 9 + int(i % 3), rng, i % 2 ? unified : hardwareDefaults()));
+  }
+  Harness core("sgm_top_bad_config", 13, {0.2, 0.2});
+  const std::vector<sgm::tb::FrameOutput> out = core.run(frames);
+  for (size_t k = 0; k < frames.size(); ++k) {
+    const std::string what = k % 2 ? bad[k / 2].first : "good frame " + std::to_string(k);
+    if (k % 2) {
+      EXPECT_EQ(out[k].errors, 8u) << what << ": error_o";
+      continue;
+    }
+    EXPECT_EQ(sgm::tb::compareMaps(sgm::runPipeline(frames[k].left, frames[k].right, frames[k].params), out[k].map,
+                                   "sgm_top output"), "")
+        << what << " (after " << (k ? bad[k / 2 - 1].first : "reset") << ")";
+    EXPECT_EQ(out[k].errors, 0u) << what;
+  }
+}
+
+// Settings beyond the defaults at every D: odd penalties, P1 = P2', the
+// extremes 0 and 255, every LR tolerance 0 .. 7, each mode with and without
+// sub-pixel, each post-processing switch alone.
+TEST(SgmTop, SettingsSweep) {
+  Harness core("sgm_top_settings", 14, {0.1, 0.1});
+  std::mt19937 rng(14);
+  const sgm::CostMode modes[] = {sgm::CostMode::kRt, sgm::CostMode::kRsad, sgm::CostMode::kUnified};
+  std::vector<FrameInput> frames;
+  for (int tol = 0; tol <= 7; ++tol) {
+    sgm::Params p = hardwareDefaults();
+    p.mode = modes[tol % 3];
+    p.lrTolerance = tol;
+    p.p1 = 2 * tol + 3 + 10 * (tol % 3);      // odd: 3, 15, 27, 9, 21, 33, 15, 27
+    p.p2 = p.p1 + 2 * (tol * 17 % 23) + 1;    // odd difference to P1
+    p.subpixel = tol % 2 == 0;
+    p.fill = tol % 4 != 1, p.snap = tol % 4 != 2, p.median = tol % 4 != 3;
+    frames.push_back(syntheticPair(kMinWidth + 5 * tol + 1, 9 + tol % 3, rng, p));
+  }
+  for (const auto [p1, p2] : {std::pair{255, 255}, {1, 1}, {0, 255}, {127, 129}}) {
+    sgm::Params p = hardwareDefaults();
+    p.p1 = p1, p.p2 = p2, p.lrTolerance = 7;
+    frames.push_back(syntheticPair(kMinWidth + 11, 10, rng, p));
+  }
+  expectBitExact(core, frames, "settings sweep");
 }
 
 TEST(SgmTop, ParameterSetsChangeFromFrameToFrame) {
@@ -236,6 +324,33 @@ TEST(SgmTop, RealSceneUnderStalls) {
   const sgm::eval::Scene s = sgm::eval::loadScene(dir);
   Harness core("sgm_top_cones_stalls", 2, {0.25, 0.25});
   expectBitExact(core, {FrameInput{s.left, s.right, hardwareDefaults()}}, "cones with stalls");
+}
+
+// A seeded slice of the constrained-random regression (tb/regress_cases.hpp)
+// in the D = 64 build, which CI builds anyway: random widths up to its MAX_WIDTH,
+// every parameter random, stalls, resets and malformed frames. `make regress
+// REGRESS_D=64 REGRESS_MAX_WIDTH=512 REGRESS_SEED=64` runs the same cases at length.
+TEST(SgmTop, RegressionSlice) {
+  if (kD != 64) GTEST_SKIP() << "the regression slice runs in the D = 64 build (make regress-ci runs D = 16)";
+  constexpr uint64_t kMaster = 64;
+  constexpr long kGoodFrames = 12;
+  sgm::regress::Totals totals;
+  for (uint64_t k = 0; totals.goodFrames < kGoodFrames; ++k) {
+    const sgm::regress::Case c = sgm::regress::drawCase(kMaster, k, 40);
+    std::string failure;
+    try {
+      failure = sgm::regress::runCase(c, totals);
+    } catch (const std::exception& e) {
+      failure = e.what();
+    }
+    EXPECT_EQ(failure, "") << "case " << k << " (" << c.kind << ", " << c.stallText << "); replay: make regress REGRESS_D=64 "
+                           << "REGRESS_MAX_WIDTH=512 REGRESS_SEED=" << kMaster << " REGRESS_CASE=" << k;
+    ASSERT_LT(k, 200u) << "too few good frames";
+  }
+  std::cout << "[ figures  ] regression slice: " << totals.goodFrames << " good frames (" << totals.pixels
+            << " pixels, widths " << *totals.widths.begin() << ".." << *totals.widths.rbegin() << "), "
+            << totals.malformed << " malformed, " << totals.resets << " resets, " << totals.combinations.size()
+            << " switch combinations\n";
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // sgm_stream_ctrl (through tb_stream_ctrl, a stand-in pipeline of fixed
 // latency): AXI4-Stream framing, random stalls on both sides, back-to-back
 // frames of different sizes, malformed frames and recovery at the next start
-// of frame, configuration out of range.
+// of frame, configuration out of range (width, height, penalties, mode) and at its limits.
 #include "Vtb_stream_ctrl.h"
 #include "axis_bfm.hpp"
 #include "verilated_top.hpp"
@@ -30,6 +30,7 @@ struct FrameCase {
   std::vector<Beat> beats;          // what the source sends
   std::vector<uint16_t> expected;   // expected output data (width x height), empty if dropped
   unsigned errors = 0;              // expected error_o after the frame
+  int p1 = 20, p2 = 200, mode = 1;  // cfg_p1_i, cfg_p2_i, cfg_mode_i
 };
 
 FrameCase goodFrame(int w, int h, std::mt19937& rng) {
@@ -120,6 +121,9 @@ class StreamCtrl {
   void setConfig(const FrameCase& f) {
     top_->cfg_width_i = f.width;
     top_->cfg_height_i = f.height;
+    top_->cfg_p1_i = f.p1;
+    top_->cfg_p2_i = f.p2;
+    top_->cfg_mode_i = f.mode;
   }
   Top top_;
   sgm::tb::AxisSource<Model> source_;
@@ -158,6 +162,28 @@ TEST(SgmStreamCtrl, StrayBeatsAndBadConfigurationAreDropped) {
   tooShort.expected.clear();
   StreamCtrl ctrl("stream_ctrl_dropped", 3, {0.1, 0.1});
   ctrl.run({junk, goodFrame(16, 9, rng), tooNarrow, tooShort, goodFrame(17, 9, rng)});
+  EXPECT_EQ(ctrl.top()->busy_o, 0);
+}
+
+// The configuration limits of tb_stream_ctrl (MIN_WIDTH 16, MAX_WIDTH = MAX_HEIGHT = 200):
+// frames exactly at them pass (MAX_WIDTH x MAX_HEIGHT at once), one beyond each is
+// dropped whole, as are P2' < P1 and cost mode 3; P2' = P1 and mode 2 pass.
+TEST(SgmStreamCtrl, FramesAtTheConfigurationLimits) {
+  constexpr int kMinWidth = 16, kMaxWidth = 200, kMaxHeight = 200;
+  std::mt19937 rng(11);
+  const auto dropped = [&](int w, int h, int p1, int p2, int mode) {
+    FrameCase f = goodFrame(w, h, rng);
+    f.expected.clear();
+    f.p1 = p1, f.p2 = p2, f.mode = mode;
+    return f;
+  };
+  FrameCase equal = goodFrame(kMinWidth, 9, rng);
+  equal.p1 = equal.p2 = 77, equal.mode = 2;
+  StreamCtrl ctrl("stream_ctrl_limits", 4, {0.1, 0.1});
+  ctrl.run({goodFrame(kMaxWidth, kMaxHeight, rng), dropped(kMaxWidth + 1, 9, 20, 200, 1), goodFrame(kMaxWidth, 9, rng),
+            dropped(kMinWidth - 1, 9, 20, 200, 1), goodFrame(kMinWidth, kMaxHeight, rng),
+            dropped(kMinWidth, kMaxHeight + 1, 20, 200, 1), dropped(kMinWidth, 8, 20, 200, 1), equal,
+            dropped(kMinWidth, 9, 21, 20, 0), dropped(kMinWidth, 9, 20, 200, 3), goodFrame(kMinWidth + 1, 9, rng)});
   EXPECT_EQ(ctrl.top()->busy_o, 0);
 }
 

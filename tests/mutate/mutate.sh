@@ -1,0 +1,251 @@
+#!/usr/bin/env bash
+# Mutation runner of rtl/ (`make mutate`, `make mutate-ci`; tests/mutate/mutate.mk).
+#
+#   tests/mutate/mutate.sh [--only id,id] [--check] [--require-kill] [--out DIR] [--tree DIR] LIST
+#
+# LIST holds one mutation per line (blank lines and # comments skipped):
+#   id @@ rtl/file.sv @@ exact text @@ replacement @@ bug class [@@ equivalent: reason]
+# The exact text must occur exactly once in the file (else the run stops: the RTL
+# changed and the list must follow it in the same commit). Each mutation is applied
+# to a scratch copy of the tree (--tree, default build/mutate/tree; rtl/ is never
+# touched), and the verilated test binaries whose top instantiates the mutated module
+# are rebuilt and run there, cheapest first (unit fixtures, then the whole core at
+# D = 16, the D = 16 regression slice, the whole core at D = 32 and D = 64), up to the
+# first one that fails: that test kills the mutation. A mutation no test fails
+# survived. Lines marked equivalent are reported with their reason and not run.
+# Before its first use, every test runs once on the unmutated tree (the
+# build/bin/ binaries of this checkout): a test that fails there would kill anything.
+# --check only validates the list (every text found exactly once).
+#
+# Writes DIR/report.md and DIR/report.json (default DIR build/mutate): mutations,
+# killed, survived, equivalent, kill_ratio and one row per mutation (id, file, line,
+# class, status, killed_by, seconds, note). Exit 0, or 1 when --require-kill and a
+# mutation survived, 2 on a bad list or a failing baseline.
+set -uo pipefail
+shopt -u patsub_replacement 2>/dev/null || true  # bash 5.2: keep "&" literal in replacements
+
+die() { echo "mutate: $*" >&2; exit 2; }
+
+only="" check_only=0 require_kill=0 out=build/mutate tree="" list=""
+while (($#)); do
+  case "$1" in
+    --only) only="$2"; shift 2 ;;
+    --require-kill) require_kill=1; shift ;;
+    --check) check_only=1; shift ;;
+    --out) out="$2"; shift 2 ;;
+    --tree) tree="$2"; shift 2 ;;
+    -h|--help) sed -n '2,/^set -uo/p' "$0" | sed '$d'; exit 0 ;;
+    -*) die "unknown option $1 (see --help)" ;;
+    *) list="$1"; shift ;;
+  esac
+done
+[[ -n "$list" && -f "$list" ]] || die "no mutation list (usage: mutate.sh [--only id,id] LIST)"
+[[ -f rtl/sgm_top.sv && -f Makefile ]] || die "run from the repository root"
+tree="${tree:-$out/tree}"
+MAKE_CMD=(make --no-print-directory JOBS="${JOBS:-1}")
+# Mutant models are compiled at MUTATE_OPT (default -O1; passed down to the verilated
+# makefiles): most of a mutation's time is that compile, the D = 16 tests run in seconds.
+MUTANT_OPT="${MUTATE_OPT:--O1}"
+MUTANT_MAKE=("${MAKE_CMD[@]}" OPT_FAST="$MUTANT_OPT" OPT_SLOW="$MUTANT_OPT" OPT_GLOBAL="$MUTANT_OPT")
+DATA="${DATA:-$(cd .. && pwd)/shared/data/middlebury}"
+TEST_TIMEOUT="${MUTATE_TIMEOUT:-1200}"
+
+# ------------------------------------------------------------------ the list
+ids=() files=() olds=() news=() classes=() equivs=() lines=()
+declare -A seen=()
+while IFS= read -r raw || [[ -n "$raw" ]]; do
+  [[ -z "${raw// /}" || "$raw" =~ ^[[:space:]]*# ]] && continue
+  rest="$raw" fields=()
+  while [[ "$rest" == *" @@ "* ]]; do fields+=("${rest%% @@ *}"); rest="${rest#* @@ }"; done
+  fields+=("$rest")
+  ((${#fields[@]} == 5 || ${#fields[@]} == 6)) || die "$list: bad line (want 5 or 6 fields separated by ' @@ '): $raw"
+  id="${fields[0]// /}" file="${fields[1]// /}"
+  [[ -z "${seen[$id]:-}" ]] || die "$list: id $id twice"
+  seen[$id]=1
+  [[ -f "$file" ]] || die "$id: no file $file"
+  equiv=""
+  if ((${#fields[@]} == 6)); then
+    [[ "${fields[5]}" == equivalent:* ]] || die "$id: 6th field must be 'equivalent: reason'"
+    equiv="${fields[5]#equivalent: }"
+  fi
+  old="${fields[2]}"
+  count=$(grep -cF -- "$old" "$file")
+  ((count == 1)) || die "$id: the text '$old' occurs $count times in $file (needs exactly once; did the RTL change? update $list)"
+  [[ "$old" != "${fields[3]}" ]] || die "$id: replacement equals the text"
+  ids+=("$id") files+=("$file") olds+=("$old") news+=("${fields[3]}") classes+=("${fields[4]}") equivs+=("$equiv")
+  lines+=("$(grep -nF -- "$old" "$file" | cut -d: -f1)")
+done < "$list"
+((${#ids[@]})) || die "$list: no mutations"
+selected=()
+if [[ -n "$only" ]]; then
+  IFS=, read -ra want <<< "$only"
+  for w in "${want[@]}"; do
+    found=""
+    for i in "${!ids[@]}"; do [[ "${ids[$i]}" == "$w" ]] && found=$i; done
+    [[ -n "$found" ]] || die "--only: no mutation $w in $list"
+    selected+=("$found")
+  done
+else
+  selected=("${!ids[@]}")
+fi
+
+# ------------------------------------------------------------------ tests per module
+# Test binaries in the order they are tried: NAME (make target build/bin/NAME) and the
+# top it verilates (read from the Makefile's rtl_test lines; the regression from regress.mk).
+order=(rtl-p2-lut rtl-stream-ctrl rtl-hole-fill rtl-edge-snap rtl-median5x5 rtl-wta-d16 rtl-lr-check-d16
+       rtl-census-unit rtl-cost-volume-d16 rtl-path-engine-d16 rtl-top-d16 sgm-regress-d16-w128 rtl-top-d32 rtl-top-d64)
+declare -A top_of=()
+while IFS= read -r l; do
+  args="${l#*call rtl_test,}"
+  name="${args%%,*}" rest="${args#*,}"
+  top="${rest%%,*}"
+  [[ "$rest" =~ --top-module[[:space:]]+([a-z_0-9]+) ]] && top="${BASH_REMATCH[1]}"
+  top_of["rtl-$name"]="$top"
+done < <(grep -E '^\$\(eval \$\(call rtl_test,' Makefile)
+top_of[sgm-regress-d16-w128]=sgm_top
+for t in "${order[@]}"; do [[ -n "${top_of[$t]:-}" ]] || die "test $t not in the Makefile"; done
+
+# Modules a top instantiates, itself included (instantiation lines: `  sgm_x #(` or `  sgm_x u_name (`).
+closure() {
+  local m="$1" f sub
+  echo "$m"
+  f=$(ls rtl/"$m".sv tb/tops/"$m".sv 2>/dev/null | head -1)
+  [[ -n "$f" ]] || return 0
+  for sub in $(grep -oE '^[[:space:]]*sgm_[a-z0-9_]+[[:space:]]+(#|u_)' "$f" | awk '{print $1}' | sort -u); do
+    closure "$sub"
+  done
+}
+declare -A tests_of=()  # module -> tests containing it, cheapest first
+for t in "${order[@]}"; do
+  for m in $(closure "${top_of[$t]}" | sort -u); do tests_of[$m]+="$t "; done
+done
+
+run_test() {  # run_test DIR NAME LOG: runs build/bin/NAME of DIR; returns its status
+  local dir="$1" name="$2" log="$3"
+  if [[ "$name" == sgm-regress-* ]]; then
+    (cd "$dir" && timeout "$TEST_TIMEOUT" nice -n 5 "build/bin/$name" --seed 1 --frames 60 --quiet) > "$log" 2>&1
+  else
+    (cd "$dir" && SGM_DATA="$DATA" timeout "$TEST_TIMEOUT" nice -n 5 "build/bin/$name" --gtest_brief=1) > "$log" 2>&1
+  fi
+}
+
+# ------------------------------------------------------------------ baseline
+for i in "${selected[@]}"; do
+  [[ -n "${equivs[$i]}" ]] && continue
+  m=$(basename "${files[$i]}" .sv)
+  [[ -n "${tests_of[$m]:-}" ]] || die "${ids[$i]}: no test binary instantiates $m"
+done
+((check_only)) && { echo "mutate: $list: ${#ids[@]} mutations, every text found once"; exit 0; }
+mkdir -p "$out/logs"
+# Each test, before its first use, builds and passes in this checkout (unmutated).
+declare -A baseline_done=()
+baseline() {
+  local t="$1"
+  [[ -n "${baseline_done[$t]:-}" ]] && return 0
+  echo "mutate: baseline $t (unmutated)"
+  nice -n 5 "${MAKE_CMD[@]}" "build/bin/$t" > "$out/logs/baseline-$t.log" 2>&1 || die "baseline build of $t failed ($out/logs/baseline-$t.log)"
+  run_test . "$t" "$out/logs/baseline-run-$t.log" || die "baseline: $t fails on the unmutated tree ($out/logs/baseline-run-$t.log)"
+  baseline_done[$t]=1
+}
+
+# ------------------------------------------------------------------ scratch tree
+# A copy of the sources with the checkout's golden/eval objects (mtimes kept, so make
+# reuses them); its verilator directories persist between runs.
+mkdir -p "$tree/build"
+tar -cf - Makefile rtl tb tests golden tools scripts $(ls -d synth bench 2>/dev/null) | tar -xf - -C "$tree"
+for d in obj lib; do [[ -d build/$d ]] && { rm -rf "$tree/build/$d"; cp -a "build/$d" "$tree/build/"; }; done
+# Seed its verilator directories from this checkout's (CI has them from `make rtl-tests`):
+# the Verilator runtime and test objects are then reused, only the mutant model recompiles.
+mkdir -p "$tree/build/verilator"
+declare -A needed=()
+for i in "${selected[@]}"; do
+  [[ -z "${equivs[$i]}" ]] && for t in ${tests_of[$(basename "${files[$i]}" .sv)]}; do needed[$t]=1; done
+done
+for t in "${!needed[@]}"; do
+  mdir="build/verilator/${t#rtl-}"
+  [[ -d "$mdir" && ! -d "$tree/$mdir" ]] && cp -a "$mdir" "$tree/$mdir"
+done
+
+# ------------------------------------------------------------------ report
+# Written after every mutation, so that an interrupted run leaves its rows so far.
+write_report() {
+local i sep
+n=0 killed=0 survived=0 equivalent=0
+for i in "${selected[@]}"; do
+  case "${statuses[$i]}" in
+    killed) ((n++, killed++)) ;;
+    survived) ((n++, survived++)) ;;
+    equivalent) ((equivalent++)) ;;
+  esac
+done
+ratio=$( ((n)) && awk -v k=$killed -v n=$n 'BEGIN{printf "%.1f", 100*k/n}' || echo 0)
+json_str() { local s="${1//\\/\\\\}"; s="${s//\"/\\\"}"; printf '"%s"' "${s//$'\t'/ }"; }
+{
+  echo "# make mutate"
+  echo
+  echo "$((killed + survived + equivalent)) mutations of rtl/: $killed killed, $survived survived, $equivalent equivalent (not counted);"
+  echo "kill ratio over non-equivalent mutations: $ratio %."
+  echo
+  echo "| id | file:line | class | status | killed by | s | note |"
+  echo "| --- | --- | --- | --- | --- | --- | --- |"
+  for i in "${selected[@]}"; do
+    echo "| ${ids[$i]} | ${files[$i]#rtl/}:${lines[$i]} | ${classes[$i]} | ${statuses[$i]} | ${killers[$i]} | ${secs[$i]} | ${notes[$i]//|/\\|} |"
+  done
+} > "$out/report.md"
+{
+  printf '{\n  "mutations": %d,\n  "killed": %d,\n  "survived": %d,\n  "equivalent": %d,\n  "kill_ratio_percent": %s,\n  "rows": [\n' \
+    $((killed + survived + equivalent)) $killed $survived $equivalent "$ratio"
+  sep=""
+  for i in "${selected[@]}"; do
+    printf '%s    {"id": %s, "file": %s, "line": %s, "class": %s, "status": %s, "killed_by": %s, "seconds": %s, "note": %s}' \
+      "$sep" "$(json_str "${ids[$i]}")" "$(json_str "${files[$i]}")" "${lines[$i]}" "$(json_str "${classes[$i]}")" \
+      "$(json_str "${statuses[$i]}")" "$(json_str "${killers[$i]}")" "${secs[$i]}" "$(json_str "${notes[$i]}")"
+    sep=$',\n'
+  done
+  printf '\n  ]\n}\n'
+} > "$out/report.json"
+}
+
+# ------------------------------------------------------------------ mutations
+statuses=() killers=() secs=() notes=()
+for i in "${!ids[@]}"; do statuses+=("pending"); killers+=(""); secs+=(0); notes+=(""); done
+for i in "${selected[@]}"; do
+  id="${ids[$i]}" file="${files[$i]}"
+  if [[ -n "${equivs[$i]}" ]]; then
+    statuses[$i]=equivalent notes[$i]="${equivs[$i]}"
+    echo "mutate: $id ($file:${lines[$i]}) equivalent: ${equivs[$i]}"
+    write_report
+    continue
+  fi
+  m=$(basename "$file" .sv)
+  start=$SECONDS
+  content=$(cat "$file"; echo x)
+  content="${content%x}"
+  mutated="${content/"${olds[$i]}"/"${news[$i]}"}"
+  [[ "$mutated" != "$content" ]] || die "$id: replacement did not apply"
+  printf '%s' "$mutated" > "$tree/$file"
+  status=survived killer=""
+  for t in ${tests_of[$m]}; do
+    baseline "$t"
+    log="$out/logs/$id-$t.log"
+    if ! (cd "$tree" && nice -n 5 "${MUTANT_MAKE[@]}" "build/bin/$t") > "$log" 2>&1; then
+      status=killed killer="$t (build)"; break
+    fi
+    if ! run_test "$tree" "$t" "$log.run"; then
+      status=killed killer="$t"; break
+    fi
+  done
+  cp -p "$file" "$tree/$file"
+  touch "$tree/$file"  # newer than every mutant binary: the next build starts clean
+  statuses[$i]=$status killers[$i]="$killer" secs[$i]=$((SECONDS - start))
+  echo "mutate: $id ($file:${lines[$i]}, ${classes[$i]}): $status${killer:+ by $killer} in ${secs[$i]} s"
+  write_report
+done
+
+write_report
+echo "mutate: $killed killed, $survived survived, $equivalent equivalent; kill ratio $ratio % ($out/report.md)"
+if ((require_kill && survived)); then
+  echo "mutate: FAILED: a mutation survived" >&2
+  exit 1
+fi
+exit 0
