@@ -147,6 +147,9 @@ $(eval $(call rtl_test,top-d16,sgm_top,-GD=16 -GMAX_WIDTH=128 -CFLAGS -DSGM_D=16
 $(eval $(call rtl_test,top-d64,sgm_top,-GD=64 -GMAX_WIDTH=512 -CFLAGS -DSGM_D=64))
 $(eval $(call rtl_test,top-d32,sgm_top,-GD=32 -GMAX_WIDTH=128 -CFLAGS -DSGM_D=32))
 $(eval $(call rtl_test,top-d128,sgm_top,-GD=128 -GMAX_WIDTH=256 -CFLAGS -DSGM_D=128))
+# The paper's 9x9 census window (CENSUS_H = 9): synthetic and malformed frames at D = 16, Aloe at D = 64.
+$(eval $(call rtl_test,top-d16-9x9,sgm_top,-GD=16 -GMAX_WIDTH=128 -GCENSUS_H=9 -CFLAGS -DSGM_D=16))
+$(eval $(call rtl_test,top-d64-9x9,sgm_top,-GD=64 -GMAX_WIDTH=512 -GCENSUS_H=9 -CFLAGS -DSGM_D=64))
 $(eval $(call rtl_test,path-engine-d16,sgm_path_engine,-GD=16 -GMAX_WIDTH=128 -GXW=8 -GYW=8 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,path-engine-d64,sgm_path_engine,-GD=64 -GMAX_WIDTH=512 -GXW=10 -GYW=10 -CFLAGS -DSGM_D=64 -CFLAGS -DSGM_YW=10))
 $(eval $(call rtl_test,wta-d16,sgm_wta,-GD=16))

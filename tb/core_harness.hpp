@@ -204,6 +204,8 @@ class CoreHarness {
     top_->cfg_fill_i = p.fill;
     top_->cfg_snap_i = p.snap;
     top_->cfg_median_i = p.median;
+    top_->cfg_p2_mode_i = p.p2Mode == P2Mode::kPaper;
+    top_->cfg_weights_i = p.weights == PathWeighting::kEqual;
   }
 
   DisparityMap decode(size_t first, int w, int h) {

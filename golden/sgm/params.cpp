@@ -71,7 +71,7 @@ Params presetParams(const std::string& name) {
     p.p2Mode = P2Mode::kPaper;
     p.weights = PathWeighting::kEqual;
     // Swept like the other defaults, on the 9x9 window (docs/algorithm.md, section 11).
-    p.p1 = 40, p.p2 = 255;
+    p.p1 = 100, p.p2 = 255;
     p.fill = false;
     p.snap = false;
     return p;
