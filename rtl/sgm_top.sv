@@ -16,7 +16,7 @@
 // Frame constraints: max(D, 16) <= width <= MAX_WIDTH, 9 <= height <= MAX_HEIGHT
 // (frames outside are dropped and flagged in error_o[3]).
 // Throughput: one pixel per clock while a frame streams; after its last input
-// pixel a frame needs about 6 more lines of flush (input stalled) and, at its
+// pixel a frame needs about 6 more lines of flush (8 with the 9x9 census; input stalled) and, at its
 // start, the P2 table fill (about 2 x 256 cycles).
 // Latency: about 6 lines + D + a few tens of pixels from a pixel in to its
 // disparity out.
