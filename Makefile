@@ -48,6 +48,8 @@ help:
 	@echo "make golden        build build/bin/sgm-golden and build/bin/sgm-eval"
 	@echo "make sim           the verilated core on Aloe (or LEFT= RIGHT= [GT=] [OUT=]) vs the golden model"
 	@echo "                   options: D=64 MAX_WIDTH=1280 STALL=0.3 FRAMES=2 SEED=1 TRACE=1"
+	@echo "                   PRESET=paper: the paper's system (9x9 census core, unified, P2'/dI, equal weights)"
+	@echo "                   CENSUS=9x9|9x5 builds that census window (PRESET=paper implies 9x9)"
 	@echo "make lint          verilator --lint-only -Wall on every RTL module"
 	@echo "make rtl-tests     every verilated GoogleTest fixture (modules and the whole core)"
 	@echo "make eval          Table I and full-pipeline accuracy on DATA=$(DATA) -> build/eval/"
@@ -93,23 +95,29 @@ golden: $(BIN)/sgm-golden $(BIN)/sgm-eval
 
 # ---------------------------------------------------------------- simulation
 # make sim [LEFT=... RIGHT=... [GT=...] [GT_SCALE=...]] [OUT=build/sim] [D=64] [MAX_WIDTH=1280]
-#          [STALL=0.0] [SEED=1] [FRAMES=1] [TRACE=1]
+#          [STALL=0.0] [SEED=1] [FRAMES=1] [TRACE=1] [PRESET=default|paper] [CENSUS=9x5|9x9]
+# The program is sim/sgm_sim.cpp; CENSUS sets the core's census window (-GCENSUS_H),
+# PRESET=paper implies CENSUS=9x9 and runs sgm-sim --preset paper.
 OUT       ?= $(BUILD)/sim
 D         ?= 64
 MAX_WIDTH ?= 1280
 MAX_HEIGHT ?= 1024
-SIM_BIN    = $(BIN)/sgm-sim-d$(D)-w$(MAX_WIDTH)$(if $(filter-out 1024,$(MAX_HEIGHT)),-h$(MAX_HEIGHT))$(if $(filter 1,$(TRACE)),-trace)
-SIM_ARGS   = --out $(OUT) --d $(D) $(if $(LEFT),--left $(LEFT)) $(if $(RIGHT),--right $(RIGHT)) \
+PRESET    ?=
+CENSUS    ?= $(if $(filter paper,$(PRESET)),9x9,9x5)
+CENSUS_H   = $(if $(filter 9x9,$(CENSUS)),9,$(if $(filter 9x5,$(CENSUS)),5,$(error CENSUS=$(CENSUS): expected 9x5 or 9x9)))
+SIM_BIN    = $(BIN)/sgm-sim-d$(D)-w$(MAX_WIDTH)$(if $(filter-out 1024,$(MAX_HEIGHT)),-h$(MAX_HEIGHT))$(if $(filter 9,$(CENSUS_H)),-c9x9)$(if $(filter 1,$(TRACE)),-trace)
+SIM_ARGS   = --out $(OUT) --d $(D) $(if $(PRESET),--preset $(PRESET)) $(if $(filter 9,$(CENSUS_H)),--census 9x9) \
+             $(if $(LEFT),--left $(LEFT)) $(if $(RIGHT),--right $(RIGHT)) \
              $(if $(GT),--gt $(GT)) $(if $(GT_SCALE),--gt-scale $(GT_SCALE)) $(if $(STALL),--stall $(STALL)) \
              $(if $(SEED),--seed $(SEED)) $(if $(FRAMES),--frames $(FRAMES))
 SIM_VFLAGS = -O3 --x-assign fast --x-initial fast
 
-$(BIN)/sgm-sim-d%: tb/sim_main.cpp $(RTL_SRC) $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
+$(BIN)/sgm-sim-d%: sim/sgm_sim.cpp $(RTL_SRC) $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
 	@mkdir -p $(BIN) $(BUILD)/verilator
-	@echo "verilating sgm_top (D=$(D), MAX_WIDTH=$(MAX_WIDTH)) for $@"
+	@echo "verilating sgm_top (D=$(D), MAX_WIDTH=$(MAX_WIDTH), census 9x$(CENSUS_H)) for $@"
 	@$(VERILATOR) --cc --exe --build -j $(JOBS) -Wall $(VLT) $(SIM_VFLAGS) $(VL_TRACE) -y rtl --top-module sgm_top \
-	  -GD=$(D) -GMAX_WIDTH=$(MAX_WIDTH) -GMAX_HEIGHT=$(MAX_HEIGHT) -Mdir $(BUILD)/verilator/$(notdir $@) -o $(abspath $@) \
-	  rtl/sgm_top.sv $(abspath tb/sim_main.cpp) $(abspath $(EVAL_OBJ)) $(abspath $(GOLDEN_LIB)) \
+	  -GD=$(D) -GMAX_WIDTH=$(MAX_WIDTH) -GMAX_HEIGHT=$(MAX_HEIGHT) -GCENSUS_H=$(CENSUS_H) -Mdir $(BUILD)/verilator/$(notdir $@) -o $(abspath $@) \
+	  rtl/sgm_top.sv $(abspath sim/sgm_sim.cpp) $(abspath $(EVAL_OBJ)) $(abspath $(GOLDEN_LIB)) \
 	  -CFLAGS "$(VL_CFLAGS) -DSGM_D=$(D) -DSGM_MAX_WIDTH=$(MAX_WIDTH) -DSGM_MAX_HEIGHT=$(MAX_HEIGHT)" -LDFLAGS "$(OPENCV_LIBS) -pthread" \
 	  > $(BUILD)/verilator-$(notdir $@).log || { tail -30 $(BUILD)/verilator-$(notdir $@).log; exit 1; }
 
@@ -174,6 +182,10 @@ $(eval $(call rtl_test,top-d16,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -C
 $(eval $(call rtl_test,top-d64,sgm_top,-GD=64 -GMAX_WIDTH=512 -GMAX_HEIGHT=384 -CFLAGS -DSGM_D=64))
 $(eval $(call rtl_test,top-d32,sgm_top,-GD=32 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -CFLAGS -DSGM_D=32))
 $(eval $(call rtl_test,top-d128,sgm_top,-GD=128 -GMAX_WIDTH=256 -GMAX_HEIGHT=64 -CFLAGS -DSGM_D=128))
+# The paper's 9x9 census window (CENSUS_H = 9): synthetic and malformed frames at D = 16,
+# Aloe in the paper preset at D = 64.
+$(eval $(call rtl_test,top-d16-9x9,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GCENSUS_H=9 -CFLAGS -DSGM_D=16))
+$(eval $(call rtl_test,top-d64-9x9,sgm_top,-GD=64 -GMAX_WIDTH=512 -GMAX_HEIGHT=384 -GCENSUS_H=9 -CFLAGS -DSGM_D=64))
 # sgm_axi configured through the driver (sw/) over an AXI4-Lite bus model.
 $(eval $(call rtl_test,axi-d16,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
 $(BIN)/rtl-axi-d16: sw/sgm_driver.cpp $(wildcard sw/include/*.h*)

@@ -23,13 +23,14 @@
 // Undefined addresses answer SLVERR (reads return 0, writes are ignored);
 // writes to read-only registers are ignored with OKAY.
 //
-// Parameters: D, MAX_WIDTH, MAX_HEIGHT as sgm_top; ADDR_W AXI address bits.
+// Parameters: D, MAX_WIDTH, MAX_HEIGHT, CENSUS_H as sgm_top; ADDR_W AXI address bits.
 // Latency and throughput: those of sgm_top; register responses one cycle
 // after the request.
 module sgm_axi #(
   parameter int D          /*verilator public*/ = 64,
   parameter int MAX_WIDTH  /*verilator public*/ = 1280,
   parameter int MAX_HEIGHT /*verilator public*/ = 1024,
+  parameter int CENSUS_H   /*verilator public*/ = 5,
   parameter int ADDR_W     = 8,
   localparam int XW        = $clog2(MAX_WIDTH + 1),
   localparam int YW        = $clog2(MAX_HEIGHT + 16)
@@ -95,11 +96,11 @@ module sgm_axi #(
   localparam logic [31:0] PENALTY_RESET  /*verilator public*/ = 32'h0000_6412;  // P1 18, P2' 100
   localparam logic [31:0] CONFIG_RESET   /*verilator public*/ = 32'h0000_7131;  // rsad, all stages on, tol 1
   localparam logic [31:0] CTRL_MASK      = 32'h0000_0005;  // ENABLE, HOLD (SOFT_RESET reads 0)
-  localparam logic [31:0] CONFIG_MASK    = 32'h0000_7733;
+  localparam logic [31:0] CONFIG_MASK    = 32'h0003_7733;
   localparam logic [31:0] PENALTY_MASK   = 32'h0000_FFFF;
   localparam logic [31:0] IRQ_MASK       = 32'h0000_0003;
-  localparam int CENSUS_WIDTH  = 9;  // the window of sgm_census_unit
-  localparam int CENSUS_HEIGHT = 5;
+  localparam int CENSUS_WIDTH  = 9;  // the window of sgm_census_unit: 9 x CENSUS_H
+  localparam int CENSUS_HEIGHT = CENSUS_H;
   localparam int SOFT_RESET_CYCLES = 4;
 
   // ------------------------------------------------------------ bus
@@ -208,7 +209,7 @@ module sgm_axi #(
   logic [XW-1:0] act_width;
   logic [YW-1:0] act_height;
   logic [15:0]   act_penalty;
-  logic [14:0]   act_config;
+  logic [17:0]   act_config;
   wire  [15:0]   shadow_width  = frame_size_q[15:0];
   wire  [15:0]   shadow_height = frame_size_q[31:16];
 
@@ -217,12 +218,12 @@ module sgm_axi #(
       act_width   <= '0;
       act_height  <= '0;
       act_penalty <= PENALTY_RESET[15:0];
-      act_config  <= CONFIG_RESET[14:0];
+      act_config  <= CONFIG_RESET[17:0];
     end else if (!hold) begin
       act_width   <= 32'(shadow_width) <= MAX_WIDTH ? shadow_width[XW-1:0] : '0;
       act_height  <= 32'(shadow_height) <= MAX_HEIGHT ? shadow_height[YW-1:0] : '0;
       act_penalty <= penalty_q[15:0];
-      act_config  <= config_q[14:0];
+      act_config  <= config_q[17:0];
     end
   end
 
@@ -237,7 +238,7 @@ module sgm_axi #(
 
   assign s_tready_o = core_tready && !hold_input;
 
-  sgm_top #(.D(D), .MAX_WIDTH(MAX_WIDTH), .MAX_HEIGHT(MAX_HEIGHT)) u_core (
+  sgm_top #(.D(D), .MAX_WIDTH(MAX_WIDTH), .MAX_HEIGHT(MAX_HEIGHT), .CENSUS_H(CENSUS_H)) u_core (
     .clk_i         (clk_i),
     .rst_ni        (rst_ni && !core_reset),
     .s_tdata_i     (s_tdata_i),
@@ -261,6 +262,8 @@ module sgm_axi #(
     .cfg_fill_i    (act_config[12]),
     .cfg_snap_i    (act_config[13]),
     .cfg_median_i  (act_config[14]),
+    .cfg_p2_mode_i (act_config[16]),
+    .cfg_weights_i (act_config[17]),
     .busy_o        (busy),
     .frame_done_o  (frame_done),
     .error_o       (error),

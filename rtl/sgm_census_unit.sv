@@ -1,15 +1,15 @@
 `default_nettype none
-// sgm_census_unit: 5-line buffer, 9x5 window, census and rank of ONE image
-// (docs/algorithm.md section 2, docs/rtl.md "Window and census"). The core
-// instantiates it twice (left, right).
+// sgm_census_unit: CENSUS_H-line buffer, 9 x CENSUS_H window (9x5 or the paper's
+// 9x9), census and rank of ONE image (docs/algorithm.md section 2, docs/rtl.md
+// "Window and census"). The core instantiates it twice (left, right).
 //
 // Input: one slot of the step stream per enabled cycle, (col_i, row_i) = (x, y)
 // in the virtual raster, pix_i the gray pixel (0 on flush slots, row_i >= height).
 // Output: the census of the centre of that slot,
-//   (cx, cy) = (x - 4, y - 2)          if x >= 4
-//            = (width + x - 4, y - 3)  otherwise,
+//   (cx, cy) = (x - 4, y - RY)             if x >= 4
+//            = (width + x - 4, y - RY - 1) otherwise,     RY = (CENSUS_H - 1) / 2,
 // with census bit k = I(q) < I(p) in golden censusBitIndex order (row-major over
-// dy = -2..2, dx = -4..4, centre skipped), 0 for window pixels outside the frame;
+// dy = -RY..RY, dx = -4..4, centre skipped), 0 for window pixels outside the frame;
 // rank = popcount; centre = I(cx, cy); nbr = I of the four path predecessors,
 // 8 bits each LSB first: 0 deg (cx-1, cy), 45 deg (cx-1, cy-1), 90 deg (cx, cy-1),
 // 135 deg (cx+1, cy-1) (don't care outside the frame); valid_o = the slot came
@@ -17,14 +17,14 @@
 // by construction). col_o/row_o = (cx, cy) (row_o meaningless when !valid_o).
 //
 // Structure (stage = one enabled cycle):
-//   s1  line buffer read mem[x] (rows y-4 .. y-1 of column x), input registers;
+//   s1  line buffer read mem[x] (rows y-2RY .. y-1 of column x), input registers;
 //       width/height are captured here and travel with the slot, so a new frame
 //       may enter while the previous one is still in the pipeline.
-//   s2  window shift (column x, rows y-4 .. y enters), line buffer write-back of
-//       {rows y-3 .. y} to mem[x] (the address read one slot earlier; read and
+//   s2  window shift (column x, rows y-2RY .. y enters), line buffer write-back of
+//       {rows y-2RY+1 .. y} to mem[x] (the address read one slot earlier; read and
 //       write addresses of one cycle differ because consecutive slots of a frame
-//       have different columns), centre position and the 5 + 9 row/column masks.
-//   s3  census: 44 masked compares, centre and neighbours.
+//       have different columns), centre position and the CENSUS_H + 9 row/column masks.
+//   s3  census: NB (44 / 80) masked compares, centre and neighbours.
 //   s4  rank (popcount tree), all outputs registered.
 // Rows of an earlier frame or of flush slots still in the buffer are never
 // used: every such window pixel is masked by the centre position (rows above 0
@@ -33,13 +33,15 @@
 // across a frame boundary) the second read misses the first write-back; the
 // missed rows are the previous frame's and masked.
 //
-// Memory: one MAX_WIDTH x 32 bit simple dual-port RAM (synchronous read with
-// enable, write with enable, no same-address read and write) + 45 x 8 bit
-// window registers.
+// Memory: one MAX_WIDTH x 8 (CENSUS_H - 1) bit simple dual-port RAM (32 bits for
+// 9x5, 64 for 9x9: the paper's 9-line buffer; synchronous read with enable,
+// write with enable, no same-address read and write) + 9 CENSUS_H x 8 bit window
+// registers.
 //
-// Parameters: MAX_WIDTH largest frame width; CW column/width bits
-// (2^CW > MAX_WIDTH); RW row/height bits (row_i must hold height + 2, the last
-// flush row the census needs).
+// Parameters: CENSUS_H window height (5 or 9; the width is 9); NB = 9 CENSUS_H - 1
+// census bits, RKW = $clog2(NB + 1) rank bits; MAX_WIDTH largest frame width; CW
+// column/width bits (2^CW > MAX_WIDTH); RW row/height bits (row_i must hold
+// height + RY, the last flush row the census needs).
 // Frame: width_i >= 16, height_i >= 9, constant during a frame (sampled with
 // every slot).
 // Latency: LATENCY = 4 slots for every parameter value (s1 .. s4): the outputs
@@ -47,9 +49,12 @@
 // localparam (hierarchical parameter references are not portable).
 // Throughput: one slot per enabled cycle.
 module sgm_census_unit #(
+  parameter int CENSUS_H  = 5,
   parameter int MAX_WIDTH /*verilator public*/ = 1280,
   parameter int CW        = 11,
-  parameter int RW        = 11
+  parameter int RW        = 11,
+  localparam int NB       = 9 * CENSUS_H - 1,     // census bits (44 / 80)
+  localparam int RKW      = $clog2(NB + 1)        // rank bits (6 / 7)
 ) (
   input  wire              clk_i,
   input  wire              rst_ni,
@@ -59,8 +64,8 @@ module sgm_census_unit #(
   input  wire  [RW-1:0]    row_i,
   input  wire  [CW-1:0]    width_i,
   input  wire  [RW-1:0]    height_i,
-  output logic [43:0]      census_o,
-  output logic [5:0]       rank_o,
+  output logic [NB-1:0]    census_o,
+  output logic [RKW-1:0]   rank_o,
   output logic [7:0]       centre_o,
   output logic [31:0]      nbr_o,
   output logic [CW-1:0]    col_o,
@@ -70,16 +75,15 @@ module sgm_census_unit #(
 
   localparam int LATENCY /*verilator public*/ = 4;
   localparam int RX = 4;                // window columns dx = -RX .. RX
-  localparam int RY = 2;                // window rows    dy = -RY .. RY
+  localparam int RY = (CENSUS_H - 1) / 2;  // window rows dy = -RY .. RY (2 / 4)
   localparam int WC = 2 * RX + 1;       // 9 columns
-  localparam int WR = 2 * RY + 1;       // 5 rows
-  localparam int MID = RY * WC + RX;    // window index of the centre (22)
-  localparam int NB = WR * WC - 1;      // census bits (44)
+  localparam int WR = 2 * RY + 1;       // CENSUS_H rows
+  localparam int MID = RY * WC + RX;    // window index of the centre (22 / 40)
   localparam int LB = 8 * (WR - 1);     // line buffer word: WR - 1 rows of 8 bits
   localparam int AW = MAX_WIDTH > 1 ? $clog2(MAX_WIDTH) : 1;  // line buffer address bits (<= CW)
 
   // ------------------------------------------------------------ s1: line buffer read
-  // mem_q[c][8k +: 8] = row y-4+k of column c (k = 3 the newest), seen from the next
+  // mem_q[c][8k +: 8] = row y-2RY+k of column c (k = 2RY-1 the newest), seen from the next
   // slot y of that column.
   logic [LB-1:0] mem_q [0:MAX_WIDTH-1];
   logic [LB-1:0] rd_q;
@@ -110,7 +114,7 @@ module sgm_census_unit #(
   // win_q[(WC i + j) * 8 +: 8]: window row i (dy = i - RY, i = 0 the oldest row),
   // column j (dx = j - RX, j = WC - 1 the newest column).
   logic [WR*WC*8-1:0] win_q;
-  wire  [WR*8-1:0]    new_col = {pix1_q, rd_q};  // byte i = row y-4+i
+  wire  [WR*8-1:0]    new_col = {pix1_q, rd_q};  // byte i = row y-2RY+i
 
   for (genvar i = 0; i < WR; i++) begin : g_win_row
     for (genvar j = 0; j < WC; j++) begin : g_win_col
@@ -126,10 +130,10 @@ module sgm_census_unit #(
     end
   end
 
-  // Centre of the slot: x >= 4 -> (x - 4, y - 2), else (width + x - 4, y - 3).
-  // Window row i holds raster row y - 4 + i (x >= 4) or y - 5 + i (x < 4, the
-  // centre column is in the previous virtual row), i.e. row cy + i - 2, inside
-  // the frame when off <= y + i < height + off with off = 4 or 5. Window column
+  // Centre of the slot: x >= 4 -> (x - 4, y - RY), else (width + x - 4, y - RY - 1).
+  // Window row i holds raster row y - 2RY + i (x >= 4) or y - 2RY - 1 + i (x < 4, the
+  // centre column is in the previous virtual row), i.e. row cy + i - RY, inside
+  // the frame when off <= y + i < height + off with off = 2RY or 2RY + 1. Window column
   // j holds cx + j - 4, inside when 4 <= cx + j < width + 4.
   wire             wrap   = col1_q < CW'(RX);
   wire  [CW-1:0]   cx     = wrap ? width1_q + col1_q - CW'(RX) : col1_q - CW'(RX);
@@ -197,8 +201,8 @@ module sgm_census_unit #(
   end
 
   // ------------------------------------------------------------ s4: rank, outputs
-  logic [5:0] rank3;
-  sgm_popcount44 u_rank (
+  logic [RKW-1:0] rank3;
+  sgm_popcount #(.N(NB)) u_rank (
     .bits_i  (census3_q),
     .count_o (rank3)
   );

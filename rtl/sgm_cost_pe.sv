@@ -15,28 +15,32 @@
 // its operands, and |rank difference| = (diff xor sign) + sign takes its
 // +sign as the carry in, so no separate absolute value or output mux.
 // Throughput: one cost per enabled cycle. No control registers, no reset.
-module sgm_cost_pe (
-  input  wire             clk_i,
-  input  wire             en_i,
-  input  wire  [1:0]      mode_i,
-  input  wire  [43:0]     lcensus_i,
-  input  wire  [5:0]      lrank_i,
-  input  wire  [43:0]     rcensus_i,
-  input  wire  [5:0]      rrank_i,
-  input  wire             outside_i,
-  output logic [6:0]      cost_o
+module sgm_cost_pe #(
+  parameter int  NB    = 44,
+  localparam int RKW   = $clog2(NB + 1),
+  localparam int CBITS = $clog2(2 * NB + 1)
+) (
+  input  wire               clk_i,
+  input  wire               en_i,
+  input  wire  [1:0]        mode_i,
+  input  wire  [NB-1:0]     lcensus_i,
+  input  wire  [RKW-1:0]    lrank_i,
+  input  wire  [NB-1:0]     rcensus_i,
+  input  wire  [RKW-1:0]    rrank_i,
+  input  wire               outside_i,
+  output logic [CBITS-1:0]  cost_o
 );
 
-  logic [5:0] hamming;
-  sgm_popcount44 u_hamming (
+  logic [RKW-1:0] hamming;
+  sgm_popcount #(.N(NB)) u_hamming (
     .bits_i  (lcensus_i ^ rcensus_i),
     .count_o (hamming)
   );
 
   // Stage A
-  logic [6:0] diff_q;  // lrank - rrank, two's complement (-44 .. 44)
-  logic [5:0] ham_q;
-  logic       out_q;
+  logic [RKW:0]   diff_q;  // lrank - rrank, two's complement (-NB .. NB)
+  logic [RKW-1:0] ham_q;
+  logic           out_q;
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
@@ -47,19 +51,21 @@ module sgm_cost_pe (
   end
 
   // Stage B: cost = rt_op + ham_op + rt_cin.
-  //   out_q:   44 + (unified ? 44 : 0)
+  //   out_q:   NB + (unified ? NB : 0)
   //   mode 0:  (diff ^ sign) + sign      = rt
   //   mode 1:  ham
   //   unified: (diff ^ sign) + ham + sign = rt + rsad
-  wire       neg     = diff_q[6];
-  wire       use_rt  = mode_i != 2'd1;
-  wire       use_ham = mode_i != 2'd0;
-  wire [6:0] rt_op   = out_q ? 7'd44 : use_rt ? {1'b0, diff_q[5:0] ^ {6{neg}}} : 7'd0;
-  wire [6:0] ham_op  = out_q ? (mode_i[1] ? 7'd44 : 7'd0) : use_ham ? {1'b0, ham_q} : 7'd0;
-  wire       rt_cin  = !out_q && use_rt && neg;
+  wire             neg     = diff_q[RKW];
+  wire             use_rt  = mode_i != 2'd1;
+  wire             use_ham = mode_i != 2'd0;
+  wire [CBITS-1:0] cmax1   = CBITS'(NB);  // Cmax of rt and rsad, half of unified's
+  wire [RKW-1:0]   rt_xor  = diff_q[RKW-1:0] ^ {RKW{neg}};
+  wire [CBITS-1:0] rt_op   = out_q ? cmax1 : use_rt ? CBITS'(rt_xor) : '0;
+  wire [CBITS-1:0] ham_op  = out_q ? (mode_i[1] ? cmax1 : '0) : use_ham ? CBITS'(ham_q) : '0;
+  wire             rt_cin  = !out_q && use_rt && neg;
 
   always_ff @(posedge clk_i) begin
-    if (en_i) cost_o <= rt_op + ham_op + 7'(rt_cin);
+    if (en_i) cost_o <= rt_op + ham_op + CBITS'(rt_cin);
   end
 
 endmodule

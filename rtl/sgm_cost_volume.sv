@@ -13,39 +13,43 @@
 // consecutive raster positions, flush slots included). Entries from another
 // row or frame are only reached when col - d < 0, where the PE outputs Cmax.
 //
-// Structure: s1 input registers and the delay line (D x 50 bit registers,
+// Structure: s1 input registers and the delay line (D x (NB + RKW) bit registers, 50 / 87,
 // entry 0 = the slot's own right census), s2 + s3 the two PE stages
 // (sgm_cost_pe).
 //
-// Parameters: D disparities, CW column bits.
+// Parameters: D disparities, CW column bits, NB census bits (44 for the 9x5 census,
+// 80 for the 9x9); RKW rank bits and CBITS cost bits follow.
 // Latency: LATENCY = 3 slots (1 + the PE's 2) for every parameter value:
 // cost_o, col_o, valid_o during slot t belong to the input of slot t - 3.
-// cost_o[d*7 +: 7] = C(p, d) (0 .. 88). Throughput: one slot per enabled cycle.
+// cost_o[d*CBITS +: CBITS] = C(p, d) (0 .. 2 NB). Throughput: one slot per enabled cycle.
 module sgm_cost_volume #(
-  parameter int D  = 64,
-  parameter int CW = 11
+  parameter int  D     = 64,
+  parameter int  CW    = 11,
+  parameter int  NB    = 44,
+  localparam int RKW   = $clog2(NB + 1),
+  localparam int CBITS = $clog2(2 * NB + 1)
 ) (
   input  wire              clk_i,
   input  wire              rst_ni,
   input  wire              en_i,
   input  wire  [1:0]       mode_i,
-  input  wire  [43:0]      lcensus_i,
-  input  wire  [5:0]       lrank_i,
-  input  wire  [CW-1:0]    col_i,
-  input  wire  [43:0]      rcensus_i,
-  input  wire  [5:0]       rrank_i,
-  input  wire              valid_i,
-  output logic [D*7-1:0]   cost_o,
+  input  wire  [NB-1:0]      lcensus_i,
+  input  wire  [RKW-1:0]     lrank_i,
+  input  wire  [CW-1:0]      col_i,
+  input  wire  [NB-1:0]      rcensus_i,
+  input  wire  [RKW-1:0]     rrank_i,
+  input  wire                valid_i,
+  output logic [D*CBITS-1:0] cost_o,
   output logic [CW-1:0]    col_o,
   output logic             valid_o
 );
 
   localparam int LATENCY /*verilator public*/ = 3;
-  localparam int EW = 50;  // delay line entry: {rank, census}
+  localparam int EW = NB + RKW;  // delay line entry: {rank, census}
 
   // ------------------------------------------------------------ s1
-  logic [43:0]   lcensus1_q;
-  logic [5:0]    lrank1_q;
+  logic [NB-1:0]  lcensus1_q;
+  logic [RKW-1:0] lrank1_q;
   logic [CW-1:0] col1_q, col2_q;
   logic [1:0]    mode1_q, mode2_q;
   logic          valid1_q, valid2_q;
@@ -84,16 +88,16 @@ module sgm_cost_volume #(
       assign outside = {{(32-CW){1'b0}}, col1_q} < 32'(d);
     end
 
-    sgm_cost_pe u_pe (
+    sgm_cost_pe #(.NB(NB)) u_pe (
       .clk_i     (clk_i),
       .en_i      (en_i),
       .mode_i    (mode2_q),
       .lcensus_i (lcensus1_q),
       .lrank_i   (lrank1_q),
-      .rcensus_i (line_q[d*EW +: 44]),
-      .rrank_i   (line_q[d*EW+44 +: 6]),
+      .rcensus_i (line_q[d*EW +: NB]),
+      .rrank_i   (line_q[d*EW+NB +: RKW]),
       .outside_i (outside),
-      .cost_o    (cost_o[d*7 +: 7])
+      .cost_o    (cost_o[d*CBITS +: CBITS])
     );
   end
 

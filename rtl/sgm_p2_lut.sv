@@ -1,10 +1,13 @@
 `default_nettype none
-// sgm_p2_lut: the adaptive P2 table of docs/algorithm.md section 4,
-//   P2r(k) = max(P1, floor(4 P2' / (k + 4)))   for k = 0 .. 255,
-// filled after start_i without a divider: with N = 4 P2' and, for k = 0, 1, ..,
-// the divisor k + 4, it keeps q = floor(N / (k + 4)) and prod = q * (k + 4),
-// decrementing q (prod -= k + 4) while prod > N, then writing entry k and
-// moving on with prod += q. At most 256 + 255 + 1 cycles; ready_o rises when done.
+// sgm_p2_lut: the adaptive P2 table of docs/algorithm.md section 4, k = 0 .. 255,
+//   knee  (mode 0): P2r(k) = max(P1, floor(4 P2' / (k + 4)))
+//   paper (mode 1): P2r(k) = max(P1, floor(P2' / k)),  P2r(0) = max(P1, P2')
+// filled after start_i by one iterative divider: with N = 4 P2' (knee) or P2'
+// (paper) and, for k = 0, 1, .., the divisor k + 4 (knee) or k (paper), it keeps
+// q = floor(N / divisor) and prod = q * divisor (q starts at P2': 4 P2' / 4 and
+// the paper's P2' at k = 0), decrementing q (prod -= divisor) while prod > N,
+// then writing entry k and moving on with prod += q. At most 256 + 255 + 1
+// cycles; ready_o rises when done.
 //
 // Parameters: PW penalty width (P1, P2' and the entries).
 // Latency: lookups are registered (one enabled cycle). Throughput: NPORTS
@@ -19,6 +22,7 @@ module sgm_p2_lut #(
   input  wire                   start_i,
   input  wire  [PW-1:0]         p1_i,
   input  wire  [PW-1:0]         p2_i,
+  input  wire                   mode_i,   // 0 knee, 1 paper (latched with start_i)
   output logic                  ready_o,
   // Lookups: index |dI| per port, result P2r per port, updated when en_i.
   input  wire                   en_i,
@@ -33,9 +37,10 @@ module sgm_p2_lut #(
   logic [PW-1:0] q_q;        // floor(N / (k + 4)) once prod_q <= N
   logic [PW+2:0] prod_q;     // q_q * (k_q + 4), at most N + q_q < 5 P2'
   logic [PW-1:0] p1_q, p2_q;
+  logic          paper_q;
 
-  wire [PW+2:0]    num     = {1'b0, p2_q, 2'b00};       // N = 4 P2'
-  wire [PW+2:0]    den     = (PW+3)'(k_q) + (PW+3)'(4);
+  wire [PW+2:0]    num     = paper_q ? (PW+3)'(p2_q) : {1'b0, p2_q, 2'b00};  // N = P2' or 4 P2'
+  wire [PW+2:0]    den     = (PW+3)'(k_q) + (paper_q ? (PW+3)'(0) : (PW+3)'(4));
   wire             too_big = prod_q > num;
   wire [PW-1:0]    entry   = q_q > p1_q ? q_q : p1_q;
 
@@ -48,9 +53,10 @@ module sgm_p2_lut #(
       ready_o <= 1'b0;
       p1_q    <= p1_i;
       p2_q    <= p2_i;
+      paper_q <= mode_i;
       k_q     <= 9'd0;
       q_q     <= p2_i;
-      prod_q  <= {1'b0, p2_i, 2'b00};
+      prod_q  <= mode_i ? '0 : {1'b0, p2_i, 2'b00};  // q * divisor at k = 0
     end else if (busy_q) begin
       if (too_big) begin
         q_q    <= q_q - 1'b1;

@@ -9,7 +9,8 @@
 //      read the previous-row memories for the coming pixels
 //   B  the 4 x D sub-PEs; the 0 degree path feeds back in the same cycle
 //      (sub-PEs + D-input minimum = the single-cycle loop of the design)
-//   C  S = sum of the four Lr; min Lr of 45/90/135 degrees, written with Lr
+//   C  S = weighted sum of the four Lr (3,2,3,2, or equal when weights_eq_i);
+//      min Lr of 45/90/135 degrees, written with Lr
 //      to the path memories at the pixel's column
 // Path memories (one per vertical path, MAX_WIDTH words of (D + 1) x LW bits,
 // synchronous read with enable -> block RAM): at the slot where pixel p enters
@@ -21,7 +22,8 @@
 // overwrites it.
 //
 // Parameters: D disparities, CW cost width, LW path-cost width (Cmax + P2'max
-// must fit), PW penalty width, MAX_WIDTH, XW column bits, YW row bits.
+// must fit), PW penalty width, MAX_WIDTH, XW column bits, YW row bits. SW = LW + 4
+// holds the larger of the two weightings (10 x 2^LW).
 // Latency: LATENCY = 3 slots from cost_i to s_o. Throughput: 1 pixel per slot.
 module sgm_path_engine #(
   parameter int D         = 64,
@@ -40,9 +42,11 @@ module sgm_path_engine #(
   // Per-frame configuration (constant while the frame's slots flow).
   input  wire  [XW-1:0]       width_i,
   input  wire  [PW-1:0]       p1_i,
-  // P2 table fill (sgm_p2_lut): start with p1_i / p2_i, ready when filled.
+  input  wire                 weights_eq_i,  // S weights: 0 = 3,2,3,2, 1 = equal (the paper's sum)
+  // P2 table fill (sgm_p2_lut): start with p1_i / p2_i / p2_mode_i, ready when filled.
   input  wire                 lut_start_i,
   input  wire  [PW-1:0]       p2_i,
+  input  wire                 p2_mode_i,     // 0 knee, 1 paper (P2' / dI)
   output logic                lut_ready_o,
   // Slot input: the pixel's costs, position and left-image grays.
   input  wire  [D*CW-1:0]     cost_i,
@@ -75,6 +79,7 @@ module sgm_path_engine #(
     .start_i (lut_start_i),
     .p1_i    (p1_i),
     .p2_i    (p2_i),
+    .mode_i  (p2_mode_i),
     .ready_o (lut_ready_o),
     .en_i    (en_i),
     .idx_i   (dI),
@@ -194,12 +199,16 @@ module sgm_path_engine #(
   end
 
   // S = 3 (L0 + L90) + 2 (L45 + L135) = (a << 1) + a + (b << 1), a = L0 + L90,
-  // b = L45 + L135 (docs/algorithm.md section 5: path weights 3, 2, 3, 2).
+  // b = L45 + L135 (docs/algorithm.md section 5: path weights 3, 2, 3, 2), or
+  // with equal weights S = a + b: the same three-operand adder, (a << 1) zeroed
+  // and b not shifted.
   logic [D*SW-1:0] s_c;
   for (genvar d = 0; d < D; d++) begin : g_sum
-    wire [LW:0] a = {1'b0, lr_c[(0*D+d)*LW +: LW]} + {1'b0, lr_c[(2*D+d)*LW +: LW]};
-    wire [LW:0] b = {1'b0, lr_c[(1*D+d)*LW +: LW]} + {1'b0, lr_c[(3*D+d)*LW +: LW]};
-    assign s_c[d*SW +: SW] = {2'b00, a, 1'b0} + {3'b000, a} + {2'b00, b, 1'b0};
+    wire [LW:0]   a  = {1'b0, lr_c[(0*D+d)*LW +: LW]} + {1'b0, lr_c[(2*D+d)*LW +: LW]};
+    wire [LW:0]   b  = {1'b0, lr_c[(1*D+d)*LW +: LW]} + {1'b0, lr_c[(3*D+d)*LW +: LW]};
+    wire [SW-1:0] a2 = weights_eq_i ? '0 : {2'b00, a, 1'b0};
+    wire [SW-1:0] bw = weights_eq_i ? {3'b000, b} : {2'b00, b, 1'b0};
+    assign s_c[d*SW +: SW] = a2 + {3'b000, a} + bw;
   end
 
   always_ff @(posedge clk_i) begin

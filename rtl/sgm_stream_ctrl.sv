@@ -61,6 +61,8 @@ module sgm_stream_ctrl #(
   input  wire                 cfg_fill_i,
   input  wire                 cfg_snap_i,
   input  wire                 cfg_median_i,
+  input  wire                 cfg_p2_mode_i,
+  input  wire                 cfg_weights_i,
   // The latched configuration, constant while a frame's slots flow.
   output logic [XW-1:0]       width_o,
   output logic [YW-1:0]       height_o,
@@ -73,6 +75,8 @@ module sgm_stream_ctrl #(
   output logic                fill_o,
   output logic                snap_o,
   output logic                median_o,
+  output logic                p2_mode_o,     // 0 knee, 1 paper (P2' / dI)
+  output logic                weights_o,     // 0 = 3,2,3,2, 1 = equal
   output logic                lut_start_o,
   input  wire                 lut_ready_i,
   // Pipeline slots.
@@ -115,22 +119,23 @@ module sgm_stream_ctrl #(
   // starts: one word per input buffer entry, so that a tuser beat keeps its own
   // configuration even when the next frame's tuser enters the buffer behind it
   // (a one-beat malformed frame).
-  localparam int CFGW = XW + YW + 2 * PW + 10;
+  localparam int CFGW = XW + YW + 2 * PW + 12;
   logic [CFGW-1:0] pend_q [0:1];
   always_ff @(posedge clk_i) begin
     if (in_push && s_tuser_i)
       pend_q[in_wr_q] <= {cfg_width_i, cfg_height_i, cfg_p1_i, cfg_p2_i, cfg_mode_i, cfg_subpixel_i,
-                          cfg_lr_en_i, cfg_lr_tol_i, cfg_fill_i, cfg_snap_i, cfg_median_i};
+                          cfg_lr_en_i, cfg_lr_tol_i, cfg_fill_i, cfg_snap_i, cfg_median_i, cfg_p2_mode_i,
+                          cfg_weights_i};
   end
   // The configuration of the head beat (meaningful when it is a tuser beat).
   logic [XW-1:0] pend_width;
   logic [YW-1:0] pend_height;
   logic [PW-1:0] pend_p1, pend_p2;
   logic [1:0]    pend_mode;
-  logic          pend_subpixel, pend_lr_en, pend_fill, pend_snap, pend_median;
+  logic          pend_subpixel, pend_lr_en, pend_fill, pend_snap, pend_median, pend_p2_mode, pend_weights;
   logic [2:0]    pend_lr_tol;
   assign {pend_width, pend_height, pend_p1, pend_p2, pend_mode, pend_subpixel, pend_lr_en,
-          pend_lr_tol, pend_fill, pend_snap, pend_median} = pend_q[in_rd_q];
+          pend_lr_tol, pend_fill, pend_snap, pend_median, pend_p2_mode, pend_weights} = pend_q[in_rd_q];
   // In range: MIN_WIDTH .. MAX_WIDTH columns, 9 .. MAX_HEIGHT rows, P2' >= P1 (the golden
   // model's contract), cost mode 0, 1 or 2 (3 is not a mode).
   wire pend_ok = pend_width >= XW'(MIN_WIDTH) && pend_width <= XW'(MAX_WIDTH) &&
@@ -205,6 +210,8 @@ module sgm_stream_ctrl #(
             fill_o      <= pend_fill;
             snap_o      <= pend_snap;
             median_o    <= pend_median;
+            p2_mode_o   <= pend_p2_mode;
+            weights_o   <= pend_weights;
             lut_start_o <= 1'b1;
             state_q     <= FILL;
           end

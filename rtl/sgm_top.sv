@@ -8,11 +8,15 @@
 //   -> sgm_lr_check -> sgm_hole_fill -> sgm_edge_snap -> sgm_median5x5 -> sgm_stream_ctrl -> m_axis
 //
 // Parameters: D disparities (16, 32, 64, 128), MAX_WIDTH, MAX_HEIGHT (public to
-// the Verilator testbenches, which read the build's limits from the model).
+// the Verilator testbenches, which read the build's limits from the model),
+// CENSUS_H census window height: 5 (9x5, ours, the default) or 9 (9x9, the
+// paper's); every dependent width follows from it (census bits NB 44 / 80,
+// line buffers 4 / 8 lines per image, rank, popcounts, Cmax 88 / 160, costs
+// CBITS 7 / 8 bits, LW, SW, the path-buffer word).
 // Frame constraints: max(D, 16) <= width <= MAX_WIDTH, 9 <= height <= MAX_HEIGHT
 // (frames outside are dropped and flagged in error_o[3], as are P2' < P1 and cfg_mode_i = 3).
 // Throughput: one pixel per clock while a frame streams; after its last input
-// pixel a frame needs about 6 more lines of flush (input stalled) and, at its
+// pixel a frame needs about 6 more lines of flush (8 with the 9x9 census; input stalled) and, at its
 // start, the P2 table fill (about 2 x 256 cycles).
 // Latency: about 6 lines + D + a few tens of pixels from a pixel in to its
 // disparity out.
@@ -20,13 +24,16 @@ module sgm_top #(
   parameter int D          /*verilator public*/ = 64,
   parameter int MAX_WIDTH  /*verilator public*/ = 1280,
   parameter int MAX_HEIGHT /*verilator public*/ = 1024,
+  parameter int CENSUS_H   /*verilator public*/ = 5,
   localparam int XW        = $clog2(MAX_WIDTH + 1),
   localparam int YW        = $clog2(MAX_HEIGHT + 16),
   localparam int LD        = $clog2(D),
   localparam int DW        = LD + 4,
-  localparam int CBITS     = 7,    // matching cost: Cmax = 88 (unified)
-  localparam int LW        = 9,    // path cost: Cmax + P2'max = 88 + 255 < 512
-  localparam int SW        = LW + 4  // S = 3 L0 + 2 L45 + 3 L90 + 2 L135 < 10 x 512
+  localparam int NB        = 9 * CENSUS_H - 1,            // census bits: 44 (9x5), 80 (9x9)
+  localparam int RKW       = $clog2(NB + 1),              // rank 0 .. NB
+  localparam int CBITS     = $clog2(2 * NB + 1),          // matching cost: Cmax = 2 NB (unified)
+  localparam int LW        = $clog2(2 * NB + 255 + 1),    // path cost: Cmax + P2'max (343 / 415 < 512)
+  localparam int SW        = LW + 4  // S = 3 L0 + 2 L45 + 3 L90 + 2 L135 < 10 x 2^LW (equal: 4 x)
 ) (
   input  wire          clk_i,
   input  wire          rst_ni,
@@ -54,6 +61,8 @@ module sgm_top #(
   input  wire          cfg_fill_i,
   input  wire          cfg_snap_i,
   input  wire          cfg_median_i,
+  input  wire          cfg_p2_mode_i,  // P2 adaptation: 0 knee 4 P2' / (dI + 4), 1 paper P2' / dI
+  input  wire          cfg_weights_i,  // path weights of S: 0 = 3,2,3,2, 1 = equal (the paper's sum)
   // Status.
   output logic         busy_o,
   output logic         frame_done_o,
@@ -72,7 +81,7 @@ module sgm_top #(
   logic [YW-1:0] row0, height;
   logic [7:0]    p1, p2;
   logic [1:0]    mode;
-  logic          subpixel, lr_en, fill_en, snap_en, median_en;
+  logic          subpixel, lr_en, fill_en, snap_en, median_en, p2_mode, weights_eq;
   logic [2:0]    lr_tol;
   logic          lut_start, lut_ready;
   logic          res_valid, res_ok;
@@ -111,6 +120,8 @@ module sgm_top #(
     .cfg_fill_i    (cfg_fill_i),
     .cfg_snap_i    (cfg_snap_i),
     .cfg_median_i  (cfg_median_i),
+    .cfg_p2_mode_i (cfg_p2_mode_i),
+    .cfg_weights_i (cfg_weights_i),
     .width_o       (width),
     .height_o      (height),
     .p1_o          (p1),
@@ -122,6 +133,8 @@ module sgm_top #(
     .fill_o        (fill_en),
     .snap_o        (snap_en),
     .median_o      (median_en),
+    .p2_mode_o     (p2_mode),
+    .weights_o     (weights_eq),
     .lut_start_o   (lut_start),
     .lut_ready_i   (lut_ready),
     .en_o          (en),
@@ -141,8 +154,8 @@ module sgm_top #(
   assign frame_height_o = height;
 
   // ------------------------------------------------------------ census
-  logic [43:0]   census_l, census_r;
-  logic [5:0]    rank_l, rank_r;
+  logic [NB-1:0]  census_l, census_r;
+  logic [RKW-1:0] rank_l, rank_r;
   logic [7:0]    centre;
   logic [31:0]   nbr;
   logic [XW-1:0] col1;
@@ -154,7 +167,7 @@ module sgm_top #(
   logic [YW-1:0] unused_row_r;
   logic          unused_valid_r;
 
-  sgm_census_unit #(.MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(YW)) u_census_l (
+  sgm_census_unit #(.CENSUS_H(CENSUS_H), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(YW)) u_census_l (
     .clk_i    (clk_i),
     .rst_ni   (rst_ni),
     .en_i     (en),
@@ -172,7 +185,7 @@ module sgm_top #(
     .valid_o  (valid1)
   );
 
-  sgm_census_unit #(.MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(YW)) u_census_r (
+  sgm_census_unit #(.CENSUS_H(CENSUS_H), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(YW)) u_census_r (
     .clk_i    (clk_i),
     .rst_ni   (rst_ni),
     .en_i     (en),
@@ -196,7 +209,7 @@ module sgm_top #(
   logic [XW-1:0]      col2;
   logic               valid2;
 
-  sgm_cost_volume #(.D(D), .CW(XW)) u_cost (
+  sgm_cost_volume #(.D(D), .CW(XW), .NB(NB)) u_cost (
     .clk_i     (clk_i),
     .rst_ni    (rst_ni),
     .en_i      (en),
@@ -237,8 +250,10 @@ module sgm_top #(
     .en_i        (en),
     .width_i     (width),
     .p1_i        (p1),
+    .weights_eq_i(weights_eq),
     .lut_start_i (lut_start),
     .p2_i        (p2),
+    .p2_mode_i   (p2_mode),
     .lut_ready_o (lut_ready),
     .cost_i      (cost),
     .col_i       (col2),

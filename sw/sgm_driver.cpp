@@ -14,7 +14,8 @@ uint32_t Driver::encodePenalty(const FrameConfig& f) {
 uint32_t Driver::encodeConfig(const FrameConfig& f) {
   return (f.mode << SGM_CONFIG_MODE_SHIFT & SGM_CONFIG_MODE_MASK) | (f.subpixel ? SGM_CONFIG_SUBPIXEL : 0u) |
          (f.lrCheck ? SGM_CONFIG_LR_ENABLE : 0u) | (f.lrTolerance << SGM_CONFIG_LR_TOL_SHIFT & SGM_CONFIG_LR_TOL_MASK) |
-         (f.fill ? SGM_CONFIG_FILL : 0u) | (f.snap ? SGM_CONFIG_SNAP : 0u) | (f.median ? SGM_CONFIG_MEDIAN : 0u);
+         (f.fill ? SGM_CONFIG_FILL : 0u) | (f.snap ? SGM_CONFIG_SNAP : 0u) | (f.median ? SGM_CONFIG_MEDIAN : 0u) |
+         (f.p2Paper ? SGM_CONFIG_P2_PAPER : 0u) | (f.weightsEqual ? SGM_CONFIG_WEIGHTS_EQUAL : 0u);
 }
 
 bool Driver::identify(Identity* id) {
@@ -54,6 +55,8 @@ FrameConfig Driver::readConfig() {
   f.fill = config & SGM_CONFIG_FILL;
   f.snap = config & SGM_CONFIG_SNAP;
   f.median = config & SGM_CONFIG_MEDIAN;
+  f.p2Paper = config & SGM_CONFIG_P2_PAPER;
+  f.weightsEqual = config & SGM_CONFIG_WEIGHTS_EQUAL;
   return f;
 }
 

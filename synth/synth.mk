@@ -2,9 +2,11 @@
 # paper's Table III (included by the main Makefile; synth/README.md explains
 # the flow, the outputs and the figures).
 #
-#   make synth [D=64] [MAX_WIDTH=1280]   xc7, xc6s, generic and iCE40 synthesis of
-#                                        that configuration, the routed iCE40 loop
-#                                        harness, build/synth/summary.{json,md}
+#   make synth [D=64] [MAX_WIDTH=1280] [CENSUS=9x5|9x9]
+#                                        xc7, xc6s, generic and iCE40 synthesis of
+#                                        that configuration (CENSUS=9x9: the paper's
+#                                        census window, sgm_top's CENSUS_H = 9), the
+#                                        routed iCE40 loop harness, build/synth/summary.{json,md}
 #   make synth-ci                        D=16, MAX_WIDTH=128: xc7 and the routed iCE40 loop
 #                                        harness (ICE40_LOOP_D=16), then checks the summary
 #                                        and that the path buffers are block RAM
@@ -37,7 +39,9 @@ ICE40_FREQ        ?= 100
 ICE40_SEED        ?= 1
 
 SYNTH_DIR    := $(BUILD)/synth
-SYNTH_CFG     = d$(D)-w$(MAX_WIDTH)
+SYNTH_CENSUS ?= $(if $(CENSUS),$(CENSUS),9x5)
+SYNTH_CENSUS_H = $(if $(filter 9x9,$(SYNTH_CENSUS)),9,$(if $(filter 9x5,$(SYNTH_CENSUS)),5,$(error CENSUS=$(SYNTH_CENSUS): expected 9x5 or 9x9)))
+SYNTH_CFG     = d$(D)-w$(MAX_WIDTH)$(if $(filter 9,$(SYNTH_CENSUS_H)),-c9x9)
 SYNTH_OUT     = $(SYNTH_DIR)/$(SYNTH_CFG)
 SYNTH_LOOP    = $(SYNTH_DIR)/ice40-loop-d$(ICE40_LOOP_D)
 SYNTH_LOCK    = $(SYNTH_DIR)/.lock
@@ -48,7 +52,7 @@ SYNTH_COMMON := $(RTL_SRC) synth/common.tcl
         synth-xc7 synth-xc6s synth-generic synth-ice40 synth-ice40-loop
 
 synth-help:
-	@echo "make synth [D=64 MAX_WIDTH=1280]  xc7 / xc6s / generic / iCE40 synthesis + routed iCE40 loop -> build/synth/summary.{json,md}"
+	@echo "make synth [D=64 MAX_WIDTH=1280] [CENSUS=9x9]  xc7 / xc6s / generic / iCE40 synthesis + routed iCE40 loop -> build/synth/summary.{json,md}"
 	@echo "make synth-ci                     D=$(SYNTH_CI_D) MAX_WIDTH=$(SYNTH_CI_MAX_WIDTH), xc7 + the routed iCE40 loop harness; fails unless the path buffers are block RAM"
 	@echo "make synth-xc7 | synth-xc6s | synth-generic | synth-ice40 | synth-ice40-loop [ICE40_LOOP_D=16]"
 	@echo "make synth-flat                   xc7, whole core flattened in one Yosys run (slow for D = 64)"
@@ -56,7 +60,7 @@ synth-help:
 
 synth: $(foreach t,$(SYNTH_TARGETS),$(SYNTH_OUT)/$(t)/done) $(SYNTH_LOOP)/done $(SYNTH_SUMMARY) | check-tools
 	@$(SYNTH_SUMMARY) $(SYNTH_DIR)
-	@awk '/^## D = $(D), MAX_WIDTH = $(MAX_WIDTH) /{f=1} f && /^\*\*Path buffers/{exit} f' $(SYNTH_DIR)/summary.md
+	@awk '/^## D = $(D), MAX_WIDTH = $(MAX_WIDTH), census $(SYNTH_CENSUS) /{f=1} f && /^\*\*Path buffers/{exit} f' $(SYNTH_DIR)/summary.md
 
 synth-ci: $(SYNTH_SUMMARY) | check-tools
 	@$(MAKE) --no-print-directory D=$(SYNTH_CI_D) MAX_WIDTH=$(SYNTH_CI_MAX_WIDTH) synth-xc7
@@ -87,15 +91,15 @@ $(SYNTH_SUMMARY): synth/synth_summary.cpp | check-tools
 # configuration in the environment, then write $(@D)/meta.txt and the stamp.
 define synth_yosys
 	@rm -rf $(@D) && mkdir -p $(@D)
-	@echo "synth: $(1), D=$(D) MAX_WIDTH=$(MAX_WIDTH) (log: $(@D)/yosys.log)"
+	@echo "synth: $(1), D=$(D) MAX_WIDTH=$(MAX_WIDTH) census $(SYNTH_CENSUS) (log: $(@D)/yosys.log)"
 	@start=$$(date +%s); \
 	 commit=$$(git log -1 --format=%h -- rtl 2>/dev/null)$$(git status --porcelain -- rtl 2>/dev/null | grep -q . && echo -dirty); \
-	 SYNTH_RTL=rtl SYNTH_D=$(D) SYNTH_MAX_WIDTH=$(MAX_WIDTH) SYNTH_MAX_HEIGHT=$(SYNTH_MAX_HEIGHT) SYNTH_OUT=$(@D) $(3) \
+	 SYNTH_RTL=rtl SYNTH_D=$(D) SYNTH_MAX_WIDTH=$(MAX_WIDTH) SYNTH_MAX_HEIGHT=$(SYNTH_MAX_HEIGHT) SYNTH_CENSUS_H=$(SYNTH_CENSUS_H) SYNTH_OUT=$(@D) $(3) \
 	   flock $(SYNTH_LOCK) timeout $(SYNTH_TIMEOUT) yosys -q -l $(@D)/yosys.log -c $(2) > $(@D)/yosys.out 2>&1; rc=$$?; \
 	 if [ $$rc != 0 ]; then \
 	   if [ $$rc = 124 ]; then echo "synth: $(1): Yosys timed out after $(SYNTH_TIMEOUT) s (SYNTH_TIMEOUT)"; \
 	   else echo "synth: $(1): Yosys failed (exit $$rc):"; grep -E '^ERROR' $(@D)/yosys.log | tail -5; fi; exit 1; fi; \
-	 { echo "target=$(1)"; echo "d=$(D)"; echo "max_width=$(MAX_WIDTH)"; echo "max_height=$(SYNTH_MAX_HEIGHT)"; \
+	 { echo "target=$(1)"; echo "d=$(D)"; echo "max_width=$(MAX_WIDTH)"; echo "max_height=$(SYNTH_MAX_HEIGHT)"; echo "census=$(SYNTH_CENSUS)"; \
 	   echo "yosys=$$(yosys -V)"; echo "rtl_commit=$$commit"; \
 	   echo "date=$$(date -u +%Y-%m-%dT%H:%M:%SZ)"; echo "seconds=$$(( $$(date +%s) - start ))"; } > $(@D)/meta.txt; \
 	 echo "synth: $(1) done in $$(( $$(date +%s) - start )) s"

@@ -253,6 +253,7 @@ struct Target {
   Tech tech = Tech::Generic;
   std::map<std::string, std::string> meta;
   long d = 0, w = 0, h = 0;
+  std::string census = "9x5";  // census window of the core (meta "census"; runs before it: 9x5)
   std::vector<Stage> stages;
   std::vector<Memory> memories;
   Counts total;
@@ -410,6 +411,7 @@ bool loadTarget(const std::string &root, const std::string &config, const std::s
   t.d = toLong(metaGet(t.meta, "d"));
   t.w = toLong(metaGet(t.meta, "max_width"));
   t.h = toLong(metaGet(t.meta, "max_height"));
+  if (!metaGet(t.meta, "census").empty()) t.census = metaGet(t.meta, "census");
   t.seconds = toDouble(metaGet(t.meta, "seconds"));
   t.checkProblems = parseCheck(t.dir + "/check.txt");
 
@@ -535,6 +537,7 @@ void writeJson(const std::string &path, const std::vector<Target> &ts, const std
     o << I << "\"target\": " << jsonStr(t.target) << ",\n";
     o << I << "\"config\": " << jsonStr(t.config) << ",\n";
     o << I << "\"d\": " << t.d << ",\n" << I << "\"max_width\": " << t.w << ",\n" << I << "\"max_height\": " << t.h << ",\n";
+    o << I << "\"census\": " << jsonStr(t.census) << ",\n";
     o << I << "\"pixels_per_clock\": 1,\n";
     o << countsJson(t.total, t.tech, I) << ",\n";
     if (t.tech == Tech::Xilinx) {
@@ -647,8 +650,8 @@ void writeMarkdown(const std::string &path, const std::vector<Target> &ts, const
   std::vector<std::string> cfgs(configs.begin(), configs.end());
   auto cfgKey = [&](const std::string &c) {
     for (auto &t : ts)
-      if (t.config == c) return std::make_pair(t.d, t.w);
-    return std::make_pair(0L, 0L);
+      if (t.config == c) return std::make_tuple(t.d, t.w, t.census);
+    return std::make_tuple(0L, 0L, std::string());
   };
   std::sort(cfgs.begin(), cfgs.end(), [&](auto &a, auto &b) { return cfgKey(a) > cfgKey(b); });
 
@@ -663,9 +666,9 @@ void writeMarkdown(const std::string &path, const std::vector<Target> &ts, const
         if (t.config == cfg && t.target == want) cols.push_back(&t);
     if (cols.empty()) continue;
     const Target &f = *cols[0];
-    o << "## D = " << f.d << ", MAX_WIDTH = " << f.w << " (MAX_HEIGHT = " << f.h << ")\n\n";
+    o << "## D = " << f.d << ", MAX_WIDTH = " << f.w << ", census " << f.census << " (MAX_HEIGHT = " << f.h << ")\n\n";
     o << "| | paper, Table III (xc6slx150) |";
-    for (auto *c : cols) o << " " << c->target << " (this core) |";
+    for (auto *c : cols) o << " " << c->target << " (this core, census " << c->census << ") |";
     o << "\n| --- | --- |";
     for (size_t i = 0; i < cols.size(); ++i) o << " --- |";
     o << "\n";
@@ -837,7 +840,7 @@ int main(int argc, char **argv) {
   }
   std::vector<Target> targets;
   std::vector<Loop> loops;
-  static const std::regex cfgRe(R"(d[0-9]+-w[0-9]+)");
+  static const std::regex cfgRe(R"(d[0-9]+-w[0-9]+(-c9x9)?)");
   static const std::regex loopRe(R"(ice40-loop-d[0-9]+)");
   for (auto &cfg : listDir(root)) {
     std::string p = root + "/" + cfg;

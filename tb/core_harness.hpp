@@ -252,6 +252,8 @@ class CoreHarness {
     top_->cfg_fill_i = c.fill;
     top_->cfg_snap_i = c.snap;
     top_->cfg_median_i = c.median;
+    top_->cfg_p2_mode_i = c.p2Paper;
+    top_->cfg_weights_i = c.weightsEqual;
   }
 
   DisparityMap decode(size_t first, int w, int h) {

@@ -26,6 +26,8 @@ struct HardwareConfig {
   bool subpixel = false, lrEnable = false;
   int lrTolerance = 0;
   bool fill = false, snap = false, median = false;
+  bool p2Paper = false;       // cfg_p2_mode_i: 0 knee, 1 paper (P2'/dI)
+  bool weightsEqual = false;  // cfg_weights_i: 0 = 3,2,3,2, 1 = equal
 };
 
 inline HardwareConfig hardwareConfig(const Params& p, int width, int height) {
@@ -33,6 +35,7 @@ inline HardwareConfig hardwareConfig(const Params& p, int width, int height) {
   c.width = width, c.height = height, c.p1 = p.p1, c.p2 = p.p2, c.mode = hardwareModeCode(p.mode);
   c.subpixel = p.subpixel, c.lrEnable = p.lrTolerance >= 0, c.lrTolerance = std::max(p.lrTolerance, 0);
   c.fill = p.fill, c.snap = p.snap, c.median = p.median;
+  c.p2Paper = p.p2Mode == P2Mode::kPaper, c.weightsEqual = p.weights == PathWeighting::kEqual;
   return c;
 }
 

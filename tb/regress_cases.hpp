@@ -74,13 +74,18 @@ Params drawParams(Rng& rng) {
   p.fill = rng.chance(0.5);
   p.snap = rng.chance(0.5);
   p.median = rng.chance(0.5);
+  // The run-time P2 form and path weights; the census window is the build's.
+  p.p2Mode = rng.chance(0.5) ? P2Mode::kPaper : P2Mode::kKnee;
+  p.weights = rng.chance(0.5) ? PathWeighting::kEqual : PathWeighting::k3232;
+  p.census = Vsgm_top_sgm_top::CENSUS_H == 9 ? CensusWindow::k9x9 : CensusWindow::k9x5;
   return p;
 }
 
 std::string paramText(const Params& p) {
   std::ostringstream t;
   t << costModeName(p.mode) << " P1=" << p.p1 << " P2'=" << p.p2 << " sub=" << p.subpixel << " lr=" << p.lrTolerance
-    << " fill=" << p.fill << " snap=" << p.snap << " median=" << p.median;
+    << " fill=" << p.fill << " snap=" << p.snap << " median=" << p.median << " census=" << censusWindowName(p.census)
+    << " p2-mode=" << p2ModeName(p.p2Mode) << " weights=" << pathWeightingName(p.weights);
   return t.str();
 }
 

@@ -70,12 +70,12 @@ TEST(CensusCost, SoftwareModesThrow) {
 TEST(MaxCost, DocumentedValues) {
   // 9x5 census: 44 bits, so rank differences and Hamming distances are 0..44;
   // unified is their sum (0..88); sad+rt is rescaled to the rank scale (0..44).
-  EXPECT_EQ(sgm::maxCost(CostMode::kRt), 44);
-  EXPECT_EQ(sgm::maxCost(CostMode::kRsad), 44);
-  EXPECT_EQ(sgm::maxCost(CostMode::kUnified), 88);
-  EXPECT_EQ(sgm::maxCost(CostMode::kSad), 255);
-  EXPECT_EQ(sgm::maxCost(CostMode::kBt), 255);
-  EXPECT_EQ(sgm::maxCost(CostMode::kSadRt), 44);
+  EXPECT_EQ(sgm::maxCost(CostMode::kRt, sgm::CensusWindow::k9x5), 44);
+  EXPECT_EQ(sgm::maxCost(CostMode::kRsad, sgm::CensusWindow::k9x5), 44);
+  EXPECT_EQ(sgm::maxCost(CostMode::kUnified, sgm::CensusWindow::k9x5), 88);
+  EXPECT_EQ(sgm::maxCost(CostMode::kSad, sgm::CensusWindow::k9x5), 255);
+  EXPECT_EQ(sgm::maxCost(CostMode::kBt, sgm::CensusWindow::k9x5), 255);
+  EXPECT_EQ(sgm::maxCost(CostMode::kSadRt, sgm::CensusWindow::k9x5), 44);
 }
 
 TEST(ComputeCost, MatchOutsideRightImageCostsMax) {

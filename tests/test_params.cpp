@@ -121,7 +121,7 @@ TEST(ParamsTest, PenaltyLimitKeepsTheWeightedSumInSixteenBits) {
   EXPECT_EQ(sgm::kPathWeightSum, 10);
   EXPECT_EQ(sgm::kMaxPenalty, 6000);
   for (CostMode m : sgm::allCostModes())
-    EXPECT_LT(sgm::kPathWeightSum * (sgm::maxCost(m) + sgm::kMaxPenalty), 65536) << sgm::costModeName(m);
+    EXPECT_LT(sgm::kPathWeightSum * (sgm::maxCost(m, sgm::CensusWindow::k9x9) + sgm::kMaxPenalty), 65536) << sgm::costModeName(m);
 }
 
 TEST(CostModes, NamesRoundTripAndUnknownThrows) {

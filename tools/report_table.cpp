@@ -32,6 +32,26 @@ const PaperRow kPaperTable1[] = {
     {CostMode::kUnified, "RSAD+RT", {6.6, 11.1, 3.2, 3.8}},
 };
 
+// Penalties of the Table I rows on the paper's window (9x9, P2' / dI, equal
+// weights, Table I configuration), swept like the defaults: P1 {8, 20, 50, 100} x
+// P2' {80, 160, 255} (+ 500 for the software modes), lowest mean nonocc over the
+// four scenes (docs/algorithm.md section 11).
+struct PaperWindowPenalties {
+  CostMode mode;
+  int p1, p2;
+};
+const PaperWindowPenalties kPaperWindowPenalties[] = {
+    // Measured 2026-11-24 (sgm-eval run --preset paper --mode M --p1 N --p2 N --lr off --fill off
+    // --snap off); mean nonocc of the four scenes. The hardware modes' optimum is at the RTL's
+    // P2' limit (255), sad+rt's and bt's at the grid's 500.
+    {CostMode::kSad, 8, 255},    // 7.40
+    {CostMode::kBt, 20, 500},    // 7.80
+    {CostMode::kRt, 50, 255},    // 4.87
+    {CostMode::kRsad, 20, 255},  // 3.92
+    {CostMode::kSadRt, 20, 500}, // 4.79
+    {CostMode::kUnified, 50, 255},  // 4.20
+};
+
 const char* costLabel(CostMode mode) {
   for (const PaperRow& row : kPaperTable1)
     if (row.mode == mode) return row.label;
@@ -161,7 +181,8 @@ std::string paramsRow(const TableReport& r, const Method& m) {
            ", uniqueness 10, speckle 100/32, disp12MaxDiff 1, " + std::to_string(cn) + "-channel input |\n";
   }
   const Params& p = m.params;
-  return row + "mode " + costModeName(p.mode) + ", D=" + std::to_string(p.disparities) + ", P1=" +
+  return row + "mode " + costModeName(p.mode) + ", census " + censusWindowName(p.census) + ", P2 " +
+         p2ModeName(p.p2Mode) + ", weights " + pathWeightingName(p.weights) + ", D=" + std::to_string(p.disparities) + ", P1=" +
          std::to_string(p.p1) + ", P2'=" + std::to_string(p.p2) + ", sub-pixel " + onOff(p.subpixel) +
          ", LR check " + (p.lrTolerance < 0 ? std::string("off") : "tol " + std::to_string(p.lrTolerance)) +
          ", fill " + onOff(p.fill) + ", snap " + onOff(p.snap) + ", median " + onOff(p.median) + " |\n";
@@ -169,12 +190,17 @@ std::string paramsRow(const TableReport& r, const Method& m) {
 
 std::string notesMarkdown(const TableReport& r) {
   std::string md =
-      "- **Table I configuration** (rows `sad` .. `unified`): the golden model with `defaultParams(mode)` but "
+      "- **Table I on the paper's window** (rows `paper-*`): the paper's 9x9 census, `P2r = max(P1, P2' / dI)` and "
+      "the plain sum of the four paths (equal weights), in the Table I configuration below, with P1 / P2' swept per "
+      "cost on that window. These are the rows to compare with the paper's figures.\n"
+      "- **Table I configuration, our window** (rows `sad` .. `unified`): the golden model with `defaultParams(mode)` "
+      "(9x5 census, P2 knee, weights 3,2,3,2) but "
       "the left-right check, hole filling and edge snapping off (`lrTolerance = -1`, `fill = false`, `snap = false`); sub-pixel refinement and "
       "the 5x5 median stay as in `defaultParams` (on). The paper's figure is in parentheses.\n"
       "- **Full pipeline** (rows `full-*`): `defaultParams(mode)` as is (LR check, hole filling, edge snapping, sub-pixel, "
       "median) for each cost mode the hardware implements; `" + r.hardwareDefault +
-      "` is the hardware default (`Params{}.mode`).\n"
+      "` is the hardware default (`Params{}.mode`); `full-paper` is the `paper` preset (9x9, `unified`, P2' / dI, "
+      "equal weights, LR check, sub-pixel, median, no filling, no snapping).\n"
       "- **OpenCV** rows: `cv::StereoSGBM` (settings of OpenCV's stereo_match sample) on the colour images, "
       "same process, " + std::to_string(opencvDisparities(r.disparities)) + " disparities.\n"
       "- Error = % of non-occluded pixels (`nonocc` mask, known ground truth) whose disparity is invalid or "
@@ -207,6 +233,9 @@ void writeParams(JsonWriter& j, const TableReport& r, const Method& m) {
   } else {
     const Params& p = m.params;
     j.key("mode").string(costModeName(p.mode));
+    j.key("census").string(censusWindowName(p.census));
+    j.key("p2_mode").string(p2ModeName(p.p2Mode));
+    j.key("weights").string(pathWeightingName(p.weights));
     j.key("p1").integer(p.p1);
     j.key("p2").integer(p.p2);
     j.key("subpixel").boolean(p.subpixel);
@@ -284,8 +313,28 @@ Params table1Params(CostMode mode, int disparities) {
 
 int opencvDisparities(int disparities) { return (disparities + 15) / 16 * 16; }
 
+Params paperTable1Params(CostMode mode, int disparities) {
+  Params p = presetParams("paper");
+  p.mode = mode;
+  for (const PaperWindowPenalties& row : kPaperWindowPenalties)
+    if (row.mode == mode) p.p1 = row.p1, p.p2 = row.p2;
+  p.disparities = disparities;
+  p.lrTolerance = -1;
+  p.fill = false;
+  p.snap = false;
+  p.validate();
+  return p;
+}
+
 std::vector<Method> tableMethods(int disparities) {
   std::vector<Method> methods;
+  // The paper's window first: 9x9 census, P2' / dI, equal path weights.
+  for (const PaperRow& row : kPaperTable1) {
+    Method m = goldenMethod(std::string("paper-") + costModeName(row.mode), std::string(row.label) + ", 9x9",
+                            MethodKind::kTable1, paperTable1Params(row.mode, disparities));
+    m.paper = paperFigures(row);
+    methods.push_back(m);
+  }
   for (const PaperRow& row : kPaperTable1) {
     Method m = goldenMethod(costModeName(row.mode), row.label, MethodKind::kTable1,
                             table1Params(row.mode, disparities));
@@ -302,6 +351,9 @@ std::vector<Method> tableMethods(int disparities) {
     m.hardwareDefault = mode == Params{}.mode;
     methods.push_back(m);
   }
+  Params paper = presetParams("paper");
+  paper.disparities = disparities;
+  methods.push_back(goldenMethod("full-paper", "Full pipeline, paper preset (9x9, RSAD+RT)", MethodKind::kFull, paper));
   methods.push_back(opencvMethod("opencv-sgbm", "OpenCV SGBM (MODE_SGBM)", cv::StereoSGBM::MODE_SGBM, disparities));
   methods.push_back(opencvMethod("opencv-hh", "OpenCV SGBM (MODE_HH)", cv::StereoSGBM::MODE_HH, disparities));
   return methods;

@@ -36,11 +36,17 @@ const std::vector<std::string>& paperScenes();
 // filling off; sub-pixel refinement and the median stay as in defaultParams.
 Params table1Params(CostMode mode, int disparities);
 
+// Table I on the paper's window: presetParams("paper") (9x9, P2' / dI, equal
+// weights) with the mode, its penalties swept on that window, and the LR check,
+// hole filling and edge snapping off.
+Params paperTable1Params(CostMode mode, int disparities);
+
 // OpenCV needs a multiple of 16 disparities: D rounded up.
 int opencvDisparities(int disparities);
 
-// Rows of the table in order: the six Table I costs, the full pipeline for each
-// hardware cost mode, OpenCV MODE_SGBM and MODE_HH.
+// Rows of the table in order: the six Table I costs on the paper's window
+// ("paper-*"), the six on ours, the full pipeline for each hardware cost mode
+// and the paper preset ("full-paper"), OpenCV MODE_SGBM and MODE_HH.
 std::vector<Method> tableMethods(int disparities);
 
 // Disparity of a method on a scene: CV_32F px, -1 = invalid. OpenCV runs on the colour pair.

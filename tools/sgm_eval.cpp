@@ -28,7 +28,8 @@ const char* kUsage =
     "       sgm-eval bench --data DIR [--out DIR] [--scene cones] [--repeats 5]\n"
     "                                                      golden vs OpenCV SGBM time -> bench.json\n"
     "pipeline options: --d D --p1 N --p2 N --mode M --subpixel on|off --lr TOL|off --fill on|off\n"
-    "                  --snap on|off --median on|off\n"
+    "                  --snap on|off --median on|off --census 9x5|9x9 --p2-mode knee|paper\n"
+    "                  --weights 3232|equal --preset default|paper (later options override the preset)\n"
     "--delta X sets the error threshold (default 1); --out defaults to build/eval;\n"
     "--scenes a,b (run, table) keeps only those scenes of --data.\n";
 

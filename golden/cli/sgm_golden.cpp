@@ -16,6 +16,8 @@ const char* kUsage =
     "usage: sgm-golden LEFT RIGHT [--out PREFIX] [--d D] [--p1 N] [--p2 N]\n"
     "                  [--mode rt|rsad|unified|sad|bt|sad+rt] [--subpixel on|off]\n"
     "                  [--lr TOL|off] [--fill on|off] [--snap on|off] [--median on|off]\n"
+    "                  [--census 9x5|9x9] [--p2-mode knee|paper] [--weights 3232|equal]\n"
+    "                  [--preset default|paper]  (options after a preset override it)\n"
     "Writes PREFIX_disp16.png (disparity x 256, 0 = invalid), PREFIX_disp8.png\n"
     "(the paper's [0, 255] scaling) and PREFIX_color.png. PREFIX defaults to 'disparity'.\n";
 
@@ -49,8 +51,9 @@ int main(int argc, char** argv) {
                     {prefix + "_disp8.png", sgm::encodeDisparity8(map, params.disparities)},
                     {prefix + "_color.png", sgm::encodeDisparityColor(map, params.disparities)}});
     const double density = cv::countNonZero(map.valid) * 100.0 / double(map.valid.total());
-    std::printf("sgm-golden: %dx%d D=%d mode=%s: %.1f ms, density %.2f%%, wrote %s_{disp16,disp8,color}.png\n",
-                left.cols, left.rows, params.disparities, sgm::costModeName(params.mode), ms, density,
+    std::printf("sgm-golden: %dx%d D=%d mode=%s census=%s preset=%s: %.1f ms, density %.2f%%, wrote %s_{disp16,disp8,color}.png\n",
+                left.cols, left.rows, params.disparities, sgm::costModeName(params.mode),
+                sgm::censusWindowName(params.census), sgm::presetName(params).c_str(), ms, density,
                 prefix.c_str());
     return 0;
   } catch (const std::exception& e) {

@@ -10,9 +10,12 @@
 
 namespace sgm {
 
-P2Table makeP2Table(int p1, int p2) {
+P2Table makeP2Table(int p1, int p2, P2Mode mode) {
   P2Table table{};
-  for (int k = 0; k < 256; ++k) table[k] = uint16_t(std::max(p1, kP2Knee * p2 / (k + kP2Knee)));
+  for (int k = 0; k < 256; ++k) {
+    const int adapted = mode == P2Mode::kPaper ? (k == 0 ? p2 : p2 / k) : kP2Knee * p2 / (k + kP2Knee);
+    table[k] = uint16_t(std::max(p1, adapted));
+  }
   return table;
 }
 
@@ -98,9 +101,10 @@ void waitUntil(const std::atomic<int>& counter, int value) {
 
 }  // namespace
 
-void aggregateRows(int width, int height, int nd, const cv::Mat& gray, int p1, int p2, const CostRowFn& costRow,
-                   const SumRowFn& sink) {
-  const P2Table table = makeP2Table(p1, p2);
+void aggregateRows(int width, int height, int nd, const cv::Mat& gray, int p1, int p2, P2Mode p2Mode,
+                   PathWeighting weights, const CostRowFn& costRow, const SumRowFn& sink) {
+  const P2Table table = makeP2Table(p1, p2, p2Mode);
+  const int* w = pathWeights(weights);
   std::vector<PathState> paths;
   for (int i = 0; i < kPathCount; ++i) paths.emplace_back(width, nd, gray, i, p1, table);
   // Two workers split every row at column `split`: the left worker computes
@@ -127,8 +131,7 @@ void aggregateRows(int width, int height, int nd, const cv::Mat& gray, int p1, i
       const uint16_t* l3 = paths[3].step(x, y, c);
       uint16_t* s = sum + size_t(x) * nd;
       for (int d = 0; d < nd; ++d)
-        s[d] = uint16_t(kPathWeights[0] * l0[d] + kPathWeights[1] * l1[d] + kPathWeights[2] * l2[d] +
-                        kPathWeights[3] * l3[d]);
+        s[d] = uint16_t(w[0] * l0[d] + w[1] * l1[d] + w[2] * l2[d] + w[3] * l3[d]);
       if (x == x0) afterFirst();
     }
   };
@@ -153,8 +156,8 @@ void aggregateRows(int width, int height, int nd, const cv::Mat& gray, int p1, i
                    }});
 }
 
-PathVolume pathCost(const CostVolume& cost, const cv::Mat& grayLeft, int pathIndex, int p1, int p2) {
-  const P2Table table = makeP2Table(p1, p2);
+PathVolume pathCost(const CostVolume& cost, const cv::Mat& grayLeft, int pathIndex, int p1, int p2, P2Mode p2Mode) {
+  const P2Table table = makeP2Table(p1, p2, p2Mode);
   PathState path(cost.width, cost.depth, grayLeft, pathIndex, p1, table);
   PathVolume lr(cost.width, cost.height, cost.depth);
   for (int y = 0; y < cost.height; ++y)
@@ -162,11 +165,12 @@ PathVolume pathCost(const CostVolume& cost, const cv::Mat& grayLeft, int pathInd
   return lr;
 }
 
-PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1, int p2) {
+PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1, int p2, P2Mode p2Mode,
+                         PathWeighting weights) {
   PathVolume sum(cost.width, cost.height, cost.depth);
   const size_t rowSize = size_t(cost.width) * cost.depth;
   aggregateRows(
-      cost.width, cost.height, cost.depth, grayLeft, p1, p2,
+      cost.width, cost.height, cost.depth, grayLeft, p1, p2, p2Mode, weights,
       [&](int y, int x0, int x1, uint8_t* row) {
         std::copy(cost.at(x0, y), cost.at(x0, y) + size_t(x1 - x0) * cost.depth, row + size_t(x0) * cost.depth);
       },

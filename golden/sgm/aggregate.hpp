@@ -13,9 +13,10 @@
 
 namespace sgm {
 
-// P2r indexed by k = |I(p) - I(p - r)|: max(P1, floor(4 P2' / (k + 4))) (kP2Knee = 4).
+// P2r indexed by k = |I(p) - I(p - r)|: knee max(P1, floor(4 P2' / (k + 4))) (kP2Knee = 4),
+// paper max(P1, floor(P2' / k)) with P2' at k = 0.
 using P2Table = std::array<uint16_t, 256>;
-P2Table makeP2Table(int p1, int p2);
+P2Table makeP2Table(int p1, int p2, P2Mode mode = P2Mode::kKnee);
 
 // A path direction r: p - r = (x + dx, y + dy).
 struct PathDirection {
@@ -39,10 +40,12 @@ uint16_t pathStep(const uint8_t* cost, const uint16_t* prev, uint16_t minPrev, i
 uint16_t pathStart(const uint8_t* cost, int disparities, uint16_t* out);
 
 // Lr of one path (index into kPathDirections) for the whole image.
-PathVolume pathCost(const CostVolume& cost, const cv::Mat& grayLeft, int pathIndex, int p1, int p2);
+PathVolume pathCost(const CostVolume& cost, const cv::Mat& grayLeft, int pathIndex, int p1, int p2,
+                    P2Mode p2Mode = P2Mode::kKnee);
 
-// S(p, d) = sum over the four paths of kPathWeights[r] Lr(p, d) (3, 2, 3, 2), for the whole volume.
-PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1, int p2);
+// S(p, d) = sum over the four paths of w[r] Lr(p, d) (3, 2, 3, 2 or equal), for the whole volume.
+PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1, int p2,
+                         P2Mode p2Mode = P2Mode::kKnee, PathWeighting weights = PathWeighting::k3232);
 
 // The streaming form used by the pipeline: rows in order, never more than a
 // few rows of C and S in memory, the work of each row split over two workers.
@@ -53,6 +56,6 @@ PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1
 using CostRowFn = std::function<void(int y, int x0, int x1, uint8_t* row)>;
 using SumRowFn = std::function<void(int worker, int y, const uint16_t* row)>;
 void aggregateRows(int width, int height, int disparities, const cv::Mat& grayLeft, int p1, int p2,
-                   const CostRowFn& costRow, const SumRowFn& sink);
+                   P2Mode p2Mode, PathWeighting weights, const CostRowFn& costRow, const SumRowFn& sink);
 
 }  // namespace sgm

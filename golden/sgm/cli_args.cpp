@@ -76,11 +76,17 @@ bool CliArgs::onOff(const std::string& name, bool fallback) const {
 }
 
 const std::set<std::string>& CliArgs::pipelineOptions() {
-  static const std::set<std::string> names = {"d", "p1", "p2", "mode", "subpixel", "lr", "fill", "snap", "median"};
+  static const std::set<std::string> names = {"d",    "p1",   "p2",     "mode",   "subpixel", "lr",     "fill",
+                                              "snap", "median", "census", "p2-mode", "weights", "preset"};
   return names;
 }
 
 Params CliArgs::pipelineParams(Params p) const {
+  if (has("preset")) {  // a preset replaces the base configuration except D; the options below override it
+    const int disparities = p.disparities;
+    p = presetParams(text("preset", ""));
+    p.disparities = disparities;
+  }
   if (has("mode")) {  // a mode brings its own measured penalties; --p1/--p2 override them
     const Params modeDefaults = defaultParams(parseCostMode(text("mode", "")));
     p.mode = modeDefaults.mode, p.p1 = modeDefaults.p1, p.p2 = modeDefaults.p2;
@@ -94,6 +100,9 @@ Params CliArgs::pipelineParams(Params p) const {
   p.fill = onOff("fill", p.fill);
   p.snap = onOff("snap", p.snap);
   p.median = onOff("median", p.median);
+  if (has("census")) p.census = parseCensusWindow(text("census", ""));
+  if (has("p2-mode")) p.p2Mode = parseP2Mode(text("p2-mode", ""));
+  if (has("weights")) p.weights = parsePathWeighting(text("weights", ""));
   p.validate();
   return p;
 }

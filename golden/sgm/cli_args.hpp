@@ -25,8 +25,10 @@ class CliArgs {
   double real(const std::string& name, double fallback, double min, double max) const;
   bool onOff(const std::string& name, bool fallback) const;
 
-  // Reads --d, --p1, --p2, --mode, --subpixel, --lr, --fill, --snap, --median into params;
-  // --mode also brings that mode's default P1 / P2' (defaultParams).
+  // Reads --d, --p1, --p2, --mode, --subpixel, --lr, --fill, --snap, --median, --census,
+  // --p2-mode, --weights and --preset into params. --preset (default | paper) replaces
+  // base (D excepted) before the other options apply, so they override it; --mode also
+  // brings that mode's default P1 / P2' (defaultParams), which --p1 / --p2 override.
   static const std::set<std::string>& pipelineOptions();
   Params pipelineParams(Params base = Params{}) const;
 

@@ -49,41 +49,51 @@ namespace {
 // as censusCostOf, arranged for the compiler's vectoriser. The right row comes
 // reversed (index W-1-x) so that the D candidates of one left pixel are
 // contiguous.
-inline __attribute__((always_inline)) void censusCostKernel(CostMode mode, const Census* left,
-                                                            const uint64_t* rightBits, const uint8_t* rightRank,
-                                                            int width, int x0, int x1, int nd, uint8_t* row) {
-  const int cmax = maxCost(mode);
+inline __attribute__((always_inline)) void censusCostKernel(CostMode mode, int cmax, const Census* left,
+                                                            const uint64_t* rightBits, const uint64_t* rightHigh,
+                                                            const uint8_t* rightRank, int width, int x0, int x1,
+                                                            int nd, uint8_t* row) {
+  const bool wide = rightHigh != nullptr;  // 9x9: bits 64..79 in a second word
   for (int x = x0; x < x1; ++x) {
     uint8_t* c = row + size_t(x) * nd;
     const int inside = std::min(nd, x + 1), k0 = width - 1 - x;  // d <= x: the match is in the image
-    const uint64_t bits = left[x].bits;
+    const uint64_t bits = left[x].bits, high = left[x].high;
     const int rank = left[x].rank();
     const uint64_t* rBits = rightBits + k0;
+    const uint64_t* rHigh = wide ? rightHigh + k0 : nullptr;
     const uint8_t* rRank = rightRank + k0;
-    if (mode == CostMode::kRsad)
-      for (int d = 0; d < inside; ++d) c[d] = uint8_t(__builtin_popcountll(bits ^ rBits[d]));
-    else if (mode == CostMode::kRt)
+    if (mode == CostMode::kRt)
       for (int d = 0; d < inside; ++d) c[d] = uint8_t(std::abs(rank - rRank[d]));
-    else
+    else if (!wide && mode == CostMode::kRsad)
+      for (int d = 0; d < inside; ++d) c[d] = uint8_t(__builtin_popcountll(bits ^ rBits[d]));
+    else if (!wide)
       for (int d = 0; d < inside; ++d)
         c[d] = uint8_t(std::abs(rank - rRank[d]) + __builtin_popcountll(bits ^ rBits[d]));
+    else if (mode == CostMode::kRsad)
+      for (int d = 0; d < inside; ++d)
+        c[d] = uint8_t(__builtin_popcountll(bits ^ rBits[d]) + __builtin_popcountll(high ^ rHigh[d]));
+    else
+      for (int d = 0; d < inside; ++d)
+        c[d] = uint8_t(std::abs(rank - rRank[d]) + __builtin_popcountll(bits ^ rBits[d]) +
+                       __builtin_popcountll(high ^ rHigh[d]));
     for (int d = inside; d < nd; ++d) c[d] = uint8_t(cmax);
   }
 }
 
 // The same kernel built for x86-64 CPUs with a vector popcount, chosen at run
 // time; every other target (and x86-64 without it) runs the portable build.
-using CostKernel = void (*)(CostMode, const Census*, const uint64_t*, const uint8_t*, int, int, int, int,
-                            uint8_t*);
-void censusCostKernelPortable(CostMode mode, const Census* left, const uint64_t* bits, const uint8_t* rank,
-                              int width, int x0, int x1, int nd, uint8_t* row) {
-  censusCostKernel(mode, left, bits, rank, width, x0, x1, nd, row);
+using CostKernel = void (*)(CostMode, int, const Census*, const uint64_t*, const uint64_t*, const uint8_t*, int,
+                            int, int, int, uint8_t*);
+void censusCostKernelPortable(CostMode mode, int cmax, const Census* left, const uint64_t* bits,
+                              const uint64_t* high, const uint8_t* rank, int width, int x0, int x1, int nd,
+                              uint8_t* row) {
+  censusCostKernel(mode, cmax, left, bits, high, rank, width, x0, x1, nd, row);
 }
 #if defined(__x86_64__)
 __attribute__((target("avx512f,avx512vl,avx512bw,avx512vpopcntdq"))) void censusCostKernelVectorPopcount(
-    CostMode mode, const Census* left, const uint64_t* bits, const uint8_t* rank, int width, int x0, int x1,
-    int nd, uint8_t* row) {
-  censusCostKernel(mode, left, bits, rank, width, x0, x1, nd, row);
+    CostMode mode, int cmax, const Census* left, const uint64_t* bits, const uint64_t* high, const uint8_t* rank,
+    int width, int x0, int x1, int nd, uint8_t* row) {
+  censusCostKernel(mode, cmax, left, bits, high, rank, width, x0, x1, nd, row);
 }
 const CostKernel kCostKernel =
     __builtin_cpu_supports("avx512vpopcntdq") ? censusCostKernelVectorPopcount : censusCostKernelPortable;
@@ -93,24 +103,26 @@ const CostKernel kCostKernel = censusCostKernelPortable;
 
 // sad+rt: eq. (2) with alpha = 0.2, the SAD mean rescaled to the rank range.
 void sadRtVolume(const std::vector<Census>& cl, const std::vector<Census>& cr,
-                 const std::vector<cv::Mat>& sadMean, CostVolume& vol) {
+                 const std::vector<cv::Mat>& sadMean, CensusWindow census, CostVolume& vol) {
+  const int bits = censusShape(census).bits;
   parallelFor(vol.height, [&](int y0, int y1) {
     for (int y = y0; y < y1; ++y) {
       const Census* l = cl.data() + size_t(y) * vol.width;
       const Census* r = cr.data() + size_t(y) * vol.width;
-      fillCostRow(vol.at(0, y), 0, vol.width, vol.depth, maxCost(CostMode::kSadRt), [&](int x, int d) {
+      fillCostRow(vol.at(0, y), 0, vol.width, vol.depth, maxCost(CostMode::kSadRt, census), [&](int x, int d) {
         const int rt = censusCostOf<CostMode::kRt>(l[x], r[x - d]);
-        const int sadOnRankScale = (sadMean[d].at<uint8_t>(y, x) * kCensusBits + 127) / 255;
+        const int sadOnRankScale = (sadMean[d].at<uint8_t>(y, x) * bits + 127) / 255;
         return (2 * sadOnRankScale + 8 * rt + 5) / 10;
       });
     }
   });
 }
 
-// Mean absolute difference (census window, 9x5) per disparity over the window pixels whose left
-// and right positions are both inside the image (rounded half up).
-std::vector<cv::Mat> sadMeans(const cv::Mat& gl, const cv::Mat& gr, int disparities) {
+// Mean absolute difference (census window, 9x5 or 9x9) per disparity over the window pixels whose
+// left and right positions are both inside the image (rounded half up).
+std::vector<cv::Mat> sadMeans(const cv::Mat& gl, const cv::Mat& gr, int disparities, CensusWindow census) {
   const int w = gl.cols, h = gl.rows;
+  const CensusShape shape = censusShape(census);
   std::vector<cv::Mat> means(disparities);
   parallelFor(disparities, [&](int d0, int d1) {
     cv::Mat integral(h + 1, w + 1, CV_32S);
@@ -125,8 +137,8 @@ std::vector<cv::Mat> sadMeans(const cv::Mat& gl, const cv::Mat& gr, int disparit
       cv::Mat mean(h, w, CV_8UC1, cv::Scalar(255));
       for (int y = 0; y < h; ++y)
         for (int x = d; x < w; ++x) {
-          const int y0 = std::max(0, y - kCensusRadiusY), y1 = std::min(h - 1, y + kCensusRadiusY);
-          const int x0 = std::max(d, x - kCensusRadiusX), x1 = std::min(w - 1, x + kCensusRadiusX);
+          const int y0 = std::max(0, y - shape.radiusY), y1 = std::min(h - 1, y + shape.radiusY);
+          const int x0 = std::max(d, x - shape.radiusX), x1 = std::min(w - 1, x + shape.radiusX);
           const int sum = integral.at<int>(y1 + 1, x1 + 1) - integral.at<int>(y0, x1 + 1) -
                           integral.at<int>(y1 + 1, x0) + integral.at<int>(y0, x0);
           const int n = (y1 - y0 + 1) * (x1 - x0 + 1);
@@ -175,42 +187,46 @@ void birchfieldTomasi(const cv::Mat& gl, const cv::Mat& gr, CostVolume& vol) {
 
 }  // namespace
 
-void censusCostRow(CostMode mode, const Census* left, const Census* right, int width, int x0, int x1, int nd,
-                   uint8_t* row) {
+void censusCostRow(CostMode mode, CensusWindow census, const Census* left, const Census* right, int width, int x0,
+                   int x1, int nd, uint8_t* row) {
   if (!isHardwareMode(mode)) throw Error(std::string("cost mode ") + costModeName(mode) + " is not a census mode");
   // The right pixels x0-D+1 .. x1-1, reversed.
-  thread_local std::vector<uint64_t> bits;
+  const bool wide = censusShape(census).bits > 64;
+  thread_local std::vector<uint64_t> bits, high;
   thread_local std::vector<uint8_t> rank;
-  bits.resize(width), rank.resize(width);
+  bits.resize(width), high.resize(width), rank.resize(width);
   for (int x = std::max(0, x0 - nd + 1); x < x1; ++x) {
     bits[width - 1 - x] = right[x].bits;
+    high[width - 1 - x] = right[x].high;
     rank[width - 1 - x] = uint8_t(right[x].rank());
   }
-  kCostKernel(mode, left, bits.data(), rank.data(), width, x0, x1, nd, row);
+  kCostKernel(mode, maxCost(mode, census), left, bits.data(), wide ? high.data() : nullptr, rank.data(), width, x0,
+              x1, nd, row);
 }
 
-CostVolume computeCost(const cv::Mat& gl, const cv::Mat& gr, CostMode mode, int disparities) {
+CostVolume computeCost(const cv::Mat& gl, const cv::Mat& gr, CostMode mode, int disparities, CensusWindow census) {
   CostVolume vol(gl.cols, gl.rows, disparities);
   if (mode == CostMode::kBt) {
     birchfieldTomasi(gl, gr, vol);
     return vol;
   }
   if (mode == CostMode::kSad) {
-    const std::vector<cv::Mat> means = sadMeans(gl, gr, disparities);
+    const std::vector<cv::Mat> means = sadMeans(gl, gr, disparities, census);
     for (int y = 0; y < gl.rows; ++y)
       for (int x = 0; x < gl.cols; ++x)
         for (int d = 0; d < disparities; ++d) vol.at(x, y)[d] = means[d].at<uint8_t>(y, x);
     return vol;
   }
-  const std::vector<Census> cl = censusTransform(gl), cr = censusTransform(gr);
+  const std::vector<Census> cl = censusTransform(gl, census), cr = censusTransform(gr, census);
   if (mode == CostMode::kSadRt) {
-    sadRtVolume(cl, cr, sadMeans(gl, gr, disparities), vol);
+    sadRtVolume(cl, cr, sadMeans(gl, gr, disparities, census), census, vol);
     return vol;
   }
   parallelFor(gl.rows, [&](int y0, int y1) {
     for (int y = y0; y < y1; ++y) {
       const size_t first = size_t(y) * gl.cols;
-      censusCostRow(mode, cl.data() + first, cr.data() + first, gl.cols, 0, gl.cols, disparities, vol.at(0, y));
+      censusCostRow(mode, census, cl.data() + first, cr.data() + first, gl.cols, 0, gl.cols, disparities,
+                    vol.at(0, y));
     }
   });
   return vol;

@@ -16,12 +16,12 @@ int censusCost(CostMode mode, const Census& left, const Census& right);
 
 // Pixels x0 .. x1-1 of one row of C for a hardware mode: row[x * D + d] from
 // the census rows of the left and right images.
-void censusCostRow(CostMode mode, const Census* left, const Census* right, int width, int x0, int x1,
-                   int disparities, uint8_t* row);
+void censusCostRow(CostMode mode, CensusWindow census, const Census* left, const Census* right, int width,
+                   int x0, int x1, int disparities, uint8_t* row);
 
 // Full cost volume C(x, y, d), d = 0 .. D-1; disparities with x - d < 0 cost
-// maxCost(mode).
-CostVolume computeCost(const cv::Mat& grayLeft, const cv::Mat& grayRight, CostMode mode,
-                       int disparities);
+// maxCost(mode, census). The census window also sets the sad window.
+CostVolume computeCost(const cv::Mat& grayLeft, const cv::Mat& grayRight, CostMode mode, int disparities,
+                       CensusWindow census = CensusWindow::k9x5);
 
 }  // namespace sgm

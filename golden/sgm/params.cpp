@@ -6,16 +6,17 @@ namespace {
 struct ModeInfo {
   CostMode mode;
   const char* name;
-  int maxCost;
+  int censusBitsFactor;  // Cmax = factor x census bits, or
+  int fixedMaxCost;      // Cmax of the 8-bit modes
   bool hardware;
 };
 constexpr ModeInfo kModes[] = {
-    {CostMode::kRt, "rt", kCensusBits, true},
-    {CostMode::kRsad, "rsad", kCensusBits, true},
-    {CostMode::kUnified, "unified", 2 * kCensusBits, true},
-    {CostMode::kSad, "sad", 255, false},
-    {CostMode::kBt, "bt", 255, false},
-    {CostMode::kSadRt, "sad+rt", kCensusBits, false},
+    {CostMode::kRt, "rt", 1, 0, true},
+    {CostMode::kRsad, "rsad", 1, 0, true},
+    {CostMode::kUnified, "unified", 2, 0, true},
+    {CostMode::kSad, "sad", 0, 255, false},
+    {CostMode::kBt, "bt", 0, 255, false},
+    {CostMode::kSadRt, "sad+rt", 1, 0, false},
 };
 
 const ModeInfo& info(CostMode mode) {
@@ -27,7 +28,65 @@ const ModeInfo& info(CostMode mode) {
 
 bool isHardwareMode(CostMode mode) { return info(mode).hardware; }
 const char* costModeName(CostMode mode) { return info(mode).name; }
-int maxCost(CostMode mode) { return info(mode).maxCost; }
+int maxCost(CostMode mode, CensusWindow census) {
+  const ModeInfo& m = info(mode);
+  return m.censusBitsFactor ? m.censusBitsFactor * censusShape(census).bits : m.fixedMaxCost;
+}
+
+const char* censusWindowName(CensusWindow window) { return window == CensusWindow::k9x9 ? "9x9" : "9x5"; }
+CensusWindow parseCensusWindow(const std::string& name) {
+  if (name == "9x5") return CensusWindow::k9x5;
+  if (name == "9x9") return CensusWindow::k9x9;
+  throw Error("unknown census window '" + name + "' (expected 9x5 or 9x9)");
+}
+
+const char* p2ModeName(P2Mode mode) { return mode == P2Mode::kPaper ? "paper" : "knee"; }
+P2Mode parseP2Mode(const std::string& name) {
+  if (name == "knee") return P2Mode::kKnee;
+  if (name == "paper") return P2Mode::kPaper;
+  throw Error("unknown P2 mode '" + name + "' (expected knee or paper)");
+}
+
+const char* pathWeightingName(PathWeighting weighting) {
+  return weighting == PathWeighting::kEqual ? "equal" : "3232";
+}
+PathWeighting parsePathWeighting(const std::string& name) {
+  if (name == "3232" || name == "3,2,3,2") return PathWeighting::k3232;
+  if (name == "equal") return PathWeighting::kEqual;
+  throw Error("unknown path weights '" + name + "' (expected 3232 or equal)");
+}
+
+bool Params::operator==(const Params& o) const {
+  return disparities == o.disparities && p1 == o.p1 && p2 == o.p2 && mode == o.mode && subpixel == o.subpixel &&
+         lrTolerance == o.lrTolerance && fill == o.fill && snap == o.snap && median == o.median &&
+         census == o.census && p2Mode == o.p2Mode && weights == o.weights;
+}
+
+Params presetParams(const std::string& name) {
+  if (name == "default") return Params{};
+  if (name == "paper") {
+    Params p;
+    p.census = CensusWindow::k9x9;
+    p.mode = CostMode::kUnified;
+    p.p2Mode = P2Mode::kPaper;
+    p.weights = PathWeighting::kEqual;
+    // Swept like the other defaults, on the 9x9 window (docs/algorithm.md, section 11).
+    p.p1 = 100, p.p2 = 255;
+    p.fill = false;
+    p.snap = false;
+    return p;
+  }
+  throw Error("unknown preset '" + name + "' (expected default or paper)");
+}
+
+std::string presetName(const Params& params) {
+  for (const char* name : {"default", "paper"}) {
+    Params preset = presetParams(name);
+    preset.disparities = params.disparities;  // a preset fixes the algorithm, not the build's D
+    if (params == preset) return name;
+  }
+  return "custom";
+}
 
 CostMode parseCostMode(const std::string& name) {
   for (const ModeInfo& m : kModes)

@@ -13,6 +13,31 @@ struct Error : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The census window (section 2): 9 wide, 5 high (ours, the default) or 9 high (the paper's).
+enum class CensusWindow { k9x5, k9x9 };
+struct CensusShape {
+  int radiusX, radiusY;  // dx = -radiusX .. radiusX, dy = -radiusY .. radiusY
+  int width, height;     // 2 radius + 1
+  int bits;              // width * height - 1: 44 or 80
+};
+constexpr CensusShape censusShape(CensusWindow window) {
+  return window == CensusWindow::k9x9 ? CensusShape{4, 4, 9, 9, 80} : CensusShape{4, 2, 9, 5, 44};
+}
+constexpr int kMaxCensusBits = 80;                // the 9x9 window
+const char* censusWindowName(CensusWindow window);  // "9x5", "9x9"
+CensusWindow parseCensusWindow(const std::string& name);  // throws Error on unknown names
+
+// P2 adaptation (section 4): the knee max(P1, 4 P2' / (dI + 4)) (ours) or the paper's
+// max(P1, P2' / dI) with P2' at dI = 0.
+enum class P2Mode { kKnee, kPaper };
+const char* p2ModeName(P2Mode mode);              // "knee", "paper"
+P2Mode parseP2Mode(const std::string& name);
+
+// Path weights of S (section 5): 3,2,3,2 (ours) or equal (the paper's plain sum).
+enum class PathWeighting { k3232, kEqual };
+const char* pathWeightingName(PathWeighting weighting);  // "3232", "equal"
+PathWeighting parsePathWeighting(const std::string& name);  // "3232", "3,2,3,2" or "equal"
+
 // Matching-cost modes. The first three exist in the RTL; the others are
 // software-only, kept to reproduce the paper's Table I.
 enum class CostMode { kRt, kRsad, kUnified, kSad, kBt, kSadRt };
@@ -24,13 +49,8 @@ std::vector<CostMode> allCostModes();
 
 // Largest matching cost a mode can produce (also the cost of a disparity whose
 // match falls outside the right image).
-int maxCost(CostMode mode);
+int maxCost(CostMode mode, CensusWindow census);
 
-constexpr int kCensusRadiusX = 4;                 // 9x5 window: dx = -4..4
-constexpr int kCensusRadiusY = 2;                 //             dy = -2..2
-constexpr int kCensusWidth = 2 * kCensusRadiusX + 1;   // 9
-constexpr int kCensusHeight = 2 * kCensusRadiusY + 1;  // 5
-constexpr int kCensusBits = kCensusWidth * kCensusHeight - 1;  // 44
 constexpr int kMinFrameSide = 9;                  // smallest width and height (9x9 frame)
 constexpr int kSubpixelBits = 4;                  // disparities carry 1/16 px
 constexpr int kSubpixelOne = 1 << kSubpixelBits;  // 16
@@ -40,9 +60,13 @@ constexpr int kFillAgree = kSubpixelOne;          // fill keeps an own disparity
 constexpr int kSnapReach = 3;                     // edge snap moves a disparity edge by up to 3 px
 constexpr int kSnapStep = 2 * kSubpixelOne;       // edge snap acts on drops of more than 2 px
 constexpr int kPathCount = 4;                     // 0, 45, 90, 135 degrees
-// S = sum of kPathWeights[r] Lr: the horizontal and vertical paths count 3, the diagonals 2.
+// S = sum of w[r] Lr. 3,2,3,2: the horizontal and vertical paths count 3, the diagonals 2.
 constexpr int kPathWeights[kPathCount] = {3, 2, 3, 2};  // 0, 45, 90, 135 degrees
-constexpr int kPathWeightSum = 10;
+constexpr int kPathWeightsEqual[kPathCount] = {1, 1, 1, 1};
+constexpr int kPathWeightSum = 10;                // the larger sum of the two weightings
+inline const int* pathWeights(PathWeighting weighting) {
+  return weighting == PathWeighting::kEqual ? kPathWeightsEqual : kPathWeights;
+}
 constexpr int kMaxPenalty = 6000;                 // keeps kPathWeightSum * (Cmax + P2') < 2^16
 
 struct Params {
@@ -55,6 +79,12 @@ struct Params {
   bool fill = true;            // fill invalid pixels along the row from the background side
   bool snap = true;            // move disparity drops onto the nearby intensity edge
   bool median = true;          // 5x5 median over valid pixels
+  CensusWindow census = CensusWindow::k9x5;    // census window (section 2)
+  P2Mode p2Mode = P2Mode::kKnee;               // P2 adaptation (section 4)
+  PathWeighting weights = PathWeighting::k3232;  // path weights of S (section 5)
+
+  bool operator==(const Params& o) const;
+  bool operator!=(const Params& o) const { return !(*this == o); }
 
   // Throws Error naming the first parameter that is out of range.
   void validate() const;
@@ -65,6 +95,13 @@ struct Params {
 // Defaults for a cost mode: the measured P1 / P2' of that mode (see
 // docs/algorithm.md, "Defaults"), everything else as in Params{}.
 Params defaultParams(CostMode mode);
+
+// Named configurations, the same in every tool (--preset): "default" (Params{}) and
+// "paper", the paper's system: 9x9 census, unified cost, P2' / dI, equal weights, LR
+// check, sub-pixel, 5x5 median, no filling, no snapping (docs/algorithm.md, section 11).
+Params presetParams(const std::string& name);   // throws Error on unknown names
+// "default" or "paper" when params equal that preset, "custom" otherwise.
+std::string presetName(const Params& params);
 
 // The disparity counts the RTL is built and tested for; the golden model
 // accepts any D in [kMinDisparities, kMaxDisparities].

@@ -21,8 +21,8 @@ void checkInput(const cv::Mat& gl, const cv::Mat& gr, const Params& params) {
 PipelineStages runPipelineStages(const cv::Mat& gl, const cv::Mat& gr, const Params& params) {
   checkInput(gl, gr, params);
   PipelineStages st;
-  st.cost = computeCost(gl, gr, params.mode, params.disparities);
-  st.aggregated = aggregateCost(st.cost, gl, params.p1, params.p2);
+  st.cost = computeCost(gl, gr, params.mode, params.disparities, params.census);
+  st.aggregated = aggregateCost(st.cost, gl, params.p1, params.p2, params.p2Mode, params.weights);
   st.selected = selectDisparity(st.aggregated, params);
   st.filled = params.fill ? fillHoles(st.selected) : st.selected;
   st.snapped = params.snap ? snapEdges(st.filled, gl) : st.filled;
@@ -39,20 +39,20 @@ DisparityMap runPipeline(const cv::Mat& gl, const cv::Mat& gr, const Params& par
   CostVolume volume;
   CostRowFn costRow;
   if (isHardwareMode(params.mode)) {
-    censusLeft = censusTransform(gl);
-    censusRight = censusTransform(gr);
+    censusLeft = censusTransform(gl, params.census);
+    censusRight = censusTransform(gr, params.census);
     costRow = [&](int y, int x0, int x1, uint8_t* row) {
-      censusCostRow(params.mode, &censusLeft[size_t(y) * w], &censusRight[size_t(y) * w], w, x0, x1, nd, row);
+      censusCostRow(params.mode, params.census, &censusLeft[size_t(y) * w], &censusRight[size_t(y) * w], w, x0, x1, nd, row);
     };
   } else {
-    volume = computeCost(gl, gr, params.mode, nd);
+    volume = computeCost(gl, gr, params.mode, nd, params.census);
     costRow = [&](int y, int x0, int x1, uint8_t* row) {
       std::copy(volume.at(x0, y), volume.at(x0, y) + size_t(x1 - x0) * nd, row + size_t(x0) * nd);
     };
   }
   DisparityMap selected{cv::Mat(h, w, CV_16UC1), cv::Mat(h, w, CV_8UC1)};
   RowSelector selectors[2] = {RowSelector(w, nd, params), RowSelector(w, nd, params)};  // one per worker
-  aggregateRows(w, h, nd, gl, params.p1, params.p2, costRow, [&](int worker, int y, const uint16_t* sum) {
+  aggregateRows(w, h, nd, gl, params.p1, params.p2, params.p2Mode, params.weights, costRow, [&](int worker, int y, const uint16_t* sum) {
     selectors[worker].select(sum, selected.disp.ptr<uint16_t>(y), selected.valid.ptr<uint8_t>(y));
   });
   const DisparityMap filled = params.fill ? fillHoles(selected) : selected;

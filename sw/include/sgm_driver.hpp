@@ -41,6 +41,7 @@ struct FrameConfig {
   bool lrCheck = true;
   uint32_t lrTolerance = 1;
   bool fill = true, snap = true, median = true;
+  bool p2Paper = false, weightsEqual = false;  // the paper's P2'/dI and equal path weights
 };
 
 struct Errors {

@@ -70,7 +70,9 @@
 #define SGM_CONFIG_FILL         (1u << 12)
 #define SGM_CONFIG_SNAP         (1u << 13)
 #define SGM_CONFIG_MEDIAN       (1u << 14)
-#define SGM_CONFIG_MASK         0x00007733u
+#define SGM_CONFIG_P2_PAPER     (1u << 16) /* P2 adaptation: 0 knee max(P1, 4 P2'/(dI + 4)), 1 the paper's max(P1, P2'/dI) */
+#define SGM_CONFIG_WEIGHTS_EQUAL (1u << 17) /* path weights in S: 0 = 3,2,3,2, 1 = equal (the paper) */
+#define SGM_CONFIG_MASK         0x00037733u
 
 #define SGM_STATUS_BUSY         (1u << 0) /* a frame is in flight */
 #define SGM_STATUS_RESETTING    (1u << 1) /* the soft reset is running */

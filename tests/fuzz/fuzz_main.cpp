@@ -106,7 +106,7 @@ const std::vector<std::string>& optionNames() {  // of the three tools, plus str
   static const std::vector<std::string> names = {
       "d",    "p1",   "p2",     "mode",     "subpixel", "lr",  "fill",  "snap",  "median", "out",    "left", "right",
       "gt",   "gt-scale", "stall", "seed",  "frames",   "data", "delta", "scene",  "repeats", "help", "",
-      "bogus", "D",   "d="};
+      "bogus", "D",   "d=",    "census", "p2-mode",  "weights",    "preset"};
   return names;
 }
 
@@ -117,6 +117,7 @@ const std::vector<std::string>& absurdValues() {
       "4294967296", "99999999999999999999", "-99999999999999999999", "0.5", "0.95", "1e309", "-1e309",
       "nan",   "inf",   "-0",      "0x10",     " 16",        "16 ",        "on",  "off",
       "yes",   "rt",    "rsad",    "unified",  "sad",        "bt",         "sad+rt", "RT",
+      "9x9",   "9x5",   "paper",   "knee",     "equal",      "3,2,3,2",    "default",
       "a\nb",  "--d",   "=",       "%s%n%s",   std::string(5000, '9'),     "\xff\xfe\x01"};
   return values;
 }

@@ -37,6 +37,8 @@ struct Frame {
   cv::Mat gray;           // left gray image (P2 gradients)
   sgm::CostVolume cost;   // C(p, d)
   int p1 = 20, p2 = 200;
+  sgm::P2Mode p2Mode = sgm::P2Mode::kKnee;             // run-time P2 form
+  sgm::PathWeighting weights = sgm::PathWeighting::k3232;  // run-time path weights
 };
 
 cv::Mat randomImage(int w, int h, std::mt19937& rng) {
@@ -68,12 +70,14 @@ class PathEngine {
   // Streams one frame and checks every S vector; returns the mismatch text or "".
   std::string run(const Frame& f) {
     const int w = f.cost.width, h = f.cost.height;
-    const sgm::PathVolume expected = sgm::aggregateCost(f.cost, f.gray, f.p1, f.p2);
+    const sgm::PathVolume expected = sgm::aggregateCost(f.cost, f.gray, f.p1, f.p2, f.p2Mode, f.weights);
     // Per-frame configuration and the P2 table fill, pipeline held.
     top_->en_i = 0;
     top_->width_i = w;
     top_->p1_i = f.p1;
     top_->p2_i = f.p2;
+    top_->p2_mode_i = f.p2Mode == sgm::P2Mode::kPaper;
+    top_->weights_eq_i = f.weights == sgm::PathWeighting::kEqual;
     top_->lut_start_i = 1;
     top_.tick();
     top_->lut_start_i = 0;
@@ -140,9 +144,14 @@ TEST(SgmPathEngine, RandomCostsSeveralSizesBackToBack) {
   PathEngine engine("sgm_path_engine", 7, 0.3);
   std::mt19937 rng(1);
   const int sizes[][2] = {{16, 9}, {37, 11}, {64, 20}, {kD + 3, 13}, {100, 7 + 9}};
+  int k = 0;
   for (const auto& s : sizes) {
     const int p2 = int(rng() % 256), p1 = int(rng() % (p2 + 1));
-    EXPECT_EQ(engine.run(syntheticFrame(s[0], s[1], p1, p2, rng)), "");
+    Frame f = syntheticFrame(s[0], s[1], p1, p2, rng);
+    f.p2Mode = k % 2 ? sgm::P2Mode::kPaper : sgm::P2Mode::kKnee;       // both forms and both weightings,
+    f.weights = k / 2 % 2 ? sgm::PathWeighting::kEqual : sgm::PathWeighting::k3232;  // changing per frame
+    ++k;
+    EXPECT_EQ(engine.run(f), "") << sgm::p2ModeName(f.p2Mode) << " " << sgm::pathWeightingName(f.weights);
   }
 }
 

@@ -2,6 +2,7 @@
 // golden model on the same pair in the same process, compares every output
 // pixel, and writes disparity PNGs, a side-by-side picture and report.json.
 #include "Vsgm_top.h"
+#include "Vsgm_top_sgm_top.h"
 #include "core_harness.hpp"
 
 #include "eval_lib.hpp"
@@ -34,7 +35,10 @@ namespace {
 
 const char* kUsage =
     "usage: sgm-sim [--left L --right R [--gt G] [--gt-scale S]] [--out DIR] [--stall P] [--seed N]\n"
-    "               [--frames N] [pipeline options]\n"
+    "               [--frames N] [--preset default|paper] [pipeline options]\n"
+    "Pipeline options as sgm-golden's (--d --p1 --p2 --mode --subpixel --lr --fill --snap\n"
+    "--median --census --p2-mode --weights); options after --preset override it. The\n"
+    "census window must be the build's (make sim CENSUS=9x9 or PRESET=paper builds 9x9).\n"
     "Without --left/--right runs the default scene: the Middlebury Aloe pair shipped by\n"
     "opencv-doc, scaled by 1/4 so its disparities fit D = 64. --stall P idles the input and\n"
     "stalls the output with probability P per cycle; --frames N sends the pair N times back\n"
@@ -60,6 +64,12 @@ int main(int argc, char** argv) {
     if (params.disparities != SGM_D)
       throw Error("this simulator is built for D=" + std::to_string(SGM_D) + " (make sim D=" +
                   std::to_string(params.disparities) + " builds another)");
+    constexpr int kCensusH = Vsgm_top_sgm_top::CENSUS_H;  // this build's census window
+    const CensusWindow built = kCensusH == 9 ? CensusWindow::k9x9 : CensusWindow::k9x5;
+    if (params.census != built)
+      throw Error(std::string("this simulator is built for the ") + censusWindowName(built) + " census, not " +
+                  censusWindowName(params.census) + " (make sim CENSUS=" + censusWindowName(params.census) +
+                  " builds that one)");
     if (!isHardwareMode(params.mode)) throw Error("cost mode " + std::string(costModeName(params.mode)) + " is software only");
     if (params.p2 > 255) throw Error("P2'=" + std::to_string(params.p2) + " exceeds the core's 8-bit input");
     if (params.lrTolerance > 7) throw Error("LR tolerance " + std::to_string(params.lrTolerance) + " exceeds the core's 3-bit input");
@@ -140,6 +150,12 @@ int main(int argc, char** argv) {
     json.key("height").integer(h);
     json.key("disparities").integer(params.disparities);
     json.key("mode").string(costModeName(params.mode));
+    json.key("census").string(censusWindowName(params.census));
+    json.key("preset").string(presetName(params));
+    json.key("p1").integer(params.p1);
+    json.key("p2").integer(params.p2);
+    json.key("p2_mode").string(p2ModeName(params.p2Mode));
+    json.key("weights").string(pathWeightingName(params.weights));
     json.key("stall").real(stall);
     json.key("seed").integer(seed);
     json.key("cycles").integer(long(cycles));
@@ -169,8 +185,10 @@ int main(int argc, char** argv) {
     if (ec || !std::filesystem::is_directory(out)) throw Error("cannot create output directory '" + out + "'");
     writeFiles(files);
 
-    std::printf("sgm-sim: %s %dx%d D=%d mode=%s, %d frame(s), stall %.2f\n", scene.name.c_str(), w, h,
-                params.disparities, costModeName(params.mode), frames, stall);
+    std::printf("sgm-sim: %s %dx%d D=%d mode=%s census=%s preset=%s (P1 %d, P2' %d, P2 %s, weights %s), %d frame(s), stall %.2f\n",
+                scene.name.c_str(), w, h, params.disparities, costModeName(params.mode),
+                censusWindowName(params.census), presetName(params).c_str(), params.p1, params.p2,
+                p2ModeName(params.p2Mode), pathWeightingName(params.weights), frames, stall);
     std::printf("sgm-sim: bit-exact %s: %.2f%% of %ld pixels match the golden model%s%s\n", mismatches ? "NO" : "yes",
                 100.0 * double(pixels * frames - mismatches) / double(pixels * frames), pixels * frames,
                 firstMismatch.empty() ? "" : "; ", firstMismatch.c_str());

@@ -1,0 +1,70 @@
+`default_nettype none
+// sgm_popcount: number of ones in an N-bit census word (rank, and the Hamming
+// distance of two signatures): 44 bits for the 9x5 census, 80 for the 9x9.
+// LUT6-friendly: full adders on bit triples (with an xor in front, for the
+// Hamming distance, each output is still one LUT6) give T = ceil(N / 3) sum bits
+// of weight 1 and T carry bits of weight 2; groups of six of each are counted by
+// 6:3 counters (one LUT6 per output bit), the group counts of each weight summed,
+// and count = ones(sums) + 2 ones(carries). The counters are plain logic (no +),
+// so that synthesis does not map them to carry chains; only the group sums are
+// adders. (xc7, Yosys 0.23, with the xor: N = 44 60 LUTs + 4 CARRY4, N = 80
+// 122 LUTs + 4 CARRY4.)
+//
+// Parameters: N input bits (>= 2); CNT_W = $clog2(N + 1) output bits.
+// Latency: 0 (combinational).
+module sgm_popcount #(
+  parameter int  N     = 44,
+  localparam int CNT_W = $clog2(N + 1)
+) (
+  input  wire  [N-1:0]     bits_i,
+  output logic [CNT_W-1:0] count_o
+);
+
+  localparam int T = (N + 2) / 3;  // full adders on bit triples
+  localparam int G = (T + 5) / 6;  // 6:3 counters per weight
+
+  // {carry, sum} of three bits.
+  function automatic [1:0] fa(input [2:0] v);
+    fa = {(v[0] & v[1]) | (v[0] & v[2]) | (v[1] & v[2]), ^v};
+  endfunction
+
+  // Number of ones in six bits (0 .. 6).
+  function automatic [2:0] cnt6(input [5:0] v);
+    logic [1:0] a, b;
+    logic       c;
+    a    = fa(v[2:0]);
+    b    = fa(v[5:3]);
+    c    = a[0] & b[0];
+    cnt6 = {(a[1] & b[1]) | (a[1] & c) | (b[1] & c), a[1] ^ b[1] ^ c, a[0] ^ b[0]};
+  endfunction
+
+  wire [3*T-1:0] x = {{(3*T-N){1'b0}}, bits_i};
+
+  // Level 1: {c1[i], s1[i]} = x[3i] + x[3i+1] + x[3i+2]; padded to whole groups of six.
+  logic [6*G-1:0] s1, c1;
+  for (genvar i = 0; i < 6 * G; i++) begin : g_fa
+    if (i < T) begin : g_bits
+      assign {c1[i], s1[i]} = fa(x[3*i +: 3]);
+    end else begin : g_pad
+      assign {c1[i], s1[i]} = 2'b00;
+    end
+  end
+
+  // Group counts, summed per weight; count = ones(s1) + 2 ones(c1) (< 2^CNT_W).
+  logic [CNT_W-1:0] ones_s, ones_c;
+  always_comb begin
+    ones_s = '0;
+    ones_c = '0;
+    for (int g = 0; g < G; g++) begin
+      ones_s = ones_s + CNT_W'(cnt6(s1[6*g +: 6]));
+      ones_c = ones_c + CNT_W'(cnt6(c1[6*g +: 6]));
+    end
+  end
+
+  assign count_o = ones_s + {ones_c[CNT_W-2:0], 1'b0};
+
+  logic unused;
+  assign unused = ones_c[CNT_W-1];  // ones(c1) <= N / 2 < 2^(CNT_W - 1)
+
+endmodule
+`default_nettype wire
