@@ -330,7 +330,7 @@ module sgm_axi #(
     endcase
   end
 
-  wire unused = &{1'b0, reg_re, reg_waddr[1:0], reg_raddr[1:0], error, act_config[3:2], act_config[7:6], act_config[11], shadow_width[15:XW],
+  wire unused = &{1'b0, reg_re, reg_waddr[1:0], reg_raddr[1:0], error, act_config[3:2], act_config[7:6], act_config[11], act_config[15], shadow_width[15:XW],
                   shadow_height[15:YW]};
 
 endmodule
