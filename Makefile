@@ -46,6 +46,7 @@ help:
 	@echo "make bench-golden  golden model vs OpenCV StereoSGBM time on one frame, same run"
 	@echo "make bench         accuracy (RTL, golden, OpenCV x3, paper) and speed in one run -> build/bench/"
 	@echo "make synth         Yosys area/timing reports (D=64 MAX_WIDTH=1280) -> build/synth/; make synth-help"
+	@echo "make pnr           ECP5 place and route of the whole core (D=64 MAX_WIDTH=1024, LFE5U-85F) -> build/pnr/; make pnr-help"
 	@echo "make regress       constrained-random regression of the core (seeded, replayable)"
 	@echo "make fuzz          seeded random-corruption fuzzing of image loading and argument parsing"
 	@echo "make coverage      line and toggle coverage of rtl/ -> build/coverage/"
@@ -59,6 +60,8 @@ include scripts/deps.mk
 TEST_EXTRA :=
 # `make synth` and its reports (synth/synth.mk, when present).
 -include synth/synth.mk
+# `make pnr`, `make pnr-ci`: place and route on ECP5 (synth/pnr.mk).
+-include synth/pnr.mk
 
 # ---------------------------------------------------------------- golden model
 $(OBJ)/%.o: %.cpp $(GOLDEN_HDR) $(wildcard tools/*.hpp tests/*.hpp) | check-tools
