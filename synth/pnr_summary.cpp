@@ -181,15 +181,24 @@ std::string fixed(double v, int decimals) {
   return buf;
 }
 
-// The instance path of a netlist cell name: the dotted components before the
-// cell's own name (Yosys-made names begin at the first '$' after the path).
-std::string instancePath(const std::string& cell) {
-  const auto dollar = cell.find('$');
-  std::string head = cell.substr(0, dollar);
-  const auto cut = dollar == std::string::npos ? head.rfind('.') : head.size();
-  head = head.substr(0, cut == std::string::npos ? 0 : cut);
-  while (!head.empty() && head.back() == '.') head.pop_back();
-  return head.empty() ? "(top)" : head;
+// The RTL module of a source location "rtl/sgm_path_pe.sv:43.24-43.35" (one
+// module per file, named after it); empty for Yosys' own techmap files.
+std::string sourceModule(const std::string& src) {
+  if (src.compare(0, 4, "rtl/") != 0) return "";
+  const auto dot = src.find('.', 4);
+  return src.substr(4, dot == std::string::npos ? std::string::npos : dot - 4);
+}
+
+// The instance path of a public net name "u_paths.g_path[0].g_pe[11].u_pe.step[5]"
+// (the components before the wire's own name); empty for internal ($) names.
+std::string netInstance(const std::string& net) {
+  if (net.find('$') != std::string::npos) return "";
+  const auto cut = net.rfind('.');
+  return cut == std::string::npos ? std::string("(top)") : net.substr(0, cut);
+}
+
+void addUnique(std::vector<std::string>& list, const std::string& item) {
+  if (!item.empty() && std::find(list.begin(), list.end(), item) == list.end()) list.push_back(item);
 }
 
 // ------------------------------------------------------------------ one run
@@ -201,7 +210,8 @@ struct Run {
   double fmax = 0;
   std::string clock;
   std::string pathStart, pathEnd;
-  std::vector<std::string> pathModules;
+  std::vector<std::string> pathModules;    // RTL modules (source files), in path order
+  std::vector<std::string> pathInstances;  // instance paths (public net names), in path order
   int pathLogicCells = 0;
   double pathLogicNs = 0, pathRoutingNs = 0;
 };
@@ -254,6 +264,7 @@ Run readRun(const std::string& dir, const std::string& name) {
       r.pathStart = cellOf(path->items.front(), "from");
       r.pathEnd = cellOf(path->items.back(), "to");
       r.pathModules.clear();
+      r.pathInstances.clear();
       r.pathLogicCells = 0;
       r.pathLogicNs = r.pathRoutingNs = 0;
       for (const Json& seg : path->items) {
@@ -263,11 +274,9 @@ Run readRun(const std::string& dir, const std::string& name) {
         if (type && type->text == "routing") r.pathRoutingNs += ns;
         else r.pathLogicNs += ns;
         if (type && type->text == "logic") ++r.pathLogicCells;
-        for (const char* end : {"from", "to"}) {
-          const std::string mod = instancePath(cellOf(seg, end));
-          if (std::find(r.pathModules.begin(), r.pathModules.end(), mod) == r.pathModules.end())
-            r.pathModules.push_back(mod);
-        }
+        if (const Json* sources = seg.get("sources"))
+          for (const Json& src : sources->items) addUnique(r.pathModules, sourceModule(src.text));
+        if (const Json* net = seg.get("net")) addUnique(r.pathInstances, netInstance(net->text));
       }
       break;
     }
@@ -339,6 +348,9 @@ void writeSummary(const std::string& root, const std::vector<Run>& runs, double 
     j.key("modules").beginArray();
     for (const auto& m : r.pathModules) j.string(m);
     j.endArray();
+    j.key("instances").beginArray();
+    for (const auto& m : r.pathInstances) j.string(m);
+    j.endArray();
     j.key("logic_cells").integer(r.pathLogicCells);
     j.key("logic_ns").real(r.pathLogicNs);
     j.key("routing_ns").real(r.pathRoutingNs);
@@ -378,7 +390,7 @@ void writeSummary(const std::string& root, const std::vector<Run>& runs, double 
        << " | " << r.ff << " / " << r.ffAvail << " | " << r.ebr << " / " << r.ebrAvail << " | " << r.dsp
        << " | **" << fixed(r.fmax, 1) << "** | " << meta(r, "target_mhz") << " | " << r.pathStart << " -> "
        << r.pathEnd << " (" << r.pathLogicCells << " logic cells, " << fixed(r.pathLogicNs, 2) << " ns logic + "
-       << fixed(r.pathRoutingNs, 2) << " ns routing; " << joined(r.pathModules, ", ") << ") | "
+       << fixed(r.pathRoutingNs, 2) << " ns routing; through " << joined(r.pathModules, " > ") << ") | "
        << meta(r, "pnr_seconds") << " |\n";
   md << "\n## Clock per video format\n\n"
      << "Needed clock = active pixels per second x " << fixed(cpp, 3) << " cycles per pixel (" << cppSource
