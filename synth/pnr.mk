@@ -106,12 +106,22 @@ $(PNR_CFG)/synth/done: $(PNR_DEPS) | pnr-tools
 	 echo "pnr: synth_ecp5 done in $$(cat $(@D)/seconds) s"
 	@touch $@
 
-# One nextpnr-ecp5 run. --timing-allow-fail: a missed target still gives the
-# achieved fmax; nextpnr exits non-zero when it cannot place or route.
+# One nextpnr-ecp5 run. First --pack-only: a design that needs more of a
+# resource than the device has (e.g. TRELLIS_COMB > 100 %) fails here in a minute
+# instead of after hours in the placer. Then the run; --timing-allow-fail: a
+# missed target still gives the achieved fmax; nextpnr exits non-zero when it
+# cannot place or route.
 $(PNR_RUN)/done: $(PNR_CFG)/synth/done | pnr-tools
 	@rm -rf $(@D) && mkdir -p $(@D)
 	@echo "pnr: nextpnr-ecp5 $(PNR_DEVNAME)-$(PNR_SPEED) $(PNR_PACKAGE), D=$(PNR_D) MAX_WIDTH=$(PNR_MAX_WIDTH), $(PNR_FREQ) MHz (log: $(@D)/nextpnr.log)"
 	@start=$$(date +%s); \
+	 flock $(PNR_LOCK) timeout $(PNR_TIMEOUT) nice -n $(PNR_NICE) $(PNR_NEXTPNR) --$(PNR_DEVICE) --package $(PNR_PACKAGE) \
+	   --speed $(PNR_SPEED) --json $(PNR_CFG)/synth/netlist.json --lpf-allow-unconstrained --pack-only \
+	   -l $(@D)/pack.log > $(@D)/pack.out 2>&1 || \
+	   { echo "pnr: nextpnr-ecp5 --pack-only failed:"; grep -E '^ERROR' $(@D)/pack.log $(@D)/pack.out | tail -5; exit 1; }; \
+	 over=$$(awk '/Device utilisation/ { u = 1 } u && /%$$/ && $$NF + 0 > 100 { sub(/^Info:[ \t]*/, ""); gsub(/[ \t]+/, " "); print }' $(@D)/pack.log); \
+	 if [ -n "$$over" ]; then echo "pnr: the design does not fit $(PNR_DEVNAME) after packing ($(@D)/pack.log):"; \
+	   echo "$$over" | sed 's/^/  /'; exit 1; fi; \
 	 flock $(PNR_LOCK) timeout $(PNR_TIMEOUT) nice -n $(PNR_NICE) $(PNR_NEXTPNR) --$(PNR_DEVICE) --package $(PNR_PACKAGE) \
 	   --speed $(PNR_SPEED) --json $(PNR_CFG)/synth/netlist.json --lpf-allow-unconstrained --freq $(PNR_FREQ) \
 	   --timing-allow-fail --seed $(PNR_SEED) --report $(@D)/report.json -l $(@D)/nextpnr.log > $(@D)/nextpnr.out 2>&1; \
