@@ -59,6 +59,7 @@ help:
 	@echo "make icarus        the core in Icarus Verilog: two D=16 frames vs the golden model"
 	@echo "make fusesoc-lint  FuseSoC (sgm.core) lint target; fusesoc-sim, fusesoc-synth"
 	@echo "make synth-axi     xc7 cells of the AXI4-Lite wrapper (sgm_axi) alone"
+	@echo "make pnr           ECP5 place and route of the whole core (D=64 MAX_WIDTH=1024, LFE5U-85F) -> build/pnr/; make pnr-help"
 	@echo "make regress       constrained-random regression of the core (seeded, replayable)"
 	@echo "make fuzz          seeded random-corruption fuzzing of image loading and argument parsing"
 	@echo "make coverage      line and toggle coverage of rtl/ -> build/coverage/"
@@ -73,6 +74,8 @@ include scripts/deps.mk
 TEST_EXTRA := sim-ci eval-ci
 # `make synth` and its reports (synth/synth.mk, when present).
 -include synth/synth.mk synth/axi.mk
+# `make pnr`, `make pnr-ci`: place and route on ECP5 (synth/pnr.mk).
+-include synth/pnr.mk
 
 # ---------------------------------------------------------------- golden model
 $(OBJ)/%.o: %.cpp $(GOLDEN_HDR) $(wildcard tools/*.hpp tests/*.hpp) | check-tools

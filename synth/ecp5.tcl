@@ -1,0 +1,35 @@
+# ECP5 synthesis of the whole sgm_top for place and route (`make pnr`,
+# synth/pnr.mk). Each pipeline stage is synthesized as its own top with
+# synth_ecp5 (flattened inside; see common.tcl for why one stage at a time),
+# saved, and the mapped stages are then put back under the elaborated
+# sgm_top in place of their RTL modules, so that one hierarchical netlist of
+# the whole core goes to nextpnr-ecp5 (which flattens it). sgm_top holds only
+# the stage instances, so no logic is left unmapped. Writes into $SYNTH_OUT:
+#   <name>.stat.txt   `stat` of each mapped stage, <name>.seconds its run time
+#   netlist.json      the whole core (write_json), input of nextpnr-ecp5
+#   top.stat.txt      `stat -top sgm_top` of that netlist (cell totals)
+source [file join [file dirname [info script]] common.tcl]
+
+set stages {}
+foreach_stage {
+  yosys synth_ecp5 -top $mod
+  yosys tee -q -o $out/$name.stat.txt stat
+  yosys design -save stage_$name
+  lappend stages [list $mod $name]
+}
+
+# Back to the elaborated design: replace each stage module by its mapped copy.
+yosys design -load elab
+yosys hierarchy -top sgm_top
+foreach s $stages {
+  lassign $s mod name
+  yosys delete $mod
+  yosys design -copy-from stage_$name $mod
+}
+# The ECP5 primitives as black boxes, as synth_ecp5 reads them.
+yosys read_verilog -lib -specify +/ecp5/cells_sim.v +/ecp5/cells_bb.v
+yosys hierarchy -check -top sgm_top
+yosys tee -q -o $out/top.stat.txt stat -top sgm_top
+# As synth_ecp5 ends: the primitives stay as black boxes (their port directions).
+yosys blackbox =A:whitebox
+yosys write_json $out/netlist.json

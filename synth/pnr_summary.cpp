@@ -1,0 +1,455 @@
+// pnr_summary: collects the `make pnr` runs under build/pnr into summary.json
+// and summary.md (synth/README.md, section "Place and route").
+//
+//   pnr-summary ROOT --cycles-per-pixel X --cpp-source TEXT [--check CONFIG/RUN]...
+//
+// ROOT holds one directory per configuration, d<D>-w<MAX_WIDTH>, with one
+// directory per nextpnr-ecp5 run (e.g. lfe5u-85f-8) written by synth/pnr.mk:
+// meta.txt (key=value: device, package, speed, d, max_width, target_mhz,
+// pnr_seconds, ...), report.json (nextpnr's --report) and the "done" stamp
+// (nextpnr exited 0, i.e. the design was placed and routed). Every figure
+// comes from report.json: utilisation (TRELLIS_COMB, TRELLIS_FF, DP16KD,
+// MULT18X18D), fmax (achieved) and the critical path. --check CONFIG/RUN fails
+// (exit 1, the reason on stderr) unless that run is done and reports an fmax.
+#include "report_json.hpp"
+#include "sgm/params.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <dirent.h>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <sys/stat.h>
+#include <vector>
+
+namespace {
+
+using sgm::Error;
+using sgm::eval::JsonWriter;
+
+// ------------------------------------------------------------------ JSON reader
+// Just enough of JSON for nextpnr's report: objects, arrays, strings (escapes
+// kept as the character after the backslash, \uXXXX as '?'), numbers, literals.
+struct Json {
+  enum Kind { Null, Bool, Number, String, Array, Object } kind = Null;
+  double number = 0;
+  std::string text;
+  std::vector<Json> items;
+  std::vector<std::pair<std::string, Json>> members;
+
+  const Json* get(const std::string& key) const {
+    for (const auto& m : members)
+      if (m.first == key) return &m.second;
+    return nullptr;
+  }
+};
+
+class JsonParser {
+ public:
+  JsonParser(const std::string& text, const std::string& name) : s_(text), name_(name) {}
+  Json parse() {
+    Json v = value();
+    skip();
+    if (i_ != s_.size()) fail("trailing characters");
+    return v;
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& what) {
+    throw Error(name_ + ": JSON: " + what + " at offset " + std::to_string(i_));
+  }
+  void skip() {
+    while (i_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[i_]))) ++i_;
+  }
+  char peek() {
+    skip();
+    if (i_ >= s_.size()) fail("unexpected end");
+    return s_[i_];
+  }
+  void expect(char c) {
+    if (peek() != c) fail(std::string("expected '") + c + "'");
+    ++i_;
+  }
+  std::string str() {
+    expect('"');
+    std::string out;
+    while (i_ < s_.size() && s_[i_] != '"') {
+      if (s_[i_] == '\\' && i_ + 1 < s_.size()) {
+        ++i_;
+        if (s_[i_] == 'u') { out += '?'; i_ += 4; }
+        else out += s_[i_] == 'n' ? '\n' : s_[i_] == 't' ? '\t' : s_[i_];
+        ++i_;
+      } else {
+        out += s_[i_++];
+      }
+    }
+    if (i_ >= s_.size()) fail("unterminated string");
+    ++i_;
+    return out;
+  }
+  Json value() {
+    Json v;
+    const char c = peek();
+    if (c == '{') {
+      v.kind = Json::Object;
+      ++i_;
+      if (peek() == '}') { ++i_; return v; }
+      for (;;) {
+        std::string k = str();
+        expect(':');
+        v.members.emplace_back(std::move(k), value());
+        if (peek() == ',') { ++i_; continue; }
+        expect('}');
+        return v;
+      }
+    }
+    if (c == '[') {
+      v.kind = Json::Array;
+      ++i_;
+      if (peek() == ']') { ++i_; return v; }
+      for (;;) {
+        v.items.push_back(value());
+        if (peek() == ',') { ++i_; continue; }
+        expect(']');
+        return v;
+      }
+    }
+    if (c == '"') { v.kind = Json::String; v.text = str(); return v; }
+    for (const char* lit : {"true", "false", "null"}) {
+      if (s_.compare(i_, std::string(lit).size(), lit) == 0) {
+        i_ += std::string(lit).size();
+        v.kind = lit[0] == 'n' ? Json::Null : Json::Bool;
+        v.number = lit[0] == 't';
+        return v;
+      }
+    }
+    const char* begin = s_.c_str() + i_;
+    char* end = nullptr;
+    v.number = std::strtod(begin, &end);
+    if (end == begin) fail("unexpected character");
+    v.kind = Json::Number;
+    i_ += static_cast<size_t>(end - begin);
+    return v;
+  }
+
+  const std::string& s_;
+  std::string name_;
+  size_t i_ = 0;
+};
+
+// ------------------------------------------------------------------ helpers
+bool isFile(const std::string& p) {
+  struct stat st;
+  return stat(p.c_str(), &st) == 0 && S_ISREG(st.st_mode);
+}
+std::vector<std::string> listDir(const std::string& p) {
+  std::vector<std::string> out;
+  if (DIR* d = opendir(p.c_str())) {
+    while (dirent* e = readdir(d)) {
+      const std::string n = e->d_name;
+      if (n[0] != '.') out.push_back(n);
+    }
+    closedir(d);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+std::string readFile(const std::string& p) {
+  std::ifstream f(p);
+  if (!f) throw Error(p + ": cannot read");
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
+std::map<std::string, std::string> readMeta(const std::string& p) {
+  std::map<std::string, std::string> kv;
+  std::istringstream in(readFile(p));
+  for (std::string line; std::getline(in, line);) {
+    const auto eq = line.find('=');
+    if (eq != std::string::npos) kv[line.substr(0, eq)] = line.substr(eq + 1);
+  }
+  return kv;
+}
+std::string fixed(double v, int decimals) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+// The RTL module of a source location "rtl/sgm_path_pe.sv:43.24-43.35" (one
+// module per file, named after it); empty for Yosys' own techmap files.
+std::string sourceModule(const std::string& src) {
+  if (src.compare(0, 4, "rtl/") != 0) return "";
+  const auto dot = src.find('.', 4);
+  return src.substr(4, dot == std::string::npos ? std::string::npos : dot - 4);
+}
+
+// The instance path of a public net name "u_paths.g_path[0].g_pe[11].u_pe.step[5]"
+// (the components before the wire's own name); empty for internal ($) names.
+std::string netInstance(const std::string& net) {
+  if (net.find('$') != std::string::npos) return "";
+  const auto cut = net.rfind('.');
+  return cut == std::string::npos ? std::string("(top)") : net.substr(0, cut);
+}
+
+void addUnique(std::vector<std::string>& list, const std::string& item) {
+  if (!item.empty() && std::find(list.begin(), list.end(), item) == list.end()) list.push_back(item);
+}
+
+// ------------------------------------------------------------------ one run
+struct Run {
+  std::string name;  // CONFIG/RUN
+  std::map<std::string, std::string> meta;
+  long lut4 = 0, lut4Avail = 0, ff = 0, ffAvail = 0, ebr = 0, ebrAvail = 0, dsp = 0, dspAvail = 0;
+  long lutram = 0;
+  double fmax = 0;
+  std::string clock;
+  std::string pathStart, pathEnd;
+  std::vector<std::string> pathModules;    // RTL modules (source files), in path order
+  std::vector<std::string> pathInstances;  // instance paths (public net names), in path order
+  int pathLogicCells = 0;
+  double pathLogicNs = 0, pathRoutingNs = 0;
+};
+
+long used(const Json& util, const char* type, long* available) {
+  const Json* t = util.get(type);
+  if (!t) return 0;
+  if (available)
+    if (const Json* a = t->get("available")) *available = static_cast<long>(a->number);
+  const Json* u = t->get("used");
+  return u ? static_cast<long>(u->number) : 0;
+}
+
+Run readRun(const std::string& dir, const std::string& name) {
+  Run r;
+  r.name = name;
+  r.meta = readMeta(dir + "/meta.txt");
+  const std::string reportPath = dir + "/report.json";
+  const std::string text = readFile(reportPath);
+  const Json report = JsonParser(text, reportPath).parse();
+  if (const Json* util = report.get("utilization")) {
+    r.lut4 = used(*util, "TRELLIS_COMB", &r.lut4Avail);
+    r.ff = used(*util, "TRELLIS_FF", &r.ffAvail);
+    r.ebr = used(*util, "DP16KD", &r.ebrAvail);
+    r.dsp = used(*util, "MULT18X18D", &r.dspAvail) + used(*util, "ALU54B", nullptr);
+    r.lutram = used(*util, "TRELLIS_RAMW", nullptr);
+  }
+  // The slowest clock domain is the design's fmax (the core has one clock).
+  if (const Json* fm = report.get("fmax")) {
+    for (const auto& m : fm->members) {
+      const Json* a = m.second.get("achieved");
+      if (a && (r.clock.empty() || a->number < r.fmax)) {
+        r.fmax = a->number;
+        r.clock = m.first;
+      }
+    }
+  }
+  // The critical path of that clock to itself (nextpnr lists one per clock pair).
+  if (const Json* cps = report.get("critical_paths")) {
+    for (const Json& cp : cps->items) {
+      const Json* from = cp.get("from");
+      const Json* to = cp.get("to");
+      const Json* path = cp.get("path");
+      if (!path || path->items.empty() || (from && to && from->text != to->text)) continue;
+      const auto cellOf = [](const Json& seg, const char* end) {
+        const Json* e = seg.get(end);
+        const Json* c = e ? e->get("cell") : nullptr;
+        return c ? c->text : std::string();
+      };
+      r.pathStart = cellOf(path->items.front(), "from");
+      r.pathEnd = cellOf(path->items.back(), "to");
+      r.pathModules.clear();
+      r.pathInstances.clear();
+      r.pathLogicCells = 0;
+      r.pathLogicNs = r.pathRoutingNs = 0;
+      for (const Json& seg : path->items) {
+        const Json* type = seg.get("type");
+        const Json* delay = seg.get("delay");
+        const double ns = delay ? delay->number : 0;
+        if (type && type->text == "routing") r.pathRoutingNs += ns;
+        else r.pathLogicNs += ns;
+        if (type && type->text == "logic") ++r.pathLogicCells;
+        if (const Json* sources = seg.get("sources"))
+          for (const Json& src : sources->items) addUnique(r.pathModules, sourceModule(src.text));
+        if (const Json* net = seg.get("net")) addUnique(r.pathInstances, netInstance(net->text));
+      }
+      break;
+    }
+  }
+  return r;
+}
+
+// ------------------------------------------------------------------ video formats
+// The paper's Table II (its clock at 9 cycles per pixel) and the HD formats
+// this core aims at; paperMhz 0 where the paper has no column. Active pixels only.
+struct VideoFormat {
+  const char* name;
+  int width, height, fps;
+  double paperMhz;
+};
+const VideoFormat kFormats[] = {
+    {"450x375p30", 450, 375, 30, 45.6},    {"450x375p60", 450, 375, 60, 91.1},
+    {"640x480p30", 640, 480, 30, 82.9},    {"640x480p60", 640, 480, 60, 165.9},
+    {"1280x720p30", 1280, 720, 30, 248.8}, {"1280x720p60", 1280, 720, 60, 0},
+    {"1920x1080p30", 1920, 1080, 30, 0},   {"1920x1080p60", 1920, 1080, 60, 0},
+};
+double neededMhz(const VideoFormat& f, double cpp) {
+  return double(f.width) * f.height * f.fps * cpp / 1e6;
+}
+
+std::string meta(const Run& r, const char* key) {
+  const auto it = r.meta.find(key);
+  return it == r.meta.end() ? std::string("?") : it->second;
+}
+double metaNumber(const Run& r, const char* key) {
+  const auto it = r.meta.find(key);
+  return it == r.meta.end() ? 0 : std::atof(it->second.c_str());
+}
+
+std::string joined(const std::vector<std::string>& v, const char* sep) {
+  std::string out;
+  for (const auto& s : v) out += (out.empty() ? "" : sep) + s;
+  return out;
+}
+
+void writeSummary(const std::string& root, const std::vector<Run>& runs, double cpp,
+                  const std::string& cppSource) {
+  JsonWriter j;
+  j.beginObject();
+  j.key("cycles_per_pixel").real(cpp);
+  j.key("cycles_per_pixel_source").string(cppSource);
+  j.key("runs").beginArray();
+  for (const Run& r : runs) {
+    j.beginObject();
+    j.key("run").string(r.name);
+    j.key("device").string(meta(r, "device"));
+    j.key("package").string(meta(r, "package"));
+    j.key("speed").integer(std::atol(meta(r, "speed").c_str()));
+    j.key("d").integer(std::atol(meta(r, "d").c_str()));
+    j.key("max_width").integer(std::atol(meta(r, "max_width").c_str()));
+    j.key("lut4").integer(r.lut4);
+    j.key("lut4_available").integer(r.lut4Avail);
+    j.key("lutram_slices").integer(r.lutram);
+    j.key("ff").integer(r.ff);
+    j.key("ff_available").integer(r.ffAvail);
+    j.key("ebr").integer(r.ebr);
+    j.key("ebr_available").integer(r.ebrAvail);
+    j.key("dsp").integer(r.dsp);
+    j.key("fmax_mhz").real(r.fmax);
+    j.key("target_mhz").real(metaNumber(r, "target_mhz"));
+    j.key("critical_path").beginObject();
+    j.key("start").string(r.pathStart);
+    j.key("end").string(r.pathEnd);
+    j.key("modules").beginArray();
+    for (const auto& m : r.pathModules) j.string(m);
+    j.endArray();
+    j.key("instances").beginArray();
+    for (const auto& m : r.pathInstances) j.string(m);
+    j.endArray();
+    j.key("logic_cells").integer(r.pathLogicCells);
+    j.key("logic_ns").real(r.pathLogicNs);
+    j.key("routing_ns").real(r.pathRoutingNs);
+    j.endObject();
+    j.key("pnr_seconds").integer(std::atol(meta(r, "pnr_seconds").c_str()));
+    j.key("synth_seconds").integer(std::atol(meta(r, "synth_seconds").c_str()));
+    j.key("seed").integer(std::atol(meta(r, "seed").c_str()));
+    j.key("nextpnr").string(meta(r, "nextpnr"));
+    j.key("yosys").string(meta(r, "yosys"));
+    j.key("rtl_commit").string(meta(r, "rtl_commit"));
+    j.key("date").string(meta(r, "date"));
+    j.key("formats").beginArray();
+    for (const VideoFormat& f : kFormats) {
+      j.beginObject();
+      j.key("format").string(f.name);
+      j.key("needed_mhz").real(neededMhz(f, cpp));
+      j.key("clock_met").boolean(r.fmax >= neededMhz(f, cpp));
+      j.key("width_fits").boolean(f.width <= std::atol(meta(r, "max_width").c_str()));
+      j.endObject();
+    }
+    j.endArray();
+    j.endObject();
+  }
+  j.endArray();
+  j.endObject();
+  sgm::eval::writeTextFile(root + "/summary.json", j.str());
+
+  std::ostringstream md;
+  md << "# Place and route of sgm_top on ECP5 (nextpnr-ecp5)\n\n"
+     << "Figures from nextpnr's own report (`--report`) of each run under " << root
+     << "; LUT4 = TRELLIS_COMB cells (LUT4s, carry halves and LUT-RAM LUTs), EBR = DP16KD.\n\n"
+     << "| run | device | speed | D | MAX_WIDTH | LUT4 | FF | EBR | DSP | fmax (MHz) | target (MHz) | "
+        "critical path | P&R (s) |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const Run& r : runs)
+    md << "| " << r.name << " | " << meta(r, "device") << "-" << meta(r, "package") << " | " << meta(r, "speed")
+       << " | " << meta(r, "d") << " | " << meta(r, "max_width") << " | " << r.lut4 << " / " << r.lut4Avail
+       << " | " << r.ff << " / " << r.ffAvail << " | " << r.ebr << " / " << r.ebrAvail << " | " << r.dsp
+       << " | **" << fixed(r.fmax, 1) << "** | " << meta(r, "target_mhz") << " | " << r.pathStart << " -> "
+       << r.pathEnd << " (" << r.pathLogicCells << " logic cells, " << fixed(r.pathLogicNs, 2) << " ns logic + "
+       << fixed(r.pathRoutingNs, 2) << " ns routing; through " << joined(r.pathModules, " > ") << ") | "
+       << meta(r, "pnr_seconds") << " |\n";
+  md << "\n## Clock per video format\n\n"
+     << "Needed clock = active pixels per second x " << fixed(cpp, 3) << " cycles per pixel (" << cppSource
+     << "). The paper's clocks (Table II) are for its 9 cycles per pixel. A format is met when the routed fmax "
+        "reaches the needed clock; frames wider than MAX_WIDTH need a larger build (marked *width*).\n\n"
+     << "| format | paper, Table II (MHz) | needed here (MHz) |";
+  for (const Run& r : runs) md << " " << r.name << " (" << fixed(r.fmax, 1) << " MHz) |";
+  md << "\n|---|---|---|";
+  for (size_t i = 0; i < runs.size(); ++i) md << "---|";
+  md << "\n";
+  for (const VideoFormat& f : kFormats) {
+    md << "| " << f.name << " | " << (f.paperMhz > 0 ? fixed(f.paperMhz, 1) : std::string("-")) << " | "
+       << fixed(neededMhz(f, cpp), 1) << " |";
+    for (const Run& r : runs) {
+      md << " " << (r.fmax >= neededMhz(f, cpp) ? "met" : "not met");
+      if (f.width > std::atol(meta(r, "max_width").c_str())) md << " (*width*)";
+      md << " |";
+    }
+    md << "\n";
+  }
+  sgm::eval::writeTextFile(root + "/summary.md", md.str());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    if (argc < 2) throw Error("usage: pnr-summary ROOT --cycles-per-pixel X --cpp-source TEXT [--check CONFIG/RUN]...");
+    const std::string root = argv[1];
+    double cpp = 0;
+    std::string cppSource;
+    std::vector<std::string> checks;
+    for (int i = 2; i < argc; ++i) {
+      const std::string a = argv[i];
+      if (i + 1 >= argc) throw Error("pnr-summary: " + a + " needs a value");
+      if (a == "--cycles-per-pixel") cpp = std::atof(argv[++i]);
+      else if (a == "--cpp-source") cppSource = argv[++i];
+      else if (a == "--check") checks.push_back(argv[++i]);
+      else throw Error("pnr-summary: unknown option " + a);
+    }
+    if (!(cpp >= 1.0)) throw Error("pnr-summary: --cycles-per-pixel must be a number >= 1");
+    std::vector<Run> runs;
+    for (const auto& cfg : listDir(root))
+      for (const auto& run : listDir(root + "/" + cfg)) {
+        const std::string dir = root + "/" + cfg + "/" + run;
+        if (isFile(dir + "/done") && isFile(dir + "/report.json")) runs.push_back(readRun(dir, cfg + "/" + run));
+      }
+    writeSummary(root, runs, cpp, cppSource);
+    std::cout << "pnr-summary: " << runs.size() << " run(s) -> " << root << "/summary.json, summary.md\n";
+    for (const auto& c : checks) {
+      const auto it = std::find_if(runs.begin(), runs.end(), [&](const Run& r) { return r.name == c; });
+      if (it == runs.end()) throw Error("pnr-summary: --check " + c + ": no routed run (missing done stamp or report.json)");
+      if (!(it->fmax > 0)) throw Error("pnr-summary: --check " + c + ": nextpnr reported no fmax");
+      std::cout << "pnr-summary: " << c << " routed, fmax " << fixed(it->fmax, 1) << " MHz, " << it->lut4
+                << " LUT4, " << it->ff << " FF, " << it->ebr << " EBR\n";
+    }
+  } catch (const std::exception& e) {
+    std::cerr << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
