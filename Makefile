@@ -210,14 +210,6 @@ rtl-tests: $(RTL_TEST_BINS)
 	@for t in $(RTL_TEST_BINS); do echo "== $$t"; \
 	  SGM_DATA="$(DATA)" $$t --gtest_output=xml:$(RESULTS)/$$(basename $$t).xml || exit 1; done
 
-# `make test` runs the fixtures that `make coverage` also builds (COV_FIXTURES,
-# tests/coverage.mk) once, in their coverage builds (coverage-ci), and the rest here.
-RTL_TEST_CI_BINS = $(filter-out $(foreach f,$(COV_FIXTURES),$(BIN)/rtl-$(f)),$(RTL_TEST_BINS))
-rtl-tests-ci: $(RTL_TEST_CI_BINS)
-	@mkdir -p $(RESULTS)
-	@for t in $(RTL_TEST_CI_BINS); do echo "== $$t"; \
-	  SGM_DATA="$(DATA)" $$t --gtest_output=xml:$(RESULTS)/$$(basename $$t).xml || exit 1; done
-
 # verilator --lint-only -Wall on every module; waivers live in rtl/lint.vlt.
 lint: | check-tools
 	@for m in $(RTL_MODULES); do \
@@ -237,6 +229,15 @@ unit-test: $(BIN)/unit-tests golden
 # `make bench`: included here, after every variable and the rtl_test macro are defined.
 -include tests/regress.mk tests/fuzz.mk tests/coverage.mk bench/bench.mk tests/mutate/mutate.mk
 -include tests/icarus.mk tests/fusesoc.mk
+
+# `make test` runs the fixtures that `make coverage` also builds (COV_FIXTURES,
+# tests/coverage.mk) once, in their coverage builds (coverage-ci), and the rest here
+# (after the includes: a rule's prerequisites are expanded when it is read).
+RTL_TEST_CI_BINS = $(filter-out $(foreach f,$(COV_FIXTURES),$(BIN)/rtl-$(f)),$(RTL_TEST_BINS))
+rtl-tests-ci: $(RTL_TEST_CI_BINS)
+	@mkdir -p $(RESULTS)
+	@for t in $(RTL_TEST_CI_BINS); do echo "== $$t"; \
+	  SGM_DATA="$(DATA)" $$t --gtest_output=xml:$(RESULTS)/$$(basename $$t).xml || exit 1; done
 
 # One closing line over every GoogleTest binary of this run.
 test: lint unit-test rtl-tests-ci
