@@ -139,6 +139,10 @@ struct RegisterSpec {
   uint32_t offset, reset, writable;
 };
 
+// The build's census window (sgm_axi's CENSUS_H, passed to sgm_top).
+constexpr sgm::CensusShape kCensus =
+    sgm::censusShape(Rtl::CENSUS_H == 9 ? sgm::CensusWindow::k9x9 : sgm::CensusWindow::k9x5);
+
 std::vector<RegisterSpec> registers() {
   return {
       {"ID", SGM_REG_ID, SGM_ID_VALUE, 0},
@@ -146,7 +150,7 @@ std::vector<RegisterSpec> registers() {
       {"MAX_WIDTH", SGM_REG_MAX_WIDTH, uint32_t(Rtl::MAX_WIDTH), 0},
       {"MAX_HEIGHT", SGM_REG_MAX_HEIGHT, uint32_t(Rtl::MAX_HEIGHT), 0},
       {"CENSUS", SGM_REG_CENSUS,
-       uint32_t(sgm::kCensusWidth) << SGM_CENSUS_WIDTH_SHIFT | uint32_t(sgm::kCensusHeight) << SGM_CENSUS_HEIGHT_SHIFT, 0},
+       uint32_t(kCensus.width) << SGM_CENSUS_WIDTH_SHIFT | uint32_t(kCensus.height) << SGM_CENSUS_HEIGHT_SHIFT, 0},
       {"CTRL", SGM_REG_CTRL, 0, SGM_CTRL_MASK},
       {"FRAME_SIZE", SGM_REG_FRAME_SIZE, 0, 0xFFFFFFFFu},
       {"PENALTY", SGM_REG_PENALTY, SGM_PENALTY_RESET, SGM_PENALTY_MASK},
@@ -167,7 +171,7 @@ TEST(SgmAxi, ResetValuesAndIdentification) {
   drv::Identity id;
   EXPECT_TRUE(c.driver.identify(&id));
   EXPECT_EQ(id.disparities, uint32_t(kD));
-  EXPECT_EQ(id.censusWidth * id.censusHeight, uint32_t(sgm::kCensusBits + 1));
+  EXPECT_EQ(id.censusWidth * id.censusHeight, uint32_t(kCensus.bits + 1));
   EXPECT_EQ(c.model().irq_o, 0);
 }
 
