@@ -34,6 +34,13 @@ PNR_CI_D         ?= 16
 PNR_CI_MAX_WIDTH ?= 128
 PNR_CI_DEVICE    ?= 45k
 PNR_CI_SPEED     ?= 6
+# Extra nextpnr options of a run (recorded in its meta.txt and summary). The CI
+# smoke only has to show that the core routes and gets an fmax: without
+# timing-driven placement and with router2 it takes about 4 min of CPU instead
+# of about 9, at a lower fmax (20.1 against 26.6 MHz at D = 16, LFE5U-45F-6,
+# measured 2026-11-24); `make pnr` runs the full timing-driven flow.
+PNR_FLAGS        ?=
+PNR_CI_FLAGS     ?= --no-tmdriv --router router2
 # Cycles per pixel for the video-format table: the largest cycles_per_pixel of
 # build/bench/report.json when `make bench` has run, otherwise this figure
 # (README.md, accuracy table: whole-core test, the worst of the five scenes).
@@ -72,7 +79,7 @@ pnr: pnr-tools $(PNR_SUMMARY)
 pnr-ci: pnr-tools $(PNR_SUMMARY)
 	@start=$$(date +%s); \
 	 $(MAKE) --no-print-directory pnr-one PNR_D=$(PNR_CI_D) PNR_MAX_WIDTH=$(PNR_CI_MAX_WIDTH) \
-	   PNR_DEVICE=$(PNR_CI_DEVICE) PNR_SPEED=$(PNR_CI_SPEED) && \
+	   PNR_DEVICE=$(PNR_CI_DEVICE) PNR_SPEED=$(PNR_CI_SPEED) PNR_FLAGS="$(PNR_CI_FLAGS)" && \
 	 $(MAKE) --no-print-directory pnr-summary \
 	   PNR_CHECK=d$(PNR_CI_D)-w$(PNR_CI_MAX_WIDTH)/lfe5u-$(subst k,f,$(PNR_CI_DEVICE))-$(PNR_CI_SPEED) && \
 	 echo "pnr-ci: OK ($$(( $$(date +%s) - start )) s)"
@@ -124,14 +131,14 @@ $(PNR_RUN)/done: $(PNR_CFG)/synth/done | pnr-tools
 	   echo "$$over" | sed 's/^/  /'; exit 1; fi; \
 	 flock $(PNR_LOCK) timeout $(PNR_TIMEOUT) nice -n $(PNR_NICE) $(PNR_NEXTPNR) --$(PNR_DEVICE) --package $(PNR_PACKAGE) \
 	   --speed $(PNR_SPEED) --json $(PNR_CFG)/synth/netlist.json --lpf-allow-unconstrained --freq $(PNR_FREQ) \
-	   --timing-allow-fail --seed $(PNR_SEED) --report $(@D)/report.json -l $(@D)/nextpnr.log > $(@D)/nextpnr.out 2>&1; \
+	   --timing-allow-fail --seed $(PNR_SEED) $(PNR_FLAGS) --report $(@D)/report.json -l $(@D)/nextpnr.log > $(@D)/nextpnr.out 2>&1; \
 	 rc=$$?; secs=$$(( $$(date +%s) - start )); \
 	 if [ $$rc != 0 ]; then \
 	   if [ $$rc = 124 ]; then echo "pnr: nextpnr timed out after $(PNR_TIMEOUT) s (PNR_TIMEOUT)"; \
 	   else echo "pnr: nextpnr-ecp5 failed (exit $$rc):"; grep -E '^ERROR' $(@D)/nextpnr.log $(@D)/nextpnr.out | tail -5; fi; exit 1; fi; \
 	 commit=$$(git log -1 --format=%h -- rtl 2>/dev/null)$$(git status --porcelain -- rtl 2>/dev/null | grep -q . && echo -dirty); \
 	 { echo "device=$(PNR_DEVNAME)"; echo "package=$(PNR_PACKAGE)"; echo "speed=$(PNR_SPEED)"; \
-	   echo "d=$(PNR_D)"; echo "max_width=$(PNR_MAX_WIDTH)"; echo "target_mhz=$(PNR_FREQ)"; echo "seed=$(PNR_SEED)"; \
+	   echo "d=$(PNR_D)"; echo "max_width=$(PNR_MAX_WIDTH)"; echo "target_mhz=$(PNR_FREQ)"; echo "seed=$(PNR_SEED)"; echo "nextpnr_flags=$(PNR_FLAGS)"; \
 	   echo "pnr_seconds=$$secs"; echo "synth_seconds=$$(cat $(PNR_CFG)/synth/seconds)"; \
 	   echo "nextpnr=$$($(PNR_NEXTPNR) --version 2>&1 | head -1)"; echo "yosys=$$(yosys -V)"; \
 	   echo "rtl_commit=$$commit"; echo "date=$$(date -u +%Y-%m-%dT%H:%M:%SZ)"; } > $(@D)/meta.txt; \

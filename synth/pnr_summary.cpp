@@ -359,6 +359,7 @@ void writeSummary(const std::string& root, const std::vector<Run>& runs, double 
     j.key("synth_seconds").integer(std::atol(meta(r, "synth_seconds").c_str()));
     j.key("seed").integer(std::atol(meta(r, "seed").c_str()));
     j.key("nextpnr").string(meta(r, "nextpnr"));
+    j.key("nextpnr_flags").string(meta(r, "nextpnr_flags") == "?" ? "" : meta(r, "nextpnr_flags"));
     j.key("yosys").string(meta(r, "yosys"));
     j.key("rtl_commit").string(meta(r, "rtl_commit"));
     j.key("date").string(meta(r, "date"));
@@ -385,7 +386,10 @@ void writeSummary(const std::string& root, const std::vector<Run>& runs, double 
      << "| run | device | speed | D | MAX_WIDTH | LUT4 | FF | EBR | DSP | fmax (MHz) | target (MHz) | "
         "critical path | P&R (s) |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Run& r : runs)
-    md << "| " << r.name << " | " << meta(r, "device") << "-" << meta(r, "package") << " | " << meta(r, "speed")
+    md << "| " << r.name << (meta(r, "nextpnr_flags").empty() || meta(r, "nextpnr_flags") == "?"
+                                 ? std::string()
+                                 : " (`" + meta(r, "nextpnr_flags") + "`)")
+       << " | " << meta(r, "device") << "-" << meta(r, "package") << " | " << meta(r, "speed")
        << " | " << meta(r, "d") << " | " << meta(r, "max_width") << " | " << r.lut4 << " / " << r.lut4Avail
        << " | " << r.ff << " / " << r.ffAvail << " | " << r.ebr << " / " << r.ebrAvail << " | " << r.dsp
        << " | **" << fixed(r.fmax, 1) << "** | " << meta(r, "target_mhz") << " | " << r.pathStart << " -> "
