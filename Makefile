@@ -38,7 +38,7 @@ EVAL_OBJ   := $(patsubst %.cpp,$(OBJ)/%.o,$(EVAL_SRC))
 TEST_SRC   := $(wildcard tests/*.cpp)
 TEST_OBJ   := $(patsubst %.cpp,$(OBJ)/%.o,$(TEST_SRC))
 
-.PHONY: all help deps check-tools golden eval eval-ci bench-golden test unit-test rtl-tests rtl-tests-ci sim sim-ci synth lint clean
+.PHONY: all help deps check-tools golden eval eval-ci bench-golden test unit-test rtl-tests sim sim-ci synth lint clean
 .DEFAULT_GOAL := all
 
 all: golden
@@ -230,17 +230,8 @@ unit-test: $(BIN)/unit-tests golden
 -include tests/regress.mk tests/fuzz.mk tests/coverage.mk bench/bench.mk tests/mutate/mutate.mk
 -include tests/icarus.mk tests/fusesoc.mk
 
-# `make test` runs the fixtures that `make coverage` also builds (COV_FIXTURES,
-# tests/coverage.mk) once, in their coverage builds (coverage-ci), and the rest here
-# (after the includes: a rule's prerequisites are expanded when it is read).
-RTL_TEST_CI_BINS = $(filter-out $(foreach f,$(COV_FIXTURES),$(BIN)/rtl-$(f)),$(RTL_TEST_BINS))
-rtl-tests-ci: $(RTL_TEST_CI_BINS)
-	@mkdir -p $(RESULTS)
-	@for t in $(RTL_TEST_CI_BINS); do echo "== $$t"; \
-	  SGM_DATA="$(DATA)" $$t --gtest_output=xml:$(RESULTS)/$$(basename $$t).xml || exit 1; done
-
 # One closing line over every GoogleTest binary of this run.
-test: lint unit-test rtl-tests-ci
+test: lint unit-test rtl-tests
 	@for t in $(TEST_EXTRA); do $(MAKE) --no-print-directory $$t || exit 1; done
 	@scripts/test-summary.sh $(RESULTS)
 

@@ -23,8 +23,7 @@ $(eval $(call regress_build,$(COV_REGRESS_BIN),16,128,$(COV_VFLAGS)))
 # The coverage variants: the fixtures of COV_FIXTURES built again, with the same
 # top and options as their `make rtl-tests` builds (the rtl_test macro records
 # them) plus the coverage flags. They are kept out of RTL_TEST_BINS so that
-# `make rtl-tests` does not run them; `make test` runs them instead of their
-# plain builds (coverage-ci), so each fixture is built once in CI.
+# `make rtl-tests` does not run them.
 COV_FIXTURES   := p2-lut stream-ctrl hole-fill median5x5 edge-snap census-unit cost-volume-d16 \
                   path-engine-d16 wta-d16 lr-check-d16 top-d16 axi-d16
 COV_SAVED_BINS := $(RTL_TEST_BINS)
@@ -34,8 +33,9 @@ COV_TEST_BINS  := $(RTL_TEST_BINS)
 $(BIN)/rtl-cov-axi-d16: sw/sgm_driver.cpp $(wildcard sw/include/*.h*)
 RTL_TEST_BINS  := $(COV_SAVED_BINS)
 
-# CI: `make coverage` with a short regression, its fixtures' results counted in
-# the closing line of `make test`.
+# CI: the same flow (coverage build, run, merge, annotate, summary) on the
+# regression alone, 40 frames: one coverage build of the whole core instead of
+# thirteen (`make test` runs the fixtures in their plain builds).
 COV_CI_REGRESS_FRAMES ?= 40
 TEST_EXTRA += coverage-ci
 
@@ -63,5 +63,4 @@ coverage: $(COV_TEST_BINS) $(COV_SUMMARY) $(COV_REGRESS_BIN) | check-tools
 	@$(COV_SUMMARY) --out $(COV_DIR) --waivers tests/coverage/waivers.txt $(COV_DIR)/merged.dat
 
 coverage-ci:
-	@$(MAKE) --no-print-directory coverage COV_REGRESS_FRAMES=$(COV_CI_REGRESS_FRAMES)
-	@mkdir -p $(RESULTS) && for f in $(COV_DIR)/results/*.xml; do cp $$f $(RESULTS)/$$(basename $$f); done
+	@$(MAKE) --no-print-directory coverage COV_FIXTURES= COV_REGRESS_FRAMES=$(COV_CI_REGRESS_FRAMES)

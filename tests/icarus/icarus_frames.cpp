@@ -38,6 +38,7 @@ std::vector<Frame> frames() {
   defaults.disparities = kD;
   sgm::Params other = defaults;
   other.mode = sgm::CostMode::kUnified, other.p1 = 40, other.p2 = 200, other.median = false, other.lrTolerance = 0;
+  other.p2Mode = sgm::P2Mode::kPaper, other.weights = sgm::PathWeighting::kEqual;  // the paper's run-time options
   return {{40, 14, defaults}, {33, 10, other}};
 }
 
@@ -54,7 +55,8 @@ void write(const std::string& dir) {
     const Frame& f = all[k];
     const sgm::tb::HardwareConfig c = sgm::tb::hardwareConfig(f.params, f.width, f.height);
     cfg << c.width << " " << c.height << " " << c.p1 << " " << c.p2 << " " << c.mode << " " << c.subpixel << " "
-        << c.lrEnable << " " << c.lrTolerance << " " << c.fill << " " << c.snap << " " << c.median << "\n";
+        << c.lrEnable << " " << c.lrTolerance << " " << c.fill << " " << c.snap << " " << c.median << " " << c.p2Paper
+        << " " << c.weightsEqual << "\n";
     const cv::Mat left = scene(f, int(k), false), right = scene(f, int(k), true);
     const sgm::DisparityMap golden = sgm::runPipeline(left, right, f.params);
     char line[32];
