@@ -10,9 +10,12 @@
 #   top.stat.txt      `stat -top sgm_top` of that netlist (cell totals)
 source [file join [file dirname [info script]] common.tcl]
 
+# SYNTH_ECP5_FLAGS: extra synth_ecp5 options (synth/pnr.mk, PNR_SYNTH_FLAGS).
+set synth_flags [env_or SYNTH_ECP5_FLAGS ""]
+
 set stages {}
 foreach_stage {
-  yosys synth_ecp5 -top $mod
+  yosys synth_ecp5 {*}$synth_flags -top $mod
   yosys tee -q -o $out/$name.stat.txt stat
   yosys design -save stage_$name
   lappend stages [list $mod $name]

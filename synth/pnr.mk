@@ -40,6 +40,13 @@ PNR_CI_SPEED     ?= 6
 # of about 9, at a lower fmax (20.1 against 26.6 MHz at D = 16, LFE5U-45F-6,
 # measured 2026-11-24); `make pnr` runs the full timing-driven flow.
 PNR_FLAGS        ?=
+# synth_ecp5 options of every run (recorded in meta.txt and the summary).
+# -nowidelut: LUT4s only, no LUT5-7 built from PFUMX / L6MUX21. A LUT6 takes four
+# LUT4s however little of it the function needs; without wide LUTs abc packs the
+# logic into LUT4s itself: 25 % fewer TRELLIS_COMB cells on the whole core at
+# D = 16 (23,254 -> 17,334, measured 2026-11-24), which is what lets D = 64 fit
+# the LFE5U-85F (synth/README.md, "Place and route").
+PNR_SYNTH_FLAGS  ?= -nowidelut
 PNR_CI_FLAGS     ?= --no-tmdriv --router router2
 # Cycles per pixel for the video-format table: the largest cycles_per_pixel of
 # build/bench/report.json when `make bench` has run, otherwise this figure
@@ -106,10 +113,11 @@ $(PNR_CFG)/synth/done: $(PNR_DEPS) | pnr-tools
 	@echo "pnr: synth_ecp5, D=$(PNR_D) MAX_WIDTH=$(PNR_MAX_WIDTH) (log: $(@D)/yosys.log)"
 	@start=$$(date +%s); \
 	 SYNTH_RTL=rtl SYNTH_D=$(PNR_D) SYNTH_MAX_WIDTH=$(PNR_MAX_WIDTH) SYNTH_MAX_HEIGHT=$(PNR_MAX_HEIGHT) SYNTH_OUT=$(@D) \
+	   SYNTH_ECP5_FLAGS="$(PNR_SYNTH_FLAGS)" \
 	   flock $(PNR_LOCK) timeout $(PNR_TIMEOUT) nice -n $(PNR_NICE) yosys -q -l $(@D)/yosys.log -c synth/ecp5.tcl \
 	   > $(@D)/yosys.out 2>&1; rc=$$?; \
 	 if [ $$rc != 0 ]; then echo "pnr: Yosys failed (exit $$rc):"; grep -E '^ERROR' $(@D)/yosys.log | tail -5; exit 1; fi; \
-	 echo "$$(( $$(date +%s) - start ))" > $(@D)/seconds; \
+	 echo "$$(( $$(date +%s) - start ))" > $(@D)/seconds; echo "$(PNR_SYNTH_FLAGS)" > $(@D)/flags; \
 	 echo "pnr: synth_ecp5 done in $$(cat $(@D)/seconds) s"
 	@touch $@
 
@@ -118,19 +126,21 @@ $(PNR_CFG)/synth/done: $(PNR_DEPS) | pnr-tools
 # instead of after hours in the placer. Then the run; --timing-allow-fail: a
 # missed target still gives the achieved fmax; nextpnr exits non-zero when it
 # cannot place or route.
-$(PNR_RUN)/done: $(PNR_CFG)/synth/done | pnr-tools
+# pnr_route(CFG_DIR, WHAT, META): one nextpnr-ecp5 run on CFG_DIR/synth/netlist.json into
+# $(@D); WHAT names the design in the log line, META echoes its own meta.txt keys.
+define pnr_route
 	@rm -rf $(@D) && mkdir -p $(@D)
-	@echo "pnr: nextpnr-ecp5 $(PNR_DEVNAME)-$(PNR_SPEED) $(PNR_PACKAGE), D=$(PNR_D) MAX_WIDTH=$(PNR_MAX_WIDTH), $(PNR_FREQ) MHz (log: $(@D)/nextpnr.log)"
+	@echo "pnr: nextpnr-ecp5 $(PNR_DEVNAME)-$(PNR_SPEED) $(PNR_PACKAGE), $(2), $(PNR_FREQ) MHz (log: $(@D)/nextpnr.log)"
 	@start=$$(date +%s); \
 	 flock $(PNR_LOCK) timeout $(PNR_TIMEOUT) nice -n $(PNR_NICE) $(PNR_NEXTPNR) --$(PNR_DEVICE) --package $(PNR_PACKAGE) \
-	   --speed $(PNR_SPEED) --json $(PNR_CFG)/synth/netlist.json --lpf-allow-unconstrained --pack-only \
+	   --speed $(PNR_SPEED) --json $(1)/synth/netlist.json --lpf-allow-unconstrained --pack-only \
 	   -l $(@D)/pack.log > $(@D)/pack.out 2>&1 || \
 	   { echo "pnr: nextpnr-ecp5 --pack-only failed:"; grep -E '^ERROR' $(@D)/pack.log $(@D)/pack.out | tail -5; exit 1; }; \
 	 over=$$(awk '/Device utilisation/ { u = 1 } u && /%$$/ && $$NF + 0 > 100 { sub(/^Info:[ \t]*/, ""); gsub(/[ \t]+/, " "); print }' $(@D)/pack.log); \
 	 if [ -n "$$over" ]; then echo "pnr: the design does not fit $(PNR_DEVNAME) after packing ($(@D)/pack.log):"; \
 	   echo "$$over" | sed 's/^/  /'; exit 1; fi; \
 	 flock $(PNR_LOCK) timeout $(PNR_TIMEOUT) nice -n $(PNR_NICE) $(PNR_NEXTPNR) --$(PNR_DEVICE) --package $(PNR_PACKAGE) \
-	   --speed $(PNR_SPEED) --json $(PNR_CFG)/synth/netlist.json --lpf-allow-unconstrained --freq $(PNR_FREQ) \
+	   --speed $(PNR_SPEED) --json $(1)/synth/netlist.json --lpf-allow-unconstrained --freq $(PNR_FREQ) \
 	   --timing-allow-fail --seed $(PNR_SEED) $(PNR_FLAGS) --report $(@D)/report.json -l $(@D)/nextpnr.log > $(@D)/nextpnr.out 2>&1; \
 	 rc=$$?; secs=$$(( $$(date +%s) - start )); \
 	 if [ $$rc != 0 ]; then \
@@ -138,9 +148,47 @@ $(PNR_RUN)/done: $(PNR_CFG)/synth/done | pnr-tools
 	   else echo "pnr: nextpnr-ecp5 failed (exit $$rc):"; grep -E '^ERROR' $(@D)/nextpnr.log $(@D)/nextpnr.out | tail -5; fi; exit 1; fi; \
 	 commit=$$(git log -1 --format=%h -- rtl 2>/dev/null)$$(git status --porcelain -- rtl 2>/dev/null | grep -q . && echo -dirty); \
 	 { echo "device=$(PNR_DEVNAME)"; echo "package=$(PNR_PACKAGE)"; echo "speed=$(PNR_SPEED)"; \
-	   echo "d=$(PNR_D)"; echo "max_width=$(PNR_MAX_WIDTH)"; echo "target_mhz=$(PNR_FREQ)"; echo "seed=$(PNR_SEED)"; echo "nextpnr_flags=$(PNR_FLAGS)"; \
-	   echo "pnr_seconds=$$secs"; echo "synth_seconds=$$(cat $(PNR_CFG)/synth/seconds)"; \
+	   $(3) echo "target_mhz=$(PNR_FREQ)"; echo "seed=$(PNR_SEED)"; echo "nextpnr_flags=$(PNR_FLAGS)"; \
+	   echo "synth_flags=$$(cat $(1)/synth/flags)"; \
+	   echo "pnr_seconds=$$secs"; echo "synth_seconds=$$(cat $(1)/synth/seconds)"; \
 	   echo "nextpnr=$$($(PNR_NEXTPNR) --version 2>&1 | head -1)"; echo "yosys=$$(yosys -V)"; \
 	   echo "rtl_commit=$$commit"; echo "date=$$(date -u +%Y-%m-%dT%H:%M:%SZ)"; } > $(@D)/meta.txt; \
 	 echo "pnr: $(PNR_DEVNAME)-$(PNR_SPEED): $$(grep -o 'Max frequency.*' $(@D)/nextpnr.log | tail -1) ($$secs s)"
 	@touch $@
+endef
+
+$(PNR_RUN)/done: $(PNR_CFG)/synth/done | pnr-tools
+	$(call pnr_route,$(PNR_CFG),D=$(PNR_D) MAX_WIDTH=$(PNR_MAX_WIDTH),echo "kind=core"; echo "d=$(PNR_D)"; echo "max_width=$(PNR_MAX_WIDTH)";)
+
+# ------------------------------------------------------------------ the loop alone
+# `make pnr-loop`: the 0 degree recursion alone (synth/sgm_path_loop.sv, the loop
+# harness of `make synth`) placed and routed on the same device and speed, once per
+# LANES = K: the loop with K registers in it, i.e. the clock the planned row-lane
+# schedule could reach with K lanes (docs/reschedule.md). K = 1 is today's loop.
+PNR_LOOP_D     ?= 64
+PNR_LOOP_LANES ?= 1 2 3 4
+PNR_LOOP_CFG    = $(PNR_DIR)/loop-d$(PNR_LOOP_D)-k$(PNR_LOOP_K)
+PNR_LOOP_RUN    = $(PNR_LOOP_CFG)/lfe5u-$(subst k,f,$(PNR_DEVICE))-$(PNR_SPEED)
+PNR_LOOP_DEPS  := synth/sgm_path_loop.sv synth/ecp5_loop.tcl rtl/sgm_path_pe.sv rtl/sgm_min_tree.sv
+
+.PHONY: pnr-loop pnr-loop-one
+pnr-loop: pnr-tools $(PNR_SUMMARY)
+	@for k in $(PNR_LOOP_LANES); do $(MAKE) --no-print-directory pnr-loop-one PNR_LOOP_K=$$k || exit 1; done
+	@$(MAKE) --no-print-directory pnr-summary
+	@sed -n '/^## The 0 degree loop alone/,/^## Clock/p' $(PNR_DIR)/summary.md | sed '$$d'
+
+pnr-loop-one: $(PNR_LOOP_RUN)/done
+
+$(PNR_LOOP_CFG)/synth/done: $(PNR_LOOP_DEPS) | pnr-tools
+	@rm -rf $(@D) && mkdir -p $(@D)
+	@echo "pnr: synth_ecp5, loop harness D=$(PNR_LOOP_D) LANES=$(PNR_LOOP_K) (log: $(@D)/yosys.log)"
+	@start=$$(date +%s); \
+	 SYNTH_RTL=rtl SYNTH_LOOP_D=$(PNR_LOOP_D) SYNTH_LOOP_LANES=$(PNR_LOOP_K) SYNTH_OUT=$(@D) \
+	   SYNTH_ECP5_FLAGS="$(PNR_SYNTH_FLAGS)" \
+	   flock $(PNR_LOCK) timeout $(PNR_TIMEOUT) nice -n $(PNR_NICE) yosys -q -l $(@D)/yosys.log -c synth/ecp5_loop.tcl \
+	   > $(@D)/yosys.out 2>&1 || { echo "pnr: Yosys failed, see $(@D)/yosys.log"; exit 1; }; \
+	 echo "$$(( $$(date +%s) - start ))" > $(@D)/seconds; echo "$(PNR_SYNTH_FLAGS)" > $(@D)/flags
+	@touch $@
+
+$(PNR_LOOP_RUN)/done: $(PNR_LOOP_CFG)/synth/done | pnr-tools
+	$(call pnr_route,$(PNR_LOOP_CFG),loop harness D=$(PNR_LOOP_D) LANES=$(PNR_LOOP_K),echo "kind=loop"; echo "d=$(PNR_LOOP_D)"; echo "lanes=$(PNR_LOOP_K)";)

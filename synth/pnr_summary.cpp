@@ -24,6 +24,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <sys/stat.h>
 #include <vector>
 
@@ -317,8 +318,20 @@ std::string joined(const std::vector<std::string>& v, const char* sep) {
   return out;
 }
 
-void writeSummary(const std::string& root, const std::vector<Run>& runs, double cpp,
+// The critical path of a run in one line: start -> end (cells, logic + routing; modules).
+std::string pathText(const Run& r) {
+  return r.pathStart + " -> " + r.pathEnd + " (" + std::to_string(r.pathLogicCells) + " logic cells, " +
+         fixed(r.pathLogicNs, 2) + " ns logic + " + fixed(r.pathRoutingNs, 2) + " ns routing; through " +
+         joined(r.pathModules, " > ") + ")";
+}
+
+// Runs of the loop harness (`make pnr-loop`, meta kind=loop) and of the whole core.
+bool isLoopRun(const Run& r) { return meta(r, "kind") == "loop"; }
+
+void writeSummary(const std::string& root, const std::vector<Run>& allRuns, double cpp,
                   const std::string& cppSource) {
+  std::vector<Run> runs, loops;
+  for (const Run& r : allRuns) (isLoopRun(r) ? loops : runs).push_back(r);
   JsonWriter j;
   j.beginObject();
   j.key("cycles_per_pixel").real(cpp);
@@ -360,6 +373,7 @@ void writeSummary(const std::string& root, const std::vector<Run>& runs, double 
     j.key("seed").integer(std::atol(meta(r, "seed").c_str()));
     j.key("nextpnr").string(meta(r, "nextpnr"));
     j.key("nextpnr_flags").string(meta(r, "nextpnr_flags") == "?" ? "" : meta(r, "nextpnr_flags"));
+    j.key("synth_flags").string(meta(r, "synth_flags") == "?" ? "" : meta(r, "synth_flags"));
     j.key("yosys").string(meta(r, "yosys"));
     j.key("rtl_commit").string(meta(r, "rtl_commit"));
     j.key("date").string(meta(r, "date"));
@@ -376,6 +390,33 @@ void writeSummary(const std::string& root, const std::vector<Run>& runs, double 
     j.endObject();
   }
   j.endArray();
+  j.key("loop_runs").beginArray();
+  for (const Run& r : loops) {
+    j.beginObject();
+    j.key("run").string(r.name);
+    j.key("device").string(meta(r, "device"));
+    j.key("package").string(meta(r, "package"));
+    j.key("speed").integer(std::atol(meta(r, "speed").c_str()));
+    j.key("d").integer(std::atol(meta(r, "d").c_str()));
+    j.key("lanes").integer(std::atol(meta(r, "lanes").c_str()));
+    j.key("lut4").integer(r.lut4);
+    j.key("ff").integer(r.ff);
+    j.key("fmax_mhz").real(r.fmax);
+    j.key("target_mhz").real(metaNumber(r, "target_mhz"));
+    j.key("critical_path").beginObject();
+    j.key("start").string(r.pathStart);
+    j.key("end").string(r.pathEnd);
+    j.key("logic_cells").integer(r.pathLogicCells);
+    j.key("logic_ns").real(r.pathLogicNs);
+    j.key("routing_ns").real(r.pathRoutingNs);
+    j.endObject();
+    j.key("pnr_seconds").integer(std::atol(meta(r, "pnr_seconds").c_str()));
+    j.key("synth_flags").string(meta(r, "synth_flags") == "?" ? "" : meta(r, "synth_flags"));
+    j.key("nextpnr_flags").string(meta(r, "nextpnr_flags") == "?" ? "" : meta(r, "nextpnr_flags"));
+    j.key("date").string(meta(r, "date"));
+    j.endObject();
+  }
+  j.endArray();
   j.endObject();
   sgm::eval::writeTextFile(root + "/summary.json", j.str());
 
@@ -385,17 +426,37 @@ void writeSummary(const std::string& root, const std::vector<Run>& runs, double 
      << "; LUT4 = TRELLIS_COMB cells (LUT4s, carry halves and LUT-RAM LUTs), EBR = DP16KD.\n\n"
      << "| run | device | speed | D | MAX_WIDTH | LUT4 | FF | EBR | DSP | fmax (MHz) | target (MHz) | "
         "critical path | P&R (s) |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  // A run's options beside its name: "(synth_ecp5 -nowidelut; nextpnr --no-tmdriv)".
+  auto flagsOf = [&](const Run& r) {
+    std::string s;
+    for (const auto& [key, tool] : {std::pair<const char*, const char*>{"synth_flags", "synth_ecp5"},
+                                    std::pair<const char*, const char*>{"nextpnr_flags", "nextpnr"}}) {
+      const std::string f = meta(r, key);
+      if (f.empty() || f == "?") continue;
+      s += (s.empty() ? " (`" : "; `") + std::string(tool) + " " + f + "`";
+    }
+    return s.empty() ? s : s + ")";
+  };
   for (const Run& r : runs)
-    md << "| " << r.name << (meta(r, "nextpnr_flags").empty() || meta(r, "nextpnr_flags") == "?"
-                                 ? std::string()
-                                 : " (`" + meta(r, "nextpnr_flags") + "`)")
+    md << "| " << r.name << flagsOf(r)
        << " | " << meta(r, "device") << "-" << meta(r, "package") << " | " << meta(r, "speed")
        << " | " << meta(r, "d") << " | " << meta(r, "max_width") << " | " << r.lut4 << " / " << r.lut4Avail
        << " | " << r.ff << " / " << r.ffAvail << " | " << r.ebr << " / " << r.ebrAvail << " | " << r.dsp
-       << " | **" << fixed(r.fmax, 1) << "** | " << meta(r, "target_mhz") << " | " << r.pathStart << " -> "
-       << r.pathEnd << " (" << r.pathLogicCells << " logic cells, " << fixed(r.pathLogicNs, 2) << " ns logic + "
-       << fixed(r.pathRoutingNs, 2) << " ns routing; through " << joined(r.pathModules, " > ") << ") | "
+       << " | **" << fixed(r.fmax, 1) << "** | " << meta(r, "target_mhz") << " | " << pathText(r) << " | "
        << meta(r, "pnr_seconds") << " |\n";
+  if (!loops.empty()) {
+    md << "\n## The 0 degree loop alone (`make pnr-loop`)\n\n"
+       << "synth/sgm_path_loop.sv: the recursion of the 0 degree path (D sub-PEs and the minimum tree) with "
+          "LANES registers in the loop, the clock a schedule of LANES interleaved row lanes could reach "
+          "(docs/reschedule.md); LANES = 1 is the core's loop as it is.\n\n"
+       << "| run | device | speed | D | LANES | LUT4 | FF | fmax (MHz) | target (MHz) | critical path | P&R (s) |\n"
+       << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const Run& r : loops)
+      md << "| " << r.name << flagsOf(r) << " | " << meta(r, "device") << "-" << meta(r, "package") << " | "
+         << meta(r, "speed") << " | " << meta(r, "d") << " | " << meta(r, "lanes") << " | " << r.lut4 << " | " << r.ff
+         << " | **" << fixed(r.fmax, 1) << "** | " << meta(r, "target_mhz") << " | " << pathText(r) << " | "
+         << meta(r, "pnr_seconds") << " |\n";
+  }
   md << "\n## Clock per video format\n\n"
      << "Needed clock = active pixels per second x " << fixed(cpp, 3) << " cycles per pixel (" << cppSource
      << "). The paper's clocks (Table II) are for its 9 cycles per pixel. A format is met when the routed fmax "
