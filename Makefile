@@ -193,7 +193,7 @@ $(eval $(call rtl_test,top-d64-9x9,sgm_top,-GD=64 -GMAX_WIDTH=512 -GMAX_HEIGHT=3
 $(eval $(call rtl_test,axi-d16,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
 $(BIN)/rtl-axi-d16: sw/sgm_driver.cpp $(wildcard sw/include/*.h*)
 $(eval $(call rtl_test,path-engine-d16,sgm_path_engine,-GD=16 -GMAX_WIDTH=128 -GXW=8 -GYW=8 -CFLAGS -DSGM_D=16))
-$(eval $(call rtl_test,path-engine-d64,sgm_path_engine,-GD=64 -GMAX_WIDTH=512 -GXW=10 -GYW=10 -CFLAGS -DSGM_D=64 -CFLAGS -DSGM_YW=10))
+$(eval $(call rtl_test,path-engine-d64,sgm_path_engine,-GD=64 -GMAX_WIDTH=512 -GXW=10 -GYW=10 -GGRAY_LEAD=0 -CFLAGS -DSGM_D=64 -CFLAGS -DSGM_YW=10))
 $(eval $(call rtl_test,wta-d16,sgm_wta,-GD=16))
 $(eval $(call rtl_test,wta-d64,sgm_wta,-GD=64))
 $(eval $(call rtl_test,lr-check-d16,sgm_lr_check,-GD=16 -GMAX_WIDTH=128))

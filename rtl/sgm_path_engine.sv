@@ -5,7 +5,12 @@
 // Slots arrive in raster order of a virtual raster (docs/rtl.md): consecutive
 // slots are consecutive positions, rows < 0 and >= height carry no pixel.
 // Pipeline (one register stage per slot):
-//   A  register the cost vector and position; look up P2r of the 4 paths;
+//   -  (GRAY_LEAD = 1) look up P2r of the 4 paths in the P2 table (block RAM,
+//      registered read): the grays centre_i / nbr_i lead cost_i by one slot,
+//      so the lookup of pixel p runs in the slot before p
+//   A  register the cost vector and position, and P2r behind the block RAM
+//      (so that its clock-to-out is not part of the 0 degree loop; with
+//      GRAY_LEAD = 0 the lookup runs here and P2r comes from the RAM port);
 //      read the previous-row memories for the coming pixels
 //   B  the 4 x D sub-PEs; the 0 degree path feeds back in the same cycle
 //      (sub-PEs + D-input minimum = the single-cycle loop of the design)
@@ -22,9 +27,11 @@
 // overwrites it.
 //
 // Parameters: D disparities, CW cost width, LW path-cost width (Cmax + P2'max
-// must fit), PW penalty width, MAX_WIDTH, XW column bits, YW row bits. SW = LW + 4
+// must fit), PW penalty width, MAX_WIDTH, XW column bits, YW row bits, GRAY_LEAD
+// (0 or 1, see stage A). SW = LW + 4
 // holds the larger of the two weightings (10 x 2^LW).
-// Latency: LATENCY = 3 slots from cost_i to s_o. Throughput: 1 pixel per slot.
+// Latency: LATENCY = 3 slots from cost_i to s_o; centre_i / nbr_i of a pixel are
+// presented GRAY_LEAD slots before its cost_i. Throughput: 1 pixel per slot.
 module sgm_path_engine #(
   parameter int D         = 64,
   parameter int CW        = 7,
@@ -34,6 +41,9 @@ module sgm_path_engine #(
   parameter int XW        = 11,
   parameter int YW        = 11,
   localparam int SW       = LW + 4,
+  // 1: P2r registered behind the table (the grays lead by one slot); 0: P2r
+  // straight from the table's read port into the sub-PEs (grays with the costs).
+  parameter int GRAY_LEAD /*verilator public*/ = 1,
   localparam int LATENCY  = 3
 ) (
   input  wire                 clk_i,
@@ -53,6 +63,7 @@ module sgm_path_engine #(
   input  wire  [XW-1:0]       col_i,
   input  wire  [YW-1:0]       row_i,    // rows outside the frame carry no pixel (valid_i = 0)
   input  wire                 valid_i,
+  // The left-image grays of the pixel of the next slot (GRAY_LEAD slots ahead of cost_i).
   input  wire  [7:0]          centre_i,
   input  wire  [31:0]         nbr_i,     // I(p - r): 0, 45, 90, 135 degrees, 8 bits each
   // Slot output, LATENCY slots later.
@@ -72,7 +83,7 @@ module sgm_path_engine #(
     assign dI[r*8 +: 8] = centre_i > n ? centre_i - n : n - centre_i;
   end
 
-  logic [4*PW-1:0] p2r_b;
+  logic [4*PW-1:0] p2r_a, p2r_b;
   sgm_p2_lut #(.PW(PW), .NPORTS(4)) u_p2_lut (
     .clk_i   (clk_i),
     .rst_ni  (rst_ni),
@@ -83,7 +94,7 @@ module sgm_path_engine #(
     .ready_o (lut_ready_o),
     .en_i    (en_i),
     .idx_i   (dI),
-    .p2r_o   (p2r_b)
+    .p2r_o   (p2r_a)
   );
 
   logic [D*CW-1:0]    cost_b;
@@ -96,6 +107,14 @@ module sgm_path_engine #(
       col_b   <= col_i;
       row_b   <= row_i;
     end
+  end
+
+  if (GRAY_LEAD == 1) begin : g_p2r_reg
+    always_ff @(posedge clk_i) begin
+      if (en_i) p2r_b <= p2r_a;
+    end
+  end else begin : g_p2r_ram
+    assign p2r_b = p2r_a;
   end
 
   // Slot valid flags: the only registers with a reset.

@@ -225,15 +225,24 @@ module sgm_top #(
     .valid_o   (valid2)
   );
 
-  // The path engine also needs the row and the left grays of the pixel.
+  // The path engine also needs the row and the left grays of the pixel; the
+  // grays GRAY_LEAD slot ahead of the costs (its P2 lookup then runs in the
+  // slot before the pixel and P2r is registered behind the table's RAM).
+  localparam int GRAY_LEAD = 1;
   logic [YW-1:0] row2;
   logic [7:0]    centre2;
   logic [31:0]   nbr2;
-  sgm_delay #(.WIDTH(YW + 8 + 32), .DEPTH(COST_LATENCY)) u_align_cost (
+  sgm_delay #(.WIDTH(YW), .DEPTH(COST_LATENCY)) u_align_cost (
     .clk_i (clk_i),
     .en_i  (en),
-    .d_i   ({row1, centre, nbr}),
-    .q_o   ({row2, centre2, nbr2})
+    .d_i   (row1),
+    .q_o   (row2)
+  );
+  sgm_delay #(.WIDTH(8 + 32), .DEPTH(COST_LATENCY - GRAY_LEAD)) u_align_gray (
+    .clk_i (clk_i),
+    .en_i  (en),
+    .d_i   ({centre, nbr}),
+    .q_o   ({centre2, nbr2})
   );
 
   // ------------------------------------------------------------ paths
@@ -243,7 +252,7 @@ module sgm_top #(
   logic            valid3;
 
   sgm_path_engine #(
-    .D(D), .CW(CBITS), .LW(LW), .PW(8), .MAX_WIDTH(MAX_WIDTH), .XW(XW), .YW(YW)
+    .D(D), .CW(CBITS), .LW(LW), .PW(8), .MAX_WIDTH(MAX_WIDTH), .XW(XW), .YW(YW), .GRAY_LEAD(GRAY_LEAD)
   ) u_paths (
     .clk_i       (clk_i),
     .rst_ni      (rst_ni),

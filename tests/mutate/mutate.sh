@@ -12,15 +12,17 @@
 # are rebuilt and run there, cheapest first (unit fixtures, then the whole core at
 # D = 16, the D = 16 regression slice, the whole core at D = 32 and D = 64), up to the
 # first one that fails: that test kills the mutation. A mutation no test fails
-# survived. Lines marked equivalent are reported with their reason and not run.
+# survived. Lines marked equivalent are reported with their reason and not run. A mutant
+# that does not build (a lint warning of Verilator -Wall, a syntax error) is "invalid",
+# not killed: no test saw it; the list must plant a bug that compiles.
 # Before its first use, every test runs once on the unmutated tree (the
 # build/bin/ binaries of this checkout): a test that fails there would kill anything.
 # --check only validates the list (every text found exactly once).
 #
 # Writes DIR/report.md and DIR/report.json (default DIR build/mutate): mutations,
-# killed, survived, equivalent, kill_ratio and one row per mutation (id, file, line,
-# class, status, killed_by, seconds, note). Exit 0, or 1 when --require-kill and a
-# mutation survived, 2 on a bad list or a failing baseline.
+# killed, survived, equivalent, invalid, kill_ratio and one row per mutation (id, file,
+# line, class, status, killed_by, seconds, note). Exit 0, or 1 when --require-kill and a
+# mutation survived or was invalid, 2 on a bad list or a failing baseline.
 set -uo pipefail
 shopt -u patsub_replacement 2>/dev/null || true  # bash 5.2: keep "&" literal in replacements
 
@@ -170,12 +172,13 @@ done
 # Written after every mutation, so that an interrupted run leaves its rows so far.
 write_report() {
 local i sep
-n=0 killed=0 survived=0 equivalent=0
+n=0 killed=0 survived=0 equivalent=0 invalid=0
 for i in "${selected[@]}"; do
   case "${statuses[$i]}" in
     killed) ((n++, killed++)) ;;
     survived) ((n++, survived++)) ;;
     equivalent) ((equivalent++)) ;;
+    invalid) ((invalid++)) ;;
   esac
 done
 ratio=$( ((n)) && awk -v k=$killed -v n=$n 'BEGIN{printf "%.1f", 100*k/n}' || echo 0)
@@ -183,7 +186,7 @@ json_str() { local s="${1//\\/\\\\}"; s="${s//\"/\\\"}"; printf '"%s"' "${s//$'\
 {
   echo "# make mutate"
   echo
-  echo "$((killed + survived + equivalent)) mutations of rtl/: $killed killed, $survived survived, $equivalent equivalent (not counted);"
+  echo "$((killed + survived + equivalent + invalid)) mutations of rtl/: $killed killed, $survived survived, $equivalent equivalent, $invalid invalid (the last two not counted);"
   echo "kill ratio over non-equivalent mutations: $ratio %."
   echo
   echo "| id | file:line | class | status | killed by | s | note |"
@@ -193,8 +196,8 @@ json_str() { local s="${1//\\/\\\\}"; s="${s//\"/\\\"}"; printf '"%s"' "${s//$'\
   done
 } > "$out/report.md"
 {
-  printf '{\n  "mutations": %d,\n  "killed": %d,\n  "survived": %d,\n  "equivalent": %d,\n  "kill_ratio_percent": %s,\n  "rows": [\n' \
-    $((killed + survived + equivalent)) $killed $survived $equivalent "$ratio"
+  printf '{\n  "mutations": %d,\n  "killed": %d,\n  "survived": %d,\n  "equivalent": %d,\n  "invalid": %d,\n  "kill_ratio_percent": %s,\n  "rows": [\n' \
+    $((killed + survived + equivalent + invalid)) $killed $survived $equivalent $invalid "$ratio"
   sep=""
   for i in "${selected[@]}"; do
     printf '%s    {"id": %s, "file": %s, "line": %s, "class": %s, "status": %s, "killed_by": %s, "seconds": %s, "note": %s}' \
@@ -229,7 +232,7 @@ for i in "${selected[@]}"; do
     baseline "$t"
     log="$out/logs/$id-$t.log"
     if ! (cd "$tree" && nice -n 5 "${MUTANT_MAKE[@]}" "build/bin/$t") > "$log" 2>&1; then
-      status=killed killer="$t (build)"; break
+      status=invalid killer="" notes[$i]="the mutant does not build for $t (see $log): not a kill; change the mutation"; break
     fi
     if ! run_test "$tree" "$t" "$log.run"; then
       status=killed killer="$t"; break
@@ -243,9 +246,9 @@ for i in "${selected[@]}"; do
 done
 
 write_report
-echo "mutate: $killed killed, $survived survived, $equivalent equivalent; kill ratio $ratio % ($out/report.md)"
-if ((require_kill && survived)); then
-  echo "mutate: FAILED: a mutation survived" >&2
+echo "mutate: $killed killed, $survived survived, $equivalent equivalent, $invalid invalid; kill ratio $ratio % ($out/report.md)"
+if ((require_kill && (survived || invalid))); then
+  echo "mutate: FAILED: a mutation survived or did not build" >&2
   exit 1
 fi
 exit 0

@@ -2,6 +2,7 @@
 // section 5): S(p, d) for every pixel and disparity, slots streamed in raster
 // order with random idle cycles, several frames back to back without reset.
 #include "Vsgm_path_engine.h"
+#include "Vsgm_path_engine_sgm_path_engine.h"
 #include "port_bits.hpp"
 #include "verilated_top.hpp"
 
@@ -31,6 +32,8 @@ using sgm::tb::getBits;
 using sgm::tb::setBits;
 
 constexpr int kD = SGM_D;
+// The grays of a pixel lead its costs by GRAY_LEAD slots (0 or 1, a parameter of the build).
+constexpr int kGrayLead = int(Vsgm_path_engine_sgm_path_engine::GRAY_LEAD);
 constexpr int kCostBits = 7, kSumBits = 13;
 
 struct Frame {
@@ -95,15 +98,21 @@ class PathEngine {
       top_->col_i = col;
       top_->row_i = uint32_t(row) & ((1u << SGM_YW) - 1);  // negative rows wrap; they carry valid_i = 0
       top_->valid_i = inside;
+      // The grays of slot t + kGrayLead (random where no pixel is: they must not matter).
+      const long tg = t + kGrayLead;
+      const int growIndex = int(tg / w) - leadRows, gcol = int(tg % w);
       uint32_t nbr = 0;
-      if (inside) {
-        top_->centre_i = f.gray.at<uint8_t>(row, col);
+      if (growIndex >= 0 && growIndex < h) {
+        top_->centre_i = f.gray.at<uint8_t>(growIndex, gcol);
         const int dx[4] = {-1, -1, 0, 1}, dy[4] = {0, -1, -1, -1};
         for (int r = 0; r < 4; ++r) {
-          const int x = col + dx[r], y = row + dy[r];
+          const int x = gcol + dx[r], y = growIndex + dy[r];
           const int v = x >= 0 && x < w && y >= 0 ? f.gray.at<uint8_t>(y, x) : int(rng_() % 256);
           nbr |= uint32_t(v) << (8 * r);
         }
+      } else {
+        top_->centre_i = rng_() % 256;
+        nbr = uint32_t(rng_());
       }
       top_->nbr_i = nbr;
       while (std::uniform_real_distribution<double>(0, 1)(rng_) < idle_) {  // idle cycles
