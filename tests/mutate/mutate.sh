@@ -10,7 +10,8 @@
 # to a scratch copy of the tree (--tree, default build/mutate/tree; rtl/ is never
 # touched), and the verilated test binaries whose top instantiates the mutated module
 # are rebuilt and run there, cheapest first (unit fixtures, then the whole core at
-# D = 16, the D = 16 regression slice, the whole core at D = 32 and D = 64), up to the
+# D = 16, the D = 16 regression slice, the whole core at D = 32 and D = 64, the AXI4-Lite
+# wrapper), up to the
 # first one that fails: that test kills the mutation. A mutation no test fails
 # survived. Lines marked equivalent are reported with their reason and not run. A mutant
 # that does not build (a lint warning of Verilator -Wall, a syntax error) is "invalid",
@@ -95,7 +96,8 @@ fi
 # Test binaries in the order they are tried: NAME (make target build/bin/NAME) and the
 # top it verilates (read from the Makefile's rtl_test lines; the regression from regress.mk).
 order=(rtl-p2-lut rtl-stream-ctrl rtl-hole-fill rtl-edge-snap rtl-median5x5 rtl-wta-d16 rtl-lr-check-d16
-       rtl-census-unit rtl-cost-volume-d16 rtl-path-engine-d16 rtl-top-d16 sgm-regress-d16-w128 rtl-top-d32 rtl-top-d64)
+       rtl-census-unit rtl-cost-volume-d16 rtl-path-engine-d16 rtl-top-d16 sgm-regress-d16-w128 rtl-top-d32 rtl-top-d64
+       rtl-axi-d16)
 declare -A top_of=()
 while IFS= read -r l; do
   args="${l#*call rtl_test,}"
@@ -154,7 +156,7 @@ baseline() {
 # A copy of the sources with the checkout's golden/eval objects (mtimes kept, so make
 # reuses them); its verilator directories persist between runs.
 mkdir -p "$tree/build"
-tar -cf - Makefile rtl tb tests golden tools scripts $(ls -d synth bench 2>/dev/null) | tar -xf - -C "$tree"
+tar -cf - Makefile rtl tb tests golden tools scripts $(ls -d synth bench sw 2>/dev/null) | tar -xf - -C "$tree"
 for d in obj lib; do [[ -d build/$d ]] && { rm -rf "$tree/build/$d"; cp -a "build/$d" "$tree/build/"; }; done
 # Seed its verilator directories from this checkout's (CI has them from `make rtl-tests`):
 # the Verilator runtime and test objects are then reused, only the mutant model recompiles.

@@ -256,6 +256,22 @@ TEST(SgmAxi, ConfigurationWrittenMidFrameActsFromTheNextFrame) {
   EXPECT_EQ(c.driver.busy(), false);
 }
 
+// The largest frames the build takes, written through FRAME_SIZE: MAX_WIDTH wide,
+// MAX_HEIGHT tall, and both at once; each bit-exact, LAST_SIZE reporting it.
+TEST(SgmAxi, FramesOfTheLargestSizeThroughTheRegisters) {
+  AxiCore c("sgm_axi_largest", 21, {0.05, 0.05});
+  const int w = int(Rtl::MAX_WIDTH), h = int(Rtl::MAX_HEIGHT);
+  const std::vector<FrameInput> frames = {scene(w, 12, 31, defaults()), scene(40, h, 32, defaults()),
+                                          scene(w, h, 33, defaults())};
+  c.expectBitExact(frames, "largest frames");
+  EXPECT_EQ(c.driver.framesDone(), frames.size());
+  uint32_t lw = 0, lh = 0;
+  c.driver.lastFrameSize(&lw, &lh);
+  EXPECT_EQ(lw, uint32_t(w));
+  EXPECT_EQ(lh, uint32_t(h));
+  EXPECT_EQ(c.driver.errors().sticky, 0u);
+}
+
 // CTRL.HOLD = 1 keeps the configuration released last: a frame started while
 // it is set runs with the old one; clearing it releases the new one.
 TEST(SgmAxi, HoldKeepsTheReleasedConfigurationUntilCleared) {
