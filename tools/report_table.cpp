@@ -231,18 +231,7 @@ void writeParams(JsonWriter& j, const TableReport& r, const Method& m) {
     j.key("disp12_max_diff").integer(1);
     j.key("input_channels").integer(cn);
   } else {
-    const Params& p = m.params;
-    j.key("mode").string(costModeName(p.mode));
-    j.key("census").string(censusWindowName(p.census));
-    j.key("p2_mode").string(p2ModeName(p.p2Mode));
-    j.key("weights").string(pathWeightingName(p.weights));
-    j.key("p1").integer(p.p1);
-    j.key("p2").integer(p.p2);
-    j.key("subpixel").boolean(p.subpixel);
-    j.key("lr_tolerance").integer(p.lrTolerance);  // < 0: LR check off
-    j.key("fill").boolean(p.fill);
-    j.key("snap").boolean(p.snap);
-    j.key("median").boolean(p.median);
+    writeGoldenParamFields(j, m.params);
   }
   j.endObject();
 }
@@ -286,6 +275,20 @@ void writeMethod(JsonWriter& j, const TableReport& r, const Method& m) {
 }
 
 }  // namespace
+
+void writeGoldenParamFields(JsonWriter& j, const Params& p) {
+  j.key("mode").string(costModeName(p.mode));
+  j.key("census").string(censusWindowName(p.census));
+  j.key("p2_mode").string(p2ModeName(p.p2Mode));
+  j.key("weights").string(pathWeightingName(p.weights));
+  j.key("p1").integer(p.p1);
+  j.key("p2").integer(p.p2);
+  j.key("subpixel").boolean(p.subpixel);
+  j.key("lr_tolerance").integer(p.lrTolerance);  // < 0: LR check off
+  j.key("fill").boolean(p.fill);
+  j.key("snap").boolean(p.snap);
+  j.key("median").boolean(p.median);
+}
 
 const char* methodKindName(MethodKind kind) {
   switch (kind) {

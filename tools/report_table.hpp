@@ -73,6 +73,12 @@ using ResultHook = std::function<void(const Method&, const Scene&, const cv::Mat
 TableReport computeTable(const std::vector<Scene>& scenes, int disparities, double delta,
                          const ResultHook& hook = {});
 
+class JsonWriter;
+// The golden model's parameters as the fields of an open JSON object (every
+// report writes them with these names): mode, census, p2_mode, weights, p1, p2,
+// subpixel, lr_tolerance, fill, snap, median.
+void writeGoldenParamFields(JsonWriter& j, const Params& params);
+
 // The Table I comparison (every row, the paper's figure beside ours) in markdown.
 std::string table1Markdown(const TableReport& report);
 // The whole report.md: Table I comparison, notes, per-scene figures, parameters.
