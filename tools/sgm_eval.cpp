@@ -36,6 +36,8 @@ const char* kUsage =
     "pipeline options: --d D --p1 N --p2 N --mode M --subpixel on|off --lr TOL|off --fill on|off\n"
     "                  --snap on|off --median on|off --census 9x5|9x9 --p2-mode knee|paper\n"
     "                  --weights 3232|equal --preset default|paper (later options override the preset)\n"
+    "golden-only experiments, NOT in the RTL (off by default): --right-path W (fifth path from the right,\n"
+    "                  weight 0..8) --uniqueness U (%) --ad-weight W --ad-cap T (C += W min(AD, T) / 8)\n"
     "--delta X sets the error threshold (default 1); --out defaults to build/eval;\n"
     "--scenes a,b (run, table, pool) keeps only those scenes; --half A|B (pool) keeps one half of the\n"
     "cross-validation split (per set, scenes sorted by name alternate A, B).\n";

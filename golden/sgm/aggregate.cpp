@@ -95,6 +95,28 @@ class PathState {
   std::vector<uint16_t> rows_, mins_;
 };
 
+}  // namespace
+
+void addRightPath(const uint8_t* cost, const uint8_t* grayRow, int width, int nd, int p1, const P2Table& table,
+                  int weight, uint16_t* sum) {
+  std::vector<uint16_t> buffers(2 * size_t(nd + 2), kPathSentinel);
+  uint16_t* prev = buffers.data() + 1;
+  uint16_t* cur = buffers.data() + nd + 3;
+  uint16_t minPrev = 0;
+  for (int x = width - 1; x >= 0; --x) {
+    const uint8_t* c = cost + size_t(x) * nd;
+    const uint16_t minCur =
+        x == width - 1 ? pathStart(c, nd, cur)
+                       : pathStepInline(c, prev, minPrev, nd, p1, table[std::abs(int(grayRow[x]) - int(grayRow[x + 1]))], cur);
+    uint16_t* s = sum + size_t(x) * nd;
+    for (int d = 0; d < nd; ++d) s[d] = uint16_t(s[d] + weight * cur[d]);
+    std::swap(prev, cur);
+    minPrev = minCur;
+  }
+}
+
+namespace {
+
 void waitUntil(const std::atomic<int>& counter, int value) {
   while (counter.load(std::memory_order_acquire) < value) std::this_thread::yield();
 }
@@ -102,7 +124,7 @@ void waitUntil(const std::atomic<int>& counter, int value) {
 }  // namespace
 
 void aggregateRows(int width, int height, int nd, const cv::Mat& gray, int p1, int p2, P2Mode p2Mode,
-                   PathWeighting weights, const CostRowFn& costRow, const SumRowFn& sink) {
+                   PathWeighting weights, const CostRowFn& costRow, const SumRowFn& sink, int rightPathWeight) {
   const P2Table table = makeP2Table(p1, p2, p2Mode);
   const int* w = pathWeights(weights);
   std::vector<PathState> paths;
@@ -150,6 +172,9 @@ void aggregateRows(int width, int height, int nd, const cv::Mat& gray, int p1, i
                          columns(y, split, width, [&] { rightStarted.store(y + 1, std::memory_order_release); });
                        else
                          rightStarted.store(y + 1, std::memory_order_release);
+                       if (rightPathWeight)  // the whole row of C is in its slot now
+                         addRightPath(costRing.data() + rowSize * (y % kSlots), gray.ptr<uint8_t>(y), width, nd, p1,
+                                      table, rightPathWeight, sumRing.data() + rowSize * (y % kSlots));
                        sink(1, y, sumRing.data() + rowSize * (y % kSlots));
                        rightRows.store(y + 1, std::memory_order_release);
                      }
@@ -166,7 +191,7 @@ PathVolume pathCost(const CostVolume& cost, const cv::Mat& grayLeft, int pathInd
 }
 
 PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1, int p2, P2Mode p2Mode,
-                         PathWeighting weights) {
+                         PathWeighting weights, int rightPathWeight) {
   PathVolume sum(cost.width, cost.height, cost.depth);
   const size_t rowSize = size_t(cost.width) * cost.depth;
   aggregateRows(
@@ -174,7 +199,7 @@ PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1
       [&](int y, int x0, int x1, uint8_t* row) {
         std::copy(cost.at(x0, y), cost.at(x0, y) + size_t(x1 - x0) * cost.depth, row + size_t(x0) * cost.depth);
       },
-      [&](int, int y, const uint16_t* row) { std::copy_n(row, rowSize, sum.at(0, y)); });
+      [&](int, int y, const uint16_t* row) { std::copy_n(row, rowSize, sum.at(0, y)); }, rightPathWeight);
   return sum;
 }
 

@@ -44,8 +44,12 @@ PathVolume pathCost(const CostVolume& cost, const cv::Mat& grayLeft, int pathInd
                     P2Mode p2Mode = P2Mode::kKnee);
 
 // S(p, d) = sum over the four paths of w[r] Lr(p, d) (3, 2, 3, 2 or equal), for the whole volume.
+// rightPathWeight > 0 (golden-only experiment, not in the RTL) adds a fifth path,
+// 0 degrees from the right (p - r = (x + 1, y)), computed over each completed row of
+// C (one buffered row in hardware), weighted by rightPathWeight.
 PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1, int p2,
-                         P2Mode p2Mode = P2Mode::kKnee, PathWeighting weights = PathWeighting::k3232);
+                         P2Mode p2Mode = P2Mode::kKnee, PathWeighting weights = PathWeighting::k3232,
+                         int rightPathWeight = 0);
 
 // The streaming form used by the pipeline: rows in order, never more than a
 // few rows of C and S in memory, the work of each row split over two workers.
@@ -56,6 +60,13 @@ PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1
 using CostRowFn = std::function<void(int y, int x0, int x1, uint8_t* row)>;
 using SumRowFn = std::function<void(int worker, int y, const uint16_t* row)>;
 void aggregateRows(int width, int height, int disparities, const cv::Mat& grayLeft, int p1, int p2,
-                   P2Mode p2Mode, PathWeighting weights, const CostRowFn& costRow, const SumRowFn& sink);
+                   P2Mode p2Mode, PathWeighting weights, const CostRowFn& costRow, const SumRowFn& sink,
+                   int rightPathWeight = 0);
+
+// The golden-only fifth path over one row: Lr for r = (1, 0), from x = W-1 down to 0,
+// added to sum (W x D) with the given weight. cost is the row of C, grayRow the row of
+// the left image.
+void addRightPath(const uint8_t* cost, const uint8_t* grayRow, int width, int disparities, int p1,
+                  const P2Table& p2Table, int weight, uint16_t* sum);
 
 }  // namespace sgm

@@ -41,6 +41,13 @@ int rightDisparity(const PathVolume& s, int xr, int y) {
   return best;
 }
 
+bool isUnique(const uint16_t* s, int disparities, int d, int ratio) {
+  const uint32_t best = uint32_t(s[d]) * 100;
+  for (int k = 0; k < disparities; ++k)
+    if (std::abs(k - d) > 1 && uint32_t(s[k]) * uint32_t(100 - ratio) < best) return false;
+  return true;
+}
+
 RowSelector::RowSelector(int width, int disparities, const Params& params)
     : width_(width), disparities_(disparities), params_(params), rightKey_(width) {}
 
@@ -66,7 +73,8 @@ void RowSelector::select(const uint16_t* sumRow, uint16_t* dispRow, uint8_t* val
     if (params_.subpixel && d > 0 && d < nd - 1) fixed += subpixelOffset(sp[d - 1], sp[d], sp[d + 1]);
     const int rightD = check && x - d >= 0 ? int(rightKey_[w - 1 - (x - d)] & 0xff) : 0;
     dispRow[x] = uint16_t(fixed);
-    validRow[x] = !check || (x - d >= 0 && std::abs(rightD - d) <= params_.lrTolerance);
+    validRow[x] = (!check || (x - d >= 0 && std::abs(rightD - d) <= params_.lrTolerance)) &&
+                  (!params_.uniqueness || isUnique(sp, nd, d, params_.uniqueness));
   }
 }
 
