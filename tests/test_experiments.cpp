@@ -80,6 +80,18 @@ TEST(Uniqueness, HandCases) {
   EXPECT_FALSE(sgm::isUnique(tie, 3, 0, 1));  // 100 * 99 < 100 * 100
 }
 
+TEST(LinearSubpixel, HandCases) {
+  // a = 20, m = 10, b = 30: V fit (20 - 30) / (2 (30 - 10)) = -0.25 px = -4/16.
+  EXPECT_EQ(sgm::subpixelOffsetLinear(20, 10, 30), -4);
+  EXPECT_EQ(sgm::subpixelOffsetLinear(30, 10, 20), 4);
+  EXPECT_EQ(sgm::subpixelOffsetLinear(10, 10, 30), -8);  // a = m: half a pixel
+  EXPECT_EQ(sgm::subpixelOffsetLinear(25, 10, 25), 0);
+  EXPECT_EQ(sgm::subpixelOffsetLinear(10, 10, 10), 0);   // flat: no offset
+  // V: (13 - 10) / (2 * 13) * 16 = 1.85 -> 2; the parabola: (13 - 10) / (2 * 23) * 16 = 1.04 -> 1.
+  EXPECT_EQ(sgm::subpixelOffsetLinear(13, 0, 10), 2);
+  EXPECT_EQ(sgm::subpixelOffset(13, 0, 10), 1);
+}
+
 TEST(AdTerm, HandRow) {
   // Left row 10 50 90, right row 10 20 30; D = 3, weight 8 (x 1), cap 20.
   const cv::Mat gl = (cv::Mat_<uint8_t>(1, 3) << 10, 50, 90), gr = (cv::Mat_<uint8_t>(1, 3) << 10, 20, 30);
@@ -100,7 +112,7 @@ TEST(Experiments, StreamingPipelineEqualsStagesAndChangesTheResult) {
   sgm::Params p;
   p.disparities = 16;
   const sgm::DisparityMap today = sgm::runPipeline(scene.left, scene.right, p);
-  p.rightPathWeight = 3, p.uniqueness = 15, p.adWeight = 8, p.adCap = 16;
+  p.rightPathWeight = 3, p.uniqueness = 15, p.adWeight = 8, p.adCap = 16, p.linearSubpixel = true;
   const sgm::DisparityMap streamed = sgm::runPipeline(scene.left, scene.right, p);
   const sgm::PipelineStages staged = sgm::runPipelineStages(scene.left, scene.right, p);
   EXPECT_EQ(cv::countNonZero(streamed.disp != staged.result.disp), 0);
@@ -109,7 +121,8 @@ TEST(Experiments, StreamingPipelineEqualsStagesAndChangesTheResult) {
 }
 
 TEST(Experiments, OptionsAndRanges) {
-  std::vector<std::string> args = {"prog", "--right-path", "3", "--uniqueness", "10", "--ad-weight", "8", "--ad-cap", "16"};
+  std::vector<std::string> args = {"prog", "--right-path", "3", "--uniqueness", "10", "--ad-weight", "8", "--ad-cap", "16",
+                                   "--subpixel-fit", "linear"};
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   const sgm::Params p = sgm::CliArgs(int(argv.size()), argv.data(), sgm::CliArgs::pipelineOptions()).pipelineParams();
@@ -117,6 +130,7 @@ TEST(Experiments, OptionsAndRanges) {
   EXPECT_EQ(p.uniqueness, 10);
   EXPECT_EQ(p.adWeight, 8);
   EXPECT_EQ(p.adCap, 16);
+  EXPECT_TRUE(p.linearSubpixel);
   sgm::Params bad;
   bad.rightPathWeight = sgm::kMaxRightPathWeight + 1;
   expectError([&] { bad.validate(); }, {"right-path"});

@@ -79,7 +79,7 @@ const std::set<std::string>& CliArgs::pipelineOptions() {
   static const std::set<std::string> names = {"d",    "p1",   "p2",     "mode",   "subpixel", "lr",     "fill",
                                               "snap", "median", "census", "p2-mode", "weights", "preset",
                                               // golden-only experiments (not in the RTL)
-                                              "right-path", "uniqueness", "ad-weight", "ad-cap"};
+                                              "right-path", "uniqueness", "ad-weight", "ad-cap", "subpixel-fit"};
   return names;
 }
 
@@ -109,6 +109,10 @@ Params CliArgs::pipelineParams(Params p) const {
   p.uniqueness = int(integer("uniqueness", p.uniqueness, 0, 99));
   p.adWeight = int(integer("ad-weight", p.adWeight, 0, kMaxAdWeight));
   p.adCap = int(integer("ad-cap", p.adCap, 0, 255));
+  if (const std::string fit = text("subpixel-fit", p.linearSubpixel ? "linear" : "parabola"); fit == "linear" || fit == "parabola")
+    p.linearSubpixel = fit == "linear";
+  else
+    throw Error("option --subpixel-fit expects parabola or linear, got '" + fit + "'");
   p.validate();
   return p;
 }

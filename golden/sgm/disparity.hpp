@@ -19,6 +19,11 @@ int winnerTakeAll(const uint16_t* s, int disparities);
 //   round((a - b) / (2 (a + b - 2m)) * 16), half away from zero; 0 when a + b - 2m = 0.
 int subpixelOffset(int a, int m, int b);
 
+// Golden-only experiment (Params::linearSubpixel, not in the RTL): the equiangular
+// (V) fit, round((a - b) / (2 (max(a, b) - m)) * 16), half away from zero; 0 when
+// max(a, b) = m.
+int subpixelOffsetLinear(int a, int m, int b);
+
 // Right-image disparity from the same S: argmin over d of S(xr + d, d) for
 // d = 0 .. min(D-1, W-1-xr), ties to the smallest d.
 int rightDisparity(const PathVolume& s, int xr, int y);

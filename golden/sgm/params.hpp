@@ -93,7 +93,8 @@ struct Params {
                             // S(d') (100 - u) < 100 S(d); 0 = off
   int adWeight = 0;         // AD term added to C: adWeight * min(|IL(x) - IR(x-d)|, adCap) / 8; 0 = off
   int adCap = 20;           // the AD term's truncation (gray levels)
-  bool experimental() const { return rightPathWeight || uniqueness || adWeight; }
+  bool linearSubpixel = false;  // sub-pixel by the equiangular (V) fit instead of the parabola
+  bool experimental() const { return rightPathWeight || uniqueness || adWeight || linearSubpixel; }
 
   bool operator==(const Params& o) const;
   bool operator!=(const Params& o) const { return !(*this == o); }
