@@ -69,6 +69,38 @@ TEST(RightPath, AggregateAddsItToTheFourPaths) {
   }
 }
 
+// MGM on a 2 x 2 volume with D = 1: every step term is 0 (one disparity), so Lr = C
+// wherever a neighbour exists; with D = 2 the averaging shows.
+TEST(Mgm, HandExampleTwoByTwo) {
+  // D = 2, P1 = 10, P2 = 100 (gray flat: P2r = 100). C(x, y) = {c0, c1}:
+  //   (0,0) {0, 20}   (1,0) {30, 0}
+  //   (0,1) {5, 5}    (1,1) {0, 40}
+  CostVolume c(2, 2, 2);
+  const int costs[2][2][2] = {{{0, 20}, {30, 0}}, {{5, 5}, {0, 40}}};
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 2; ++x)
+      for (int d = 0; d < 2; ++d) c.at(x, y)[d] = uint8_t(costs[y][x][d]);
+  const cv::Mat gray(2, 2, CV_8UC1, cv::Scalar(50));
+  const PathVolume s = sgm::aggregateCost(c, gray, 10, 100, sgm::P2Mode::kKnee, sgm::PathWeighting::kEqual, 0, true);
+  // Path 0 (left, perpendicular above): (0,0) start {0,20}; (1,0) left only: prev {0,20}, min 0:
+  //   t = {min(0, 20+10), min(20, 0+10)} = {0, 10} -> {30, 10}. (0,1) above only: prev {0,20} -> {5, 15}.
+  //   (1,1): left (0,1) {5,15} min 5: t = {0, min(15, 15)-5 = 10}... = {min(5,25)-5, min(15,15)-5} = {0, 10};
+  //   above (1,0) {30,10} min 10: t = {min(30, 20)-10, min(10, 40)-10} = {10, 0}; mean {5, 5} -> {5, 45}.
+  // Path 90 (above, perpendicular left) is the same pair of neighbours at (1,1): {5, 45}; at (1,0) it has the
+  // left neighbour only: {30, 10}; at (0,1) above only: {5, 15}.
+  // Path 45 (above-left, perpendicular above-right): (1,1) above-left (0,0) {0,20} min 0: t = {0, 10};
+  //   above-right (2,0) outside -> {0, 50}. (0,1): above-right (1,0) {30, 0} (its own start) min 0:
+  //   t = {min(30, 10), 0} = {10, 0} -> {15, 5}. (1,0): both outside -> start {30, 0}.
+  // Path 135 (above-right, perpendicular above-left): (0,1) above-right (1,0) start {30,0}: t {10, 0} -> {15, 5};
+  //   (1,1): above-right outside, above-left (0,0) {0,20}: {0, 10} -> {0, 50}. (1,0): left-above outside... start.
+  // Sum at (1,1) over the four (equal weights): {5+0+5+0, 45+50+45+50} = {10, 190}.
+  EXPECT_EQ(s.at(1, 1)[0], 10);
+  EXPECT_EQ(s.at(1, 1)[1], 190);
+  // At (0,0) every path starts: 4 C.
+  EXPECT_EQ(s.at(0, 0)[0], 0);
+  EXPECT_EQ(s.at(0, 0)[1], 80);
+}
+
 TEST(Uniqueness, HandCases) {
   // Winner d = 2 (cost 100); its neighbours d = 1, 3 never count as rivals.
   const uint16_t s[] = {200, 101, 100, 101, 120, 111};
@@ -112,7 +144,7 @@ TEST(Experiments, StreamingPipelineEqualsStagesAndChangesTheResult) {
   sgm::Params p;
   p.disparities = 16;
   const sgm::DisparityMap today = sgm::runPipeline(scene.left, scene.right, p);
-  p.rightPathWeight = 3, p.uniqueness = 15, p.adWeight = 8, p.adCap = 16, p.linearSubpixel = true;
+  p.rightPathWeight = 3, p.uniqueness = 15, p.adWeight = 8, p.adCap = 16, p.linearSubpixel = true, p.mgm = true;
   const sgm::DisparityMap streamed = sgm::runPipeline(scene.left, scene.right, p);
   const sgm::PipelineStages staged = sgm::runPipelineStages(scene.left, scene.right, p);
   EXPECT_EQ(cv::countNonZero(streamed.disp != staged.result.disp), 0);
@@ -131,6 +163,7 @@ TEST(Experiments, OptionsAndRanges) {
   EXPECT_EQ(p.adWeight, 8);
   EXPECT_EQ(p.adCap, 16);
   EXPECT_TRUE(p.linearSubpixel);
+  EXPECT_FALSE(p.mgm);
   sgm::Params bad;
   bad.rightPathWeight = sgm::kMaxRightPathWeight + 1;
   expectError([&] { bad.validate(); }, {"right-path"});

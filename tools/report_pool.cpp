@@ -162,15 +162,6 @@ std::string meansTable(const std::string& title, const std::vector<PoolMean>& me
   return md + "\n";
 }
 
-std::string paramsLine(const Params& p) {
-  return "mode " + std::string(costModeName(p.mode)) + ", census " + censusWindowName(p.census) + ", P2 " +
-         p2ModeName(p.p2Mode) + ", weights " + pathWeightingName(p.weights) + ", P1=" + std::to_string(p.p1) +
-         ", P2'=" + std::to_string(p.p2) + ", sub-pixel " + (p.subpixel ? "on" : "off") + ", LR check " +
-         (p.lrTolerance < 0 ? std::string("off") : "tol " + std::to_string(p.lrTolerance)) + ", fill " +
-         (p.fill ? "on" : "off") + ", snap " + (p.snap ? "on" : "off") + ", median " + (p.median ? "on" : "off") +
-         " (preset: " + presetName(p) + ")";
-}
-
 void writeFigures(JsonWriter& j, const std::string& set, const std::optional<ErrorFigures>& f) {
   if (!f) {
     j.null();
@@ -219,7 +210,7 @@ std::string poolMarkdown(const PoolReport& r) {
       "pair at D rounded up to 16; strict counts its invalid pixels as errors, valid only leaves them out, density "
       "= % of the pixels with ground truth that are valid. Half: the fixed cross-validation split (per set, "
       "scenes sorted by name alternate A, B).\n\n"
-      "Ours: " + paramsLine(r.options.params) + ".\n\n";
+      "Ours: " + goldenParamsText(r.options.params) + " (preset: " + presetName(r.options.params) + ").\n\n";
   md += "| scene | set | half | D | ours | today | ours bad-" + delta +
         " (all gt) | OpenCV strict | OpenCV valid only | OpenCV density |\n"
         "|---|---|---|---:|---:|---:|---:|---:|---:|---:|\n";

@@ -38,7 +38,7 @@ const char* kUsage =
     "                  --weights 3232|equal --preset default|paper (later options override the preset)\n"
     "golden-only experiments, NOT in the RTL (off by default): --right-path W (fifth path from the right,\n"
     "                  weight 0..8) --uniqueness U (%) --ad-weight W --ad-cap T (C += W min(AD, T) / 8)\n"
-    "                  --subpixel-fit parabola|linear (linear: the equiangular fit)\n"
+    "                  --subpixel-fit parabola|linear (linear: the equiangular fit) --mgm on|off (raster MGM)\n"
     "--delta X sets the error threshold (default 1); --out defaults to build/eval;\n"
     "--scenes a,b (run, table, pool) keeps only those scenes; --half A|B (pool) keeps one half of the\n"
     "cross-validation split (per set, scenes sorted by name alternate A, B).\n";

@@ -23,6 +23,7 @@ const char* kUsage =
     "                  [--uniqueness U] uniqueness ratio U % (0..99)\n"
     "                  [--ad-weight W] [--ad-cap T] C += W * min(|IL - IR|, T) / 8\n"
     "                  [--subpixel-fit parabola|linear] linear: the equiangular (V) fit\n"
+    "                  [--mgm on|off] raster-order MGM: each path averages two causal neighbours\n"
     "Writes PREFIX_disp16.png (disparity x 256, 0 = invalid), PREFIX_disp8.png\n"
     "(the paper's [0, 255] scaling) and PREFIX_color.png. PREFIX defaults to 'disparity'.\n";
 

@@ -79,7 +79,7 @@ const std::set<std::string>& CliArgs::pipelineOptions() {
   static const std::set<std::string> names = {"d",    "p1",   "p2",     "mode",   "subpixel", "lr",     "fill",
                                               "snap", "median", "census", "p2-mode", "weights", "preset",
                                               // golden-only experiments (not in the RTL)
-                                              "right-path", "uniqueness", "ad-weight", "ad-cap", "subpixel-fit"};
+                                              "right-path", "uniqueness", "ad-weight", "ad-cap", "subpixel-fit", "mgm"};
   return names;
 }
 
@@ -113,6 +113,7 @@ Params CliArgs::pipelineParams(Params p) const {
     p.linearSubpixel = fit == "linear";
   else
     throw Error("option --subpixel-fit expects parabola or linear, got '" + fit + "'");
+  p.mgm = onOff("mgm", p.mgm);
   p.validate();
   return p;
 }

@@ -60,7 +60,8 @@ bool Params::operator==(const Params& o) const {
   return disparities == o.disparities && p1 == o.p1 && p2 == o.p2 && mode == o.mode && subpixel == o.subpixel &&
          lrTolerance == o.lrTolerance && fill == o.fill && snap == o.snap && median == o.median &&
          census == o.census && p2Mode == o.p2Mode && weights == o.weights && rightPathWeight == o.rightPathWeight &&
-         uniqueness == o.uniqueness && adWeight == o.adWeight && adCap == o.adCap && linearSubpixel == o.linearSubpixel;
+         uniqueness == o.uniqueness && adWeight == o.adWeight && adCap == o.adCap && linearSubpixel == o.linearSubpixel &&
+         mgm == o.mgm;
 }
 
 Params presetParams(const std::string& name) {

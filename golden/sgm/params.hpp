@@ -94,7 +94,8 @@ struct Params {
   int adWeight = 0;         // AD term added to C: adWeight * min(|IL(x) - IR(x-d)|, adCap) / 8; 0 = off
   int adCap = 20;           // the AD term's truncation (gray levels)
   bool linearSubpixel = false;  // sub-pixel by the equiangular (V) fit instead of the parabola
-  bool experimental() const { return rightPathWeight || uniqueness || adWeight || linearSubpixel; }
+  bool mgm = false;             // raster-order MGM: each path averages two causal neighbours
+  bool experimental() const { return rightPathWeight || uniqueness || adWeight || linearSubpixel || mgm; }
 
   bool operator==(const Params& o) const;
   bool operator!=(const Params& o) const { return !(*this == o); }
