@@ -54,6 +54,7 @@ help:
 	@echo "make rtl-tests     every verilated GoogleTest fixture (modules and the whole core)"
 	@echo "make eval          Table I and full-pipeline accuracy on DATA=$(DATA) -> build/eval/"
 	@echo "make eval-pool     accuracy on the scene pool POOL=$(POOL) at each scene's ndisp, OpenCV beside -> build/eval/pool.*"
+	@echo "make eval-pool-rtl the verilated core (D=128, MAX_WIDTH=1280) bit-exact on pool scenes (POOL_RTL_SCENES)"
 	@echo "make bench-golden  golden model vs OpenCV StereoSGBM time on one frame, same run"
 	@echo "make bench         accuracy (RTL, golden, OpenCV x3, paper) and speed in one run -> build/bench/"
 	@echo "make synth         Yosys area/timing reports (D=64 MAX_WIDTH=1280) -> build/synth/; make synth-help"
