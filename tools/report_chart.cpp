@@ -272,7 +272,7 @@ cv::Mat poolChart(const PoolReport& r, const std::string& title) {
     for (const PoolBar& b : bars)
       if (const auto v = b.value(row)) top = std::max(top, *v);
   Layout l;
-  l.plot = cv::Rect(90, 110, width - 90 - 330 - 30, 820 - 110 - 190);
+  l.plot = cv::Rect(90, 125, width - 90 - 330 - 30, 820 - 125 - 190);
   l.legendX = l.plot.br().x + 40;
   top = top * 1.15 + 0.5;
   l.yStep = niceStep(top);
@@ -314,7 +314,8 @@ cv::Mat poolChart(const PoolReport& r, const std::string& title) {
   drawText(img,
            "error (%): Middlebury bad-" + fmt(r.options.delta, 1) +
                " non-occluded, KITTI D1 (> 3 px and > 5 %), over pixels with ground truth; D = ndisp per scene",
-           {90, 76}, 0.55, kMuted);
+           {90, 72}, 0.55, kMuted);
+  drawText(img, "ours: " + goldenParamsText(r.options.params), {90, 96}, 0.42, kMuted);
   return img;
 }
 
