@@ -53,6 +53,8 @@ help:
 	@echo "make lint          verilator --lint-only -Wall on every RTL module"
 	@echo "make rtl-tests     every verilated GoogleTest fixture (modules and the whole core)"
 	@echo "make eval          Table I and full-pipeline accuracy on DATA=$(DATA) -> build/eval/"
+	@echo "make eval-pool     accuracy on the scene pool POOL=$(POOL) at each scene's ndisp, OpenCV beside -> build/eval/pool.*"
+	@echo "make eval-pool-rtl the verilated core (D=128, MAX_WIDTH=1280) bit-exact on pool scenes (POOL_RTL_SCENES)"
 	@echo "make bench-golden  golden model vs OpenCV StereoSGBM time on one frame, same run"
 	@echo "make bench         accuracy (RTL, golden, OpenCV x3, paper) and speed in one run -> build/bench/"
 	@echo "make synth         Yosys area/timing reports (D=64 MAX_WIDTH=1280) -> build/synth/; make synth-help"
@@ -74,6 +76,8 @@ include scripts/deps.mk
 TEST_EXTRA := sim-ci eval-ci
 # `make synth` and its reports (synth/synth.mk, when present).
 -include synth/synth.mk synth/axi.mk
+# `make eval-pool`, `make eval-pool-ci`: accuracy on the scene pool (tools/pool.mk).
+-include tools/pool.mk
 # `make pnr`, `make pnr-ci`: place and route on ECP5 (synth/pnr.mk).
 -include synth/pnr.mk
 

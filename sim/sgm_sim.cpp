@@ -37,8 +37,9 @@ const char* kUsage =
     "usage: sgm-sim [--left L --right R [--gt G] [--gt-scale S]] [--out DIR] [--stall P] [--seed N]\n"
     "               [--frames N] [--preset default|paper] [pipeline options]\n"
     "Pipeline options as sgm-golden's (--d --p1 --p2 --mode --subpixel --lr --fill --snap\n"
-    "--median --census --p2-mode --weights); options after --preset override it. The\n"
-    "census window must be the build's (make sim CENSUS=9x9 or PRESET=paper builds 9x9).\n"
+    "--median --census --p2-mode --weights; not the golden-only experiments); options after\n"
+    "--preset override it. The census window must be the build's (make sim CENSUS=9x9 or\n"
+    "PRESET=paper builds 9x9).\n"
     "Without --left/--right runs the default scene: the Middlebury Aloe pair shipped by\n"
     "opencv-doc, scaled by 1/4 so its disparities fit D = 64. --stall P idles the input and\n"
     "stalls the output with probability P per cycle; --frames N sends the pair N times back\n"
@@ -73,6 +74,8 @@ int main(int argc, char** argv) {
     if (!isHardwareMode(params.mode)) throw Error("cost mode " + std::string(costModeName(params.mode)) + " is software only");
     if (params.p2 > 255) throw Error("P2'=" + std::to_string(params.p2) + " exceeds the core's 8-bit input");
     if (params.lrTolerance > 7) throw Error("LR tolerance " + std::to_string(params.lrTolerance) + " exceeds the core's 3-bit input");
+    if (params.experimental())
+      throw Error("--right-path, --uniqueness, --ad-weight, --subpixel-fit linear and --mgm are golden-only experiments, not in the core");
     const std::string out = args.text("out", "build/sim");
     checkOutputDirectory(out);  // before the simulation; created only to write the results
     const double stall = args.real("stall", 0.0, 0.0, 0.95);

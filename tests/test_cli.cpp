@@ -373,9 +373,9 @@ class SgmEvalCli : public CliTest {
   }
   // Every subcommand on data: the same one-line error naming needle, nothing written.
   void expectErrorInEveryCommand(const std::string& data, const std::string& needle) {
-    for (const std::string command : {"run", "table", "bench"}) {
+    for (const std::string command : {"run", "table", "bench", "pool"}) {
       SCOPED_TRACE(command);
-      std::vector<std::string> args = {command, "--data", data, "--out", out_ + "/report"};
+      std::vector<std::string> args = {command, command == "pool" ? "--pool" : "--data", data, "--out", out_ + "/report"};
       if (command == "run") args.resize(3);
       if (command == "bench") args.insert(args.end(), {"--scene", "synthetic"});
       expectOneLineError(run("sgm-eval", args), "sgm-eval", needle);
@@ -457,6 +457,34 @@ TEST_F(SgmEvalCli, BenchSceneNotFound) {
   const std::string data = goodScene();
   expectOneLineError(run("sgm-eval", {"bench", "--data", data, "--scene", "nope", "--out", out_ + "/r"}), "sgm-eval",
                      "scene 'nope'");
+}
+
+TEST_F(SgmEvalCli, PoolBadMetaIsOneLine) {
+  const std::string data = goodScene();
+  std::ofstream(data + "/synthetic/meta.txt") << "gt_scale: 4\nndisp: sixty\n";
+  expectOneLineError(run("sgm-eval", {"pool", "--pool", data, "--out", out_ + "/r"}), "sgm-eval",
+                     "synthetic/meta.txt:2: bad ndisp 'sixty'");
+  expectOneLineError(run("sgm-eval", {"pool", "--pool", root_ + "/none", "--out", out_ + "/r"}), "sgm-eval",
+                     "pool directory");
+  expectOneLineError(run("sgm-eval", {"pool", "--data", data, "--out", out_ + "/r"}), "sgm-eval", "--data");
+  expectOneLineError(run("sgm-eval", {"pool", "--pool", data, "--half", "C", "--out", out_ + "/r"}), "sgm-eval",
+                     "--half");
+}
+
+TEST_F(SgmEvalCli, PoolWritesItsReports) {
+  const std::string data = goodScene();
+  std::ofstream(data + "/synthetic/meta.txt") << "gt_scale: 4\nndisp: 16\nset: synth\n";
+  const ChildResult res = run("sgm-eval", {"pool", "--pool", data, "--out", out_ + "/r", "--p1", "20"});
+  ASSERT_EQ(res.rc, 0) << res.err;
+  EXPECT_TRUE(res.err.empty()) << res.err;
+  EXPECT_EQ(entries(out_ + "/r"), (std::set<std::string>{"pool.json", "pool.md", "pool.png"}));
+  std::ifstream in(out_ + "/r/pool.json");
+  const std::string json((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(json.find("\"scene\": \"synthetic\""), std::string::npos) << json;
+  EXPECT_NE(json.find("\"disparities\": 16"), std::string::npos) << json;
+  // --p1 20 is not today's defaults: today's figures are computed beside ours.
+  EXPECT_NE(res.out.find("today"), std::string::npos) << res.out;
+  EXPECT_NE(res.out.find("middlebury"), std::string::npos) << res.out;
 }
 
 TEST_F(SgmEvalCli, RunsOnASyntheticScene) {

@@ -11,8 +11,10 @@
 #include <climits>
 #include <cstdio>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -21,18 +23,9 @@ namespace sgm::eval {
 
 namespace {
 
-double readScale(const std::string& dir) {
-  std::ifstream meta(dir + "/meta.txt");
-  std::string line;
-  while (std::getline(meta, line)) {
-    if (line.rfind("gt_scale:", 0) == 0) {
-      std::istringstream in(line.substr(9));
-      double scale = 0;
-      if (in >> scale && scale > 0) return scale;
-      throw Error("bad gt_scale line in " + dir + "/meta.txt");
-    }
-  }
-  throw Error("no gt_scale in " + dir + "/meta.txt (pass the scale explicitly)");
+std::string trimmed(const std::string& text) {
+  const size_t a = text.find_first_not_of(" \t\r"), b = text.find_last_not_of(" \t\r");
+  return a == std::string::npos ? "" : text.substr(a, b - a + 1);
 }
 
 cv::Mat readMaskIfPresent(const std::string& path, cv::Size size) {
@@ -43,6 +36,43 @@ cv::Mat readMaskIfPresent(const std::string& path, cv::Size size) {
 }
 
 }  // namespace
+
+SceneMeta readSceneMeta(const std::string& dir) {
+  const std::string path = dir + "/meta.txt";
+  SceneMeta meta;
+  std::ifstream in(path);
+  if (!in) return meta;
+  std::set<std::string> seen;
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    const size_t colon = line.find(':');
+    if (colon == std::string::npos) continue;
+    const std::string key = trimmed(line.substr(0, colon));
+    std::string value = trimmed(line.substr(colon + 1));
+    if (const size_t comment = value.find(" ("); comment != std::string::npos && value.back() == ')')
+      value = trimmed(value.substr(0, comment));  // "4 (disparity_px = gt_value / 4)"
+    if (key != "gt_scale" && key != "ndisp" && key != "set") continue;
+    const std::string where = path + ":" + std::to_string(number);
+    if (!seen.insert(key).second) throw Error(where + ": " + key + " given twice");
+    char* end = nullptr;
+    if (key == "gt_scale") {
+      meta.gtScale = std::strtod(value.c_str(), &end);
+      if (value.empty() || *end != '\0' || !(meta.gtScale > 0) || !std::isfinite(meta.gtScale))
+        throw Error(where + ": bad gt_scale '" + value + "' (expected a positive number)");
+    } else if (key == "ndisp") {
+      const long n = std::strtol(value.c_str(), &end, 10);
+      if (value.empty() || *end != '\0' || n < kMinDisparities || n > kMaxDisparities)
+        throw Error(where + ": bad ndisp '" + value + "' (expected an integer " + std::to_string(kMinDisparities) +
+                    ".." + std::to_string(kMaxDisparities) + ")");
+      meta.ndisp = int(n);
+    } else {
+      if (value.empty() || value.find_first_of(" \t") != std::string::npos)
+        throw Error(where + ": bad set '" + value + "' (expected one word)");
+      meta.set = value;
+    }
+  }
+  return meta;
+}
 
 const char* const kAloeDir = "/usr/share/doc/opencv-doc/examples/data";
 
@@ -116,7 +146,12 @@ Scene loadScene(const std::string& dir, double scaleOverride) {
   const std::string leftPath = dir + "/left.png", rightPath = dir + "/right.png", gtPath = dir + "/gt.png";
   const cv::Mat left = readImage(leftPath), right = readImage(rightPath);  // one-line errors for bad files
   const cv::Mat gtRaw = readSingleChannel(gtPath);
-  Scene s = makeScene(name, left, right, gtRaw, scaleOverride > 0 ? scaleOverride : readScale(dir));
+  const SceneMeta meta = readSceneMeta(dir);
+  if (scaleOverride <= 0 && meta.gtScale <= 0)
+    throw Error("no gt_scale in " + dir + "/meta.txt (pass the scale explicitly)");
+  Scene s = makeScene(name, left, right, gtRaw, scaleOverride > 0 ? scaleOverride : meta.gtScale);
+  s.ndisp = meta.ndisp;
+  s.set = meta.set;
   useMasksIn(dir, s);
   return s;
 }
@@ -128,8 +163,12 @@ Scene loadSceneFiles(const std::string& leftPath, const std::string& rightPath, 
   if (!gtPath.empty()) {
     gtRaw = readSingleChannel(gtPath);
     if (gtScale <= 0) {
-      const std::string dir = fs::path(gtPath).parent_path().string();
-      gtScale = fs::exists(dir + "/meta.txt") ? readScale(dir.empty() ? "." : dir) : 1.0;
+      std::string dir = fs::path(gtPath).parent_path().string();
+      if (dir.empty()) dir = ".";
+      const SceneMeta meta = readSceneMeta(dir);
+      if (meta.gtScale <= 0 && fs::exists(dir + "/meta.txt"))
+        throw Error("no gt_scale in " + dir + "/meta.txt (pass the scale explicitly)");
+      gtScale = meta.gtScale > 0 ? meta.gtScale : 1.0;
     }
   }
   if (downscale > 1) {
@@ -162,7 +201,7 @@ ErrorFigures evaluate(const cv::Mat& disp, const Scene& scene, double delta) {
   if (disp.size() != scene.gt.size() || disp.type() != CV_32FC1)
     throw Error("disparity map does not match the scene '" + scene.name + "'");
   long nonocc = 0, nonoccBad = 0, all = 0, allBad = 0, disc = 0, discBad = 0, allValid = 0;
-  long nonoccValid = 0, nonoccValidBad = 0;
+  long nonoccValid = 0, nonoccValidBad = 0, d1Bad = 0, d1ValidBad = 0;
   for (int y = 0; y < disp.rows; ++y)
     for (int x = 0; x < disp.cols; ++x) {
       const float d = disp.at<float>(y, x), g = scene.gt.at<float>(y, x);
@@ -170,6 +209,8 @@ ErrorFigures evaluate(const cv::Mat& disp, const Scene& scene, double delta) {
       const bool bad = !valid || std::fabs(d - g) > delta;
       if (scene.all.at<uint8_t>(y, x) && g > 0) {
         ++all, allBad += bad, allValid += valid;
+        const bool d1 = valid && isD1Error(d, g);
+        d1Bad += !valid || d1, d1ValidBad += d1;
       }
       if (scene.nonocc.at<uint8_t>(y, x) && g > 0) {
         ++nonocc, nonoccBad += bad;
@@ -184,6 +225,8 @@ ErrorFigures evaluate(const cv::Mat& disp, const Scene& scene, double delta) {
   if (!scene.disc.empty()) f.errDisc = pct(discBad, disc);
   f.density = pct(allValid, all);
   f.errNonoccValid = pct(nonoccValidBad, nonoccValid);
+  f.d1All = pct(d1Bad, all);
+  f.d1Valid = pct(d1ValidBad, allValid);
   return f;
 }
 

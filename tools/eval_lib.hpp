@@ -21,11 +21,27 @@ struct Scene {
   double gtScale = 1;
   cv::Mat nonocc, all, disc;      // CV_8U masks (255 / 128 / 0); disc may be empty
   bool nonoccDerived = false;     // true when nonocc was derived from gt
+  int ndisp = 0;                  // meta.txt `ndisp:` (the D to run it with), 0 = not given
+  std::string set;                // meta.txt `set:` (e.g. middlebury2006, kitti2015), "" = not given
   bool hasGroundTruth() const { return !gt.empty(); }
 };
 
-// Reads DIR/{left,right,gt}.png, the masks when present and gt_scale from
-// meta.txt (or scaleOverride > 0). Throws Error with a one-line message.
+// The keys of a scene's meta.txt that the evaluation uses (see the pool's README).
+struct SceneMeta {
+  double gtScale = 0;  // `gt_scale:` (disparity px = value / scale), 0 = not given
+  int ndisp = 0;       // `ndisp:`, kMinDisparities .. kMaxDisparities, 0 = not given
+  std::string set;     // `set:`, one word, "" = not given
+};
+
+// Reads DIR/meta.txt (a missing file reads as all keys absent); a value may be
+// followed by a comment in parentheses ("gt_scale: 4 (px = value / 4)"). A key that is
+// present but malformed (gt_scale not a positive number, ndisp not an integer in
+// range, set not one word, a key given twice) throws Error naming the file and line.
+SceneMeta readSceneMeta(const std::string& dir);
+
+// Reads DIR/{left,right,gt}.png (gt 8- or 16-bit), the masks when present and
+// gt_scale, ndisp and set from meta.txt (scaleOverride > 0 replaces gt_scale).
+// Throws Error with a one-line message.
 Scene loadScene(const std::string& dir, double scaleOverride = 0);
 
 // A scene from images in memory: colour or gray left/right, the raw ground
@@ -65,7 +81,19 @@ struct ErrorFigures {
   std::optional<double> errDisc;  // same over disc == 255, when the scene has a disc mask
   double density = 0;        // % of `all` pixels that are valid
   double errNonoccValid = 0; // % of valid nonocc pixels with |d - gt| > delta
+  // The KITTI D1 measure over `all` (every pixel with known gt): an error when
+  // |d - gt| > kD1Pixels and > kD1Fraction * gt. d1All counts invalid output as an
+  // error; d1Valid is over the valid pixels only.
+  double d1All = 0;
+  double d1Valid = 0;
 };
+
+constexpr double kD1Pixels = 3.0, kD1Fraction = 0.05;
+// One pixel of the KITTI D1 measure: |d - gt| > 3 px and > 5 % of gt.
+inline bool isD1Error(float d, float gt) {
+  const double e = d > gt ? double(d) - gt : double(gt) - d;
+  return e > kD1Pixels && e > kD1Fraction * gt;
+}
 
 // disparity: CV_32F px with < 0 meaning invalid.
 ErrorFigures evaluate(const cv::Mat& disparity, const Scene& scene, double delta = 1.0);

@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 namespace sgm::eval {
 
@@ -101,7 +102,7 @@ int yPixel(const Layout& l, double value) {
   return l.plot.br().y - int(std::lround(value / l.yMax * l.plot.height));
 }
 
-void drawAxes(cv::Mat& img, const Layout& l) {
+void drawAxes(cv::Mat& img, const Layout& l, const std::string& label = "error in non-occluded regions (%)") {
   for (double v = 0; v <= l.yMax + 1e-9; v += l.yStep) {
     const int y = yPixel(l, v);
     cv::line(img, {l.plot.x, y}, {l.plot.br().x, y}, v == 0 ? kAxis : kGrid, 1);
@@ -112,7 +113,9 @@ void drawAxes(cv::Mat& img, const Layout& l) {
   }
   cv::line(img, l.plot.tl(), {l.plot.x, l.plot.br().y}, kAxis, 2);
   cv::line(img, {l.plot.x, l.plot.br().y}, l.plot.br(), kAxis, 2);
-  verticalText(img, "error in non-occluded regions (%)", 28, l.plot.y + l.plot.height / 2 + 140, 0.6, kAxis);
+  int base = 0;
+  const int half = cv::getTextSize(label, kFont, 0.6, 1, &base).width / 2;
+  verticalText(img, label, 28, l.plot.y + l.plot.height / 2 + half, 0.6, kAxis);
 }
 
 // Horizontal positions of the bars of one group, in units of a bar width:
@@ -227,7 +230,94 @@ void drawTitle(cv::Mat& img, const TableReport& r, const std::string& title) {
        {90, 76}, 0.55, kMuted);
 }
 
+// ------------------------------------------------------------------ pool chart
+
+struct PoolBar {
+  std::string label;
+  cv::Scalar color;
+  bool hatched;
+  std::optional<double> (*value)(const PoolRow&);
+};
+
+std::optional<double> poolOurs(const PoolRow& r) { return strictFigure(r.set, r.ours); }
+std::optional<double> poolToday(const PoolRow& r) {
+  return r.today ? std::optional<double>(strictFigure(r.set, *r.today)) : std::nullopt;
+}
+std::optional<double> poolOpenCvStrict(const PoolRow& r) {
+  return r.opencv ? std::optional<double>(strictFigure(r.set, *r.opencv)) : std::nullopt;
+}
+std::optional<double> poolOpenCvValid(const PoolRow& r) {
+  return r.opencv ? std::optional<double>(validFigure(r.set, *r.opencv)) : std::nullopt;
+}
+
+std::vector<PoolBar> poolBars(const PoolReport& r) {
+  std::vector<PoolBar> bars = {{"ours", kPalette[0], false, poolOurs}};
+  if (r.comparesToday) bars.push_back({"today's defaults", kPalette[9], false, poolToday});
+  if (r.options.opencv) {
+    bars.push_back({"OpenCV SGBM, invalid = error", kPalette[1], false, poolOpenCvStrict});
+    bars.push_back({"OpenCV SGBM, valid pixels only", kPalette[1], true, poolOpenCvValid});
+  }
+  return bars;
+}
+
 }  // namespace
+
+cv::Mat poolChart(const PoolReport& r, const std::string& title) {
+  const std::vector<PoolBar> bars = poolBars(r);
+  const int n = std::max<int>(1, int(r.rows.size()));
+  const int width = std::max(1400, 200 + n * (20 * int(bars.size()) + 24) + 330);
+  cv::Mat img(820, width, CV_8UC3, kWhite);
+  double top = 0;
+  for (const PoolRow& row : r.rows)
+    for (const PoolBar& b : bars)
+      if (const auto v = b.value(row)) top = std::max(top, *v);
+  Layout l;
+  l.plot = cv::Rect(90, 125, width - 90 - 330 - 30, 820 - 125 - 190);
+  l.legendX = l.plot.br().x + 40;
+  top = top * 1.15 + 0.5;
+  l.yStep = niceStep(top);
+  l.yMax = std::max(l.yStep, std::ceil(top / l.yStep) * l.yStep);
+  drawAxes(img, l, "error (%): bad-" + fmt(r.options.delta, 1) + " nonocc / KITTI D1");
+  std::string previousSet = "\x01";
+  for (int i = 0; i < int(r.rows.size()); ++i) {
+    const PoolRow& row = r.rows[size_t(i)];
+    const cv::Range span(l.plot.x + l.plot.width * i / n, l.plot.x + l.plot.width * (i + 1) / n);
+    if (row.set != previousSet) {
+      cv::line(img, {span.start, l.plot.y}, {span.start, l.plot.br().y + 150}, kGrid, 1);
+      drawText(img, row.set.empty() ? "(no set)" : row.set, {span.start + 4, l.plot.br().y + 175}, 0.45, kMuted);
+      previousSet = row.set;
+    }
+    const double barWidth = 0.8 * span.size() / double(bars.size());
+    for (size_t k = 0; k < bars.size(); ++k) {
+      const auto v = bars[k].value(row);
+      if (!v) continue;
+      const int left = int(std::lround(span.start + 0.1 * span.size() + k * barWidth));
+      const int right = int(std::lround(span.start + 0.1 * span.size() + (k + 1) * barWidth));
+      const cv::Rect bar(left, yPixel(l, *v), std::max(1, right - left), yPixel(l, 0) - yPixel(l, *v));
+      if (bars[k].hatched) hatchedBar(img, bar, bars[k].color);
+      else cv::rectangle(img, bar, bars[k].color, cv::FILLED);
+      verticalText(img, fmt(*v, 1), (left + right) / 2, bar.y - 3, 0.35, kBlack);
+    }
+    int base = 0;
+    const int textWidth = cv::getTextSize(row.scene, kFont, 0.45, 1, &base).width;
+    verticalText(img, row.scene, (span.start + span.end) / 2, l.plot.br().y + 10 + textWidth, 0.45, kBlack);
+  }
+  int y = l.plot.y + 10;
+  for (const PoolBar& b : bars) {
+    const cv::Rect key(l.legendX, y, 22, 16);
+    if (b.hatched) hatchedBar(img, key, b.color);
+    else cv::rectangle(img, key, b.color, cv::FILLED);
+    drawText(img, b.label, {l.legendX + 32, y + 13}, 0.5, kBlack);
+    y += 26;
+  }
+  drawText(img, title, {90, 42}, 0.95, kBlack, 2);
+  drawText(img,
+           "error (%): Middlebury bad-" + fmt(r.options.delta, 1) +
+               " non-occluded, KITTI D1 (> 3 px and > 5 %), over pixels with ground truth; D = ndisp per scene",
+           {90, 72}, 0.55, kMuted);
+  drawText(img, "ours: " + goldenParamsText(r.options.params), {90, 96}, 0.42, kMuted);
+  return img;
+}
 
 cv::Mat table1Chart(const TableReport& r, const std::string& title) {
   const int width = std::max(1500, 420 + 380 * int(r.scenes.size()));

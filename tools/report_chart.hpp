@@ -1,6 +1,7 @@
 // table1.png: grouped bar chart of the Table I report, drawn with OpenCV.
 #pragma once
 
+#include "report_pool.hpp"
 #include "report_table.hpp"
 
 #include <opencv2/core.hpp>
@@ -21,5 +22,11 @@ void drawCentredText(cv::Mat& img, const std::string& s, int x, int y, double sc
 // labels on the bars, axes, legend. BGR 8-bit.
 cv::Mat table1Chart(const TableReport& report,
                     const std::string& title = "SGM golden model vs Yao & Cheng, Table I");
+
+// pool.png: one group per scene (sorted by set), bars of the strict figure
+// (Middlebury bad-delta nonocc, KITTI D1): ours, today's defaults (when compared),
+// OpenCV strict and OpenCV valid only (hatched); value labels, axes, legend,
+// set names under the scenes. BGR 8-bit.
+cv::Mat poolChart(const PoolReport& report, const std::string& title = "SGM golden model on the scene pool");
 
 }  // namespace sgm::eval

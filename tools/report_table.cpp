@@ -180,12 +180,7 @@ std::string paramsRow(const TableReport& r, const Method& m) {
            ", blockSize 3, P1=" + std::to_string(8 * cn * 9) + ", P2=" + std::to_string(32 * cn * 9) +
            ", uniqueness 10, speckle 100/32, disp12MaxDiff 1, " + std::to_string(cn) + "-channel input |\n";
   }
-  const Params& p = m.params;
-  return row + "mode " + costModeName(p.mode) + ", census " + censusWindowName(p.census) + ", P2 " +
-         p2ModeName(p.p2Mode) + ", weights " + pathWeightingName(p.weights) + ", D=" + std::to_string(p.disparities) + ", P1=" +
-         std::to_string(p.p1) + ", P2'=" + std::to_string(p.p2) + ", sub-pixel " + onOff(p.subpixel) +
-         ", LR check " + (p.lrTolerance < 0 ? std::string("off") : "tol " + std::to_string(p.lrTolerance)) +
-         ", fill " + onOff(p.fill) + ", snap " + onOff(p.snap) + ", median " + onOff(p.median) + " |\n";
+  return row + "D=" + std::to_string(m.params.disparities) + ", " + goldenParamsText(m.params) + " |\n";
 }
 
 std::string notesMarkdown(const TableReport& r) {
@@ -231,18 +226,7 @@ void writeParams(JsonWriter& j, const TableReport& r, const Method& m) {
     j.key("disp12_max_diff").integer(1);
     j.key("input_channels").integer(cn);
   } else {
-    const Params& p = m.params;
-    j.key("mode").string(costModeName(p.mode));
-    j.key("census").string(censusWindowName(p.census));
-    j.key("p2_mode").string(p2ModeName(p.p2Mode));
-    j.key("weights").string(pathWeightingName(p.weights));
-    j.key("p1").integer(p.p1);
-    j.key("p2").integer(p.p2);
-    j.key("subpixel").boolean(p.subpixel);
-    j.key("lr_tolerance").integer(p.lrTolerance);  // < 0: LR check off
-    j.key("fill").boolean(p.fill);
-    j.key("snap").boolean(p.snap);
-    j.key("median").boolean(p.median);
+    writeGoldenParamFields(j, m.params);
   }
   j.endObject();
 }
@@ -286,6 +270,41 @@ void writeMethod(JsonWriter& j, const TableReport& r, const Method& m) {
 }
 
 }  // namespace
+
+std::string goldenParamsText(const Params& p) {
+  std::string text = std::string("mode ") + costModeName(p.mode) + ", census " + censusWindowName(p.census) + ", P2 " +
+                     p2ModeName(p.p2Mode) + ", weights " + pathWeightingName(p.weights) + ", P1=" + std::to_string(p.p1) +
+                     ", P2'=" + std::to_string(p.p2) + ", sub-pixel " + onOff(p.subpixel) + ", LR check " +
+                     (p.lrTolerance < 0 ? std::string("off") : "tol " + std::to_string(p.lrTolerance)) + ", fill " +
+                     onOff(p.fill) + ", snap " + onOff(p.snap) + ", median " + onOff(p.median);
+  if (p.experimental())
+    text += "; golden-only experiments (not in the RTL): right path " + std::to_string(p.rightPathWeight) +
+            ", uniqueness " + std::to_string(p.uniqueness) + ", AD weight " + std::to_string(p.adWeight) + " cap " +
+            std::to_string(p.adCap) + ", sub-pixel fit " + (p.linearSubpixel ? "linear" : "parabola") + ", MGM " +
+            onOff(p.mgm);
+  return text;
+}
+
+void writeGoldenParamFields(JsonWriter& j, const Params& p) {
+  j.key("mode").string(costModeName(p.mode));
+  j.key("census").string(censusWindowName(p.census));
+  j.key("p2_mode").string(p2ModeName(p.p2Mode));
+  j.key("weights").string(pathWeightingName(p.weights));
+  j.key("p1").integer(p.p1);
+  j.key("p2").integer(p.p2);
+  j.key("subpixel").boolean(p.subpixel);
+  j.key("lr_tolerance").integer(p.lrTolerance);  // < 0: LR check off
+  j.key("fill").boolean(p.fill);
+  j.key("snap").boolean(p.snap);
+  j.key("median").boolean(p.median);
+  // Golden-only experiments (docs/algorithm.md section 12), off unless set.
+  j.key("right_path_weight").integer(p.rightPathWeight);
+  j.key("uniqueness").integer(p.uniqueness);
+  j.key("ad_weight").integer(p.adWeight);
+  j.key("ad_cap").integer(p.adCap);
+  j.key("subpixel_fit").string(p.linearSubpixel ? "linear" : "parabola");
+  j.key("mgm").boolean(p.mgm);
+}
 
 const char* methodKindName(MethodKind kind) {
   switch (kind) {

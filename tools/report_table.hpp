@@ -73,6 +73,17 @@ using ResultHook = std::function<void(const Method&, const Scene&, const cv::Mat
 TableReport computeTable(const std::vector<Scene>& scenes, int disparities, double delta,
                          const ResultHook& hook = {});
 
+// The golden model's parameters for people, without D: "mode rsad, census 9x5, ...",
+// the golden-only experiments appended when any is on.
+std::string goldenParamsText(const Params& params);
+
+class JsonWriter;
+// The golden model's parameters as the fields of an open JSON object (every
+// report writes them with these names): mode, census, p2_mode, weights, p1, p2,
+// subpixel, lr_tolerance, fill, snap, median, and the golden-only experiments
+// right_path_weight, uniqueness, ad_weight, ad_cap, subpixel_fit, mgm.
+void writeGoldenParamFields(JsonWriter& j, const Params& params);
+
 // The Table I comparison (every row, the paper's figure beside ours) in markdown.
 std::string table1Markdown(const TableReport& report);
 // The whole report.md: Table I comparison, notes, per-scene figures, parameters.

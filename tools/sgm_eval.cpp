@@ -4,6 +4,7 @@
 #include "report_bench.hpp"
 #include "report_chart.hpp"
 #include "report_json.hpp"
+#include "report_pool.hpp"
 #include "report_table.hpp"
 
 #include "sgm/cli_args.hpp"
@@ -27,22 +28,31 @@ const char* kUsage =
     "                                                      -> report.md, report.json, table1.png\n"
     "       sgm-eval bench --data DIR [--out DIR] [--scene cones] [--repeats 5]\n"
     "                                                      golden vs OpenCV SGBM time -> bench.json\n"
+    "       sgm-eval pool  --pool DIR [--out DIR] [--half A|B] [--opencv on|off] [pipeline options]\n"
+    "                                                      every scene at its meta.txt ndisp (--d for scenes\n"
+    "                                                      without one): Middlebury bad-1 nonocc, KITTI D1,\n"
+    "                                                      per-set means, OpenCV strict and valid-only, today's\n"
+    "                                                      defaults beside custom options -> pool.md, pool.json, pool.png\n"
     "pipeline options: --d D --p1 N --p2 N --mode M --subpixel on|off --lr TOL|off --fill on|off\n"
     "                  --snap on|off --median on|off --census 9x5|9x9 --p2-mode knee|paper\n"
     "                  --weights 3232|equal --preset default|paper (later options override the preset)\n"
+    "golden-only experiments, NOT in the RTL (off by default): --right-path W (fifth path from the right,\n"
+    "                  weight 0..8) --uniqueness U (%) --ad-weight W --ad-cap T (C += W min(AD, T) / 8)\n"
+    "                  --subpixel-fit parabola|linear (linear: the equiangular fit) --mgm on|off (raster MGM)\n"
     "--delta X sets the error threshold (default 1); --out defaults to build/eval;\n"
-    "--scenes a,b (run, table) keeps only those scenes of --data.\n";
+    "--scenes a,b (run, table, pool) keeps only those scenes; --half A|B (pool) keeps one half of the\n"
+    "cross-validation split (per set, scenes sorted by name alternate A, B).\n";
 
 const char* kDefaultOut = "build/eval";
 
-// --data: required, an existing directory.
-std::string dataDir(const CliArgs& args) {
-  if (!args.has("data")) throw Error("missing --data DIR (the Middlebury scenes directory)");
-  const std::string root = args.text("data", "");
-  if (root.empty()) throw Error("empty --data directory name");
+// --data (or --pool): required, an existing directory.
+std::string dataDir(const CliArgs& args, const std::string& option = "data") {
+  if (!args.has(option)) throw Error("missing --" + option + " DIR (the scenes directory)");
+  const std::string root = args.text(option, "");
+  if (root.empty()) throw Error("empty --" + option + " directory name");
   std::error_code ec;
-  if (!std::filesystem::exists(root, ec)) throw Error("data directory '" + root + "' does not exist");
-  if (!std::filesystem::is_directory(root, ec)) throw Error("data directory '" + root + "' is not a directory");
+  if (!std::filesystem::exists(root, ec)) throw Error(option + " directory '" + root + "' does not exist");
+  if (!std::filesystem::is_directory(root, ec)) throw Error(option + " directory '" + root + "' is not a directory");
   return root;
 }
 
@@ -62,8 +72,8 @@ void writeResults(const std::string& out, const std::vector<OutputFile>& files) 
 }
 
 // Every scene under --data, or only those --scenes names (a comma-separated list).
-std::vector<Scene> loadAll(const CliArgs& args) {
-  const std::string root = dataDir(args);
+std::vector<Scene> loadAll(const CliArgs& args, const std::string& option = "data") {
+  const std::string root = dataDir(args, option);
   const auto dirs = eval::listScenes(root);
   if (dirs.empty()) throw Error("no scenes (left.png, right.png, gt.png) under '" + root + "'");
   std::vector<Scene> scenes;
@@ -142,6 +152,31 @@ int commandBench(const CliArgs& args) {
   return 0;
 }
 
+int commandPool(const CliArgs& args) {
+  eval::PoolOptions options;
+  options.params = args.pipelineParams();
+  options.fallbackDisparities = options.params.disparities;
+  options.delta = deltaOption(args);
+  options.opencv = args.onOff("opencv", true);
+  const std::string half = args.text("half", "");
+  if (!half.empty() && half != "A" && half != "B") throw Error("option --half expects A or B, got '" + half + "'");
+  const std::string out = outDir(args);
+  std::vector<Scene> scenes = loadAll(args, "pool");
+  options.halves = eval::poolHalves(args.text("pool", ""));  // the split of the whole pool, whatever --scenes keeps
+  if (!half.empty()) {
+    scenes.erase(std::remove_if(scenes.begin(), scenes.end(),
+                                [&](const Scene& s) { return options.halves[s.name] != half[0]; }),
+                 scenes.end());
+    if (scenes.empty()) throw Error("--half " + half + ": no scene of the selection is in that half");
+  }
+  const eval::PoolReport report = eval::computePool(scenes, options);
+  writeResults(out, {{out + "/pool.md", eval::poolMarkdown(report)},
+                     {out + "/pool.json", eval::poolJson(report)},
+                     {out + "/pool.png", encodePng(eval::poolChart(report), out + "/pool.png")}});
+  std::cout << eval::poolSummary(report) << "wrote " << out << "/pool.md, pool.json, pool.png\n";
+  return 0;
+}
+
 struct Command {
   const char* name;
   int (*run)(const CliArgs&);
@@ -151,10 +186,13 @@ struct Command {
 std::vector<Command> commands() {
   std::set<std::string> runOptions = CliArgs::pipelineOptions();
   runOptions.insert({"data", "out", "delta", "scenes"});
+  std::set<std::string> poolOptions = CliArgs::pipelineOptions();
+  poolOptions.insert({"pool", "out", "delta", "scenes", "half", "opencv"});
   return {
       {"run", commandRun, runOptions},
       {"table", commandTable, {"data", "out", "d", "delta", "scenes"}},
       {"bench", commandBench, {"data", "out", "scene", "repeats"}},
+      {"pool", commandPool, poolOptions},
   };
 }
 
@@ -162,7 +200,7 @@ std::vector<Command> commands() {
 
 int main(int argc, char** argv) {
   try {
-    if (argc < 2) throw Error("missing command: run, table or bench (see --help)");
+    if (argc < 2) throw Error("missing command: run, table, bench or pool (see --help)");
     if (std::string(argv[1]) == "--help") {
       std::cout << kUsage;
       return 0;

@@ -18,6 +18,12 @@ const char* kUsage =
     "                  [--lr TOL|off] [--fill on|off] [--snap on|off] [--median on|off]\n"
     "                  [--census 9x5|9x9] [--p2-mode knee|paper] [--weights 3232|equal]\n"
     "                  [--preset default|paper]  (options after a preset override it)\n"
+    "golden-only experiments, NOT in the RTL (off by default; docs/algorithm.md section 12):\n"
+    "                  [--right-path W] fifth path from the right over one buffered row, weight W (0..8)\n"
+    "                  [--uniqueness U] uniqueness ratio U % (0..99)\n"
+    "                  [--ad-weight W] [--ad-cap T] C += W * min(|IL - IR|, T) / 8\n"
+    "                  [--subpixel-fit parabola|linear] linear: the equiangular (V) fit\n"
+    "                  [--mgm on|off] raster-order MGM: each path averages two causal neighbours\n"
     "Writes PREFIX_disp16.png (disparity x 256, 0 = invalid), PREFIX_disp8.png\n"
     "(the paper's [0, 255] scaling) and PREFIX_color.png. PREFIX defaults to 'disparity'.\n";
 

@@ -64,13 +64,16 @@ class PathState {
  public:
   static constexpr int kRows = 4;
 
-  PathState(int width, int disparities, const cv::Mat& gray, int pathIndex, int p1, const P2Table& p2Table)
-      : width_(width), disparities_(disparities), gray_(gray), dir_(kPathDirections[pathIndex]), p1_(p1),
-        p2Table_(p2Table), stride_(disparities + 2), rows_(size_t(kRows) * width * stride_, kPathSentinel),
+  PathState(int width, int disparities, const cv::Mat& gray, int pathIndex, int p1, const P2Table& p2Table,
+            bool mgm = false)
+      : width_(width), disparities_(disparities), gray_(gray), dir_(kPathDirections[pathIndex]),
+        perpendicular_(kMgmPerpendicular[pathIndex]), mgm_(mgm), p1_(p1), p2Table_(p2Table),
+        stride_(disparities + 2), rows_(size_t(kRows) * width * stride_, kPathSentinel),
         mins_(size_t(kRows) * width, 0) {}
 
   // Computes Lr(x, y, .) from C(x, y, .) and returns it (valid for kRows - 1 more rows).
   const uint16_t* step(int x, int y, const uint8_t* cost) {
+    if (mgm_) return stepMgm(x, y, cost);
     uint16_t* out = lr(x, y);
     const int px = x + dir_.dx, py = y + dir_.dy;
     if (px < 0 || px >= width_ || py < 0) {
@@ -83,17 +86,72 @@ class PathState {
   }
 
  private:
+  bool inside(int x, int y) const { return x >= 0 && x < width_ && y >= 0; }
+
+  // Golden-only MGM (Params::mgm): the mean of eq. (1)'s recursion from p - r and
+  // from the perpendicular causal neighbour, each with its own dI; one of them
+  // alone when the other is outside the image.
+  const uint16_t* stepMgm(int x, int y, const uint8_t* cost) {
+    uint16_t* out = lr(x, y);
+    const int ax = x + dir_.dx, ay = y + dir_.dy, bx = x + perpendicular_.dx, by = y + perpendicular_.dy;
+    const bool a = inside(ax, ay), b = inside(bx, by);
+    if (!a && !b) {
+      minLr(x, y) = pathStart(cost, disparities_, out);
+      return out;
+    }
+    thread_local std::vector<uint8_t> zero;
+    thread_local std::vector<uint16_t> partA, partB;
+    zero.assign(size_t(disparities_), 0), partA.resize(size_t(disparities_)), partB.resize(size_t(disparities_));
+    const auto part = [&](int px, int py, uint16_t* into) {
+      const int dI = std::abs(int(gray_.at<uint8_t>(y, x)) - int(gray_.at<uint8_t>(py, px)));
+      pathStepInline(zero.data(), lr(px, py), minLr(px, py), disparities_, p1_, p2Table_[dI], into);
+    };
+    if (a) part(ax, ay, partA.data());
+    if (b) part(bx, by, partB.data());
+    uint16_t minOut = 0xffff;
+    for (int d = 0; d < disparities_; ++d) {
+      const int term = a && b ? (partA[size_t(d)] + partB[size_t(d)]) >> 1 : a ? partA[size_t(d)] : partB[size_t(d)];
+      out[d] = uint16_t(cost[d] + term);
+      minOut = std::min(minOut, out[d]);
+    }
+    minLr(x, y) = minOut;
+    return out;
+  }
+
   uint16_t* lr(int x, int y) { return rows_.data() + (size_t(y % kRows) * width_ + x) * stride_ + 1; }
   uint16_t& minLr(int x, int y) { return mins_[size_t(y % kRows) * width_ + x]; }
 
   const int width_, disparities_;
   const cv::Mat& gray_;
-  const PathDirection dir_;
+  const PathDirection dir_, perpendicular_;
+  const bool mgm_;
   const int p1_;
   const P2Table& p2Table_;
   const int stride_;
   std::vector<uint16_t> rows_, mins_;
 };
+
+}  // namespace
+
+void addRightPath(const uint8_t* cost, const uint8_t* grayRow, int width, int nd, int p1, const P2Table& table,
+                  int weight, uint16_t* sum) {
+  std::vector<uint16_t> buffers(2 * size_t(nd + 2), kPathSentinel);
+  uint16_t* prev = buffers.data() + 1;
+  uint16_t* cur = buffers.data() + nd + 3;
+  uint16_t minPrev = 0;
+  for (int x = width - 1; x >= 0; --x) {
+    const uint8_t* c = cost + size_t(x) * nd;
+    const uint16_t minCur =
+        x == width - 1 ? pathStart(c, nd, cur)
+                       : pathStepInline(c, prev, minPrev, nd, p1, table[std::abs(int(grayRow[x]) - int(grayRow[x + 1]))], cur);
+    uint16_t* s = sum + size_t(x) * nd;
+    for (int d = 0; d < nd; ++d) s[d] = uint16_t(s[d] + weight * cur[d]);
+    std::swap(prev, cur);
+    minPrev = minCur;
+  }
+}
+
+namespace {
 
 void waitUntil(const std::atomic<int>& counter, int value) {
   while (counter.load(std::memory_order_acquire) < value) std::this_thread::yield();
@@ -102,11 +160,12 @@ void waitUntil(const std::atomic<int>& counter, int value) {
 }  // namespace
 
 void aggregateRows(int width, int height, int nd, const cv::Mat& gray, int p1, int p2, P2Mode p2Mode,
-                   PathWeighting weights, const CostRowFn& costRow, const SumRowFn& sink) {
+                   PathWeighting weights, const CostRowFn& costRow, const SumRowFn& sink, int rightPathWeight,
+                   bool mgm) {
   const P2Table table = makeP2Table(p1, p2, p2Mode);
   const int* w = pathWeights(weights);
   std::vector<PathState> paths;
-  for (int i = 0; i < kPathCount; ++i) paths.emplace_back(width, nd, gray, i, p1, table);
+  for (int i = 0; i < kPathCount; ++i) paths.emplace_back(width, nd, gray, i, p1, table, mgm);
   // Two workers split every row at column `split`: the left worker computes
   // C and all four paths of columns 0 .. split-1, the right worker those of
   // split .. W-1 and then hands the whole row of S on. The left worker runs
@@ -150,6 +209,9 @@ void aggregateRows(int width, int height, int nd, const cv::Mat& gray, int p1, i
                          columns(y, split, width, [&] { rightStarted.store(y + 1, std::memory_order_release); });
                        else
                          rightStarted.store(y + 1, std::memory_order_release);
+                       if (rightPathWeight)  // the whole row of C is in its slot now
+                         addRightPath(costRing.data() + rowSize * (y % kSlots), gray.ptr<uint8_t>(y), width, nd, p1,
+                                      table, rightPathWeight, sumRing.data() + rowSize * (y % kSlots));
                        sink(1, y, sumRing.data() + rowSize * (y % kSlots));
                        rightRows.store(y + 1, std::memory_order_release);
                      }
@@ -166,7 +228,7 @@ PathVolume pathCost(const CostVolume& cost, const cv::Mat& grayLeft, int pathInd
 }
 
 PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1, int p2, P2Mode p2Mode,
-                         PathWeighting weights) {
+                         PathWeighting weights, int rightPathWeight, bool mgm) {
   PathVolume sum(cost.width, cost.height, cost.depth);
   const size_t rowSize = size_t(cost.width) * cost.depth;
   aggregateRows(
@@ -174,7 +236,7 @@ PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1
       [&](int y, int x0, int x1, uint8_t* row) {
         std::copy(cost.at(x0, y), cost.at(x0, y) + size_t(x1 - x0) * cost.depth, row + size_t(x0) * cost.depth);
       },
-      [&](int, int y, const uint16_t* row) { std::copy_n(row, rowSize, sum.at(0, y)); });
+      [&](int, int y, const uint16_t* row) { std::copy_n(row, rowSize, sum.at(0, y)); }, rightPathWeight, mgm);
   return sum;
 }
 

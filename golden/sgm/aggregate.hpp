@@ -24,6 +24,10 @@ struct PathDirection {
 };
 constexpr PathDirection kPathDirections[kPathCount] = {
     {-1, 0, 0}, {-1, -1, 45}, {0, -1, 90}, {1, -1, 135}};
+// Golden-only MGM (Params::mgm): the second, perpendicular causal neighbour of each
+// path (p + (dx, dy)): above for 0 degrees, above-right for 45, left for 90, above-left for 135.
+constexpr PathDirection kMgmPerpendicular[kPathCount] = {
+    {0, -1, 90}, {1, -1, 135}, {-1, 0, 0}, {-1, -1, 45}};
 
 // Sentinel for the missing neighbours Lr(p-r, -1) and Lr(p-r, D); larger than
 // any path cost, small enough that sentinel + P1 still fits in 16 bits.
@@ -44,8 +48,13 @@ PathVolume pathCost(const CostVolume& cost, const cv::Mat& grayLeft, int pathInd
                     P2Mode p2Mode = P2Mode::kKnee);
 
 // S(p, d) = sum over the four paths of w[r] Lr(p, d) (3, 2, 3, 2 or equal), for the whole volume.
+// rightPathWeight > 0 (golden-only experiment, not in the RTL) adds a fifth path,
+// 0 degrees from the right (p - r = (x + 1, y)), computed over each completed row of
+// C (one buffered row in hardware), weighted by rightPathWeight. mgm (golden-only)
+// replaces each path's recursion by the raster-order MGM one (kMgmPerpendicular).
 PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1, int p2,
-                         P2Mode p2Mode = P2Mode::kKnee, PathWeighting weights = PathWeighting::k3232);
+                         P2Mode p2Mode = P2Mode::kKnee, PathWeighting weights = PathWeighting::k3232,
+                         int rightPathWeight = 0, bool mgm = false);
 
 // The streaming form used by the pipeline: rows in order, never more than a
 // few rows of C and S in memory, the work of each row split over two workers.
@@ -56,6 +65,13 @@ PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1
 using CostRowFn = std::function<void(int y, int x0, int x1, uint8_t* row)>;
 using SumRowFn = std::function<void(int worker, int y, const uint16_t* row)>;
 void aggregateRows(int width, int height, int disparities, const cv::Mat& grayLeft, int p1, int p2,
-                   P2Mode p2Mode, PathWeighting weights, const CostRowFn& costRow, const SumRowFn& sink);
+                   P2Mode p2Mode, PathWeighting weights, const CostRowFn& costRow, const SumRowFn& sink,
+                   int rightPathWeight = 0, bool mgm = false);
+
+// The golden-only fifth path over one row: Lr for r = (1, 0), from x = W-1 down to 0,
+// added to sum (W x D) with the given weight. cost is the row of C, grayRow the row of
+// the left image.
+void addRightPath(const uint8_t* cost, const uint8_t* grayRow, int width, int disparities, int p1,
+                  const P2Table& p2Table, int weight, uint16_t* sum);
 
 }  // namespace sgm

@@ -77,7 +77,9 @@ bool CliArgs::onOff(const std::string& name, bool fallback) const {
 
 const std::set<std::string>& CliArgs::pipelineOptions() {
   static const std::set<std::string> names = {"d",    "p1",   "p2",     "mode",   "subpixel", "lr",     "fill",
-                                              "snap", "median", "census", "p2-mode", "weights", "preset"};
+                                              "snap", "median", "census", "p2-mode", "weights", "preset",
+                                              // golden-only experiments (not in the RTL)
+                                              "right-path", "uniqueness", "ad-weight", "ad-cap", "subpixel-fit", "mgm"};
   return names;
 }
 
@@ -103,6 +105,15 @@ Params CliArgs::pipelineParams(Params p) const {
   if (has("census")) p.census = parseCensusWindow(text("census", ""));
   if (has("p2-mode")) p.p2Mode = parseP2Mode(text("p2-mode", ""));
   if (has("weights")) p.weights = parsePathWeighting(text("weights", ""));
+  p.rightPathWeight = int(integer("right-path", p.rightPathWeight, 0, kMaxRightPathWeight));
+  p.uniqueness = int(integer("uniqueness", p.uniqueness, 0, 99));
+  p.adWeight = int(integer("ad-weight", p.adWeight, 0, kMaxAdWeight));
+  p.adCap = int(integer("ad-cap", p.adCap, 0, 255));
+  if (const std::string fit = text("subpixel-fit", p.linearSubpixel ? "linear" : "parabola"); fit == "linear" || fit == "parabola")
+    p.linearSubpixel = fit == "linear";
+  else
+    throw Error("option --subpixel-fit expects parabola or linear, got '" + fit + "'");
+  p.mgm = onOff("mgm", p.mgm);
   p.validate();
   return p;
 }

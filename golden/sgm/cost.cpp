@@ -204,6 +204,20 @@ void censusCostRow(CostMode mode, CensusWindow census, const Census* left, const
               x1, nd, row);
 }
 
+void addAdTerm(const cv::Mat& gl, const cv::Mat& gr, int y, int x0, int x1, int nd, int weight, int cap,
+               uint8_t* row) {
+  const uint8_t* left = gl.ptr<uint8_t>(y);
+  const uint8_t* right = gr.ptr<uint8_t>(y);
+  const int largest = (weight * cap) >> kAdShift;
+  for (int x = x0; x < x1; ++x) {
+    uint8_t* c = row + size_t(x) * nd;
+    for (int d = 0; d < nd; ++d) {
+      const int term = x - d < 0 ? largest : (weight * std::min(std::abs(int(left[x]) - int(right[x - d])), cap)) >> kAdShift;
+      c[d] = uint8_t(std::min(255, c[d] + term));
+    }
+  }
+}
+
 CostVolume computeCost(const cv::Mat& gl, const cv::Mat& gr, CostMode mode, int disparities, CensusWindow census) {
   CostVolume vol(gl.cols, gl.rows, disparities);
   if (mode == CostMode::kBt) {

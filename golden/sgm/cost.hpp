@@ -19,6 +19,12 @@ int censusCost(CostMode mode, const Census& left, const Census& right);
 void censusCostRow(CostMode mode, CensusWindow census, const Census* left, const Census* right, int width,
                    int x0, int x1, int disparities, uint8_t* row);
 
+// Golden-only experiment (Params::adWeight, not in the RTL): adds
+// weight * min(|IL(x, y) - IR(x - d, y)|, cap) >> kAdShift to pixels x0 .. x1-1 of row y
+// of C; a match outside the right image (x - d < 0) gets the largest term.
+void addAdTerm(const cv::Mat& grayLeft, const cv::Mat& grayRight, int y, int x0, int x1, int disparities,
+               int weight, int cap, uint8_t* row);
+
 // Full cost volume C(x, y, d), d = 0 .. D-1; disparities with x - d < 0 cost
 // maxCost(mode, census). The census window also sets the sad window.
 CostVolume computeCost(const cv::Mat& grayLeft, const cv::Mat& grayRight, CostMode mode, int disparities,

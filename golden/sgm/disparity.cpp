@@ -30,6 +30,14 @@ int subpixelOffset(int a, int m, int b) {
   return num < 0 ? -magnitude : magnitude;
 }
 
+int subpixelOffsetLinear(int a, int m, int b) {
+  const int den = std::max(a, b) - m;
+  if (den <= 0) return 0;
+  const int num = a - b;  // |num| <= den
+  const int magnitude = (std::abs(num) * kSubpixelOne + den) / (2 * den);
+  return num < 0 ? -magnitude : magnitude;
+}
+
 int rightDisparity(const PathVolume& s, int xr, int y) {
   const int last = std::min(s.depth - 1, s.width - 1 - xr);
   int best = 0;
@@ -39,6 +47,13 @@ int rightDisparity(const PathVolume& s, int xr, int y) {
     if (c < bestCost) best = d, bestCost = c;
   }
   return best;
+}
+
+bool isUnique(const uint16_t* s, int disparities, int d, int ratio) {
+  const uint32_t best = uint32_t(s[d]) * 100;
+  for (int k = 0; k < disparities; ++k)
+    if (std::abs(k - d) > 1 && uint32_t(s[k]) * uint32_t(100 - ratio) < best) return false;
+  return true;
 }
 
 RowSelector::RowSelector(int width, int disparities, const Params& params)
@@ -63,10 +78,13 @@ void RowSelector::select(const uint16_t* sumRow, uint16_t* dispRow, uint8_t* val
     const uint16_t* sp = sumRow + size_t(x) * nd;
     const int d = winnerTakeAll(sp, nd);
     int fixed = d * kSubpixelOne;
-    if (params_.subpixel && d > 0 && d < nd - 1) fixed += subpixelOffset(sp[d - 1], sp[d], sp[d + 1]);
+    if (params_.subpixel && d > 0 && d < nd - 1)
+      fixed += params_.linearSubpixel ? subpixelOffsetLinear(sp[d - 1], sp[d], sp[d + 1])
+                                      : subpixelOffset(sp[d - 1], sp[d], sp[d + 1]);
     const int rightD = check && x - d >= 0 ? int(rightKey_[w - 1 - (x - d)] & 0xff) : 0;
     dispRow[x] = uint16_t(fixed);
-    validRow[x] = !check || (x - d >= 0 && std::abs(rightD - d) <= params_.lrTolerance);
+    validRow[x] = (!check || (x - d >= 0 && std::abs(rightD - d) <= params_.lrTolerance)) &&
+                  (!params_.uniqueness || isUnique(sp, nd, d, params_.uniqueness));
   }
 }
 

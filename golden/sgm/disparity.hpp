@@ -19,9 +19,18 @@ int winnerTakeAll(const uint16_t* s, int disparities);
 //   round((a - b) / (2 (a + b - 2m)) * 16), half away from zero; 0 when a + b - 2m = 0.
 int subpixelOffset(int a, int m, int b);
 
+// Golden-only experiment (Params::linearSubpixel, not in the RTL): the equiangular
+// (V) fit, round((a - b) / (2 (max(a, b) - m)) * 16), half away from zero; 0 when
+// max(a, b) = m.
+int subpixelOffsetLinear(int a, int m, int b);
+
 // Right-image disparity from the same S: argmin over d of S(xr + d, d) for
 // d = 0 .. min(D-1, W-1-xr), ties to the smallest d.
 int rightDisparity(const PathVolume& s, int xr, int y);
+
+// Golden-only experiment (Params::uniqueness, not in the RTL): the winner d of s is
+// unique when no S(k) with |k - d| > 1 has S(k) (100 - ratio) < 100 S(d).
+bool isUnique(const uint16_t* s, int disparities, int d, int ratio);
 
 // WTA (+ sub-pixel when enabled) and the left-right check when tolerance >= 0,
 // one row at a time from row y of S (W x D, pixel-major).

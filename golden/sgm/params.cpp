@@ -59,7 +59,9 @@ PathWeighting parsePathWeighting(const std::string& name) {
 bool Params::operator==(const Params& o) const {
   return disparities == o.disparities && p1 == o.p1 && p2 == o.p2 && mode == o.mode && subpixel == o.subpixel &&
          lrTolerance == o.lrTolerance && fill == o.fill && snap == o.snap && median == o.median &&
-         census == o.census && p2Mode == o.p2Mode && weights == o.weights;
+         census == o.census && p2Mode == o.p2Mode && weights == o.weights && rightPathWeight == o.rightPathWeight &&
+         uniqueness == o.uniqueness && adWeight == o.adWeight && adCap == o.adCap && linearSubpixel == o.linearSubpixel &&
+         mgm == o.mgm;
 }
 
 Params presetParams(const std::string& name) {
@@ -109,6 +111,20 @@ void Params::validate() const {
   if (p2 < p1 || p2 > kMaxPenalty)
     throw Error("P2'=" + std::to_string(p2) + " out of range P1.." + std::to_string(kMaxPenalty) +
                 " (P1=" + std::to_string(p1) + ")");
+  if (rightPathWeight < 0 || rightPathWeight > kMaxRightPathWeight)
+    throw Error("right-path weight " + std::to_string(rightPathWeight) + " out of range 0.." +
+                std::to_string(kMaxRightPathWeight));
+  if (uniqueness < 0 || uniqueness > 99) throw Error("uniqueness " + std::to_string(uniqueness) + " out of range 0..99");
+  if (adWeight < 0 || adWeight > kMaxAdWeight || adCap < 0 || adCap > 255)
+    throw Error("AD term weight " + std::to_string(adWeight) + " / cap " + std::to_string(adCap) +
+                " out of range 0.." + std::to_string(kMaxAdWeight) + " / 0..255");
+  if (adWeight && !isHardwareMode(mode)) throw Error("the AD term (--ad-weight) needs a census cost mode");
+  if (maxCost(mode, census) + (adWeight * adCap >> kAdShift) > 255)
+    throw Error("AD term weight " + std::to_string(adWeight) + " x cap " + std::to_string(adCap) +
+                " makes costs exceed 8 bits");
+  if ((kPathWeightSum + rightPathWeight) * (255 + p2) >= 65536)
+    throw Error("right-path weight " + std::to_string(rightPathWeight) + " with P2'=" + std::to_string(p2) +
+                " overflows the 16-bit S");
   if (lrTolerance > disparities)
     throw Error("LR tolerance " + std::to_string(lrTolerance) + " exceeds D=" +
                 std::to_string(disparities));

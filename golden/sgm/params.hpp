@@ -67,7 +67,10 @@ constexpr int kPathWeightSum = 10;                // the larger sum of the two w
 inline const int* pathWeights(PathWeighting weighting) {
   return weighting == PathWeighting::kEqual ? kPathWeightsEqual : kPathWeights;
 }
-constexpr int kMaxPenalty = 6000;                 // keeps kPathWeightSum * (Cmax + P2') < 2^16
+constexpr int kMaxPenalty = 6000;
+constexpr int kMaxRightPathWeight = 8;            // golden-only fifth path (Params::rightPathWeight)
+constexpr int kMaxAdWeight = 64;                  // golden-only AD term (Params::adWeight)
+constexpr int kAdShift = 3;                       // AD term = adWeight * min(AD, adCap) >> kAdShift                 // keeps kPathWeightSum * (Cmax + P2') < 2^16
 
 struct Params {
   int disparities = 64;        // D: candidates 0 .. D-1
@@ -82,6 +85,17 @@ struct Params {
   CensusWindow census = CensusWindow::k9x5;    // census window (section 2)
   P2Mode p2Mode = P2Mode::kKnee;               // P2 adaptation (section 4)
   PathWeighting weights = PathWeighting::k3232;  // path weights of S (section 5)
+
+  // Golden-only experiments (issue 15, docs/algorithm.md section 12): NOT in the RTL,
+  // every one off by default, so Params{} and the presets stay bit-exact with the core.
+  int rightPathWeight = 0;  // fifth path, 0 degrees from the right over one buffered row, weight 0..kMaxRightPathWeight
+  int uniqueness = 0;       // uniqueness ratio (%): invalid when some S(d'), |d' - d| > 1, has
+                            // S(d') (100 - u) < 100 S(d); 0 = off
+  int adWeight = 0;         // AD term added to C: adWeight * min(|IL(x) - IR(x-d)|, adCap) / 8; 0 = off
+  int adCap = 20;           // the AD term's truncation (gray levels)
+  bool linearSubpixel = false;  // sub-pixel by the equiangular (V) fit instead of the parabola
+  bool mgm = false;             // raster-order MGM: each path averages two causal neighbours
+  bool experimental() const { return rightPathWeight || uniqueness || adWeight || linearSubpixel || mgm; }
 
   bool operator==(const Params& o) const;
   bool operator!=(const Params& o) const { return !(*this == o); }

@@ -22,7 +22,11 @@ PipelineStages runPipelineStages(const cv::Mat& gl, const cv::Mat& gr, const Par
   checkInput(gl, gr, params);
   PipelineStages st;
   st.cost = computeCost(gl, gr, params.mode, params.disparities, params.census);
-  st.aggregated = aggregateCost(st.cost, gl, params.p1, params.p2, params.p2Mode, params.weights);
+  if (params.adWeight)
+    for (int y = 0; y < gl.rows; ++y)
+      addAdTerm(gl, gr, y, 0, gl.cols, params.disparities, params.adWeight, params.adCap, st.cost.at(0, y));
+  st.aggregated = aggregateCost(st.cost, gl, params.p1, params.p2, params.p2Mode, params.weights, params.rightPathWeight,
+                                params.mgm);
   st.selected = selectDisparity(st.aggregated, params);
   st.filled = params.fill ? fillHoles(st.selected) : st.selected;
   st.snapped = params.snap ? snapEdges(st.filled, gl) : st.filled;
@@ -43,6 +47,7 @@ DisparityMap runPipeline(const cv::Mat& gl, const cv::Mat& gr, const Params& par
     censusRight = censusTransform(gr, params.census);
     costRow = [&](int y, int x0, int x1, uint8_t* row) {
       censusCostRow(params.mode, params.census, &censusLeft[size_t(y) * w], &censusRight[size_t(y) * w], w, x0, x1, nd, row);
+      if (params.adWeight) addAdTerm(gl, gr, y, x0, x1, nd, params.adWeight, params.adCap, row);
     };
   } else {
     volume = computeCost(gl, gr, params.mode, nd, params.census);
@@ -54,7 +59,7 @@ DisparityMap runPipeline(const cv::Mat& gl, const cv::Mat& gr, const Params& par
   RowSelector selectors[2] = {RowSelector(w, nd, params), RowSelector(w, nd, params)};  // one per worker
   aggregateRows(w, h, nd, gl, params.p1, params.p2, params.p2Mode, params.weights, costRow, [&](int worker, int y, const uint16_t* sum) {
     selectors[worker].select(sum, selected.disp.ptr<uint16_t>(y), selected.valid.ptr<uint8_t>(y));
-  });
+  }, params.rightPathWeight, params.mgm);
   const DisparityMap filled = params.fill ? fillHoles(selected) : selected;
   const DisparityMap snapped = params.snap ? snapEdges(filled, gl) : filled;
   return params.median ? median5x5(snapped) : snapped;

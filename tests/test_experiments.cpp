@@ -1,0 +1,181 @@
+// Golden-only experiments of issue 15 (docs/algorithm.md section 12, not in the RTL):
+// the fifth path from the right, the uniqueness ratio, the AD term; their defaults
+// leave the pipeline unchanged, and the streaming pipeline equals the staged one.
+#include "sgm/aggregate.hpp"
+#include "sgm/cli_args.hpp"
+#include "sgm/cost.hpp"
+#include "sgm/disparity.hpp"
+#include "sgm/params.hpp"
+#include "sgm/pipeline.hpp"
+
+#include "expect_error.hpp"
+#include "eval_lib.hpp"
+#include "synthetic_scene.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace {
+
+using sgm::CostVolume;
+using sgm::PathVolume;
+
+TEST(Experiments, OffByDefaultAndNotInAnyPreset) {
+  const sgm::Params p;
+  EXPECT_FALSE(p.experimental());
+  EXPECT_FALSE(sgm::presetParams("paper").experimental());
+  sgm::Params q = p;
+  q.rightPathWeight = 3;
+  EXPECT_NE(q, p);
+  EXPECT_EQ(sgm::presetName(q), "custom");
+}
+
+// The fifth path on a row is the 0-degree path (left to right) of the mirrored row.
+TEST(RightPath, IsTheMirroredLeftPath) {
+  std::mt19937 rng(5);
+  const int w = 37, nd = 12, p1 = 9, p2 = 120;
+  CostVolume c(w, 1, nd), mirrored(w, 1, nd);
+  cv::Mat gray(1, w, CV_8UC1), grayMirrored(1, w, CV_8UC1);
+  for (int x = 0; x < w; ++x) {
+    gray.at<uint8_t>(0, x) = uint8_t(rng() % 256);
+    grayMirrored.at<uint8_t>(0, w - 1 - x) = gray.at<uint8_t>(0, x);
+    for (int d = 0; d < nd; ++d) c.at(x, 0)[d] = mirrored.at(w - 1 - x, 0)[d] = uint8_t(rng() % 45);
+  }
+  const sgm::P2Table table = sgm::makeP2Table(p1, p2);
+  std::vector<uint16_t> sum(size_t(w) * nd, 7);  // the path is added to what is there
+  sgm::addRightPath(c.at(0, 0), gray.ptr<uint8_t>(0), w, nd, p1, table, 2, sum.data());
+  const PathVolume left = sgm::pathCost(mirrored, grayMirrored, 0, p1, p2);
+  for (int x = 0; x < w; ++x)
+    for (int d = 0; d < nd; ++d)
+      ASSERT_EQ(sum[size_t(x) * nd + d], 7 + 2 * left.at(w - 1 - x, 0)[d]) << "x " << x << " d " << d;
+}
+
+TEST(RightPath, AggregateAddsItToTheFourPaths) {
+  std::mt19937 rng(9);
+  const int w = 30, h = 7, nd = 10, p1 = 8, p2 = 90;
+  CostVolume c(w, h, nd);
+  for (auto& v : c.data) v = uint8_t(rng() % 45);
+  cv::Mat gray(h, w, CV_8UC1);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) gray.at<uint8_t>(y, x) = uint8_t(rng() % 256);
+  const PathVolume four = sgm::aggregateCost(c, gray, p1, p2);
+  const PathVolume five = sgm::aggregateCost(c, gray, p1, p2, sgm::P2Mode::kKnee, sgm::PathWeighting::k3232, 3);
+  const sgm::P2Table table = sgm::makeP2Table(p1, p2);
+  for (int y = 0; y < h; ++y) {
+    std::vector<uint16_t> row(four.at(0, y), four.at(0, y) + size_t(w) * nd);
+    sgm::addRightPath(c.at(0, y), gray.ptr<uint8_t>(y), w, nd, p1, table, 3, row.data());
+    for (int i = 0; i < w * nd; ++i) ASSERT_EQ(five.at(0, y)[i], row[size_t(i)]) << "y " << y << " i " << i;
+  }
+}
+
+// MGM on a 2 x 2 volume with D = 1: every step term is 0 (one disparity), so Lr = C
+// wherever a neighbour exists; with D = 2 the averaging shows.
+TEST(Mgm, HandExampleTwoByTwo) {
+  // D = 2, P1 = 10, P2 = 100 (gray flat: P2r = 100). C(x, y) = {c0, c1}:
+  //   (0,0) {0, 20}   (1,0) {30, 0}
+  //   (0,1) {5, 5}    (1,1) {0, 40}
+  CostVolume c(2, 2, 2);
+  const int costs[2][2][2] = {{{0, 20}, {30, 0}}, {{5, 5}, {0, 40}}};
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 2; ++x)
+      for (int d = 0; d < 2; ++d) c.at(x, y)[d] = uint8_t(costs[y][x][d]);
+  const cv::Mat gray(2, 2, CV_8UC1, cv::Scalar(50));
+  const PathVolume s = sgm::aggregateCost(c, gray, 10, 100, sgm::P2Mode::kKnee, sgm::PathWeighting::kEqual, 0, true);
+  // Path 0 (left, perpendicular above): (0,0) start {0,20}; (1,0) left only: prev {0,20}, min 0:
+  //   t = {min(0, 20+10), min(20, 0+10)} = {0, 10} -> {30, 10}. (0,1) above only: prev {0,20} -> {5, 15}.
+  //   (1,1): left (0,1) {5,15} min 5: t = {0, min(15, 15)-5 = 10}... = {min(5,25)-5, min(15,15)-5} = {0, 10};
+  //   above (1,0) {30,10} min 10: t = {min(30, 20)-10, min(10, 40)-10} = {10, 0}; mean {5, 5} -> {5, 45}.
+  // Path 90 (above, perpendicular left) is the same pair of neighbours at (1,1): {5, 45}; at (1,0) it has the
+  // left neighbour only: {30, 10}; at (0,1) above only: {5, 15}.
+  // Path 45 (above-left, perpendicular above-right): (1,1) above-left (0,0) {0,20} min 0: t = {0, 10};
+  //   above-right (2,0) outside -> {0, 50}. (0,1): above-right (1,0) {30, 0} (its own start) min 0:
+  //   t = {min(30, 10), 0} = {10, 0} -> {15, 5}. (1,0): both outside -> start {30, 0}.
+  // Path 135 (above-right, perpendicular above-left): (0,1) above-right (1,0) start {30,0}: t {10, 0} -> {15, 5};
+  //   (1,1): above-right outside, above-left (0,0) {0,20}: {0, 10} -> {0, 50}. (1,0): left-above outside... start.
+  // Sum at (1,1) over the four (equal weights): {5+0+5+0, 45+50+45+50} = {10, 190}.
+  EXPECT_EQ(s.at(1, 1)[0], 10);
+  EXPECT_EQ(s.at(1, 1)[1], 190);
+  // At (0,0) every path starts: 4 C.
+  EXPECT_EQ(s.at(0, 0)[0], 0);
+  EXPECT_EQ(s.at(0, 0)[1], 80);
+}
+
+TEST(Uniqueness, HandCases) {
+  // Winner d = 2 (cost 100); its neighbours d = 1, 3 never count as rivals.
+  const uint16_t s[] = {200, 101, 100, 101, 120, 111};
+  EXPECT_FALSE(sgm::isUnique(s, 6, 2, 10));  // d = 5: 111 * 90 = 9990 < 100 * 100
+  EXPECT_TRUE(sgm::isUnique(s, 6, 2, 5));    // 111 * 95 = 10545, 120 * 95 = 11400: unique
+  EXPECT_TRUE(sgm::isUnique(s, 6, 2, 0));    // ratio 0: only a strictly smaller cost is a rival
+  const uint16_t tie[] = {100, 300, 100};
+  EXPECT_TRUE(sgm::isUnique(tie, 3, 0, 0));
+  EXPECT_FALSE(sgm::isUnique(tie, 3, 0, 1));  // 100 * 99 < 100 * 100
+}
+
+TEST(LinearSubpixel, HandCases) {
+  // a = 20, m = 10, b = 30: V fit (20 - 30) / (2 (30 - 10)) = -0.25 px = -4/16.
+  EXPECT_EQ(sgm::subpixelOffsetLinear(20, 10, 30), -4);
+  EXPECT_EQ(sgm::subpixelOffsetLinear(30, 10, 20), 4);
+  EXPECT_EQ(sgm::subpixelOffsetLinear(10, 10, 30), -8);  // a = m: half a pixel
+  EXPECT_EQ(sgm::subpixelOffsetLinear(25, 10, 25), 0);
+  EXPECT_EQ(sgm::subpixelOffsetLinear(10, 10, 10), 0);   // flat: no offset
+  // V: (13 - 10) / (2 * 13) * 16 = 1.85 -> 2; the parabola: (13 - 10) / (2 * 23) * 16 = 1.04 -> 1.
+  EXPECT_EQ(sgm::subpixelOffsetLinear(13, 0, 10), 2);
+  EXPECT_EQ(sgm::subpixelOffset(13, 0, 10), 1);
+}
+
+TEST(AdTerm, HandRow) {
+  // Left row 10 50 90, right row 10 20 30; D = 3, weight 8 (x 1), cap 20.
+  const cv::Mat gl = (cv::Mat_<uint8_t>(1, 3) << 10, 50, 90), gr = (cv::Mat_<uint8_t>(1, 3) << 10, 20, 30);
+  std::vector<uint8_t> row(9, 5);
+  sgm::addAdTerm(gl, gr, 0, 0, 3, 3, 8, 20, row.data());
+  // x=0: d0 |10-10| = 0; d1, d2 outside: cap 20. x=1: |50-20| -> 20, |50-10| -> 20, outside 20.
+  // x=2: |90-30|, |90-20|, |90-10| -> 20 each.
+  EXPECT_EQ(row, (std::vector<uint8_t>{5, 25, 25, 25, 25, 25, 25, 25, 25}));
+  std::vector<uint8_t> half(9, 0);
+  const cv::Mat gr2 = (cv::Mat_<uint8_t>(1, 3) << 13, 47, 90);
+  sgm::addAdTerm(gl, gr2, 0, 1, 3, 3, 4, 20, half.data());  // x0 = 1: pixel 0 untouched; weight 4 = x 1/2
+  // x=1: |50-47| = 3 -> 1, |50-13| -> 20 -> 10, outside -> 10. x=2: 0, |90-47| -> 10, |90-13| -> 10.
+  EXPECT_EQ(half, (std::vector<uint8_t>{0, 0, 0, 1, 10, 10, 0, 10, 10}));
+}
+
+TEST(Experiments, StreamingPipelineEqualsStagesAndChangesTheResult) {
+  const sgm::eval::Scene scene = sgm::synth::toEvalScene(sgm::synth::makeSyntheticScene(96, 48, 14, 3), "s");
+  sgm::Params p;
+  p.disparities = 16;
+  const sgm::DisparityMap today = sgm::runPipeline(scene.left, scene.right, p);
+  p.rightPathWeight = 3, p.uniqueness = 15, p.adWeight = 8, p.adCap = 16, p.linearSubpixel = true, p.mgm = true;
+  const sgm::DisparityMap streamed = sgm::runPipeline(scene.left, scene.right, p);
+  const sgm::PipelineStages staged = sgm::runPipelineStages(scene.left, scene.right, p);
+  EXPECT_EQ(cv::countNonZero(streamed.disp != staged.result.disp), 0);
+  EXPECT_EQ(cv::countNonZero(streamed.valid != staged.result.valid), 0);
+  EXPECT_GT(cv::countNonZero(streamed.disp != today.disp) + cv::countNonZero(streamed.valid != today.valid), 0);
+}
+
+TEST(Experiments, OptionsAndRanges) {
+  std::vector<std::string> args = {"prog", "--right-path", "3", "--uniqueness", "10", "--ad-weight", "8", "--ad-cap", "16",
+                                   "--subpixel-fit", "linear"};
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  const sgm::Params p = sgm::CliArgs(int(argv.size()), argv.data(), sgm::CliArgs::pipelineOptions()).pipelineParams();
+  EXPECT_EQ(p.rightPathWeight, 3);
+  EXPECT_EQ(p.uniqueness, 10);
+  EXPECT_EQ(p.adWeight, 8);
+  EXPECT_EQ(p.adCap, 16);
+  EXPECT_TRUE(p.linearSubpixel);
+  EXPECT_FALSE(p.mgm);
+  sgm::Params bad;
+  bad.rightPathWeight = sgm::kMaxRightPathWeight + 1;
+  expectError([&] { bad.validate(); }, {"right-path"});
+  bad = sgm::Params{};
+  bad.adWeight = 64, bad.adCap = 255;  // 44 + 64 * 255 / 8 > 255
+  expectError([&] { bad.validate(); }, {"8 bits"});
+  bad = sgm::Params{};
+  bad.mode = sgm::CostMode::kSad, bad.adWeight = 8;
+  expectError([&] { bad.validate(); }, {"census cost mode"});
+  bad = sgm::Params{};
+  bad.rightPathWeight = 8, bad.p2 = 4000;  // 18 * (255 + 4000) >= 65536
+  expectError([&] { bad.validate(); }, {"16-bit"});
+}
+
+}  // namespace
