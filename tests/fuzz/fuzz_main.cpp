@@ -283,9 +283,15 @@ class Fuzzer {
       fs::copy_file(goodRight_, scene + "/right.png");
       cv::imwrite(scene + "/gt.png", cv::Mat(48, 64, CV_8UC1, cv::Scalar(8)));
       test::writeBytes(scene + "/meta.txt", "gt_scale: 4\n");
-      args = {pick(rng, {"run", "table", "bench", "bogus"}), "--data", inputs, "--scene", "scene"};
+      args = {pick(rng, {"run", "table", "bench", "pool", "bogus"}), "--data", inputs, "--scene", "scene"};
       if (args[0] != "bench") args.resize(3);
-      names.insert(names.end(), {"delta", "repeats"});
+      if (args[0] == "pool") {
+        args[1] = "--pool";
+        if (below(rng, 2)) test::writeBytes(scene + "/meta.txt", pick(rng, {"gt_scale: 4\nndisp: 16\nset: x\n",
+                                                                            "gt_scale: 4\nndisp: 1e9\n",
+                                                                            "gt_scale: 4\nset: a b\n"}));
+      }
+      names.insert(names.end(), {"delta", "repeats", "half", "opencv"});
     } else {
       args = {"--left", left, "--right", goodRight_, "--d", "16"};
       names.insert(names.end(), {"stall", "seed", "frames", "gt-scale"});
