@@ -325,6 +325,29 @@ std::string pathText(const Run& r) {
          joined(r.pathModules, " > ") + ")";
 }
 
+// A meta.txt value, empty when the run's meta.txt predates the key.
+std::string metaText(const Run& r, const char* key) {
+  const std::string v = meta(r, key);
+  return v == "?" ? std::string() : v;
+}
+
+// "critical_path": {start, end, modules, instances, logic_cells, logic_ns, routing_ns}.
+void writeCriticalPath(JsonWriter& j, const Run& r) {
+  j.key("critical_path").beginObject();
+  j.key("start").string(r.pathStart);
+  j.key("end").string(r.pathEnd);
+  j.key("modules").beginArray();
+  for (const auto& m : r.pathModules) j.string(m);
+  j.endArray();
+  j.key("instances").beginArray();
+  for (const auto& m : r.pathInstances) j.string(m);
+  j.endArray();
+  j.key("logic_cells").integer(r.pathLogicCells);
+  j.key("logic_ns").real(r.pathLogicNs);
+  j.key("routing_ns").real(r.pathRoutingNs);
+  j.endObject();
+}
+
 // Runs of the loop harness (`make pnr-loop`, meta kind=loop) and of the whole core.
 bool isLoopRun(const Run& r) { return meta(r, "kind") == "loop"; }
 
@@ -355,25 +378,13 @@ void writeSummary(const std::string& root, const std::vector<Run>& allRuns, doub
     j.key("dsp").integer(r.dsp);
     j.key("fmax_mhz").real(r.fmax);
     j.key("target_mhz").real(metaNumber(r, "target_mhz"));
-    j.key("critical_path").beginObject();
-    j.key("start").string(r.pathStart);
-    j.key("end").string(r.pathEnd);
-    j.key("modules").beginArray();
-    for (const auto& m : r.pathModules) j.string(m);
-    j.endArray();
-    j.key("instances").beginArray();
-    for (const auto& m : r.pathInstances) j.string(m);
-    j.endArray();
-    j.key("logic_cells").integer(r.pathLogicCells);
-    j.key("logic_ns").real(r.pathLogicNs);
-    j.key("routing_ns").real(r.pathRoutingNs);
-    j.endObject();
+    writeCriticalPath(j, r);
     j.key("pnr_seconds").integer(std::atol(meta(r, "pnr_seconds").c_str()));
     j.key("synth_seconds").integer(std::atol(meta(r, "synth_seconds").c_str()));
     j.key("seed").integer(std::atol(meta(r, "seed").c_str()));
     j.key("nextpnr").string(meta(r, "nextpnr"));
-    j.key("nextpnr_flags").string(meta(r, "nextpnr_flags") == "?" ? "" : meta(r, "nextpnr_flags"));
-    j.key("synth_flags").string(meta(r, "synth_flags") == "?" ? "" : meta(r, "synth_flags"));
+    j.key("nextpnr_flags").string(metaText(r, "nextpnr_flags"));
+    j.key("synth_flags").string(metaText(r, "synth_flags"));
     j.key("yosys").string(meta(r, "yosys"));
     j.key("rtl_commit").string(meta(r, "rtl_commit"));
     j.key("date").string(meta(r, "date"));
@@ -403,16 +414,10 @@ void writeSummary(const std::string& root, const std::vector<Run>& allRuns, doub
     j.key("ff").integer(r.ff);
     j.key("fmax_mhz").real(r.fmax);
     j.key("target_mhz").real(metaNumber(r, "target_mhz"));
-    j.key("critical_path").beginObject();
-    j.key("start").string(r.pathStart);
-    j.key("end").string(r.pathEnd);
-    j.key("logic_cells").integer(r.pathLogicCells);
-    j.key("logic_ns").real(r.pathLogicNs);
-    j.key("routing_ns").real(r.pathRoutingNs);
-    j.endObject();
+    writeCriticalPath(j, r);
     j.key("pnr_seconds").integer(std::atol(meta(r, "pnr_seconds").c_str()));
-    j.key("synth_flags").string(meta(r, "synth_flags") == "?" ? "" : meta(r, "synth_flags"));
-    j.key("nextpnr_flags").string(meta(r, "nextpnr_flags") == "?" ? "" : meta(r, "nextpnr_flags"));
+    j.key("synth_flags").string(metaText(r, "synth_flags"));
+    j.key("nextpnr_flags").string(metaText(r, "nextpnr_flags"));
     j.key("date").string(meta(r, "date"));
     j.endObject();
   }
@@ -431,8 +436,8 @@ void writeSummary(const std::string& root, const std::vector<Run>& allRuns, doub
     std::string s;
     for (const auto& [key, tool] : {std::pair<const char*, const char*>{"synth_flags", "synth_ecp5"},
                                     std::pair<const char*, const char*>{"nextpnr_flags", "nextpnr"}}) {
-      const std::string f = meta(r, key);
-      if (f.empty() || f == "?") continue;
+      const std::string f = metaText(r, key);
+      if (f.empty()) continue;
       s += (s.empty() ? " (`" : "; `") + std::string(tool) + " " + f + "`";
     }
     return s.empty() ? s : s + ")";
