@@ -331,6 +331,15 @@ std::string metaText(const Run& r, const char* key) {
   return v == "?" ? std::string() : v;
 }
 
+// The fields that name a run: run, device, package, speed, d.
+void writeRunHeader(JsonWriter& j, const Run& r) {
+  j.key("run").string(r.name);
+  j.key("device").string(meta(r, "device"));
+  j.key("package").string(meta(r, "package"));
+  j.key("speed").integer(std::atol(meta(r, "speed").c_str()));
+  j.key("d").integer(std::atol(meta(r, "d").c_str()));
+}
+
 // "critical_path": {start, end, modules, instances, logic_cells, logic_ns, routing_ns}.
 void writeCriticalPath(JsonWriter& j, const Run& r) {
   j.key("critical_path").beginObject();
@@ -362,11 +371,7 @@ void writeSummary(const std::string& root, const std::vector<Run>& allRuns, doub
   j.key("runs").beginArray();
   for (const Run& r : runs) {
     j.beginObject();
-    j.key("run").string(r.name);
-    j.key("device").string(meta(r, "device"));
-    j.key("package").string(meta(r, "package"));
-    j.key("speed").integer(std::atol(meta(r, "speed").c_str()));
-    j.key("d").integer(std::atol(meta(r, "d").c_str()));
+    writeRunHeader(j, r);
     j.key("max_width").integer(std::atol(meta(r, "max_width").c_str()));
     j.key("lut4").integer(r.lut4);
     j.key("lut4_available").integer(r.lut4Avail);
@@ -404,11 +409,7 @@ void writeSummary(const std::string& root, const std::vector<Run>& allRuns, doub
   j.key("loop_runs").beginArray();
   for (const Run& r : loops) {
     j.beginObject();
-    j.key("run").string(r.name);
-    j.key("device").string(meta(r, "device"));
-    j.key("package").string(meta(r, "package"));
-    j.key("speed").integer(std::atol(meta(r, "speed").c_str()));
-    j.key("d").integer(std::atol(meta(r, "d").c_str()));
+    writeRunHeader(j, r);
     j.key("lanes").integer(std::atol(meta(r, "lanes").c_str()));
     j.key("lut4").integer(r.lut4);
     j.key("ff").integer(r.ff);
