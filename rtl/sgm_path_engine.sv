@@ -30,8 +30,8 @@
 // must fit), PW penalty width, MAX_WIDTH, XW column bits, YW row bits, GRAY_LEAD
 // (0 or 1, see stage A). SW = LW + 4
 // holds the larger of the two weightings (10 x 2^LW).
-// Latency: LATENCY = 3 slots from cost_i to s_o; centre_i / nbr_i of a pixel are
-// presented GRAY_LEAD slots before its cost_i. Throughput: 1 pixel per slot.
+// Latency: LATENCY = 3 slots from cost_i to s_o; row_i, centre_i and nbr_i of a
+// pixel are presented GRAY_LEAD slots before its cost_i (col_i, valid_i with it). Throughput: 1 pixel per slot.
 module sgm_path_engine #(
   parameter int D         = 64,
   parameter int CW        = 7,
@@ -61,7 +61,9 @@ module sgm_path_engine #(
   // Slot input: the pixel's costs, position and left-image grays.
   input  wire  [D*CW-1:0]     cost_i,
   input  wire  [XW-1:0]       col_i,
-  input  wire  [YW-1:0]       row_i,    // rows outside the frame carry no pixel (valid_i = 0)
+  // The row of the pixel of the next slot, like the grays (GRAY_LEAD slots ahead of
+  // cost_i; rows outside the frame carry no pixel, valid_i = 0 with the costs).
+  input  wire  [YW-1:0]       row_i,
   input  wire                 valid_i,
   // The left-image grays of the pixel of the next slot (GRAY_LEAD slots ahead of cost_i).
   input  wire  [7:0]          centre_i,
@@ -105,16 +107,20 @@ module sgm_path_engine #(
     if (en_i) begin
       cost_b  <= cost_i;
       col_b   <= col_i;
-      row_b   <= row_i;
+      row_b   <= row_a;
     end
   end
 
+  // The row (and P2r) one register more when they lead the costs.
+  logic [YW-1:0] row_a;
   if (GRAY_LEAD == 1) begin : g_p2r_reg
     always_ff @(posedge clk_i) begin
       if (en_i) p2r_b <= p2r_a;
+      if (en_i) row_a <= row_i;
     end
   end else begin : g_p2r_ram
     assign p2r_b = p2r_a;
+    assign row_a = row_i;
   end
 
   // Slot valid flags: the only registers with a reset.

@@ -225,24 +225,18 @@ module sgm_top #(
     .valid_o   (valid2)
   );
 
-  // The path engine also needs the row and the left grays of the pixel; the
-  // grays GRAY_LEAD slot ahead of the costs (its P2 lookup then runs in the
-  // slot before the pixel and P2r is registered behind the table's RAM).
+  // The path engine also needs the row and the left grays of the pixel,
+  // GRAY_LEAD slot ahead of the costs (its P2 lookup then runs in the slot
+  // before the pixel and P2r is registered behind the table's RAM).
   localparam int GRAY_LEAD = 1;
   logic [YW-1:0] row2;
   logic [7:0]    centre2;
   logic [31:0]   nbr2;
-  sgm_delay #(.WIDTH(YW), .DEPTH(COST_LATENCY)) u_align_cost (
+  sgm_delay #(.WIDTH(YW + 8 + 32), .DEPTH(COST_LATENCY - GRAY_LEAD)) u_align_cost (
     .clk_i (clk_i),
     .en_i  (en),
-    .d_i   (row1),
-    .q_o   (row2)
-  );
-  sgm_delay #(.WIDTH(8 + 32), .DEPTH(COST_LATENCY - GRAY_LEAD)) u_align_gray (
-    .clk_i (clk_i),
-    .en_i  (en),
-    .d_i   ({centre, nbr}),
-    .q_o   ({centre2, nbr2})
+    .d_i   ({row1, centre, nbr}),
+    .q_o   ({row2, centre2, nbr2})
   );
 
   // ------------------------------------------------------------ paths

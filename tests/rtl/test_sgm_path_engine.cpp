@@ -32,7 +32,7 @@ using sgm::tb::getBits;
 using sgm::tb::setBits;
 
 constexpr int kD = SGM_D;
-// The grays of a pixel lead its costs by GRAY_LEAD slots (0 or 1, a parameter of the build).
+// The row and grays of a pixel lead its costs by GRAY_LEAD slots (0 or 1, a parameter of the build).
 constexpr int kGrayLead = int(Vsgm_path_engine_sgm_path_engine::GRAY_LEAD);
 constexpr int kCostBits = 7, kSumBits = 13;
 
@@ -96,11 +96,12 @@ class PathEngine {
       for (int d = 0; d < kD; ++d)
         setBits(top_->cost_i, d * kCostBits, kCostBits, inside ? f.cost.at(col, row)[d] : 0);
       top_->col_i = col;
-      top_->row_i = uint32_t(row) & ((1u << SGM_YW) - 1);  // negative rows wrap; they carry valid_i = 0
       top_->valid_i = inside;
-      // The grays of slot t + kGrayLead (random where no pixel is: they must not matter).
+      // The row and the grays of slot t + kGrayLead (negative rows wrap; they carry no
+      // pixel, and the grays there are random: they must not matter).
       const long tg = t + kGrayLead;
       const int growIndex = int(tg / w) - leadRows, gcol = int(tg % w);
+      top_->row_i = uint32_t(growIndex) & ((1u << SGM_YW) - 1);
       uint32_t nbr = 0;
       if (growIndex >= 0 && growIndex < h) {
         top_->centre_i = f.gray.at<uint8_t>(growIndex, gcol);
