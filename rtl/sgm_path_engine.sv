@@ -31,7 +31,8 @@
 // (0 or 1, see stage A). SW = LW + 4
 // holds the larger of the two weightings (10 x 2^LW).
 // Latency: LATENCY = 3 slots from cost_i to s_o; row_i, centre_i and nbr_i of a
-// pixel are presented GRAY_LEAD slots before its cost_i (col_i, valid_i with it). Throughput: 1 pixel per slot.
+// pixel are presented GRAY_LEAD slots before its cost_i (col_i, valid_i with it).
+// Throughput: 1 pixel per slot.
 module sgm_path_engine #(
   parameter int D         = 64,
   parameter int CW        = 7,
@@ -99,6 +100,7 @@ module sgm_path_engine #(
     .p2r_o   (p2r_a)
   );
 
+  logic [YW-1:0]      row_a;  // row_i, GRAY_LEAD slots later (see g_p2r_reg)
   logic [D*CW-1:0]    cost_b;
   logic [XW-1:0]      col_b;
   logic [YW-1:0]      row_b;
@@ -112,7 +114,6 @@ module sgm_path_engine #(
   end
 
   // The row (and P2r) one register more when they lead the costs.
-  logic [YW-1:0] row_a;
   if (GRAY_LEAD == 1) begin : g_p2r_reg
     always_ff @(posedge clk_i) begin
       if (en_i) p2r_b <= p2r_a;
