@@ -1,0 +1,177 @@
+`default_nettype none
+// sgm_path_ring: the 0 degree path recursion of eq. (1) (docs/algorithm.md
+// section 5), the one loop of the core: D sgm_path_pe sub-PEs fed by the
+// previous pixel's Lr and min Lr, and the D-input minimum of their results,
+// with LANES registers in the loop.
+//
+// LANES = K: K independent pixel streams (lanes) share the PEs and the tree by
+// time multiplexing, slot K t + k belonging to lane k (docs/reschedule.md), so
+// the recursion of each lane may take K slots. The loop's logic is cut into K
+// pipeline stages: its units are the two halves of the sub-PE (weight 2 each,
+// three carry chains) and the levels of the ternary minimum tree (weight 1
+// each), and the K - 1 inner registers sit at the unit boundaries nearest to
+// the even shares j W / K of the total weight W (ties to the earlier boundary;
+// at most one inside the sub-PE, any further one joins the last boundary); the
+// K-th register follows the last tree level and closes the loop. The Lr vector
+// travels beside the tree through the same registers, and the inputs of the
+// sub-PE's second half (cost, P2r, path start, min Lr of the previous pixel) are
+// carried with the pixel when the sub-PE is cut. LANES = 1 is the loop of the
+// single-lane core: combinational PEs and tree, one register after the tree.
+//
+// Throughput: one pixel per slot (en_i), each lane one pixel every K slots.
+// Parameters: D disparities, CW cost width, LW path-cost width (Cmax + P2'max
+// must fit), PW penalty width, LANES loop stages (>= 1).
+// Latency: LATENCY = LANES slots from a pixel's inputs to its lr_o / min_o,
+// which are the previous pixel's Lr of the lane of the slot being presented.
+module sgm_path_ring #(
+  parameter int D     = 64,
+  parameter int CW    = 7,
+  parameter int LW    = 9,
+  parameter int PW    = 8,
+  parameter int LANES /*verilator public*/ = 1,
+  localparam int LATENCY = LANES
+) (
+  input  wire             clk_i,
+  input  wire             en_i,
+  input  wire  [PW-1:0]   p1_i,     // configuration (constant while the frame flows)
+  // Slot input: the pixel of this slot's lane.
+  input  wire  [D*CW-1:0] cost_i,
+  input  wire  [PW-1:0]   p2r_i,
+  input  wire             start_i,  // path start: Lr = C
+  // LATENCY slots later: the pixel's Lr (d at lr_o[d*LW +: LW]) and its minimum.
+  output logic [D*LW-1:0] lr_o,
+  output logic [LW-1:0]   min_o
+);
+
+  function automatic integer ternary_levels(input integer n);
+    integer p;
+    ternary_levels = 0;
+    for (p = 1; p < n; p = p * 3) ternary_levels = ternary_levels + 1;
+  endfunction
+
+  localparam int LEVELS = ternary_levels(D);
+  localparam int P      = 3 ** LEVELS;   // leaves of the complete ternary tree
+  localparam int UNITS  = 2 + LEVELS;    // unit 0, 1: sub-PE halves; 1 + l: tree level l
+  localparam int WT     = 4 + LEVELS;    // total weight
+
+  // Weight of units 0 .. u.
+  function automatic integer weight_upto(input integer u);
+    weight_upto = u == 0 ? 2 : 3 + u;
+  endfunction
+
+  // The unit after which inner register j (1 .. LANES - 1) sits.
+  function automatic integer cut_unit(input integer j);
+    integer u, e, best_e;
+    cut_unit = 0;
+    best_e = -1;
+    for (u = 0; u < UNITS; u++) begin
+      e = weight_upto(u) * LANES - j * WT;
+      if (e < 0) e = -e;
+      if (best_e < 0 || e < best_e) begin
+        best_e = e;
+        cut_unit = u;
+      end
+    end
+  endfunction
+
+  // Inner registers after unit u as placed, before the sub-PE rule.
+  function automatic integer placed(input integer u);
+    integer j;
+    placed = 0;
+    for (j = 1; j < LANES; j++) if (cut_unit(j) == u) placed = placed + 1;
+  endfunction
+
+  localparam int PE_CUT = placed(0) > 0 ? 1 : 0;
+
+  // Registers after unit u (1 .. UNITS - 1): the loop register after the last level.
+  function automatic integer regs_after(input integer u);
+    regs_after = placed(u);
+    if (u == UNITS - 1) regs_after = regs_after + 1 + placed(0) - PE_CUT;
+  endfunction
+
+  // ------------------------------------------------------------- the sub-PEs
+  logic [D*LW-1:0] lr_fb;   // Lr of this lane's previous pixel (the ring's end)
+  logic [LW-1:0]   min_fb;
+
+  // Inputs of the sub-PE's second half: the slot's own or one register later.
+  logic [D*CW-1:0] cost_h;
+  logic [PW-1:0]   p2r_h;
+  logic            start_h;
+  logic [LW-1:0]   min_h;
+  if (PE_CUT == 1) begin : g_pe_cut
+    always_ff @(posedge clk_i) begin
+      if (en_i) {cost_h, p2r_h, start_h, min_h} <= {cost_i, p2r_i, start_i, min_fb};
+    end
+  end else begin : g_pe_comb
+    assign {cost_h, p2r_h, start_h, min_h} = {cost_i, p2r_i, start_i, min_fb};
+  end
+
+  logic [D*LW-1:0] lr_pe;
+  for (genvar d = 0; d < D; d++) begin : g_pe
+    sgm_path_pe #(.CW(CW), .LW(LW), .PW(PW), .CUT(PE_CUT)) u_pe (
+      .clk_i      (clk_i),
+      .en_i       (en_i),
+      .prev_i     (lr_fb[d*LW +: LW]),
+      .prev_lo_i  (d > 0 ? lr_fb[(d > 0 ? d - 1 : 0)*LW +: LW] : {LW{1'b0}}),
+      .prev_hi_i  (d < D - 1 ? lr_fb[(d < D - 1 ? d + 1 : d)*LW +: LW] : {LW{1'b0}}),
+      .has_lo_i   (d > 0),
+      .has_hi_i   (d < D - 1),
+      .p1_i       (p1_i),
+      .cost_i     (cost_h[d*CW +: CW]),
+      .min_prev_i (min_h),
+      .p2r_i      (p2r_h),
+      .start_i    (start_h),
+      .lr_o       (lr_pe[d*LW +: LW])
+    );
+  end
+
+  // ------------------------------------------------------ the minimum tree
+  // Level l (0 = the leaves: the D PE results padded with all ones to P) holds
+  // P / 3^l nodes; node n of level l + 1 is the minimum of nodes 3n .. 3n + 2
+  // of level l (the heap order of sgm_min_tree). lvl_in[l] = {nodes, Lr} of
+  // level l before the registers of its unit (1 + l), lvl_out[l] after them.
+  localparam int VW = P * LW + D * LW;
+  // split_var: each level is its own variable for Verilator (no false loop).
+  logic [VW-1:0] lvl_in  [LEVELS+1] /* verilator split_var */;
+  logic [VW-1:0] lvl_out [LEVELS+1] /* verilator split_var */;
+
+  assign lvl_in[0] = {{(P-D){{LW{1'b1}}}}, lr_pe, lr_pe};
+
+  for (genvar l = 0; l <= LEVELS; l++) begin : g_level
+    localparam int NR = regs_after(1 + l);
+    if (NR == 0) begin : g_wire
+      assign lvl_out[l] = lvl_in[l];
+    end else begin : g_regs
+      logic [VW-1:0] chain_q [NR];
+      always_ff @(posedge clk_i) begin
+        if (en_i) begin
+          chain_q[0] <= lvl_in[l];
+          for (int i = 1; i < NR; i++) chain_q[i] <= chain_q[i-1];
+        end
+      end
+      assign lvl_out[l] = chain_q[NR-1];
+    end
+    if (l < LEVELS) begin : g_nodes
+      localparam int N = P / (3 ** (l + 1));  // nodes of level l + 1
+      logic [P*LW-1:0] nodes;
+      for (genvar n = 0; n < P; n++) begin : g_node
+        if (n < N) begin : g_min
+          sgm_min_tree #(.N(3), .W(LW)) u_min3 (
+            .values_i (lvl_out[l][D*LW + 3*n*LW +: 3*LW]),
+            .min_o    (nodes[n*LW +: LW])
+          );
+        end else begin : g_pad
+          assign nodes[n*LW +: LW] = {LW{1'b1}};
+        end
+      end
+      assign lvl_in[l+1] = {nodes, lvl_out[l][0 +: D*LW]};
+    end
+  end
+
+  assign lr_fb  = lvl_out[LEVELS][0 +: D*LW];
+  assign min_fb = lvl_out[LEVELS][D*LW +: LW];
+  assign lr_o   = lr_fb;
+  assign min_o  = min_fb;
+
+endmodule
+`default_nettype wire
