@@ -12,8 +12,9 @@
 //      (so that its clock-to-out is not part of the 0 degree loop; with
 //      GRAY_LEAD = 0 the lookup runs here and P2r comes from the RAM port);
 //      read the previous-row memories for the coming pixels
-//   B  the 4 x D sub-PEs; the 0 degree path feeds back in the same cycle
-//      (sub-PEs + D-input minimum = the single-cycle loop of the design)
+//   B  the 4 x D sub-PEs; the 0 degree path (sgm_path_ring, one lane) feeds
+//      back in the same cycle (sub-PEs + D-input minimum = the single-cycle
+//      loop of the design)
 //   C  S = weighted sum of the four Lr (3,2,3,2, or equal when weights_eq_i);
 //      min Lr of 45/90/135 degrees, written with Lr
 //      to the path memories at the pixel's column
@@ -105,6 +106,7 @@ module sgm_path_engine #(
   logic [XW-1:0]      col_b;
   logic [YW-1:0]      row_b;
   logic               valid_b;
+  logic               valid_c;
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       cost_b  <= cost_i;
@@ -158,49 +160,53 @@ module sgm_path_engine #(
   wire at_right = col_b == width_i - 1'b1;
   wire at_top   = row_b == '0;
 
-  logic [D*LW-1:0] lr0_q;
-  logic [LW-1:0]   min0_q;
+  // The 0 degree recursion (sgm_path_ring, one lane): its sub-PEs and minimum
+  // feed back through the ring's register (lr0_c: the pixel's Lr at stage C).
+  logic [D*LW-1:0] lr0_c;
+  logic [LW-1:0]   min0_c;
+  sgm_path_ring #(.D(D), .CW(CW), .LW(LW), .PW(PW), .LANES(1)) u_ring (
+    .clk_i   (clk_i),
+    .en_i    (en_i),
+    .p1_i    (p1_i),
+    .cost_i  (cost_b),
+    .p2r_i   (p2r_b[0 +: PW]),
+    .start_i (at_left),
+    .lr_o    (lr0_c),
+    .min_o   (min0_c)
+  );
 
-  // Previous-pixel path costs per path: 0 = 0 deg, 1 = 45, 2 = 90, 3 = 135.
-  wire [4*WORD-1:0] prev = {rd135_b, rd90_b, rd45_b, min0_q, lr0_q};
-  wire [3:0]        start = {at_right | at_top, at_top, at_left | at_top, at_left};
+  // The 45, 90 and 135 degree paths: previous-row costs from the path memories.
+  wire [3*WORD-1:0] prev  = {rd135_b, rd90_b, rd45_b};
+  wire [3:1]        start = {at_right | at_top, at_top, at_left | at_top};
 
-  logic [4*D*LW-1:0] lr_b;  // path r, disparity d at lr_b[(r*D+d)*LW +: LW]
-  for (genvar r = 0; r < 4; r++) begin : g_path
-    wire [WORD-1:0] pw      = prev[r*WORD +: WORD];
+  logic [3*D*LW-1:0] lr_b;  // path r (1 .. 3), disparity d at lr_b[((r-1)*D+d)*LW +: LW]
+  for (genvar r = 1; r < 4; r++) begin : g_path
+    wire [WORD-1:0] pw      = prev[(r-1)*WORD +: WORD];
     wire [LW-1:0]   min_prv = pw[D*LW +: LW];
     for (genvar d = 0; d < D; d++) begin : g_pe
       sgm_path_pe #(.CW(CW), .LW(LW), .PW(PW)) u_pe (
-        .cost_i     (cost_b[d*CW +: CW]),
+        .clk_i      (clk_i),
+        .en_i       (en_i),
         .prev_i     (pw[d*LW +: LW]),
         .prev_lo_i  (d > 0 ? pw[(d > 0 ? d - 1 : 0)*LW +: LW] : {LW{1'b0}}),
         .prev_hi_i  (d < D - 1 ? pw[(d < D - 1 ? d + 1 : d)*LW +: LW] : {LW{1'b0}}),
         .has_lo_i   (d > 0),
         .has_hi_i   (d < D - 1),
-        .min_prev_i (min_prv),
         .p1_i       (p1_i),
+        .cost_i     (cost_b[d*CW +: CW]),
+        .min_prev_i (min_prv),
         .p2r_i      (p2r_b[r*PW +: PW]),
         .start_i    (start[r]),
-        .lr_o       (lr_b[(r*D+d)*LW +: LW])
+        .lr_o       (lr_b[((r-1)*D+d)*LW +: LW])
       );
     end
   end
 
-  // The 0 degree recursion: Lr and its minimum registered for the next pixel.
-  logic [LW-1:0] min0_d;
-  sgm_min_tree #(.N(D), .W(LW)) u_min0 (
-    .values_i (lr_b[0 +: D*LW]),
-    .min_o    (min0_d)
-  );
-
-  logic [4*D*LW-1:0]  lr_c;
+  logic [3*D*LW-1:0]  lr_c;  // 45, 90, 135 degrees
   logic [XW-1:0]      col_c;
   logic [YW-1:0]      row_c;
-  logic               valid_c;
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      lr0_q   <= lr_b[0 +: D*LW];
-      min0_q  <= min0_d;
       lr_c    <= lr_b;
       col_c   <= col_b;
       row_c   <= row_b;
@@ -208,19 +214,24 @@ module sgm_path_engine #(
   end
 
   // ------------------------------------------------------------------ stage C
+  // Path r, disparity d at lr_all[(r*D+d)*LW +: LW]; min0_c is not needed.
+  wire [4*D*LW-1:0] lr_all = {lr_c, lr0_c};
+  logic unused_min0;
+  assign unused_min0 = ^min0_c;
+
   logic [3*LW-1:0] min_c;  // 45, 90, 135
   for (genvar r = 1; r < 4; r++) begin : g_min
     sgm_min_tree #(.N(D), .W(LW)) u_min (
-      .values_i (lr_c[r*D*LW +: D*LW]),
+      .values_i (lr_all[r*D*LW +: D*LW]),
       .min_o    (min_c[(r-1)*LW +: LW])
     );
   end
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      mem45[AW'(col_c)]  <= {min_c[0*LW +: LW], lr_c[1*D*LW +: D*LW]};
-      mem90[AW'(col_c)]  <= {min_c[1*LW +: LW], lr_c[2*D*LW +: D*LW]};
-      mem135[AW'(col_c)] <= {min_c[2*LW +: LW], lr_c[3*D*LW +: D*LW]};
+      mem45[AW'(col_c)]  <= {min_c[0*LW +: LW], lr_all[1*D*LW +: D*LW]};
+      mem90[AW'(col_c)]  <= {min_c[1*LW +: LW], lr_all[2*D*LW +: D*LW]};
+      mem135[AW'(col_c)] <= {min_c[2*LW +: LW], lr_all[3*D*LW +: D*LW]};
     end
   end
 
@@ -230,8 +241,8 @@ module sgm_path_engine #(
   // and b not shifted.
   logic [D*SW-1:0] s_c;
   for (genvar d = 0; d < D; d++) begin : g_sum
-    wire [LW:0]   a  = {1'b0, lr_c[(0*D+d)*LW +: LW]} + {1'b0, lr_c[(2*D+d)*LW +: LW]};
-    wire [LW:0]   b  = {1'b0, lr_c[(1*D+d)*LW +: LW]} + {1'b0, lr_c[(3*D+d)*LW +: LW]};
+    wire [LW:0]   a  = {1'b0, lr_all[(0*D+d)*LW +: LW]} + {1'b0, lr_all[(2*D+d)*LW +: LW]};
+    wire [LW:0]   b  = {1'b0, lr_all[(1*D+d)*LW +: LW]} + {1'b0, lr_all[(3*D+d)*LW +: LW]};
     wire [SW-1:0] a2 = weights_eq_i ? '0 : {2'b00, a, 1'b0};
     wire [SW-1:0] bw = weights_eq_i ? {3'b000, b} : {2'b00, b, 1'b0};
     assign s_c[d*SW +: SW] = a2 + {3'b000, a} + bw;
