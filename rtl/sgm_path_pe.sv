@@ -6,36 +6,40 @@
 // their minimum. has_lo_i / has_hi_i say whether the d-1 / d+1 neighbours
 // exist (0 for d = 0 / d = D-1). start_i selects the path start, Lr = C.
 //
-// Two halves: (a) the neighbours, min(L(d), min(L(d-1), L(d+1)) + P1) = m01;
-// (b) the jump minL + P2r, its comparison with m01, - minL and + C. With
-// CUT = 1 a register (enable en_i) sits between the halves, and the inputs
-// of half (b) (cost_i, start_i, min_prev_i, p2r_i) are presented one slot
-// after those of half (a) (prev_i, prev_lo_i, prev_hi_i, has_*, p1_i): the
-// instantiating pipeline (sgm_path_ring) carries them with the pixel. With
-// CUT = 0 the PE is combinational and clk_i / en_i are unused.
+// Computed in three parts of two carry chains each:
+//   (a) side = min(L(d-1), L(d+1)) + P1
+//   (b) rel  = min(side, L(d)) - minL
+//   (c) Lr   = C + min(rel, P2r)
+// (min(m, minL + P2r) - minL = min(m - minL, P2r) since m >= minL). CUTS is a
+// mask of pipeline registers (enable en_i) after part (a) (bit 0) and after
+// part (b) (bit 1); each part's inputs are presented when the pixel reaches
+// it: prev_i, prev_lo_i, prev_hi_i, p1_i at the first slot, min_prev_i
+// CUTS[0] slots later, cost_i, p2r_i, start_i CUTS[0] + CUTS[1] slots later
+// (sgm_path_ring carries them with the pixel). With CUTS = 0 the PE is
+// combinational and clk_i / en_i are unused.
 //
 // Parameters: CW cost width, LW path-cost width (must hold Cmax + P2'max),
-// PW penalty width (P1, P2r; LW >= CW, PW), CUT (0 or 1) register between
-// the halves.
-// Latency: CUT slots from the half-(a) inputs to lr_o (0: combinational).
+// PW penalty width (P1, P2r; LW >= CW, PW), CUTS register mask (0 .. 3).
+// Latency: CUTS[0] + CUTS[1] slots from prev_i to lr_o.
 module sgm_path_pe #(
-  parameter int CW  = 7,
-  parameter int LW  = 9,
-  parameter int PW  = 8,
-  parameter int CUT = 0
+  parameter int CW   = 7,
+  parameter int LW   = 9,
+  parameter int PW   = 8,
+  parameter int CUTS = 0
 ) (
-  input  wire           clk_i,      // CUT = 1 only
-  input  wire           en_i,       // CUT = 1 only
-  // half (a)
+  input  wire           clk_i,      // CUTS != 0 only
+  input  wire           en_i,       // CUTS != 0 only
+  // part (a)
   input  wire  [LW-1:0] prev_i,     // L(p-r, d)
   input  wire  [LW-1:0] prev_lo_i,  // L(p-r, d-1)
   input  wire  [LW-1:0] prev_hi_i,  // L(p-r, d+1)
   input  wire           has_lo_i,
   input  wire           has_hi_i,
   input  wire  [PW-1:0] p1_i,
-  // half (b), CUT slots after half (a)
-  input  wire  [CW-1:0] cost_i,
+  // part (b), CUTS[0] slots later
   input  wire  [LW-1:0] min_prev_i, // min_k L(p-r, k)
+  // part (c), CUTS[0] + CUTS[1] slots later
+  input  wire  [CW-1:0] cost_i,
   input  wire  [PW-1:0] p2r_i,
   input  wire           start_i,
   output logic [LW-1:0] lr_o
@@ -44,37 +48,48 @@ module sgm_path_pe #(
   // One bit of headroom over LW for the penalised terms.
   localparam int EW = LW + 1;
 
-  // L(d-1) + P1 and L(d+1) + P1 compete only with each other's P1 added, so
-  // the smaller neighbour is picked first and P1 added once:
-  // min(L(d-1), L(d+1)) + P1 (all ones when neither neighbour exists).
-  wire [LW-1:0] nb   = !has_lo_i ? prev_hi_i :
-                       !has_hi_i ? prev_lo_i :
-                       prev_hi_i < prev_lo_i ? prev_hi_i : prev_lo_i;
-  wire [EW-1:0] side = has_lo_i || has_hi_i ? {1'b0, nb} + EW'(p1_i) : {EW{1'b1}};
-  wire [EW-1:0] same = {1'b0, prev_i};
-  wire [EW-1:0] m01_a = side < same ? side : same;
+  // (a) L(d-1) + P1 and L(d+1) + P1 compete only with each other's P1 added,
+  // so the smaller neighbour is picked first and P1 added once (all ones when
+  // neither neighbour exists).
+  wire [LW-1:0] nb     = !has_lo_i ? prev_hi_i :
+                         !has_hi_i ? prev_lo_i :
+                         prev_hi_i < prev_lo_i ? prev_hi_i : prev_lo_i;
+  wire [EW-1:0] side_a = has_lo_i || has_hi_i ? {1'b0, nb} + EW'(p1_i) : {EW{1'b1}};
 
-  logic [EW-1:0] m01;  // m01_a as seen by half (b)
-  if (CUT == 1) begin : g_cut
+  // (b) rel = min(side, L(d)) - minL >= 0 (minL is the minimum of the L(.)).
+  logic [EW-1:0] side;
+  logic [LW-1:0] same;
+  wire  [EW-1:0] m01   = side < {1'b0, same} ? side : {1'b0, same};
+  wire  [EW-1:0] rel_b = m01 - {1'b0, min_prev_i};
+
+  // (c) step = min(rel, P2r) fits PW bits; Lr = C + step <= Cmax + P2' fits
+  // LW bits. At the path start the step is masked to 0 (Lr = C) in front of
+  // the adder instead of a mux behind it.
+  logic [EW-1:0] rel;
+  wire  [PW-1:0] step = start_i ? {PW{1'b0}} : EW'(p2r_i) < rel ? p2r_i : rel[PW-1:0];
+
+  assign lr_o = LW'(cost_i) + LW'(step);
+
+  if ((CUTS & 1) != 0) begin : g_cut_a
     always_ff @(posedge clk_i) begin
-      if (en_i) m01 <= m01_a;
+      if (en_i) {side, same} <= {side_a, prev_i};
     end
-  end else begin : g_comb
-    assign m01 = m01_a;
+  end else begin : g_comb_a
+    assign {side, same} = {side_a, prev_i};
+  end
+
+  if ((CUTS & 2) != 0) begin : g_cut_b
+    always_ff @(posedge clk_i) begin
+      if (en_i) rel <= rel_b;
+    end
+  end else begin : g_comb_b
+    assign rel = rel_b;
+  end
+
+  if (CUTS == 0) begin : g_unused
     logic unused_clk;
     assign unused_clk = ^{clk_i, en_i};
   end
-
-  wire [EW-1:0] jump = {1'b0, min_prev_i} + EW'(p2r_i);
-
-  // best - minL lies in 0 .. P2r, so it fits PW bits (modulo 2^PW is exact)
-  // and only the low PW bits of best are selected; Lr = C + step <= Cmax +
-  // P2' fits LW bits. At the path start the step is masked to 0 (Lr = C) in
-  // front of the adder instead of a mux behind it.
-  wire [PW-1:0] best = jump < m01 ? jump[PW-1:0] : m01[PW-1:0];
-  wire [PW-1:0] step = start_i ? {PW{1'b0}} : best - min_prev_i[PW-1:0];
-
-  assign lr_o = LW'(cost_i) + LW'(step);
 
 endmodule
 `default_nettype wire

@@ -7,16 +7,18 @@
 // LANES = K: K independent pixel streams (lanes) share the PEs and the tree by
 // time multiplexing, slot K t + k belonging to lane k (docs/reschedule.md), so
 // the recursion of each lane may take K slots. The loop's logic is cut into K
-// pipeline stages: its units are the two halves of the sub-PE (weight 2 each,
-// three carry chains) and the levels of the ternary minimum tree (weight 1
-// each), and the K - 1 inner registers sit at the unit boundaries nearest to
-// the even shares j W / K of the total weight W (ties to the earlier boundary;
-// at most one inside the sub-PE, any further one joins the last boundary); the
-// K-th register follows the last tree level and closes the loop. The Lr vector
-// travels beside the tree through the same registers, and the inputs of the
-// sub-PE's second half (cost, P2r, path start, min Lr of the previous pixel) are
-// carried with the pixel when the sub-PE is cut. LANES = 1 is the loop of the
-// single-lane core: combinational PEs and tree, one register after the tree.
+// pipeline stages. Its units are the three parts of the sub-PE (sgm_path_pe:
+// two carry chains each) and the levels of the ternary minimum tree (a
+// comparator chain and a 3:1 select each), U = 3 + ceil(log3 D) units of about
+// equal delay on ECP5 (synth/README.md, "the loop alone"). Inner register j =
+// 1 .. K - 1 sits after unit round(j U / K) (counted from 1; none before the
+// first unit), at most one at each of the two boundaries inside the sub-PE;
+// registers that do not fit (K > U) join the loop register after the last tree
+// level, which closes the loop. The Lr vector travels beside the tree through
+// the same registers, and the inputs a sub-PE part takes later (min Lr of the
+// previous pixel; cost, P2r and path start) are carried with the pixel. LANES =
+// 1 is the loop of the single-lane core: combinational PEs and tree, one
+// register after the tree.
 //
 // Throughput: one pixel per slot (en_i), each lane one pixel every K slots.
 // Parameters: D disparities, CW cost width, LW path-cost width (Cmax + P2'max
@@ -51,27 +53,12 @@ module sgm_path_ring #(
 
   localparam int LEVELS = ternary_levels(D);
   localparam int P      = 3 ** LEVELS;   // leaves of the complete ternary tree
-  localparam int UNITS  = 2 + LEVELS;    // unit 0, 1: sub-PE halves; 1 + l: tree level l
-  localparam int WT     = 4 + LEVELS;    // total weight
+  localparam int UNITS  = 3 + LEVELS;    // units 0 .. 2: sub-PE parts; 2 + l: tree level l
 
-  // Weight of units 0 .. u.
-  function automatic integer weight_upto(input integer u);
-    weight_upto = u == 0 ? 2 : 3 + u;
-  endfunction
-
-  // The unit after which inner register j (1 .. LANES - 1) sits.
+  // The unit after which inner register j (1 .. LANES - 1) sits: round(j U / K) - 1.
   function automatic integer cut_unit(input integer j);
-    integer u, e, best_e;
-    cut_unit = 0;
-    best_e = -1;
-    for (u = 0; u < UNITS; u++) begin
-      e = weight_upto(u) * LANES - j * WT;
-      if (e < 0) e = -e;
-      if (best_e < 0 || e < best_e) begin
-        best_e = e;
-        cut_unit = u;
-      end
-    end
+    cut_unit = (2 * j * UNITS + LANES) / (2 * LANES) - 1;
+    if (cut_unit < 0) cut_unit = 0;
   endfunction
 
   // Inner registers after unit u as placed, before the sub-PE rule.
@@ -81,34 +68,47 @@ module sgm_path_ring #(
     for (j = 1; j < LANES; j++) if (cut_unit(j) == u) placed = placed + 1;
   endfunction
 
-  localparam int PE_CUT = placed(0) > 0 ? 1 : 0;
+  // The sub-PE's registers (sgm_path_pe CUTS): after part (a) and after part (b).
+  localparam int CUT_A  = placed(0) > 0 ? 1 : 0;
+  localparam int CUT_B  = placed(1) > 0 ? 1 : 0;
+  localparam int PE_CUTS = CUT_A + 2 * CUT_B;
 
-  // Registers after unit u (1 .. UNITS - 1): the loop register after the last level.
+  // Registers after unit u (2 .. UNITS - 1): the loop register after the last level.
   function automatic integer regs_after(input integer u);
     regs_after = placed(u);
-    if (u == UNITS - 1) regs_after = regs_after + 1 + placed(0) - PE_CUT;
+    if (u == UNITS - 1) regs_after = regs_after + 1 + placed(0) - CUT_A + placed(1) - CUT_B;
   endfunction
 
   // ------------------------------------------------------------- the sub-PEs
   logic [D*LW-1:0] lr_fb;   // Lr of this lane's previous pixel (the ring's end)
   logic [LW-1:0]   min_fb;
 
-  // Inputs of the sub-PE's second half: the slot's own or one register later.
-  logic [D*CW-1:0] cost_h;
-  logic [PW-1:0]   p2r_h;
-  logic            start_h;
-  logic [LW-1:0]   min_h;
-  if (PE_CUT == 1) begin : g_pe_cut
+  // The later inputs of the sub-PE parts, carried with the pixel: min Lr of the
+  // previous pixel at part (b), the slot's cost, P2r and path start at part (c).
+  logic [LW-1:0]   min_b;
+  logic [D*CW-1:0] cost_c;
+  logic [PW-1:0]   p2r_c;
+  logic            start_c;
+  logic [D*CW+PW:0] late_a, late_b;  // {cost, P2r, start} at the entry and at part (b)
+  assign late_a = {cost_i, p2r_i, start_i};
+  if (CUT_A == 1) begin : g_carry_a
     always_ff @(posedge clk_i) begin
-      if (en_i) {cost_h, p2r_h, start_h, min_h} <= {cost_i, p2r_i, start_i, min_fb};
+      if (en_i) {min_b, late_b} <= {min_fb, late_a};
     end
-  end else begin : g_pe_comb
-    assign {cost_h, p2r_h, start_h, min_h} = {cost_i, p2r_i, start_i, min_fb};
+  end else begin : g_pass_a
+    assign {min_b, late_b} = {min_fb, late_a};
+  end
+  if (CUT_B == 1) begin : g_carry_b
+    always_ff @(posedge clk_i) begin
+      if (en_i) {cost_c, p2r_c, start_c} <= late_b;
+    end
+  end else begin : g_pass_b
+    assign {cost_c, p2r_c, start_c} = late_b;
   end
 
   logic [D*LW-1:0] lr_pe;
   for (genvar d = 0; d < D; d++) begin : g_pe
-    sgm_path_pe #(.CW(CW), .LW(LW), .PW(PW), .CUT(PE_CUT)) u_pe (
+    sgm_path_pe #(.CW(CW), .LW(LW), .PW(PW), .CUTS(PE_CUTS)) u_pe (
       .clk_i      (clk_i),
       .en_i       (en_i),
       .prev_i     (lr_fb[d*LW +: LW]),
@@ -117,10 +117,10 @@ module sgm_path_ring #(
       .has_lo_i   (d > 0),
       .has_hi_i   (d < D - 1),
       .p1_i       (p1_i),
-      .cost_i     (cost_h[d*CW +: CW]),
-      .min_prev_i (min_h),
-      .p2r_i      (p2r_h),
-      .start_i    (start_h),
+      .min_prev_i (min_b),
+      .cost_i     (cost_c[d*CW +: CW]),
+      .p2r_i      (p2r_c),
+      .start_i    (start_c),
       .lr_o       (lr_pe[d*LW +: LW])
     );
   end
@@ -129,7 +129,7 @@ module sgm_path_ring #(
   // Level l (0 = the leaves: the D PE results padded with all ones to P) holds
   // P / 3^l nodes; node n of level l + 1 is the minimum of nodes 3n .. 3n + 2
   // of level l (the heap order of sgm_min_tree). lvl_in[l] = {nodes, Lr} of
-  // level l before the registers of its unit (1 + l), lvl_out[l] after them.
+  // level l before the registers of its unit (2 + l), lvl_out[l] after them.
   localparam int VW = P * LW + D * LW;
   // split_var: each level is its own variable for Verilator (no false loop).
   logic [VW-1:0] lvl_in  [LEVELS+1] /* verilator split_var */;
@@ -138,7 +138,7 @@ module sgm_path_ring #(
   assign lvl_in[0] = {{(P-D){{LW{1'b1}}}}, lr_pe, lr_pe};
 
   for (genvar l = 0; l <= LEVELS; l++) begin : g_level
-    localparam int NR = regs_after(1 + l);
+    localparam int NR = regs_after(2 + l);
     if (NR == 0) begin : g_wire
       assign lvl_out[l] = lvl_in[l];
     end else begin : g_regs
