@@ -182,6 +182,13 @@ int main(int argc, char** argv) {
       std::cerr << "coverage-summary: note: waiver " << where << " matches no uncovered point (stale?)\n";
 
   std::ostringstream md;
+  // Files with toggle points and no line points (only continuous assignments).
+  std::string assignOnly;
+  for (const auto& [file, g] : toggleByFile) {
+    const auto it = lineByFile.find(file);
+    if (g.points > 0 && (it == lineByFile.end() || it->second.points == 0))
+      assignOnly += (assignOnly.empty() ? "" : ", ") + file;
+  }
   md << "# RTL coverage\n\nLine coverage: " << line.covered << " of " << line.points << " points, **"
      << percent(line.percent()) << " %** (" << percent(line.percentWithWaivers()) << " % counting the "
      << line.waived << " waived unreachable points). Toggle coverage: " << toggle.covered << " of " << toggle.points
@@ -189,7 +196,8 @@ int main(int argc, char** argv) {
         "stage separately): " << toggleInstances.covered << " of " << toggleInstances.points << ", **"
      << percent(toggleInstances.percent()) << " %**.\n\n"
      << "A point is covered when any instance in any run reached it at least once. Line points are Verilator's "
-        "v_line and v_branch points (statements, both arms of each if/case); toggle points are signal bits, covered when the bit rose and fell (changed at least twice). Modules made only of continuous assignments (sgm_top, sgm_path_pe) have toggle points but no line points.\n\n"
+        "v_line and v_branch points (statements, both arms of each if/case); toggle points are signal bits, covered when the bit rose and fell (changed at least twice). Modules made only of continuous assignments have toggle points but no line points"
+     << (assignOnly.empty() ? std::string() : " (here: " + assignOnly + ")") << ".\n\n"
      << "| file | line points | covered | % | toggle bits | toggled | % |\n|---|---|---|---|---|---|---|\n";
   for (const auto& [file, t] : lineByFile) {
     const Totals& g = toggleByFile[file];
