@@ -8,9 +8,10 @@
 // time multiplexing, slot K t + k belonging to lane k (docs/reschedule.md), so
 // the recursion of each lane may take K slots. The loop's logic is cut into K
 // pipeline stages. Its units are the three parts of the sub-PE (sgm_path_pe:
-// two carry chains each) and the levels of the ternary minimum tree (a
-// comparator chain and a 3:1 select each), U = 3 + ceil(log3 D) units of about
-// equal delay on ECP5 (synth/README.md, "the loop alone"). Inner register j =
+// two carry chains each) and the levels of the minimum tree, built of 4-input
+// nodes (six comparator chains side by side and a 4:1 select), U = 3 +
+// ceil(log4 D) units of about equal delay on ECP5 (synth/README.md, "the loop
+// alone"). Inner register j =
 // 1 .. K - 1 sits after unit round(j U / K) (counted from 1; none before the
 // first unit), at most one at each of the two boundaries inside the sub-PE;
 // registers that do not fit (K > U) join the loop register after the last tree
@@ -45,14 +46,16 @@ module sgm_path_ring #(
   output logic [LW-1:0]   min_o
 );
 
-  function automatic integer ternary_levels(input integer n);
+  localparam int ARITY = 4;  // inputs of a tree node (sgm_min_tree, N = ARITY)
+
+  function automatic integer ring_levels(input integer n);
     integer p;
-    ternary_levels = 0;
-    for (p = 1; p < n; p = p * 3) ternary_levels = ternary_levels + 1;
+    ring_levels = 0;
+    for (p = 1; p < n; p = p * ARITY) ring_levels = ring_levels + 1;
   endfunction
 
-  localparam int LEVELS = ternary_levels(D);
-  localparam int P      = 3 ** LEVELS;   // leaves of the complete ternary tree
+  localparam int LEVELS = ring_levels(D);
+  localparam int P      = ARITY ** LEVELS;  // leaves of the complete tree
   localparam int UNITS  = 3 + LEVELS;    // units 0 .. 2: sub-PE parts; 2 + l: tree level l
 
   // The unit after which inner register j (1 .. LANES - 1) sits: round(j U / K) - 1.
@@ -127,7 +130,7 @@ module sgm_path_ring #(
 
   // ------------------------------------------------------ the minimum tree
   // Level l (0 = the leaves: the D PE results padded with all ones to P) holds
-  // P / 3^l nodes; node n of level l + 1 is the minimum of nodes 3n .. 3n + 2
+  // P / 4^l nodes; node n of level l + 1 is the minimum of nodes 4n .. 4n + 3
   // of level l (the heap order of sgm_min_tree). lvl_in[l] = {nodes, Lr} of
   // level l before the registers of its unit (2 + l), lvl_out[l] after them.
   localparam int VW = P * LW + D * LW;
@@ -152,12 +155,12 @@ module sgm_path_ring #(
       assign lvl_out[l] = chain_q[NR-1];
     end
     if (l < LEVELS) begin : g_nodes
-      localparam int N = P / (3 ** (l + 1));  // nodes of level l + 1
+      localparam int N = P / (ARITY ** (l + 1));  // nodes of level l + 1
       logic [P*LW-1:0] nodes;
       for (genvar n = 0; n < P; n++) begin : g_node
         if (n < N) begin : g_min
-          sgm_min_tree #(.N(3), .W(LW)) u_min3 (
-            .values_i (lvl_out[l][D*LW + 3*n*LW +: 3*LW]),
+          sgm_min_tree #(.N(ARITY), .W(LW), .ARITY(ARITY)) u_node (
+            .values_i (lvl_out[l][D*LW + ARITY*n*LW +: ARITY*LW]),
             .min_o    (nodes[n*LW +: LW])
           );
         end else begin : g_pad
