@@ -11,15 +11,15 @@
 // two carry chains each) and the levels of the minimum tree, built of 4-input
 // nodes (six comparator chains side by side and a 4:1 select), U = 3 +
 // ceil(log4 D) units of about equal delay on ECP5 (synth/README.md, "the loop
-// alone"). Inner register j =
-// 1 .. K - 1 sits after unit round(j U / K) (counted from 1; none before the
-// first unit), at most one at each of the two boundaries inside the sub-PE;
-// registers that do not fit (K > U) join the loop register after the last tree
-// level, which closes the loop. The Lr vector travels beside the tree through
-// the same registers, and the inputs a sub-PE part takes later (min Lr of the
-// previous pixel; cost, P2r and path start) are carried with the pixel. LANES =
-// 1 is the loop of the single-lane core: combinational PEs and tree, one
-// register after the tree.
+// alone"). Inner register j = 1 .. K - 1 sits after unit round(j U / K)
+// (counted from 1; none before the first unit); a boundary inside the sub-PE
+// takes at most one, and any further register placed there joins the loop
+// register after the last tree level, which closes the loop. So K = U gives
+// one unit per stage. The Lr vector travels beside the tree through the same
+// registers, and the inputs a sub-PE part takes later (min Lr of the previous
+// pixel; cost, P2r and path start) are carried with the pixel. LANES = 1 is
+// the loop of the single-lane core: combinational PEs and tree, one register
+// after the tree.
 //
 // Throughput: one pixel per slot (en_i), each lane one pixel every K slots.
 // Parameters: D disparities, CW cost width, LW path-cost width (Cmax + P2'max
@@ -48,13 +48,7 @@ module sgm_path_ring #(
 
   localparam int ARITY = 4;  // inputs of a tree node (sgm_min_tree, N = ARITY)
 
-  function automatic integer ring_levels(input integer n);
-    integer p;
-    ring_levels = 0;
-    for (p = 1; p < n; p = p * ARITY) ring_levels = ring_levels + 1;
-  endfunction
-
-  localparam int LEVELS = ring_levels(D);
+  localparam int LEVELS = ($clog2(D) + 1) / 2;  // ceil(log4 D) = ceil(ceil(log2 D) / 2)
   localparam int P      = ARITY ** LEVELS;  // leaves of the complete tree
   localparam int UNITS  = 3 + LEVELS;    // units 0 .. 2: sub-PE parts; 2 + l: tree level l
 
