@@ -199,11 +199,13 @@ $(BIN)/rtl-axi-d16: sw/sgm_driver.cpp $(wildcard sw/include/*.h*)
 $(eval $(call rtl_test,path-engine-d16,sgm_path_engine,-GD=16 -GMAX_WIDTH=128 -GXW=8 -GYW=8 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,path-engine-d64,sgm_path_engine,-GD=64 -GMAX_WIDTH=512 -GXW=10 -GYW=10 -GGRAY_LEAD=0 -CFLAGS -DSGM_D=64 -CFLAGS -DSGM_YW=10))
 # The 0 degree loop alone at LANES = 1 (the single-lane core) and with 2, 3, 4, 6 row lanes (docs/reschedule.md);
-# 12 lanes at D = 16 put several registers at one boundary (more lanes than loop units).
+# 12 lanes at D = 16 put several registers at one boundary (more lanes than loop units);
+# D = 32 pads the tree's 64 leaves (D = 16 and 64 fill theirs).
 $(eval $(call rtl_test,path-ring-d16,sgm_path_ring,-GD=16 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,path-ring-d16-k2,sgm_path_ring,-GD=16 -GLANES=2 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,path-ring-d16-k3,sgm_path_ring,-GD=16 -GLANES=3 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,path-ring-d16-k12,sgm_path_ring,-GD=16 -GLANES=12 -CFLAGS -DSGM_D=16))
+$(eval $(call rtl_test,path-ring-d32-k6,sgm_path_ring,-GD=32 -GLANES=6 -CFLAGS -DSGM_D=32))
 $(eval $(call rtl_test,path-ring-d64-k4,sgm_path_ring,-GD=64 -GLANES=4 -CFLAGS -DSGM_D=64))
 $(eval $(call rtl_test,path-ring-d64-k6,sgm_path_ring,-GD=64 -GLANES=6 -CFLAGS -DSGM_D=64))
 $(eval $(call rtl_test,wta-d16,sgm_wta,-GD=16))
