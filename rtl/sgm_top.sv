@@ -206,7 +206,7 @@ module sgm_top #(
   // ------------------------------------------------------------ costs
   localparam int COST_LATENCY = 3;  // sgm_cost_volume
   logic [D*CBITS-1:0] cost;
-  logic [XW-1:0]      col2;
+  logic [XW-1:0]      unused_col2;  // the engine takes the column COST_LATENCY slots earlier
   logic               valid2;
 
   sgm_cost_volume #(.D(D), .CW(XW), .NB(NB)) u_cost (
@@ -221,7 +221,7 @@ module sgm_top #(
     .rrank_i   (rank_r),
     .valid_i   (valid1),
     .cost_o    (cost),
-    .col_o     (col2),
+    .col_o     (unused_col2),
     .valid_o   (valid2)
   );
 
@@ -245,8 +245,11 @@ module sgm_top #(
   logic [YW-1:0]   row3;
   logic            valid3;
 
+  // Its previous-row reads run three slots or more ahead of the costs: the
+  // census unit's column (COST_LATENCY slots ahead) goes straight in.
   sgm_path_engine #(
-    .D(D), .CW(CBITS), .LW(LW), .PW(8), .MAX_WIDTH(MAX_WIDTH), .XW(XW), .YW(YW), .GRAY_LEAD(GRAY_LEAD)
+    .D(D), .CW(CBITS), .LW(LW), .PW(8), .MAX_WIDTH(MAX_WIDTH), .XW(XW), .YW(YW), .GRAY_LEAD(GRAY_LEAD),
+    .COL_LEAD(COST_LATENCY)
   ) u_paths (
     .clk_i       (clk_i),
     .rst_ni      (rst_ni),
@@ -259,7 +262,7 @@ module sgm_top #(
     .p2_mode_i   (p2_mode),
     .lut_ready_o (lut_ready),
     .cost_i      (cost),
-    .col_i       (col2),
+    .col_i       (col1),
     .row_i       (row2),
     .valid_i     (valid2),
     .centre_i    (centre2),

@@ -34,6 +34,8 @@ using sgm::tb::setBits;
 constexpr int kD = SGM_D;
 // The row and grays of a pixel lead its costs by GRAY_LEAD slots (0 or 1, a parameter of the build).
 constexpr int kGrayLead = int(Vsgm_path_engine_sgm_path_engine::GRAY_LEAD);
+// The column leads the costs by COL_LEAD slots (the previous-row reads run ahead).
+constexpr int kColLead = int(Vsgm_path_engine_sgm_path_engine::COL_LEAD);
 constexpr int kCostBits = 7, kSumBits = 13;
 
 struct Frame {
@@ -95,7 +97,7 @@ class PathEngine {
       const bool inside = row >= 0 && row < h;
       for (int d = 0; d < kD; ++d)
         setBits(top_->cost_i, d * kCostBits, kCostBits, inside ? f.cost.at(col, row)[d] : 0);
-      top_->col_i = col;
+      top_->col_i = int((t + kColLead) % w);
       top_->valid_i = inside;
       // The row and the grays of slot t + kGrayLead (negative rows wrap; they carry no
       // pixel, and the grays there are random: they must not matter).

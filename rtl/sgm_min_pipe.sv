@@ -1,0 +1,51 @@
+`default_nettype none
+// sgm_min_pipe: pipelined minimum of N unsigned values, a tree of 4-input
+// nodes (sgm_min_tree, N = ARITY = 4) with a register after every level, so
+// that one stage holds one node (six comparator chains side by side and a
+// 4:1 select, docs/reschedule.md). The minima of the 45, 90 and 135 degree
+// paths (sgm_path_engine), which are needed only a row later.
+//
+// Parameters: N inputs (>= 1), W bits each.
+// Latency: LATENCY = ceil(log4 N) slots (0 for N = 1). Throughput: one
+// minimum per slot (en_i).
+module sgm_min_pipe #(
+  parameter int N = 64,
+  parameter int W = 9,
+  localparam int ARITY   = 4,
+  localparam int LEVELS  = ($clog2(N) + 1) / 2,  // ceil(log4 N)
+  localparam int LATENCY = LEVELS
+) (
+  input  wire            clk_i,
+  input  wire            en_i,
+  input  wire  [N*W-1:0] values_i,  // value i in values_i[i*W +: W]
+  output logic [W-1:0]   min_o      // LATENCY slots later
+);
+
+  localparam int P = ARITY ** LEVELS;  // leaves of the complete tree
+
+  // Level l holds P / 4^l values (padded with all ones, which never win);
+  // value n of level l + 1 is the minimum of values 4n .. 4n + 3 of level l,
+  // registered. split_var: each level is its own variable for Verilator.
+  logic [P*W-1:0] lvl [LEVELS+1] /* verilator split_var */;
+
+  assign lvl[0] = {{(P-N){{W{1'b1}}}}, values_i};
+
+  for (genvar l = 0; l < LEVELS; l++) begin : g_level
+    localparam int NN = P / (ARITY ** (l + 1));  // values of level l + 1
+    logic [NN*W-1:0] node_d, node_q;
+    for (genvar n = 0; n < NN; n++) begin : g_node
+      sgm_min_tree #(.N(ARITY), .W(W), .ARITY(ARITY)) u_node (
+        .values_i (lvl[l][ARITY*n*W +: ARITY*W]),
+        .min_o    (node_d[n*W +: W])
+      );
+    end
+    always_ff @(posedge clk_i) begin
+      if (en_i) node_q <= node_d;
+    end
+    assign lvl[l+1] = {{(P-NN){{W{1'b1}}}}, node_q};
+  end
+
+  assign min_o = lvl[LEVELS][0 +: W];
+
+endmodule
+`default_nettype wire
