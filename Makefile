@@ -198,6 +198,10 @@ $(eval $(call rtl_test,axi-d16,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -C
 $(BIN)/rtl-axi-d16: sw/sgm_driver.cpp $(wildcard sw/include/*.h*)
 $(eval $(call rtl_test,path-engine-d16,sgm_path_engine,-GD=16 -GMAX_WIDTH=128 -GXW=8 -GYW=8 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,path-engine-d64,sgm_path_engine,-GD=64 -GMAX_WIDTH=512 -GXW=10 -GYW=10 -GGRAY_LEAD=0 -CFLAGS -DSGM_D=64 -CFLAGS -DSGM_YW=10))
+# The engine in lane order (docs/reschedule.md): K row lanes, SKEW columns apart.
+$(eval $(call rtl_test,path-engine-d16-k2,sgm_path_engine,-GD=16 -GMAX_WIDTH=128 -GXW=8 -GYW=8 -GLANES=2 -CFLAGS -DSGM_D=16))
+$(eval $(call rtl_test,path-engine-d16-k5,sgm_path_engine,-GD=16 -GMAX_WIDTH=128 -GXW=8 -GYW=8 -GLANES=5 -CFLAGS -DSGM_D=16))
+$(eval $(call rtl_test,path-engine-d64-k6,sgm_path_engine,-GD=64 -GMAX_WIDTH=512 -GXW=10 -GYW=10 -GLANES=6 -CFLAGS -DSGM_D=64 -CFLAGS -DSGM_YW=10))
 # The 0 degree loop alone at LANES = 1 (the single-lane core) and with 2, 3, 4, 6 row lanes (docs/reschedule.md);
 # 12 lanes at D = 16 put several registers at one boundary (more lanes than loop units);
 # D = 32 pads the tree's 64 leaves (D = 16 and 64 fill theirs).

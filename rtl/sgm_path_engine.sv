@@ -2,46 +2,60 @@
 // sgm_path_engine: the four causal path costs of eq. (1) and their sum S
 // (docs/algorithm.md section 5) at one pixel per slot, D sub-PEs per path.
 //
-// Slots arrive in raster order of a virtual raster (docs/rtl.md): consecutive
-// slots are consecutive positions, rows < 0 and >= height carry no pixel.
-// Pipeline (one register stage per slot; slot t = the slot of the pixel's cost_i):
-//   t - 3  read the previous-row memories at the pixel's column (col_i leads
-//          cost_i by COL_LEAD >= 3 slots): M90[x], M45[x - 1], M135[x + 1]
-//   t - 2  the memories' output register
-//   t - 1  part (a) of the 45/90/135 degree sub-PEs (sgm_path_pe, CUTS = 3),
-//          which needs only the previous row and P1
-//   t      part (b) (min Lr of the previous row); (GRAY_LEAD = 1) the P2r
-//          lookup ran in the slot before (block RAM, registered read: the grays
-//          centre_i / nbr_i lead cost_i by one slot)
-//   A      register the cost vector and position, and P2r behind the block RAM
-//          (so that its clock-to-out is not part of the 0 degree loop; with
+// Slots: LANES = K lanes share the engine slot by slot (slot K n + k belongs
+// to lane k, docs/reschedule.md). Each lane is a virtual raster of its own
+// (docs/rtl.md): consecutive slots of a lane are consecutive positions, rows
+// < 0 and >= height carry no pixel; lane k holds rows k, k + K, k + 2K, ...
+// and runs SKEW columns behind lane k - 1 (lane 0 one group of rows later
+// behind lane K - 1). With K = 1 the slots are the raster of the frame.
+// Pipeline (one register stage per slot; t = the slot of the pixel's cost_i,
+// B = t + 1, B' = B + K - 1, C = B + K):
+//   -      (GRAY_LEAD = 1) the P2r lookup runs in the slot before t (block
+//          RAM, registered read: the grays centre_i / nbr_i lead cost_i by one
+//          slot)
+//   t      register the cost vector and position, and P2r behind the block
+//          RAM (its clock-to-out is then not part of the 0 degree loop; with
 //          GRAY_LEAD = 0 the lookup runs here and P2r comes from the RAM port)
-//   B      part (c) of the 45/90/135 degree sub-PEs (+ C, P2r, path start); the
-//          0 degree path (sgm_path_ring, one lane) feeds back in the same
-//          cycle (sub-PEs + D-input minimum = the single-cycle loop of the
-//          design)
+//   B      the 0 degree path (sgm_path_ring, K lanes: the loop's K stages,
+//          its Lr at C)
+//   B' - 4 read the previous-row memories at the pixel's column x (col_i
+//          leads cost_i by COL_LEAD >= 3 slots): M90[x], M45[x - 1], M135[x + 1]
+//   B' - 3 the memories' output register
+//   B' - 2 part (a) of the 45/90/135 degree sub-PEs (sgm_path_pe, CUTS = 3),
+//          which needs only the previous row and P1
+//   B' - 1 part (b) (min Lr of the previous row)
+//   B'     part (c): + C, P2r, path start (cost and P2r carried K - 1 slots)
 //   C      S = weighted sum of the four Lr (3,2,3,2, or equal when
-//          weights_eq_i); Lr of 45/90/135 degrees written to the path memories
-//          at the pixel's column; their minima enter sgm_min_pipe and are
-//          written to the min memories MIN_LATENCY slots later
+//          weights_eq_i), registered to s_o; Lr of 45/90/135 degrees written
+//          to the path memories at the pixel's column (45 degrees
+//          W45_DELAY = max(0, K - 4) slots later); each word's minimum enters
+//          sgm_min_pipe as the word is written and is written to the path's
+//          min memory MIN_LATENCY slots after it
 // Path memories (per vertical path: MAX_WIDTH words of D x LW bits and
 // MAX_WIDTH words of LW bits for min Lr; synchronous read with enable -> block
-// RAM). A word written by pixel x is read by the next row's pixels x - 1, x,
-// x + 1, at the earliest (x - 1, M135) W - 1 - 3 slots after x's stage A,
-// i.e. W - 6 - MIN_LATENCY slots after its min is written: MIN_WIDTH >= 16
-// leaves a margin at every D (MIN_LATENCY <= 4). It is rewritten by the same
-// row's pixel x at its stage C, after the reads of x - 1 .. x + 1 (at most
-// 3 + 2 + 1 slots earlier).
+// RAM). Row y reads the words row y - 1 wrote at x - 1 .. x + 1 at slot
+// B' - 4 of its pixel x; the writer (the lane before, SKEW columns ahead) wrote
+// x + 1 (SKEW - 1) K + 1 slots before that pixel's B', and its minimum
+// MIN_LATENCY slots after C: SKEW = 1 + ceil((5 + MIN_LATENCY) / K) keeps
+// every read behind its write. Row y overwrites word x at its pixel x's C,
+// after its own reads of x (pixel x + 1's read of M45[x] comes K slots after
+// pixel x's: the 45 degree write waits max(0, K - 4) slots, so that the read
+// comes strictly before it and never relies on the block RAM's read-during-
+// write behaviour across ports). With K = 1 a
+// word written at x is read by the next row W - 4 slots later at the earliest
+// (x - 1, M135), at least W - 6 - MIN_LATENCY slots after its minimum
+// (W >= MIN_WIDTH); with K lanes lane 0 reads lane K - 1 of the previous
+// group, K (W - 2 - (K - 1) SKEW) + 1 slots after its writes: W >= MIN_WIDTH
+// = K SKEW + 1 (9 .. 11 at K = 1, 19 at D = 64 and K = 6; docs/reschedule.md).
 //
 // Parameters: D disparities, CW cost width, LW path-cost width (Cmax + P2'max
 // must fit), PW penalty width, MAX_WIDTH, XW column bits, YW row bits, GRAY_LEAD
-// (0 or 1, see stage A), COL_LEAD (>= 3: how many slots col_i leads cost_i;
-// the engine delays it by COL_LEAD - 3 first). SW = LW + 4 holds the larger of
-// the two weightings (10 x 2^LW).
-// Latency: LATENCY = 3 slots from cost_i to s_o; row_i, centre_i and nbr_i of a
-// pixel are presented GRAY_LEAD slots before its cost_i (valid_i with it),
-// col_i COL_LEAD slots before.
-// Throughput: 1 pixel per slot.
+// (0 or 1, see t), COL_LEAD (>= 3: how many slots col_i leads cost_i), LANES
+// (K >= 1). SW = LW + 4 holds the larger of the two weightings (10 x 2^LW).
+// Latency: LATENCY = K + 2 slots from cost_i to s_o; row_i, centre_i and nbr_i
+// of a pixel are presented GRAY_LEAD slots before its cost_i (valid_i with
+// it), col_i COL_LEAD slots before.
+// Throughput: 1 pixel per slot (each lane one pixel every K slots).
 module sgm_path_engine #(
   parameter int D         = 64,
   parameter int CW        = 7,
@@ -55,7 +69,13 @@ module sgm_path_engine #(
   // straight from the table's read port into the sub-PEs (grays with the costs).
   parameter int GRAY_LEAD /*verilator public*/ = 1,
   parameter int COL_LEAD  /*verilator public*/ = 3,
-  localparam int LATENCY  = 3
+  parameter int LANES     /*verilator public*/ = 1,
+  localparam int MIN_LATENCY = ($clog2(D) + 1) / 2,  // sgm_min_pipe's LATENCY
+  // Columns lane k runs behind lane k - 1 (the rows above must be written).
+  localparam int SKEW     /*verilator public*/ = 1 + (5 + MIN_LATENCY + LANES - 1) / LANES,
+  // The narrowest frame the schedule supports (lane 0 reads lane K - 1).
+  localparam int MIN_WIDTH /*verilator public*/ = LANES * SKEW + 1,
+  localparam int LATENCY  = LANES + 2
 ) (
   input  wire                 clk_i,
   input  wire                 rst_ni,
@@ -89,58 +109,10 @@ module sgm_path_engine #(
 
   localparam int LWORD = D * LW;  // {Lr(D-1) .. Lr(0)} of one path
   localparam int AW    = $clog2(MAX_WIDTH);
-  localparam int MIN_LATENCY = ($clog2(D) + 1) / 2;  // sgm_min_pipe's LATENCY
+  localparam int K     = LANES;
+  localparam int W45_DELAY = K > 4 ? K - 4 : 0;  // the 45 degree write waits for pixel x + 1's read
 
-  // ------------------------------------------------------ previous-row reads
-  // col_i leads cost_i by COL_LEAD slots; col_r leads it by 3 (the read slot).
-  logic [XW-1:0] col_r;
-  if (COL_LEAD > 3) begin : g_col_lead
-    sgm_delay #(.WIDTH(XW), .DEPTH(COL_LEAD - 3)) u_col_lead (
-      .clk_i (clk_i),
-      .en_i  (en_i),
-      .d_i   (col_i),
-      .q_o   (col_r)
-    );
-  end else begin : g_col_read
-    assign col_r = col_i;
-  end
-
-  // The column of the pixel at stage B (its path starts) and at stage C (the writes).
-  logic [XW-1:0] col_b, col_c;
-  sgm_delay #(.WIDTH(XW), .DEPTH(4)) u_col_b (
-    .clk_i (clk_i),
-    .en_i  (en_i),
-    .d_i   (col_r),
-    .q_o   (col_b)
-  );
-
-  // Read addresses: M90 at x, M45 at x - 1 (unused at x = 0: 45 deg start),
-  // M135 at x + 1 (unused at the last column: 135 deg start).
-  wire [AW-1:0] addr90  = AW'(col_r);
-  wire [AW-1:0] addr45  = col_r == '0 ? '0 : AW'(col_r - 1'b1);
-  wire [AW-1:0] addr135 = col_r == width_i - 1'b1 ? '0 : AW'(col_r + 1'b1);
-
-  logic [LWORD-1:0] mem45  [0:MAX_WIDTH-1];
-  logic [LWORD-1:0] mem90  [0:MAX_WIDTH-1];
-  logic [LWORD-1:0] mem135 [0:MAX_WIDTH-1];
-  logic [LW-1:0]    min45  [0:MAX_WIDTH-1];
-  logic [LW-1:0]    min90  [0:MAX_WIDTH-1];
-  logic [LW-1:0]    min135 [0:MAX_WIDTH-1];
-
-  // Read at t - 3, the memories' data at t - 2, their output register at t - 1.
-  logic [3*LWORD-1:0] rd_m, rd_q;   // {135, 90, 45}
-  logic [3*LW-1:0]    mrd_m, mrd_q, mrd_t;
-  always_ff @(posedge clk_i) begin
-    if (en_i) begin
-      rd_m  <= {mem135[addr135], mem90[addr90], mem45[addr45]};
-      mrd_m <= {min135[addr135], min90[addr90], min45[addr45]};
-      rd_q  <= rd_m;
-      mrd_q <= mrd_m;
-      mrd_t <= mrd_q;  // min Lr at part (b), one slot after part (a)
-    end
-  end
-
-  // ------------------------------------------------------------------ stage A
+  // ------------------------------------------------------------------ slot t
   logic [31:0] dI;
   for (genvar r = 0; r < 4; r++) begin : g_grad
     wire [7:0] n = nbr_i[r*8 +: 8];
@@ -164,8 +136,6 @@ module sgm_path_engine #(
   logic [YW-1:0]      row_a;  // row_i, GRAY_LEAD slots later (see g_p2r_reg)
   logic [D*CW-1:0]    cost_b;
   logic [YW-1:0]      row_b;
-  logic               valid_b;
-  logic               valid_c;
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       cost_b  <= cost_i;
@@ -184,29 +154,37 @@ module sgm_path_engine #(
     assign row_a = row_i;
   end
 
-  // Slot valid flags: the only registers with a reset.
+  // Slot valid flags (B .. C, then s_o): the only registers with a reset.
+  logic [K:0] valid_q;  // valid_q[i]: the slot at B + i
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
-      valid_b <= 1'b0;
-      valid_c <= 1'b0;
+      valid_q <= '0;
       valid_o <= 1'b0;
     end else if (en_i) begin
-      valid_b <= valid_i;
-      valid_c <= valid_b;
-      valid_o <= valid_c;
+      valid_q <= {valid_q[K-1:0], valid_i};
+      valid_o <= valid_q[K];
     end
   end
 
-  // ------------------------------------------------------------------ stage B
+  // The column at B (path starts), COL_LEAD + 1 slots after col_i.
+  logic [XW-1:0] col_b;
+  sgm_delay #(.WIDTH(XW), .DEPTH(COL_LEAD + 1)) u_col_b (
+    .clk_i (clk_i),
+    .en_i  (en_i),
+    .d_i   (col_i),
+    .q_o   (col_b)
+  );
+
+  // ------------------------------------------------------------------ slot B
   wire at_left  = col_b == '0;
   wire at_right = col_b == width_i - 1'b1;
   wire at_top   = row_b == '0;
 
-  // The 0 degree recursion (sgm_path_ring, one lane): its sub-PEs and minimum
-  // feed back through the ring's register (lr0_c: the pixel's Lr at stage C).
+  // The 0 degree recursion (sgm_path_ring, K lanes): its sub-PEs and minimum
+  // feed back through the ring's registers (lr0_c: the pixel's Lr at C).
   logic [D*LW-1:0] lr0_c;
   logic [LW-1:0]   min0_c;
-  sgm_path_ring #(.D(D), .CW(CW), .LW(LW), .PW(PW), .LANES(1)) u_ring (
+  sgm_path_ring #(.D(D), .CW(CW), .LW(LW), .PW(PW), .LANES(K)) u_ring (
     .clk_i   (clk_i),
     .en_i    (en_i),
     .p1_i    (p1_i),
@@ -217,10 +195,67 @@ module sgm_path_engine #(
     .min_o   (min0_c)
   );
 
-  // The 45, 90 and 135 degree paths: previous-row costs from the path
-  // memories, parts (a) and (b) of the sub-PEs ahead of the pixel's stage B.
-  wire [3:1] start = {at_right | at_top, at_top, at_left | at_top};
+  // Part (c) of the 45/90/135 degree paths runs at B' = B + K - 1: the cost,
+  // their P2r and path starts carried K - 1 slots.
+  wire [3:1] start_b = {at_right | at_top, at_top, at_left | at_top};
+  logic [D*CW-1:0] cost_p;
+  logic [3*PW-1:0] p2r_p;
+  logic [3:1]      start;
+  logic [XW-1:0]   col_p;
+  logic [YW-1:0]   row_p;
+  if (K > 1) begin : g_carry
+    sgm_delay #(.WIDTH(D*CW + 3*PW + 3 + XW + YW), .DEPTH(K - 1)) u_carry (
+      .clk_i (clk_i),
+      .en_i  (en_i),
+      .d_i   ({cost_b, p2r_b[PW +: 3*PW], start_b, col_b, row_b}),
+      .q_o   ({cost_p, p2r_p, start, col_p, row_p})
+    );
+  end else begin : g_no_carry
+    assign {cost_p, p2r_p, start, col_p, row_p} = {cost_b, p2r_b[PW +: 3*PW], start_b, col_b, row_b};
+  end
 
+  // ------------------------------------------------------ previous-row reads
+  // At B' - 4: col_i delayed COL_LEAD - 3 + K - 1 slots.
+  localparam int READ_DELAY = COL_LEAD - 3 + K - 1;
+  logic [XW-1:0] col_r;
+  if (READ_DELAY > 0) begin : g_col_read
+    sgm_delay #(.WIDTH(XW), .DEPTH(READ_DELAY)) u_col_r (
+      .clk_i (clk_i),
+      .en_i  (en_i),
+      .d_i   (col_i),
+      .q_o   (col_r)
+    );
+  end else begin : g_col_now
+    assign col_r = col_i;
+  end
+
+  // Read addresses: M90 at x, M45 at x - 1 (unused at x = 0: 45 deg start),
+  // M135 at x + 1 (unused at the last column: 135 deg start).
+  wire [AW-1:0] addr90  = AW'(col_r);
+  wire [AW-1:0] addr45  = col_r == '0 ? '0 : AW'(col_r - 1'b1);
+  wire [AW-1:0] addr135 = col_r == width_i - 1'b1 ? '0 : AW'(col_r + 1'b1);
+
+  logic [LWORD-1:0] mem45  [0:MAX_WIDTH-1];
+  logic [LWORD-1:0] mem90  [0:MAX_WIDTH-1];
+  logic [LWORD-1:0] mem135 [0:MAX_WIDTH-1];
+  logic [LW-1:0]    min45  [0:MAX_WIDTH-1];
+  logic [LW-1:0]    min90  [0:MAX_WIDTH-1];
+  logic [LW-1:0]    min135 [0:MAX_WIDTH-1];
+
+  // Read at B' - 4, the memories' data at B' - 3, their output register at B' - 2.
+  logic [3*LWORD-1:0] rd_m, rd_q;   // {135, 90, 45}
+  logic [3*LW-1:0]    mrd_m, mrd_q, mrd_t;
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      rd_m  <= {mem135[addr135], mem90[addr90], mem45[addr45]};
+      mrd_m <= {min135[addr135], min90[addr90], min45[addr45]};
+      rd_q  <= rd_m;
+      mrd_q <= mrd_m;
+      mrd_t <= mrd_q;  // min Lr at part (b), one slot after part (a)
+    end
+  end
+
+  // ------------------------------------------------------------------ slot B'
   logic [3*D*LW-1:0] lr_b;  // path r (1 .. 3), disparity d at lr_b[((r-1)*D+d)*LW +: LW]
   for (genvar r = 1; r < 4; r++) begin : g_path
     wire [LWORD-1:0] pw      = rd_q[(r-1)*LWORD +: LWORD];
@@ -236,8 +271,8 @@ module sgm_path_engine #(
         .has_hi_i   (d < D - 1),
         .p1_i       (p1_i),
         .min_prev_i (min_prv),
-        .cost_i     (cost_b[d*CW +: CW]),
-        .p2r_i      (p2r_b[r*PW +: PW]),
+        .cost_i     (cost_p[d*CW +: CW]),
+        .p2r_i      (p2r_p[(r-1)*PW +: PW]),
         .start_i    (start[r]),
         .lr_o       (lr_b[((r-1)*D+d)*LW +: LW])
       );
@@ -245,51 +280,70 @@ module sgm_path_engine #(
   end
 
   logic [3*D*LW-1:0]  lr_c;  // 45, 90, 135 degrees
+  logic [XW-1:0]      col_c;
   logic [YW-1:0]      row_c;
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       lr_c    <= lr_b;
-      col_c   <= col_b;
-      row_c   <= row_b;
+      col_c   <= col_p;
+      row_c   <= row_p;
     end
   end
 
-  // ------------------------------------------------------------------ stage C
+  // ------------------------------------------------------------------ slot C
   // Path r, disparity d at lr_all[(r*D+d)*LW +: LW]; min0_c is not needed.
   wire [4*D*LW-1:0] lr_all = {lr_c, lr0_c};
   logic unused_min0;
   assign unused_min0 = ^min0_c;
 
+  // The 45 degree word waits W45_DELAY slots (pixel x + 1 of the lane reads M45[x]
+  // K - 4 slots after pixel x's C).
+  logic [AW-1:0]    col_w45;
+  logic [LWORD-1:0] lr_w45;
+  if (W45_DELAY > 0) begin : g_w45_wait
+    sgm_delay #(.WIDTH(AW + LWORD), .DEPTH(W45_DELAY)) u_w45 (
+      .clk_i (clk_i),
+      .en_i  (en_i),
+      .d_i   ({AW'(col_c), lr_all[1*D*LW +: D*LW]}),
+      .q_o   ({col_w45, lr_w45})
+    );
+  end else begin : g_w45_now
+    assign {col_w45, lr_w45} = {AW'(col_c), lr_all[1*D*LW +: D*LW]};
+  end
+
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      mem45[AW'(col_c)]  <= lr_all[1*D*LW +: D*LW];
+      mem45[col_w45]     <= lr_w45;
       mem90[AW'(col_c)]  <= lr_all[2*D*LW +: D*LW];
       mem135[AW'(col_c)] <= lr_all[3*D*LW +: D*LW];
     end
   end
 
-  // min Lr of 45/90/135 degrees, MIN_LATENCY slots later, at the column of the pixel.
+  // min Lr of 45/90/135 degrees, MIN_LATENCY slots after their Lr words are
+  // written (the 45 degree word W45_DELAY slots after C), at the same column.
+  wire [3*LWORD-1:0] lr_wr  = {lr_all[3*D*LW +: D*LW], lr_all[2*D*LW +: D*LW], lr_w45};
+  wire [2*AW-1:0]    col_wr = {AW'(col_c), col_w45};  // 90 and 135, 45
   logic [3*LW-1:0] min_m;  // 45, 90, 135
   for (genvar r = 1; r < 4; r++) begin : g_min
     sgm_min_pipe #(.N(D), .W(LW)) u_min (
       .clk_i    (clk_i),
       .en_i     (en_i),
-      .values_i (lr_all[r*D*LW +: D*LW]),
+      .values_i (lr_wr[(r-1)*LWORD +: LWORD]),
       .min_o    (min_m[(r-1)*LW +: LW])
     );
   end
-  logic [AW-1:0] col_m;
-  sgm_delay #(.WIDTH(AW), .DEPTH(MIN_LATENCY)) u_col_m (
+  logic [AW-1:0] col_m, col_m45;
+  sgm_delay #(.WIDTH(2*AW), .DEPTH(MIN_LATENCY)) u_col_m (
     .clk_i (clk_i),
     .en_i  (en_i),
-    .d_i   (AW'(col_c)),
-    .q_o   (col_m)
+    .d_i   (col_wr),
+    .q_o   ({col_m, col_m45})
   );
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      min45[col_m]  <= min_m[0*LW +: LW];
-      min90[col_m]  <= min_m[1*LW +: LW];
-      min135[col_m] <= min_m[2*LW +: LW];
+      min45[col_m45] <= min_m[0*LW +: LW];
+      min90[col_m]   <= min_m[1*LW +: LW];
+      min135[col_m]  <= min_m[2*LW +: LW];
     end
   end
 

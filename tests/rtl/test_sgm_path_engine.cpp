@@ -1,8 +1,10 @@
 // sgm_path_engine against the golden path aggregation (docs/algorithm.md
-// section 5): S(p, d) for every pixel and disparity, slots streamed in raster
-// order with random idle cycles, several frames back to back without reset.
+// section 5): S(p, d) for every pixel and disparity, slots streamed in the
+// engine's lane order (raster order at LANES = 1; tb/lane_schedule.hpp) with
+// random idle cycles, several frames back to back without reset.
 #include "Vsgm_path_engine.h"
 #include "Vsgm_path_engine_sgm_path_engine.h"
+#include "lane_schedule.hpp"
 #include "port_bits.hpp"
 #include "verilated_top.hpp"
 
@@ -12,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <opencv2/imgproc.hpp>
@@ -36,6 +39,11 @@ constexpr int kD = SGM_D;
 constexpr int kGrayLead = int(Vsgm_path_engine_sgm_path_engine::GRAY_LEAD);
 // The column leads the costs by COL_LEAD slots (the previous-row reads run ahead).
 constexpr int kColLead = int(Vsgm_path_engine_sgm_path_engine::COL_LEAD);
+// K row lanes, each SKEW columns behind the one before (the build's LANES).
+constexpr int kLanes = int(Vsgm_path_engine_sgm_path_engine::LANES);
+constexpr int kSkew = int(Vsgm_path_engine_sgm_path_engine::SKEW);
+// The narrowest frame that schedule supports (frames here are widened to it).
+constexpr int kMinWidth = int(Vsgm_path_engine_sgm_path_engine::MIN_WIDTH);
 constexpr int kCostBits = 7, kSumBits = 13;
 
 struct Frame {
@@ -91,18 +99,21 @@ class PathEngine {
     long checked = 0;
     std::string failure;
     const int leadRows = 2;  // slots before row 0 carry no pixel, as behind the census window
-    const long slots = long(w) * (h + leadRows) + 3 + w;  // + pipeline and a flush row
+    const sgm::tb::LaneSchedule lanes(w, kLanes, kSkew, leadRows);
+    // Every pixel's slot, the pipeline and a flush row of every lane.
+    const long slots = lanes.slotsToCover(h) + long(kLanes) * (w + kSkew) + 8;
     for (long t = 0; t < slots; ++t) {
-      const int row = int(t / w) - leadRows, col = int(t % w);
+      const sgm::tb::SlotPosition pos = lanes.at(t);
+      const int row = pos.row, col = pos.col;
       const bool inside = row >= 0 && row < h;
       for (int d = 0; d < kD; ++d)
         setBits(top_->cost_i, d * kCostBits, kCostBits, inside ? f.cost.at(col, row)[d] : 0);
-      top_->col_i = int((t + kColLead) % w);
+      top_->col_i = lanes.at(t + kColLead).col;
       top_->valid_i = inside;
       // The row and the grays of slot t + kGrayLead (negative rows wrap; they carry no
       // pixel, and the grays there are random: they must not matter).
-      const long tg = t + kGrayLead;
-      const int growIndex = int(tg / w) - leadRows, gcol = int(tg % w);
+      const sgm::tb::SlotPosition gpos = lanes.at(t + kGrayLead);
+      const int growIndex = gpos.row, gcol = gpos.col;
       top_->row_i = uint32_t(growIndex) & ((1u << SGM_YW) - 1);
       uint32_t nbr = 0;
       if (growIndex >= 0 && growIndex < h) {
@@ -133,7 +144,7 @@ class PathEngine {
             std::ostringstream msg;
             msg << "stage sgm_path_engine: first mismatch at (x=" << x << ", y=" << y << ") d=" << d
                 << ": expected S=" << s[d] << ", got " << got << " (" << w << "x" << h << ", P1=" << f.p1
-                << ", P2'=" << f.p2 << ")";
+                << ", P2'=" << f.p2 << ", " << kLanes << " lanes)";
             failure = msg.str();
             break;
           }
@@ -159,7 +170,7 @@ TEST(SgmPathEngine, RandomCostsSeveralSizesBackToBack) {
   int k = 0;
   for (const auto& s : sizes) {
     const int p2 = int(rng() % 256), p1 = int(rng() % (p2 + 1));
-    Frame f = syntheticFrame(s[0], s[1], p1, p2, rng);
+    Frame f = syntheticFrame(std::max(s[0], kMinWidth), s[1], p1, p2, rng);
     f.p2Mode = k % 2 ? sgm::P2Mode::kPaper : sgm::P2Mode::kKnee;       // both forms and both weightings,
     f.weights = k / 2 % 2 ? sgm::PathWeighting::kEqual : sgm::PathWeighting::k3232;  // changing per frame
     ++k;
