@@ -8,17 +8,21 @@
 // 2 unified; 3 behaves as unified) is sampled with the slot and travels with
 // it, so the top presents each frame's mode aligned with the census outputs.
 //
-// Delay line: entry d holds the right census/rank of the slot d slots earlier,
-// which is right pixel x - d of the same row whenever x - d >= 0 (slots are
-// consecutive raster positions, flush slots included). Entries from another
-// row or frame are only reached when col - d < 0, where the PE outputs Cmax.
+// Delay line: tap d holds the right census/rank of the slot d K slots earlier
+// (K = LANES), which is right pixel x - d of the same row whenever x - d >= 0
+// (the slots of a lane are consecutive positions of its rows, flush slots
+// included, and lane k has every K-th slot: docs/reschedule.md; K = 1 is the
+// raster). Entries from another row or frame are only reached when col - d <
+// 0, where the PE outputs Cmax.
 //
-// Structure: s1 input registers and the delay line (D x (NB + RKW) bit registers, 50 / 87,
-// entry 0 = the slot's own right census), s2 + s3 the two PE stages
-// (sgm_cost_pe).
+// Structure: s1 input registers and the delay line (D taps of (NB + RKW) bit
+// registers, 50 / 87, tap 0 = the slot's own right census; with K > 1 the
+// K - 1 slots between two taps are one (K - 1)-word memory of (D - 1) taps'
+// width with a rotating pointer, asynchronous read: distributed RAM), s2 + s3
+// the two PE stages (sgm_cost_pe).
 //
 // Parameters: D disparities, CW column bits, NB census bits (44 for the 9x5 census,
-// 80 for the 9x9); RKW rank bits and CBITS cost bits follow.
+// 80 for the 9x9), LANES (K >= 1); RKW rank bits and CBITS cost bits follow.
 // Latency: LATENCY = 3 slots (1 + the PE's 2) for every parameter value:
 // cost_o, col_o, valid_o during slot t belong to the input of slot t - 3.
 // cost_o[d*CBITS +: CBITS] = C(p, d) (0 .. 2 NB). Throughput: one slot per enabled cycle.
@@ -26,6 +30,7 @@ module sgm_cost_volume #(
   parameter int  D     = 64,
   parameter int  CW    = 11,
   parameter int  NB    = 44,
+  parameter int  LANES = 1,
   localparam int RKW   = $clog2(NB + 1),
   localparam int CBITS = $clog2(2 * NB + 1)
 ) (
@@ -67,15 +72,30 @@ module sgm_cost_volume #(
     end
   end
 
-  for (genvar d = 0; d < D; d++) begin : g_line
-    if (d == 0) begin : g_head
-      always_ff @(posedge clk_i) begin
-        if (en_i) line_q[0 +: EW] <= {rrank_i, rcensus_i};
+  always_ff @(posedge clk_i) begin
+    if (en_i) line_q[0 +: EW] <= {rrank_i, rcensus_i};
+  end
+
+  if (LANES == 1) begin : g_shift
+    always_ff @(posedge clk_i) begin
+      if (en_i) line_q[EW +: (D-1)*EW] <= line_q[0 +: (D-1)*EW];
+    end
+  end else begin : g_lanes
+    // Tap d of slot n + 1 = tap d - 1 of slot n - (K - 1): the gap memory's word
+    // at the pointer was written K - 1 slots ago.
+    localparam int GAP = LANES - 1;
+    localparam int PTRW = GAP > 1 ? $clog2(GAP) : 1;
+    logic [(D-1)*EW-1:0] gap_mem [0:GAP-1];
+    logic [PTRW-1:0]     ptr_q;
+    always_ff @(posedge clk_i) begin
+      if (en_i) begin
+        gap_mem[ptr_q]          <= line_q[0 +: (D-1)*EW];
+        line_q[EW +: (D-1)*EW]  <= gap_mem[ptr_q];
       end
-    end else begin : g_tail
-      always_ff @(posedge clk_i) begin
-        if (en_i) line_q[d*EW +: EW] <= line_q[(d-1)*EW +: EW];
-      end
+    end
+    always_ff @(posedge clk_i) begin
+      if (!rst_ni) ptr_q <= '0;
+      else if (en_i) ptr_q <= ptr_q == PTRW'(GAP - 1) ? '0 : ptr_q + 1'b1;
     end
   end
 
