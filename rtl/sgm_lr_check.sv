@@ -33,18 +33,19 @@
 //
 // Read side, at the S slot (x, y), y >= 1, for the left pixel (x, y-1):
 //   R1  read lt_mem[bank (y-1) % 2][x]
+//   R1o the memory's output register
 //   R2  xr = x - d; read dr_mem[bank (y-1) % 2][xr] when x >= d
 //   R3  valid = !check_en || (x >= d && |dR - d| <= tol); output registers.
 // Order of memory accesses (slot = S-side slot, a write at slot t is visible
 // to reads at slots > t):
 //   * dR(xr), xr <= W-D, of row y is written at slot (xr + D, y) and read no
-//     earlier than slot (xr + 1, y + 1).
+//     earlier than slot (xr + 2, y + 1).
 //   * tail entry k (xr = W-D+1+k) of row y is written at slot (k + 1, y + 1);
 //     the left pixel x that reads it has x - d = xr, so it reads at slot
-//     (x + 1, y + 1) with x >= xr = k + 1 + (W - D): strictly later because
-//     W >= D. (With W = D and d = 0 the margin is exactly one slot.)
+//     (x + 2, y + 1) with x >= xr = k + 1 + (W - D): strictly later because
+//     W >= D. (With W = D and d = 0 the margin is two slots.)
 //   * bank y % 2 is next written by row y + 2 from slot (D, y + 2) on; the
-//     last read of row y is at slot (0, y + 2).
+//     last read of row y is at slot (1, y + 2).
 //   * lt_mem: (x, y) is written at slot (x, y) + L, L <= W-1, and read at
 //     (x, y + 1); row y + 2 writes the bank at (x, y + 2) + L.
 // Stale words from an earlier frame or from flush rows are never read for a
@@ -61,7 +62,7 @@
 // (log2(D) + 4), MAX_WIDTH (largest width; width >= max(D, 16) required),
 // CW column bits (must hold width), RW row bits (must hold every virtual row
 // of a frame, flush rows included).
-// Latency: one row plus LATENCY = 3 slots: left pixel (x, y) presented on the
+// Latency: one row plus LATENCY = 4 slots: left pixel (x, y) presented on the
 // WTA side is on the outputs after the enabled edge of S slot (x, y+1) plus
 // LATENCY - 1 edges, i.e. S slot (x, y) + width + LATENCY - 1 edges.
 // Throughput: one pixel per slot. Reset: control registers only (tail counter,
@@ -74,7 +75,7 @@ module sgm_lr_check #(
   parameter int CW        /*verilator public*/ = $clog2(MAX_WIDTH + 1),
   parameter int RW        /*verilator public*/ = 11,
   localparam int LD       = $clog2(D),
-  localparam int LATENCY  /*verilator public*/ = 3
+  localparam int LATENCY  /*verilator public*/ = 4
 ) (
   input  wire              clk_i,
   input  wire              rst_ni,
@@ -241,11 +242,31 @@ module sgm_lr_check #(
     end
   end
 
+  // ------------------------------------------------------------ R1o
+  // The left memory's output register: its clock-to-out is then not in front
+  // of the x - d subtractor and the dR read address.
+  logic [LW:0]   r1o_word_q;
+  logic [CW-1:0] r1o_col_q;
+  logic [RW-1:0] r1o_row_q;
+  logic          r1o_bank_q, r1o_real_q, r1o_chk_q;
+  logic [2:0]    r1o_tol_q;
+
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      r1o_word_q <= r1_word_q;
+      r1o_col_q  <= r1_col_q;
+      r1o_row_q  <= r1_row_q;
+      r1o_bank_q <= r1_bank_q;
+      r1o_chk_q  <= r1_chk_q;
+      r1o_tol_q  <= r1_tol_q;
+    end
+  end
+
   // ------------------------------------------------------------ R2
-  wire [LD-1:0] r1_d    = r1_word_q[DW +: LD];
-  wire          r1_ok   = r1_col_q >= CW'(r1_d);          // x - d >= 0
-  wire [CW-1:0] r1_xr   = r1_col_q - CW'(r1_d);
-  wire          r1_real = r1_real_q && r1_word_q[LW];  // (x, y-1) was a pixel of this frame
+  wire [LD-1:0] r1_d    = r1o_word_q[DW +: LD];
+  wire          r1_ok   = r1o_col_q >= CW'(r1_d);          // x - d >= 0
+  wire [CW-1:0] r1_xr   = r1o_col_q - CW'(r1_d);
+  wire          r1_real = r1o_real_q && r1o_word_q[LW];  // (x, y-1) was a pixel of this frame
 
   logic [LD-1:0] r2_dr_q;
   logic [LD-1:0] r2_d_q;
@@ -256,18 +277,18 @@ module sgm_lr_check #(
   logic [2:0]    r2_tol_q;
 
   always_ff @(posedge clk_i) begin
-    if (en_i && r1_real && r1_ok) r2_dr_q <= dr_mem[mem_addr(r1_bank_q, r1_xr)];
+    if (en_i && r1_real && r1_ok) r2_dr_q <= dr_mem[mem_addr(r1o_bank_q, r1_xr)];
   end
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       r2_d_q    <= r1_d;
-      r2_disp_q <= r1_word_q[0 +: DW];
+      r2_disp_q <= r1o_word_q[0 +: DW];
       r2_ok_q   <= r1_ok;
-      r2_col_q  <= r1_col_q;
-      r2_row_q  <= r1_row_q;
-      r2_chk_q  <= r1_chk_q;
-      r2_tol_q  <= r1_tol_q;
+      r2_col_q  <= r1o_col_q;
+      r2_row_q  <= r1o_row_q;
+      r2_chk_q  <= r1o_chk_q;
+      r2_tol_q  <= r1o_tol_q;
     end
   end
 
@@ -296,10 +317,12 @@ module sgm_lr_check #(
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       r1_real_q   <= 1'b0;
+      r1o_real_q  <= 1'b0;
       r2_real_q   <= 1'b0;
       out_valid_o <= 1'b0;
     end else if (en_i) begin
       r1_real_q   <= in_real && armed_q;
+      r1o_real_q  <= r1_real_q;
       r2_real_q   <= r1_real;
       out_valid_o <= r2_real_q;
     end
