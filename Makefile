@@ -216,6 +216,10 @@ $(eval $(call rtl_test,wta-d16,sgm_wta,-GD=16))
 $(eval $(call rtl_test,wta-d64,sgm_wta,-GD=64))
 $(eval $(call rtl_test,lr-check-d16,sgm_lr_check,-GD=16 -GMAX_WIDTH=128))
 $(eval $(call rtl_test,lr-check-d64,sgm_lr_check,-GD=64 -GMAX_WIDTH=128))
+# The check with lanes (docs/reschedule.md): S and WTA sides in lane order, the read side in raster order.
+$(eval $(call rtl_test,lr-lanes-d16-k1,tb_lr_lanes,-GD=16 -GLANES=1 -GROW_BANKS=4))
+$(eval $(call rtl_test,lr-lanes-d16-k3,tb_lr_lanes,-GD=16 -GLANES=3 -GROW_BANKS=8))
+$(eval $(call rtl_test,lr-lanes-d64-k6,tb_lr_lanes,-GD=64 -GMAX_WIDTH=256 -GRW=9 -GLANES=6 -GROW_BANKS=16))
 $(eval $(call rtl_test,census-unit,sgm_census_unit,-GMAX_WIDTH=128 -GCW=8 -GRW=8))
 # tests/rtl/test_sgm_cost_volume.cpp drives the wrapper tb_cost_front (two census units + the volume): the later --top-module wins.
 $(eval $(call rtl_test,cost-volume-d16,sgm_cost_volume,--top-module tb_cost_front tb/tops/tb_cost_front.sv -GD=16 -GMAX_WIDTH=128 -GCW=8 -GRW=8))

@@ -16,6 +16,22 @@
 //             0 <= L <= width - 1 slots works (the result of row y is read
 //             during row y + 1 at its own column).
 //
+// Read side: rd_col_i / rd_row_i, the slot reads left pixel (rd_col_i,
+// rd_row_i - 1) and the outputs follow its timing. With one lane the top
+// connects the S-side position (the order of accesses below).
+//
+// Lanes (LANES = K, docs/reschedule.md): the S and WTA sides may come in the
+// slot order of K row lanes (slot K n + k belongs to lane k, each lane a raster
+// of its own rows); the diagonal array and the row tail are then per lane: the
+// state a slot continues is the one its lane left K slots earlier (the
+// registers delayed K - 1 slots more in a rotating K - 1 word memory). The
+// memories hold ROW_BANKS rows (bank = row mod ROW_BANKS, a power of two), so
+// the read side can run in raster order behind the lanes: every word of row y
+// must be written before the read of row y + 1 reaches it (the row tail is
+// written during the first D - 1 columns of the lane's next row, y + K), and
+// row y + ROW_BANKS may overwrite it only after that read
+// (tests/rtl/test_tb_lr_lanes.cpp computes both from the schedule).
+//
 // Right disparities: a systolic diagonal array of D slots. After the S of
 // pixel x, slot j holds (min S, argmin d) of right pixel x - j over d = 0 .. j:
 // slot j takes slot j-1 of the previous pixel and compares it with S(x, j)
@@ -61,7 +77,8 @@
 // Parameters: D disparities (power of two), SW width of S, DW disparity width
 // (log2(D) + 4), MAX_WIDTH (largest width; width >= max(D, 16) required),
 // CW column bits (must hold width), RW row bits (must hold every virtual row
-// of a frame, flush rows included).
+// of a frame, flush rows included), LANES (K >= 1), ROW_BANKS (rows per
+// memory, a power of two: 2 with one lane and the S-side read position).
 // Latency: one row plus LATENCY = 4 slots: left pixel (x, y) presented on the
 // WTA side is on the outputs after the enabled edge of S slot (x, y+1) plus
 // LATENCY - 1 edges, i.e. S slot (x, y) + width + LATENCY - 1 edges.
@@ -74,6 +91,8 @@ module sgm_lr_check #(
   parameter int MAX_WIDTH /*verilator public*/ = 1024,
   parameter int CW        /*verilator public*/ = $clog2(MAX_WIDTH + 1),
   parameter int RW        /*verilator public*/ = 11,
+  parameter int LANES     /*verilator public*/ = 1,
+  parameter int ROW_BANKS /*verilator public*/ = 2,
   localparam int LD       = $clog2(D),
   localparam int LATENCY  /*verilator public*/ = 4
 ) (
@@ -96,6 +115,10 @@ module sgm_lr_check #(
   input  wire  [CW-1:0]    wta_col_i,
   input  wire  [RW-1:0]    wta_row_i,
   input  wire              wta_valid_i,
+  // Read side: the slot reads left pixel (rd_col_i, rd_row_i - 1) (with one
+  // lane the S-side position).
+  input  wire  [CW-1:0]    rd_col_i,
+  input  wire  [RW-1:0]    rd_row_i,
   // Output: left pixel (col_o, row_o) of the previous row.
   output logic [DW-1:0]    disp_o,
   output logic             valid_o,      // left-right check passed
@@ -104,19 +127,58 @@ module sgm_lr_check #(
   output logic             out_valid_o   // the slot carries a pixel of the frame
 );
 
-  localparam int MW  = 2 * MAX_WIDTH;   // words per memory (two banks)
+  localparam int BW  = $clog2(ROW_BANKS);    // bank bits (row mod ROW_BANKS)
+  localparam int MW  = ROW_BANKS * MAX_WIDTH; // words per memory
   localparam int MAW = $clog2(MW);
   localparam int LW  = LD + DW;         // lt_mem word {frame pixel, d, disp} has LW + 1 bits
 
   // Word address of column col in bank b.
-  function automatic logic [MAW-1:0] mem_addr(input logic b, input logic [CW-1:0] col);
-    mem_addr = (b ? MAW'(MAX_WIDTH) : MAW'(0)) + MAW'(col);
+  function automatic logic [MAW-1:0] mem_addr(input logic [BW-1:0] b, input logic [CW-1:0] col);
+    mem_addr = MAW'(b) * MAW'(MAX_WIDTH) + MAW'(col);
   endfunction
 
+  // ------------------------------------------------------------ lane state
+  // Per lane: the diagonal array (slots 0 .. D-2; slot D-1 is final and only
+  // written out) and the row tail. The state of the slot's lane is the one it
+  // left K slots earlier: with K = 1 the registers themselves, else the
+  // registers (the state of the slot before) delayed K - 1 slots more in one
+  // rotating memory of K - 1 words (distributed RAM), as in sgm_cost_volume.
+  localparam int STW = (D-1)*SW + 2*(D-1)*LD + CW + BW + LD;
+
+  logic [(D-1)*SW-1:0] dmin_q, dmin_p;   // _q: next state of the previous slot; _p: of this lane
+  logic [(D-1)*LD-1:0] darg_q, darg_p;
+  logic [(D-1)*LD-1:0] tail_q, tail_p;     // entry k: dR(W-D+1+k)
+  logic [CW-1:0]       tail_col_q, tail_col_p;   // column of entry 0
+  logic [BW-1:0]       tail_bank_q, tail_bank_p;
+  logic [LD-1:0]       tail_cnt_q, tail_cnt_p;   // entries left to write
+
+  if (LANES == 1) begin : g_one_lane
+    assign {dmin_p, darg_p, tail_p, tail_col_p, tail_bank_p, tail_cnt_p} =
+           {dmin_q, darg_q, tail_q, tail_col_q, tail_bank_q, tail_cnt_q};
+  end else begin : g_lanes
+    localparam int GAP  = LANES - 1;
+    localparam int PTRW = GAP > 1 ? $clog2(GAP) : 1;
+    logic [STW-1:0]  gap_mem [0:GAP-1];
+    logic [PTRW-1:0] ptr_q;
+    logic [PTRW:0]   warm_q;   // slots since reset < GAP: the memory holds no state yet
+    wire  [STW-1:0]  gap_out = gap_mem[ptr_q];
+    always_ff @(posedge clk_i) begin
+      if (en_i) gap_mem[ptr_q] <= {dmin_q, darg_q, tail_q, tail_col_q, tail_bank_q, tail_cnt_q};
+    end
+    always_ff @(posedge clk_i) begin
+      if (!rst_ni) begin
+        ptr_q  <= '0;
+        warm_q <= (PTRW+1)'(GAP);
+      end else if (en_i) begin
+        ptr_q <= ptr_q == PTRW'(GAP - 1) ? '0 : ptr_q + 1'b1;
+        if (warm_q != '0) warm_q <= warm_q - 1'b1;
+      end
+    end
+    assign {dmin_p, darg_p, tail_p, tail_col_p, tail_bank_p} = gap_out[STW-1:LD];
+    assign tail_cnt_p = warm_q != '0 ? '0 : gap_out[LD-1:0];
+  end
+
   // ------------------------------------------------------------ diagonal array
-  // Slots 0 .. D-2 are registered; slot D-1 is final and only written out.
-  logic [(D-1)*SW-1:0] dmin_q;
-  logic [(D-1)*LD-1:0] darg_q;
   logic [(D-1)*SW-1:0] nmin;    // next state of slots 0 .. D-2
   logic [D*LD-1:0]     narg;    // next argmin of slots 0 .. D-1
 
@@ -124,10 +186,10 @@ module sgm_lr_check #(
   assign narg[0 +: LD] = '0;
   for (genvar j = 1; j < D; j++) begin : g_slot
     wire [SW-1:0] cand = s_i[j*SW +: SW];
-    wire          take = cand < dmin_q[(j-1)*SW +: SW];
-    assign narg[j*LD +: LD] = take ? LD'(j) : darg_q[(j-1)*LD +: LD];
+    wire          take = cand < dmin_p[(j-1)*SW +: SW];
+    assign narg[j*LD +: LD] = take ? LD'(j) : darg_p[(j-1)*LD +: LD];
     if (j < D - 1) begin : g_min
-      assign nmin[j*SW +: SW] = take ? cand : dmin_q[(j-1)*SW +: SW];
+      assign nmin[j*SW +: SW] = take ? cand : dmin_p[(j-1)*SW +: SW];
     end
   end
 
@@ -141,26 +203,22 @@ module sgm_lr_check #(
   // ------------------------------------------------------------ row tail
   wire last_col = valid_i && col_i == width_i - CW'(1);
 
-  logic [(D-1)*LD-1:0] tail_q;       // entry k: dR(W-D+1+k)
-  logic [CW-1:0]       tail_col_q;   // column of entry 0
-  logic                tail_bank_q;
-  logic [LD-1:0]       tail_cnt_q;   // entries left to write
-
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       tail_cnt_q <= '0;
     end else if (en_i) begin
       if (last_col) tail_cnt_q <= LD'(D - 1);
-      else if (tail_cnt_q != '0) tail_cnt_q <= tail_cnt_q - 1'b1;
+      else if (tail_cnt_p != '0) tail_cnt_q <= tail_cnt_p - 1'b1;
+      else tail_cnt_q <= '0;
     end
   end
 
   for (genvar k = 0; k < D - 1; k++) begin : g_tail
     wire [LD-1:0] shift_in;
     if (k < D - 2) begin : g_shift
-      assign shift_in = tail_q[(k+1)*LD +: LD];
+      assign shift_in = tail_p[(k+1)*LD +: LD];
     end else begin : g_end
-      assign shift_in = tail_q[k*LD +: LD];
+      assign shift_in = tail_p[k*LD +: LD];
     end
     always_ff @(posedge clk_i) begin
       if (en_i) tail_q[k*LD +: LD] <= last_col ? narg[(D-2-k)*LD +: LD] : shift_in;
@@ -171,16 +229,20 @@ module sgm_lr_check #(
     if (en_i) begin
       if (last_col) begin
         tail_col_q  <= width_i - CW'(D - 1);
-        tail_bank_q <= row_i[0];
-      end else if (tail_cnt_q != '0) begin
-        tail_col_q  <= tail_col_q + 1'b1;
+        tail_bank_q <= row_i[BW-1:0];
+      end else if (tail_cnt_p != '0) begin
+        tail_col_q  <= tail_col_p + 1'b1;
+        tail_bank_q <= tail_bank_p;
+      end else begin
+        tail_col_q  <= tail_col_p;
+        tail_bank_q <= tail_bank_p;
       end
     end
   end
 
   // ------------------------------------------------------------ dR memory
-  // One registered write request per slot: the tail of the previous row during
-  // its D-1 slots, else slot D-1 of the diagonal (xr = x - (D-1) >= 0).
+  // One registered write request per slot: the tail of the lane's previous row
+  // during its D-1 slots, else slot D-1 of the diagonal (xr = x - (D-1) >= 0).
   wire steady = valid_i && col_i >= CW'(D - 1);
 
   logic           drw_en_q;
@@ -189,16 +251,16 @@ module sgm_lr_check #(
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) drw_en_q <= 1'b0;
-    else if (en_i) drw_en_q <= tail_cnt_q != '0 || steady;
+    else if (en_i) drw_en_q <= tail_cnt_p != '0 || steady;
   end
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      if (tail_cnt_q != '0) begin
-        drw_addr_q <= mem_addr(tail_bank_q, tail_col_q);
-        drw_data_q <= tail_q[0 +: LD];
+      if (tail_cnt_p != '0) begin
+        drw_addr_q <= mem_addr(tail_bank_p, tail_col_p);
+        drw_data_q <= tail_p[0 +: LD];
       end else begin
-        drw_addr_q <= mem_addr(row_i[0], col_i - CW'(D - 1));
+        drw_addr_q <= mem_addr(row_i[BW-1:0], col_i - CW'(D - 1));
         drw_data_q <= narg[(D-1)*LD +: LD];
       end
     end
@@ -216,27 +278,30 @@ module sgm_lr_check #(
   // earlier frame still in flight may have a row inside the next frame).
   logic [LW:0] lt_mem [0:MW-1];
   always_ff @(posedge clk_i) begin
-    if (en_i) lt_mem[mem_addr(wta_row_i[0], wta_col_i)] <= {wta_valid_i, d_i, disp_i};
+    if (en_i) lt_mem[mem_addr(wta_row_i[BW-1:0], wta_col_i)] <= {wta_valid_i, d_i, disp_i};
   end
 
   // ------------------------------------------------------------ R1
-  wire in_real = row_i != '0 && row_i <= height_i;   // previous row is a frame row
+  // The read side: left pixel (rd_col_i, rd_row_i - 1).
+  wire in_real = rd_row_i != '0 && rd_row_i <= height_i;   // previous row is a frame row
+  wire [RW-1:0] rd_prev = rd_row_i - 1'b1;
 
   logic [LW:0]   r1_word_q;
   logic [CW-1:0] r1_col_q;
   logic [RW-1:0] r1_row_q;
-  logic          r1_bank_q, r1_real_q, r1_chk_q;
+  logic [BW-1:0] r1_bank_q;
+  logic          r1_real_q, r1_chk_q;
   logic [2:0]    r1_tol_q;
 
   always_ff @(posedge clk_i) begin
-    if (en_i) r1_word_q <= lt_mem[mem_addr(~row_i[0], col_i)];
+    if (en_i) r1_word_q <= lt_mem[mem_addr(rd_prev[BW-1:0], rd_col_i)];
   end
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      r1_col_q  <= col_i;
-      r1_row_q  <= row_i - 1'b1;
-      r1_bank_q <= ~row_i[0];
+      r1_col_q  <= rd_col_i;
+      r1_row_q  <= rd_prev;
+      r1_bank_q <= rd_prev[BW-1:0];
       r1_chk_q  <= check_en_i;
       r1_tol_q  <= tol_i;
     end
@@ -248,7 +313,8 @@ module sgm_lr_check #(
   logic [LW:0]   r1o_word_q;
   logic [CW-1:0] r1o_col_q;
   logic [RW-1:0] r1o_row_q;
-  logic          r1o_bank_q, r1o_real_q, r1o_chk_q;
+  logic [BW-1:0] r1o_bank_q;
+  logic          r1o_real_q, r1o_chk_q;
   logic [2:0]    r1o_tol_q;
 
   always_ff @(posedge clk_i) begin

@@ -323,6 +323,8 @@ module sgm_top #(
     .wta_col_i   (col4),
     .wta_row_i   (row4),
     .wta_valid_i (valid4),
+    .rd_col_i    (col3),
+    .rd_row_i    (row3),
     .disp_o      (lr_disp),
     .valid_o     (lr_ok),
     .col_o       (col5),

@@ -25,15 +25,17 @@ class LaneSchedule {
     return {int(index - laneRow * width_), int(laneRow * lanes_ + lane - leadRows_)};
   }
 
+  // The slot of position (col, row), row >= -leadRows.
+  long slotOf(int col, int row) const {
+    const long lane = (row + leadRows_) % lanes_, laneRow = (row + leadRows_) / lanes_;
+    return ((laneRow * width_ + col) + lane * skew_) * lanes_ + lane;
+  }
+
   // The first slot after which every position of rows < `rows` has had its slot.
   long slotsToCover(int rows) const {
     long last = 0;
-    for (int row = rows - 1; row >= 0 && row >= rows - lanes_; --row) {
-      const long lane = (row + leadRows_) % lanes_, laneRow = (row + leadRows_) / lanes_;
-      const long index = laneRow * width_ + width_ - 1;
-      const long slot = (index + lane * skew_) * lanes_ + lane;
-      if (slot + 1 > last) last = slot + 1;
-    }
+    for (int row = rows - 1; row >= 0 && row >= rows - lanes_; --row)
+      if (slotOf(width_ - 1, row) + 1 > last) last = slotOf(width_ - 1, row) + 1;
     return last;
   }
 

@@ -109,6 +109,8 @@ void runFrames(Top& top, const std::vector<Frame>& frames, uint32_t seed, int la
         m.wta_col_i = junk() & ((1u << kCW) - 1);
         m.wta_row_i = junk() & ((1u << kRW) - 1);
         m.wta_valid_i = junk() & 1;
+        m.rd_col_i = junk() & ((1u << kCW) - 1);
+        m.rd_row_i = junk() & ((1u << kRW) - 1);
       },
       [](Vsgm_lr_check& m) { return sgm::tb::portWords(m.disp_o, m.valid_o, m.col_o, m.row_o, m.out_valid_o); });
   std::mt19937& junk = driver.junk();
@@ -144,6 +146,8 @@ void runFrames(Top& top, const std::vector<Frame>& frames, uint32_t seed, int la
             m.col_i = x;
             m.row_i = y;
             m.valid_i = real;
+            m.rd_col_i = x;  // one lane: the read side is the S side
+            m.rd_row_i = y;
             m.width_i = w;
             m.height_i = h;
             m.tol_i = f.tol < 0 ? junk() & 7 : f.tol;
