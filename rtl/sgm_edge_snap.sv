@@ -21,13 +21,14 @@
 //         |I(n) - I(n-1)| and its drop flag (a drop at n-1) are computed once,
 //         when it enters; an entry takes part only if it continues the row of
 //         x (frame pixels of the same row: positions arrive in raster order).
-//   out   the snapping decision, output registers.
+//   dec   the snapping decision (step comparisons), registered
+//   out   the selected disparity, output registers.
 // Parameters: DW disparity width (4 fractional bits), MAX_WIDTH, CW column /
 // width bits, RW row / height bits.
 // Positions: every slot carries (col_i, row_i) of a virtual raster. width_i
 // and height_i complete the interface the other row stages share; positions
 // and in_valid_i say everything this stage needs.
-// Latency: LATENCY = 7 slots, LATENCY_ROWS = 0. Throughput: one pixel per slot.
+// Latency: LATENCY = 8 slots, LATENCY_ROWS = 0. Throughput: one pixel per slot.
 // Reset: control only (frame-pixel flags).
 module sgm_edge_snap #(
   parameter int DW        /*verilator public*/ = 8,
@@ -60,7 +61,7 @@ module sgm_edge_snap #(
 );
 
   localparam int LATENCY_ROWS /*verilator public*/ = 0;
-  localparam int LATENCY      /*verilator public*/ = 7;
+  localparam int LATENCY      /*verilator public*/ = 8;
 
   localparam int AW = $clog2(MAX_WIDTH);
   localparam int NW = 4;                  // window entries with the full pixel
@@ -148,34 +149,57 @@ module sgm_edge_snap #(
   wire [8:0] right2 = max9(right1, st_p3);
   wire [2:0] hit = drop & {left2 > right2, left1 > right1, left0 > right0};
 
+  // dec: the decision registered (the step comparisons in one slot, the
+  // selection of the snapped disparity in the next).
+  logic [2:0]    hit_q;
+  logic [3*DW-1:0] cand_q;   // disp(x+1), disp(x+2), disp(x+3)
+  logic [DW-1:0] dx_q;
+  logic          vx_q, wen_x_q;
+  logic [CW-1:0] colx_q;
+  logic [RW-1:0] rowx_q;
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      hit_q   <= hit;
+      cand_q  <= {win_q[0*EW + CW + RW +: DW], win_q[1*EW + CW + RW +: DW], win_q[2*EW + CW + RW +: DW]};
+      dx_q    <= d_x;
+      vx_q    <= v_x;
+      wen_x_q <= wen_q[3];
+      colx_q  <= win_q[3*EW + RW +: CW];
+      rowx_q  <= win_q[3*EW +: RW];
+    end
+  end
+
   logic [DW-1:0] snapped;
   always_comb begin
-    if (hit[0])      snapped = win_q[2*EW + CW + RW +: DW];
-    else if (hit[1]) snapped = win_q[1*EW + CW + RW +: DW];
-    else             snapped = win_q[0*EW + CW + RW +: DW];
+    if (hit_q[0])      snapped = cand_q[0*DW +: DW];
+    else if (hit_q[1]) snapped = cand_q[1*DW +: DW];
+    else               snapped = cand_q[2*DW +: DW];
   end
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      col_o   <= win_q[3*EW + RW +: CW];
-      row_o   <= win_q[3*EW +: RW];
-      valid_o <= v_x;
-      disp_o  <= wen_q[3] && v_x && hit != '0 ? snapped : d_x;
+      col_o   <= colx_q;
+      row_o   <= rowx_q;
+      valid_o <= vx_q;
+      disp_o  <= wen_x_q && vx_q && hit_q != '0 ? snapped : dx_q;
     end
   end
 
   // ------------------------------------------------------------ control
+  logic dec_real_q;
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       p0_real_q   <= 1'b0;
       p1_real_q   <= 1'b0;
       wreal_q     <= '0;
+      dec_real_q  <= 1'b0;
       out_valid_o <= 1'b0;
     end else if (en_i) begin
       p0_real_q   <= in_valid_i;
       p1_real_q   <= p0_real_q;
       wreal_q     <= {wreal_q[NW-2:0], p1_real_q};
-      out_valid_o <= wreal_q[3];
+      dec_real_q  <= wreal_q[3];
+      out_valid_o <= dec_real_q;
     end
   end
 
