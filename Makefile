@@ -224,6 +224,11 @@ $(eval $(call rtl_test,census-unit,sgm_census_unit,-GMAX_WIDTH=128 -GCW=8 -GRW=8
 # tests/rtl/test_sgm_cost_volume.cpp drives the wrapper tb_cost_front (two census units + the volume): the later --top-module wins.
 $(eval $(call rtl_test,cost-volume-d16,sgm_cost_volume,--top-module tb_cost_front tb/tops/tb_cost_front.sv -GD=16 -GMAX_WIDTH=128 -GCW=8 -GRW=8))
 $(eval $(call rtl_test,cost-volume-d64,sgm_cost_volume,--top-module tb_cost_front tb/tops/tb_cost_front.sv -GD=64 -GMAX_WIDTH=512 -GCW=10 -GRW=9))
+# Rows dealt to lanes (docs/reschedule.md): LANE_LEAD = K + 1 (3 at K = 1) and ROWS >= 2K rows.
+$(eval $(call rtl_test,lane-deal-k1,sgm_lane_deal,-GLANES=1 -GLANE_LEAD=3 -GROWS=2))
+$(eval $(call rtl_test,lane-deal-k2,sgm_lane_deal,-GLANES=2 -GLANE_LEAD=3 -GROWS=4))
+$(eval $(call rtl_test,lane-deal-k3,sgm_lane_deal,-GLANES=3 -GLANE_LEAD=4 -GROWS=8))
+$(eval $(call rtl_test,lane-deal-k6,sgm_lane_deal,-GLANES=6 -GLANE_LEAD=7 -GROWS=16))
 # The volume in lane order (docs/reschedule.md): the right delay line's taps K slots apart.
 $(eval $(call rtl_test,cost-lanes-d16-k1,tb_cost_lanes,-GD=16 -GLANES=1))
 $(eval $(call rtl_test,cost-lanes-d16-k3,tb_cost_lanes,-GD=16 -GLANES=3))

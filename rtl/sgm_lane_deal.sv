@@ -1,0 +1,119 @@
+`default_nettype none
+// sgm_lane_deal: deals a raster slot stream to K row lanes (docs/reschedule.md).
+// Every slot writes its payload into a ring of ROWS rows (bank = row mod ROWS,
+// address = column) and reads one back for the lane of the slot: slot K n + k
+// belongs to lane k, lane k holds the rows y with (y + LANE_LEAD) mod K == k in
+// order, each a raster of its own, and lane k starts SKEW x K slots after lane
+// k - 1 (SKEW columns behind it). sof_i restarts the raster and the lanes: at
+// that slot lane 0 is at column 0 of row -LANE_LEAD, lane k at row k -
+// LANE_LEAD, each idle (valid_o = 0, column 0) until its start. LANE_LEAD must
+// be large enough that a position is read after the raster wrote it, and ROWS
+// that it is read before the raster overwrites it (tests/rtl/test_tb_lane_deal.cpp
+// checks both for its builds; docs/reschedule.md derives them).
+//
+// Inputs per slot (en_i): the raster position col_i / row_i (rows < 0 wrap in
+// YW bits, consecutive slots are consecutive positions within a frame) and its
+// payload. Outputs, one slot later: the lane slot's position, payload and
+// valid_o (0 <= row < height_i, the lane started).
+//
+// Parameters: WIDTH payload bits, LANES (K >= 1), SKEW columns, LANE_LEAD rows,
+// ROWS ring rows (a power of two), MAX_WIDTH, XW column bits, YW row bits.
+// Latency: 1 slot (the ring's registered read). Throughput: one slot per en_i.
+module sgm_lane_deal #(
+  parameter int WIDTH     = 16,
+  parameter int LANES     /*verilator public*/ = 2,
+  parameter int SKEW      /*verilator public*/ = 3,
+  parameter int LANE_LEAD /*verilator public*/ = 4,
+  parameter int ROWS      /*verilator public*/ = 8,
+  parameter int MAX_WIDTH = 128,
+  parameter int XW        = 8,
+  parameter int YW        = 8
+) (
+  input  wire              clk_i,
+  input  wire              rst_ni,
+  input  wire              en_i,
+  input  wire  [XW-1:0]    width_i,
+  input  wire  [YW-1:0]    height_i,
+  // Raster side.
+  input  wire              sof_i,
+  input  wire  [WIDTH-1:0] data_i,
+  input  wire  [XW-1:0]    col_i,
+  input  wire  [YW-1:0]    row_i,
+  // Lane side, one slot later.
+  output logic [WIDTH-1:0] data_o,
+  output logic [XW-1:0]    col_o,
+  output logic [YW-1:0]    row_o,
+  output logic             valid_o
+);
+
+  localparam int BW  = $clog2(ROWS);
+  localparam int AW  = $clog2(ROWS * MAX_WIDTH);
+  localparam int WW  = $clog2(LANES * SKEW + 1);  // start countdown (rounds)
+  localparam int LSW = 1 + WW + XW + YW;          // lane state {active, wait, col, row}
+
+  function automatic logic [AW-1:0] ring_addr(input logic [BW-1:0] bank, input logic [XW-1:0] col);
+    ring_addr = AW'(bank) * AW'(MAX_WIDTH) + AW'(col);
+  endfunction
+
+  // ------------------------------------------------------------ raster side
+  logic [WIDTH-1:0] ring [0:ROWS*MAX_WIDTH-1];
+  always_ff @(posedge clk_i) begin
+    if (en_i) ring[ring_addr(row_i[BW-1:0], col_i)] <= data_i;
+  end
+
+  // ------------------------------------------------------------ lane side
+  // The lane states rotate through K registers: st_q[0] is the state of the
+  // lane of this slot; after the slot it goes to the back, advanced.
+  logic [LANES*LSW-1:0] st_q;
+
+  // The state of lane k at the frame's first slot.
+  function automatic logic [LSW-1:0] lane_init(input integer k);
+    lane_init = {1'b0, WW'(k * SKEW), XW'(0), YW'(k - LANE_LEAD)};
+  endfunction
+
+  logic [LANES*LSW-1:0] st_init;
+  for (genvar k = 0; k < LANES; k++) begin : g_init
+    assign st_init[k*LSW +: LSW] = lane_init(k);
+  end
+  wire [LANES*LSW-1:0] st_now = sof_i ? st_init : st_q;
+  wire [LSW-1:0] cur = st_now[0 +: LSW];
+  wire           cur_active = cur[LSW-1] || cur[XW + YW +: WW] == '0;
+  wire [WW-1:0]  cur_wait   = cur[XW + YW +: WW];
+  wire [XW-1:0]  cur_col    = cur[YW +: XW];
+  wire [YW-1:0]  cur_row    = cur[0 +: YW];
+  wire           cur_last   = cur_col == width_i - 1'b1;
+
+  wire [LSW-1:0] advanced = !cur_active ? {1'b0, cur_wait - 1'b1, cur_col, cur_row} :
+                            cur_last    ? {1'b1, WW'(0), XW'(0), cur_row + YW'(LANES)} :
+                                          {1'b1, WW'(0), cur_col + 1'b1, cur_row};
+
+  logic [LANES*LSW-1:0] st_d;
+  if (LANES > 1) begin : g_rotate
+    assign st_d = {advanced, st_now[LANES*LSW-1:LSW]};
+  end else begin : g_single
+    assign st_d = advanced;
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      st_q <= st_init;
+    end else if (en_i) begin
+      st_q <= st_d;
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      data_o <= ring[ring_addr(cur_row[BW-1:0], cur_col)];
+      col_o  <= cur_col;
+      row_o  <= cur_row;
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) valid_o <= 1'b0;
+    else if (en_i) valid_o <= cur_active && cur_row < height_i;
+  end
+
+endmodule
+`default_nettype wire
