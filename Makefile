@@ -158,19 +158,20 @@ VL_LDFLAGS  = -lgtest -lgtest_main $(OPENCV_LIBS) -pthread
 # TRACE=1 builds the verilated models with FST tracing (then run with TRACE=1 to write build/trace/*.fst).
 VL_TRACE    = $(if $(filter 1,$(TRACE)),--trace-fst)
 
-# $(call rtl_test,NAME,TOP,VERILATOR-OPTIONS): build/bin/rtl-NAME runs tests/rtl/test_TOP.cpp
-# against the verilated TOP (an rtl/ module or a tb/tops/ wrapper) built with the options
-# (parameters as -GNAME=VALUE).
+# $(call rtl_test,NAME,TOP,VERILATOR-OPTIONS[,TEST]): build/bin/rtl-NAME runs TEST (default
+# tests/rtl/test_TOP.cpp) against the verilated TOP (an rtl/ module or a tb/tops/ wrapper)
+# built with the options (parameters as -GNAME=VALUE).
 define rtl_test
 RTL_TEST_BINS += $(BIN)/rtl-$(1)
 FIXTURE_TOP_$(1) := $(2)
 FIXTURE_FLAGS_$(1) := $(3)
-$(BIN)/rtl-$(1): tests/rtl/test_$(2).cpp $(RTL_SRC) $(RTL_TOPS) $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
+FIXTURE_TEST_$(1) := $(if $(4),$(4),tests/rtl/test_$(2).cpp)
+$(BIN)/rtl-$(1): $(if $(4),$(4),tests/rtl/test_$(2).cpp) $(RTL_SRC) $(RTL_TOPS) $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
 	@mkdir -p $(BIN) $(BUILD)/verilator
 	@echo "verilating $(2) for $$@ (log: $(BUILD)/verilator-$(1).log)"
 	@$(VERILATOR) --cc --exe --build -j $(JOBS) -Wall $(VLT) --x-assign unique --x-initial unique $(VL_TRACE) \
 	  -y rtl -y tb/tops --top-module $(2) $(3) -Mdir $(BUILD)/verilator/$(1) -o $(abspath $(BIN))/rtl-$(1) \
-	  $(wildcard rtl/$(2).sv tb/tops/$(2).sv) $(abspath tests/rtl/test_$(2).cpp) $(abspath $(EVAL_OBJ)) $(abspath $(GOLDEN_LIB)) \
+	  $(wildcard rtl/$(2).sv tb/tops/$(2).sv) $(abspath $(if $(4),$(4),tests/rtl/test_$(2).cpp)) $(abspath $(EVAL_OBJ)) $(abspath $(GOLDEN_LIB)) \
 	  -CFLAGS "$(VL_CFLAGS)" -LDFLAGS "$(VL_LDFLAGS)" > $(BUILD)/verilator-$(1).log || \
 	  { tail -30 $(BUILD)/verilator-$(1).log; exit 1; }
 endef
@@ -217,9 +218,9 @@ $(eval $(call rtl_test,wta-d64,sgm_wta,-GD=64))
 $(eval $(call rtl_test,lr-check-d16,sgm_lr_check,-GD=16 -GMAX_WIDTH=128))
 $(eval $(call rtl_test,lr-check-d64,sgm_lr_check,-GD=64 -GMAX_WIDTH=128))
 # The check with lanes (docs/reschedule.md): S and WTA sides in lane order, the read side in raster order.
-$(eval $(call rtl_test,lr-lanes-d16-k1,tb_lr_lanes,-GD=16 -GLANES=1 -GROW_BANKS=4))
-$(eval $(call rtl_test,lr-lanes-d16-k3,tb_lr_lanes,-GD=16 -GLANES=3 -GROW_BANKS=8))
-$(eval $(call rtl_test,lr-lanes-d64-k6,tb_lr_lanes,-GD=64 -GMAX_WIDTH=256 -GRW=9 -GLANES=6 -GROW_BANKS=16))
+$(eval $(call rtl_test,lr-lanes-d16-k1,sgm_lr_check,-GD=16 -GMAX_WIDTH=128 -GRW=8 -GLANES=1 -GROW_BANKS=4,tests/rtl/test_sgm_lr_check_lanes.cpp))
+$(eval $(call rtl_test,lr-lanes-d16-k3,sgm_lr_check,-GD=16 -GMAX_WIDTH=128 -GRW=8 -GLANES=3 -GROW_BANKS=8,tests/rtl/test_sgm_lr_check_lanes.cpp))
+$(eval $(call rtl_test,lr-lanes-d64-k6,sgm_lr_check,-GD=64 -GMAX_WIDTH=256 -GRW=9 -GLANES=6 -GROW_BANKS=16,tests/rtl/test_sgm_lr_check_lanes.cpp))
 $(eval $(call rtl_test,census-unit,sgm_census_unit,-GMAX_WIDTH=128 -GCW=8 -GRW=8))
 # tests/rtl/test_sgm_cost_volume.cpp drives the wrapper tb_cost_front (two census units + the volume): the later --top-module wins.
 $(eval $(call rtl_test,cost-volume-d16,sgm_cost_volume,--top-module tb_cost_front tb/tops/tb_cost_front.sv -GD=16 -GMAX_WIDTH=128 -GCW=8 -GRW=8))
@@ -230,9 +231,9 @@ $(eval $(call rtl_test,lane-deal-k2,sgm_lane_deal,-GLANES=2 -GLANE_LEAD=3 -GROWS
 $(eval $(call rtl_test,lane-deal-k3,sgm_lane_deal,-GLANES=3 -GLANE_LEAD=4 -GROWS=8))
 $(eval $(call rtl_test,lane-deal-k6,sgm_lane_deal,-GLANES=6 -GLANE_LEAD=7 -GROWS=16))
 # The volume in lane order (docs/reschedule.md): the right delay line's taps K slots apart.
-$(eval $(call rtl_test,cost-lanes-d16-k1,tb_cost_lanes,-GD=16 -GLANES=1))
-$(eval $(call rtl_test,cost-lanes-d16-k3,tb_cost_lanes,-GD=16 -GLANES=3))
-$(eval $(call rtl_test,cost-lanes-d64-k6,tb_cost_lanes,-GD=64 -GLANES=6))
+$(eval $(call rtl_test,cost-lanes-d16-k1,sgm_cost_volume,-GD=16 -GCW=8 -GLANES=1,tests/rtl/test_sgm_cost_volume_lanes.cpp))
+$(eval $(call rtl_test,cost-lanes-d16-k3,sgm_cost_volume,-GD=16 -GCW=8 -GLANES=3,tests/rtl/test_sgm_cost_volume_lanes.cpp))
+$(eval $(call rtl_test,cost-lanes-d64-k6,sgm_cost_volume,-GD=64 -GCW=8 -GLANES=6,tests/rtl/test_sgm_cost_volume_lanes.cpp))
 
 RESULTS := $(BUILD)/test-results
 

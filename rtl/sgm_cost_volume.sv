@@ -27,10 +27,10 @@
 // cost_o, col_o, valid_o during slot t belong to the input of slot t - 3.
 // cost_o[d*CBITS +: CBITS] = C(p, d) (0 .. 2 NB). Throughput: one slot per enabled cycle.
 module sgm_cost_volume #(
-  parameter int  D     = 64,
+  parameter int  D     /*verilator public*/ = 64,
   parameter int  CW    = 11,
   parameter int  NB    = 44,
-  parameter int  LANES = 1,
+  parameter int  LANES /*verilator public*/ = 1,
   localparam int RKW   = $clog2(NB + 1),
   localparam int CBITS = $clog2(2 * NB + 1)
 ) (

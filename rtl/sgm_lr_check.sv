@@ -30,7 +30,7 @@
 // must be written before the read of row y + 1 reaches it (the row tail is
 // written during the first D - 1 columns of the lane's next row, y + K), and
 // row y + ROW_BANKS may overwrite it only after that read
-// (tests/rtl/test_tb_lr_lanes.cpp computes both from the schedule).
+// (tests/rtl/test_sgm_lr_check_lanes.cpp computes both from the schedule).
 //
 // Right disparities: a systolic diagonal array of D slots. After the S of
 // pixel x, slot j holds (min S, argmin d) of right pixel x - j over d = 0 .. j:

@@ -29,7 +29,7 @@ COV_FIXTURES   := p2-lut stream-ctrl hole-fill median5x5 edge-snap census-unit c
                   path-engine-d16-k2 cost-lanes-d16-k3 lr-lanes-d16-k3 lane-deal-k3
 COV_SAVED_BINS := $(RTL_TEST_BINS)
 RTL_TEST_BINS  :=
-$(foreach f,$(COV_FIXTURES),$(eval $(call rtl_test,cov-$(f),$(FIXTURE_TOP_$(f)),$(FIXTURE_FLAGS_$(f)) $(COV_VFLAGS))))
+$(foreach f,$(COV_FIXTURES),$(eval $(call rtl_test,cov-$(f),$(FIXTURE_TOP_$(f)),$(FIXTURE_FLAGS_$(f)) $(COV_VFLAGS),$(FIXTURE_TEST_$(f)))))
 COV_TEST_BINS  := $(RTL_TEST_BINS)
 $(BIN)/rtl-cov-axi-d16: sw/sgm_driver.cpp $(wildcard sw/include/*.h*)
 RTL_TEST_BINS  := $(COV_SAVED_BINS)

@@ -8,6 +8,7 @@
 // widths back to back, random idle cycles, the build's parameters from the model.
 #include "Vsgm_lane_deal.h"
 #include "Vsgm_lane_deal_sgm_lane_deal.h"
+#include "idle_slot.hpp"
 #include "lane_schedule.hpp"
 #include "verilated_top.hpp"
 
@@ -47,12 +48,7 @@ std::string runFrame(Top& top, int frame, int w, int h, std::mt19937& rng, doubl
     top->data_i = tagOf(frame, rrow, rcol);
     top->width_i = w;
     top->height_i = h;
-    while (std::uniform_real_distribution<double>(0, 1)(rng) < idle) {
-      top->en_i = 0;
-      top.tick();
-    }
-    top->en_i = 1;
-    top.tick();
+    sgm::tb::slotAfterIdle(top, rng, idle);
     // The outputs now belong to lane slot m.
     const sgm::tb::SlotPosition want = lanes.at(m);
     const bool inside = want.row >= 0 && want.row < h;

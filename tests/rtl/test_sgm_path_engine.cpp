@@ -4,6 +4,7 @@
 // random idle cycles, several frames back to back without reset.
 #include "Vsgm_path_engine.h"
 #include "Vsgm_path_engine_sgm_path_engine.h"
+#include "idle_slot.hpp"
 #include "lane_schedule.hpp"
 #include "port_bits.hpp"
 #include "verilated_top.hpp"
@@ -129,12 +130,7 @@ class PathEngine {
         nbr = uint32_t(rng_());
       }
       top_->nbr_i = nbr;
-      while (std::uniform_real_distribution<double>(0, 1)(rng_) < idle_) {  // idle cycles
-        top_->en_i = 0;
-        top_.tick();
-      }
-      top_->en_i = 1;
-      top_.tick();
+      sgm::tb::slotAfterIdle(top_, rng_, idle_);
       if (top_->valid_o && failure.empty()) {
         const int x = top_->col_o, y = int(top_->row_o);
         const uint16_t* s = expected.at(x, y);

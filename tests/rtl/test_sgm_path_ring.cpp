@@ -6,6 +6,7 @@
 // of rows (they must not reach any other lane).
 #include "Vsgm_path_ring.h"
 #include "Vsgm_path_ring_sgm_path_ring.h"
+#include "idle_slot.hpp"
 #include "port_bits.hpp"
 #include "verilated_top.hpp"
 
@@ -80,12 +81,7 @@ std::string runFrame(Top& top, const Frame& f, std::mt19937& rng, double idle) {
       top->p2r_i = rng() % 256;
       top->start_i = rng() % 2;
     }
-    while (std::uniform_real_distribution<double>(0, 1)(rng) < idle) {
-      top->en_i = 0;
-      top.tick();
-    }
-    top->en_i = 1;
-    top.tick();
+    sgm::tb::slotAfterIdle(top, rng, idle);
     entered.push_back(pixel ? Slot{x, y} : Slot{0, -1});
     if (entered.size() < size_t(kLanes)) continue;
     const Slot out = entered[entered.size() - kLanes];

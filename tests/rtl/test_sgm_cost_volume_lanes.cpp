@@ -1,12 +1,13 @@
 // sgm_cost_volume in lane order (docs/reschedule.md) against the golden
-// sgm::computeCost (docs/algorithm.md section 3), through tb/tops/tb_cost_lanes.sv:
+// sgm::computeCost (docs/algorithm.md section 3), the module itself (9x5 census):
 // the left and right census of the golden model are streamed in the slot order
 // of K row lanes (tb/lane_schedule.hpp), with random idle cycles and frames of
 // different sizes and modes back to back; every output slot (valid, column and
 // C(p, d) for every d) is checked LATENCY slots after its input. Rows outside
 // the frame carry random census words, which must not reach a frame pixel's cost.
-#include "Vtb_cost_lanes.h"
-#include "Vtb_cost_lanes_tb_cost_lanes.h"
+#include "Vsgm_cost_volume.h"
+#include "Vsgm_cost_volume_sgm_cost_volume.h"
+#include "idle_slot.hpp"
 #include "lane_schedule.hpp"
 #include "port_bits.hpp"
 #include "verilated_top.hpp"
@@ -23,12 +24,12 @@
 
 namespace {
 
-using Top = sgm::tb::VerilatedTop<Vtb_cost_lanes>;
-using Rtl = Vtb_cost_lanes_tb_cost_lanes;
+using Top = sgm::tb::VerilatedTop<Vsgm_cost_volume>;
+using Rtl = Vsgm_cost_volume_sgm_cost_volume;  // public parameters of the build
 
 constexpr int kD = int(Rtl::D);
 constexpr int kLanes = int(Rtl::LANES);
-constexpr int kLatency = int(Rtl::COST_LATENCY);
+constexpr int kLatency = int(Rtl::LATENCY);
 constexpr int kSkew = 3;  // any skew: the volume keeps no state across rows
 
 cv::Mat randomImage(int w, int h, std::mt19937& rng) {
@@ -68,12 +69,7 @@ std::string runFrame(Top& top, const cv::Mat& left, const cv::Mat& right, sgm::C
     top->col_i = pos.col;
     top->valid_i = inside;
     top->mode_i = int(mode);
-    while (std::uniform_real_distribution<double>(0, 1)(rng) < idle) {
-      top->en_i = 0;
-      top.tick();
-    }
-    top->en_i = 1;
-    top.tick();
+    sgm::tb::slotAfterIdle(top, rng, idle);
     inFlight.push_back(pos);
     if (int(inFlight.size()) < kLatency) continue;
     const sgm::tb::SlotPosition src = inFlight.front();
@@ -100,7 +96,7 @@ std::string runFrame(Top& top, const cv::Mat& left, const cv::Mat& right, sgm::C
 }
 
 TEST(SgmCostVolumeLanes, RandomFramesAllModesBackToBack) {
-  Top top("tb_cost_lanes");
+  Top top("sgm_cost_volume_lanes");
   top->en_i = 0;
   top.reset();
   std::mt19937 rng(2026);

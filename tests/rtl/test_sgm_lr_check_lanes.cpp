@@ -1,6 +1,5 @@
 // sgm_lr_check with K lanes (docs/reschedule.md) against the golden
-// sgm::selectDisparity (docs/algorithm.md section 7), through
-// tb/tops/tb_lr_lanes.sv: the S side and the WTA side (its golden result,
+// sgm::selectDisparity (docs/algorithm.md section 7): the S side and the WTA side (its golden result,
 // `lag` slots later) in the slot order of K row lanes (tb/lane_schedule.hpp),
 // the read side in raster order far enough behind that every word of a row is
 // written before the row is read (computed here from the schedule: the left
@@ -8,8 +7,9 @@
 // Every output slot is checked: position, out_valid_o, disp and the check's
 // valid of every pixel; frames of different sizes and settings back to back
 // without reset, random idle cycles. Rows outside the frame carry junk S.
-#include "Vtb_lr_lanes.h"
-#include "Vtb_lr_lanes_tb_lr_lanes.h"
+#include "Vsgm_lr_check.h"
+#include "Vsgm_lr_check_sgm_lr_check.h"
+#include "idle_slot.hpp"
 #include "lane_schedule.hpp"
 #include "port_bits.hpp"
 #include "slot_driver.hpp"
@@ -29,8 +29,8 @@
 
 namespace {
 
-using Top = sgm::tb::VerilatedTop<Vtb_lr_lanes>;
-using Rtl = Vtb_lr_lanes_tb_lr_lanes;
+using Top = sgm::tb::VerilatedTop<Vsgm_lr_check>;
+using Rtl = Vsgm_lr_check_sgm_lr_check;  // public parameters of the build
 
 constexpr int kD = int(Rtl::D);
 constexpr int kSW = int(Rtl::SW);
@@ -133,12 +133,7 @@ class LrLanes {
       top_->height_i = h;
       top_->tol_i = f.tol < 0 ? rng_() & 7 : f.tol;
       top_->check_en_i = f.tol >= 0;
-      while (std::uniform_real_distribution<double>(0, 1)(rng_) < idle_) {
-        top_->en_i = 0;
-        top_.tick();
-      }
-      top_->en_i = 1;
-      top_.tick();
+      sgm::tb::slotAfterIdle(top_, rng_, idle_);
       reads.emplace_back(rcol, rrow);
       if (int(reads.size()) < kLatency) continue;
       const auto [ox, orow] = reads.front();
@@ -170,7 +165,7 @@ class LrLanes {
 };
 
 TEST(SgmLrCheckLanes, RandomVolumesBackToBack) {
-  LrLanes lr("tb_lr_lanes", 5, 0.25);
+  LrLanes lr("sgm_lr_check_lanes", 5, 0.25);
   std::mt19937 rng(41);
   const int widths[] = {kMinWidth, kMinWidth + 7, kMaxWidth, kMinWidth + 30};
   int k = 0;
