@@ -9,8 +9,9 @@
 //
 // Left gray: written through its own port (gray_we_i at gray_col_i /
 // gray_row_i, any time before the disparity of that pixel arrives, at most
-// three rows earlier) into a memory of 4 row banks x 2^ceil(log2 MAX_WIDTH)
-// x 8 bit, and read back for each disparity slot one slot after it entered.
+// GRAY_ROWS - 1 rows earlier) into a memory of GRAY_ROWS row banks x
+// 2^ceil(log2 MAX_WIDTH) x 8 bit, and read back for each disparity slot one
+// slot after it entered.
 //
 // Pipeline (all stages advance only when en_i):
 //   P0    input registers (pixel, position, frame-pixel flag)
@@ -24,7 +25,9 @@
 //   dec   the snapping decision (step comparisons), registered
 //   out   the selected disparity, output registers.
 // Parameters: DW disparity width (4 fractional bits), MAX_WIDTH, CW column /
-// width bits, RW row / height bits.
+// width bits, RW row / height bits, GRAY_ROWS rows of the gray memory (a power
+// of two: 4 when the disparities arrive at most three rows after the grays, the
+// core with one lane; more with K lanes, whose LR check reads behind the census).
 // Positions: every slot carries (col_i, row_i) of a virtual raster. width_i
 // and height_i complete the interface the other row stages share; positions
 // and in_valid_i say everything this stage needs.
@@ -34,7 +37,8 @@ module sgm_edge_snap #(
   parameter int DW        /*verilator public*/ = 8,
   parameter int MAX_WIDTH /*verilator public*/ = 128,
   parameter int CW                             = $clog2(MAX_WIDTH + 1),
-  parameter int RW        /*verilator public*/ = 11
+  parameter int RW        /*verilator public*/ = 11,
+  parameter int GRAY_ROWS /*verilator public*/ = 4
 ) (
   input  wire           clk_i,
   input  wire           rst_ni,
@@ -64,13 +68,14 @@ module sgm_edge_snap #(
   localparam int LATENCY      /*verilator public*/ = 8;
 
   localparam int AW = $clog2(MAX_WIDTH);
+  localparam int GB = $clog2(GRAY_ROWS);  // bank bits (row mod GRAY_ROWS)
   localparam int NW = 4;                  // window entries with the full pixel
   localparam int EW = DW + 1 + CW + RW;   // entry data {valid, disp, col, row}
 
   // ------------------------------------------------------------ gray memory
-  logic [7:0] gray_mem [0:(4 << AW)-1];
+  logic [7:0] gray_mem [0:(GRAY_ROWS << AW)-1];
   always_ff @(posedge clk_i) begin
-    if (en_i && gray_we_i) gray_mem[{gray_row_i[1:0], gray_col_i[AW-1:0]}] <= gray_i;
+    if (en_i && gray_we_i) gray_mem[{gray_row_i[GB-1:0], gray_col_i[AW-1:0]}] <= gray_i;
   end
 
   // ------------------------------------------------------------ P0, P1
@@ -85,7 +90,7 @@ module sgm_edge_snap #(
       p0_en_q   <= snap_en_i;
       p1_q      <= p0_q;
       p1_en_q   <= p0_en_q;
-      p1_gray_q <= gray_mem[{p0_q[1:0], p0_q[RW +: AW]}];
+      p1_gray_q <= gray_mem[{p0_q[GB-1:0], p0_q[RW +: AW]}];
     end
   end
 

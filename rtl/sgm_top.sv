@@ -4,7 +4,7 @@
 // docs/rtl.md the architecture).
 //
 //   s_axis (left + right gray) -> sgm_stream_ctrl -> 2 x sgm_census_unit
-//   -> sgm_cost_volume (D PEs) -> sgm_path_engine (4 paths, S) -> sgm_wta
+//   [-> sgm_lane_deal, LANES > 1] -> sgm_cost_volume (D PEs) -> sgm_path_engine (4 paths, S) -> sgm_wta
 //   -> sgm_lr_check -> sgm_hole_fill -> sgm_edge_snap -> sgm_median5x5 -> sgm_stream_ctrl -> m_axis
 //
 // Parameters: D disparities (16, 32, 64, 128), MAX_WIDTH, MAX_HEIGHT (public to
@@ -12,7 +12,12 @@
 // CENSUS_H census window height: 5 (9x5, ours, the default) or 9 (9x9, the
 // paper's); every dependent width follows from it (census bits NB 44 / 80,
 // line buffers 4 / 8 lines per image, rank, popcounts, Cmax 88 / 160, costs
-// CBITS 7 / 8 bits, LW, SW, the path-buffer word).
+// CBITS 7 / 8 bits, LW, SW, the path-buffer word). LANES = K row lanes
+// (docs/reschedule.md, docs/rtl.md "Lanes"): 1 is the raster schedule; K > 1
+// deals the census output to K row lanes that share the cost volume, the path
+// engine (K cycles for the 0 degree loop), the WTA and the LR check's S side,
+// and the LR check's memories restore raster order for the stages behind it
+// (fill, snap, median, output), LR_LAG rows behind the census.
 // Frame constraints: max(D, 16) <= width <= MAX_WIDTH, 9 <= height <= MAX_HEIGHT
 // (frames outside are dropped and flagged in error_o[3], as are P2' < P1 and cfg_mode_i = 3).
 // Throughput: one pixel per clock while a frame streams; after its last input
@@ -25,8 +30,25 @@ module sgm_top #(
   parameter int MAX_WIDTH  /*verilator public*/ = 1280,
   parameter int MAX_HEIGHT /*verilator public*/ = 1024,
   parameter int CENSUS_H   /*verilator public*/ = 5,
+  parameter int LANES      /*verilator public*/ = 1,
   localparam int XW        = $clog2(MAX_WIDTH + 1),
-  localparam int YW        = $clog2(MAX_HEIGHT + 16),
+  // Lanes (docs/reschedule.md "The top's wiring at K lanes"). The engine's
+  // SKEW (sgm_path_engine owns the formula; mirrored here for the deal, checked
+  // by every lane build's whole-core test) and the narrowest frame it allows.
+  localparam int SKEW       = 1 + (5 + ($clog2(D) + 1) / 2 + LANES - 1) / LANES,
+  localparam int MIN_FRAME_WIDTH /*verilator public*/ =
+      (LANES * SKEW + 1 > D && LANES * SKEW + 1 > 16) ? LANES * SKEW + 1 : (D > 16 ? D : 16),
+  // The LR check's read side runs LR_LAG whole rows behind the census output:
+  // its S side finishes row y (the row tail) during the first D columns of the
+  // lane's next row, 2 (K - 1) W + LR_WAIT slots behind the census position of
+  // (0, y + 1) (derivation in docs/reschedule.md); LR_LAG = 2 (K - 1) +
+  // ceil(LR_WAIT / W) per frame, at most LR_LAG_MAX.
+  localparam int LR_WAIT    = (D + 1) * LANES + 4,
+  localparam int LR_LAG_MAX = LANES == 1 ? 0 :
+                              2 * (LANES - 1) + (LR_WAIT + MIN_FRAME_WIDTH - 1) / MIN_FRAME_WIDTH,
+  // Rows before a frame's row 0 (negative, YW-bit wrap) and after its last
+  // (flush) must not alias: 16 with one lane, LR_LAG_MAX and the lanes' lead more.
+  localparam int YW        = $clog2(MAX_HEIGHT + 16 + (LANES == 1 ? 0 : 2 * LR_LAG_MAX + 2 * LANES + 4)),
   localparam int LD        = $clog2(D),
   localparam int DW        = LD + 4,
   localparam int NB        = 9 * CENSUS_H - 1,            // census bits: 44 (9x5), 80 (9x9)
@@ -89,7 +111,7 @@ module sgm_top #(
 
   sgm_stream_ctrl #(
     .MAX_WIDTH (MAX_WIDTH),
-    .MIN_WIDTH (D > 16 ? D : 16),
+    .MIN_WIDTH (MIN_FRAME_WIDTH),
     .MAX_HEIGHT(MAX_HEIGHT),
     .XW        (XW),
     .YW        (YW),
@@ -203,23 +225,111 @@ module sgm_top #(
     .valid_o  (unused_valid_r)
   );
 
+  // ------------------------------------------------------------ lanes
+  // The census output (raster order) as the slot stream of the lanes: with one
+  // lane the census output itself; with K lanes through sgm_lane_deal, whose
+  // frame starts at the census unit's first centre of a frame, (W - 4, -(RY + 1)),
+  // CENSUS_LATENCY slots after the frame's first slot (0, 0).
+  localparam int CENSUS_LATENCY = 4;                  // sgm_census_unit LATENCY
+  localparam int CENSUS_LEAD    = (CENSUS_H - 1) / 2 + 1;  // rows of the census raster before row 0
+  localparam int DEAL_W         = 2 * (NB + RKW) + 40;
+  logic [NB-1:0]  lane_census_l, lane_census_r;
+  logic [RKW-1:0] lane_rank_l, lane_rank_r;
+  logic [7:0]     lane_centre;
+  logic [31:0]    lane_nbr;
+  logic [XW-1:0]  lane_col;
+  logic [YW-1:0]  lane_row;
+  logic           lane_valid;
+  // The LR check's read position: the path engine's output position (col3,
+  // row3) with one lane, the census output LR_LAG rows back with K lanes.
+  logic [XW-1:0]  col3, rd_col;
+  logic [YW-1:0]  row3, rd_row;
+
+  if (LANES == 1) begin : g_raster
+    assign {lane_census_l, lane_rank_l, lane_census_r, lane_rank_r, lane_centre, lane_nbr} =
+           {census_l, rank_l, census_r, rank_r, centre, nbr};
+    assign lane_col   = col1;
+    assign lane_row   = row1;
+    assign lane_valid = valid1;
+    assign rd_col     = col3;
+    assign rd_row     = row3;
+  end else begin : g_lanes
+    // Lead rows so that every position is read after the census wrote it, and
+    // a ring of at least 2K rows (sgm_lane_deal, docs/reschedule.md).
+    localparam int LANE_LEAD = LANES + CENSUS_LEAD - 2 > CENSUS_LEAD ? LANES + CENSUS_LEAD - 2 : CENSUS_LEAD;
+    localparam int DEAL_ROWS = 1 << $clog2(2 * LANES);
+    logic sof1;  // the census output is the frame's first centre
+    sgm_delay #(.WIDTH(1), .DEPTH(CENSUS_LATENCY)) u_sof_delay (
+      .clk_i (clk_i),
+      .en_i  (en),
+      .d_i   (col0 == '0 && row0 == '0),
+      .q_o   (sof1)
+    );
+    sgm_lane_deal #(
+      .WIDTH(DEAL_W), .LANES(LANES), .SKEW(SKEW), .LANE_LEAD(LANE_LEAD), .ROWS(DEAL_ROWS),
+      .MAX_WIDTH(MAX_WIDTH), .XW(XW), .YW(YW)
+    ) u_deal (
+      .clk_i    (clk_i),
+      .rst_ni   (rst_ni),
+      .en_i     (en),
+      .width_i  (width),
+      .height_i (height),
+      .sof_i    (sof1),
+      .data_i   ({census_l, rank_l, census_r, rank_r, centre, nbr}),
+      .col_i    (col1),
+      .row_i    (row1),
+      .data_o   ({lane_census_l, lane_rank_l, lane_census_r, lane_rank_r, lane_centre, lane_nbr}),
+      .col_o    (lane_col),
+      .row_o    (lane_row),
+      .valid_o  (lane_valid)
+    );
+
+    // The LR check's read position (see LR check below).
+    localparam int LAGW = $clog2(LR_LAG_MAX + 1);
+    // LR_LAG for the frame's width: 2 (K - 1) + ceil(LR_WAIT / W), where
+    // ceil(LR_WAIT / W) = 1 + #{m >= 1 : m W < LR_WAIT}.
+    logic [LAGW-1:0] lag_d, lag_q;
+    always_comb begin
+      lag_d = LAGW'(2 * LANES - 1);
+      for (int m = 1; m * MIN_FRAME_WIDTH < LR_WAIT; m++)
+        if (int'(width) * m < LR_WAIT) lag_d = lag_d + 1'b1;
+    end
+    logic [XW-1:0] rd_col_q;
+    logic [YW-1:0] rd_row_q;
+    always_ff @(posedge clk_i) begin
+      if (!rst_ni) begin
+        lag_q <= LAGW'(LR_LAG_MAX);
+      end else if (en && sof1) begin
+        lag_q <= lag_d;
+      end
+    end
+    always_ff @(posedge clk_i) begin
+      if (en) begin
+        rd_col_q <= col1;
+        rd_row_q <= row1 - YW'(lag_q);
+      end
+    end
+    assign rd_col = rd_col_q;
+    assign rd_row = rd_row_q;
+  end
+
   // ------------------------------------------------------------ costs
   localparam int COST_LATENCY = 3;  // sgm_cost_volume
   logic [D*CBITS-1:0] cost;
   logic [XW-1:0]      unused_col2;  // the engine takes the column COST_LATENCY slots earlier
   logic               valid2;
 
-  sgm_cost_volume #(.D(D), .CW(XW), .NB(NB)) u_cost (
+  sgm_cost_volume #(.D(D), .CW(XW), .NB(NB), .LANES(LANES)) u_cost (
     .clk_i     (clk_i),
     .rst_ni    (rst_ni),
     .en_i      (en),
     .mode_i    (mode),
-    .lcensus_i (census_l),
-    .lrank_i   (rank_l),
-    .col_i     (col1),
-    .rcensus_i (census_r),
-    .rrank_i   (rank_r),
-    .valid_i   (valid1),
+    .lcensus_i (lane_census_l),
+    .lrank_i   (lane_rank_l),
+    .col_i     (lane_col),
+    .rcensus_i (lane_census_r),
+    .rrank_i   (lane_rank_r),
+    .valid_i   (lane_valid),
     .cost_o    (cost),
     .col_o     (unused_col2),
     .valid_o   (valid2)
@@ -235,21 +345,19 @@ module sgm_top #(
   sgm_delay #(.WIDTH(YW + 8 + 32), .DEPTH(COST_LATENCY - GRAY_LEAD)) u_align_cost (
     .clk_i (clk_i),
     .en_i  (en),
-    .d_i   ({row1, centre, nbr}),
+    .d_i   ({lane_row, lane_centre, lane_nbr}),
     .q_o   ({row2, centre2, nbr2})
   );
 
   // ------------------------------------------------------------ paths
   logic [D*SW-1:0] sum;
-  logic [XW-1:0]   col3;
-  logic [YW-1:0]   row3;
   logic            valid3;
 
   // Its previous-row reads run three slots or more ahead of the costs: the
   // census unit's column (COST_LATENCY slots ahead) goes straight in.
   sgm_path_engine #(
     .D(D), .CW(CBITS), .LW(LW), .PW(8), .MAX_WIDTH(MAX_WIDTH), .XW(XW), .YW(YW), .GRAY_LEAD(GRAY_LEAD),
-    .COL_LEAD(COST_LATENCY)
+    .COL_LEAD(COST_LATENCY), .LANES(LANES)
   ) u_paths (
     .clk_i       (clk_i),
     .rst_ni      (rst_ni),
@@ -262,7 +370,7 @@ module sgm_top #(
     .p2_mode_i   (p2_mode),
     .lut_ready_o (lut_ready),
     .cost_i      (cost),
-    .col_i       (col1),
+    .col_i       (lane_col),
     .row_i       (row2),
     .valid_i     (valid2),
     .centre_i    (centre2),
@@ -299,13 +407,17 @@ module sgm_top #(
   // ------------------------------------------------------------ LR check
   // S side: the path engine's slot stream; WTA side: the winner of the same S,
   // sgm_wta's LATENCY slots later (sgm_lr_check accepts any lag below a row).
+  // Read side: with one lane the S side's position; with K lanes the census
+  // output's raster position LR_LAG rows back (the frame's LR_LAG taken at its
+  // first centre, so that slots of the frame before still in flight keep theirs),
+  // registered; the memories then hold LR_BANKS rows.
+  localparam int LR_BANKS = LANES == 1 ? 2 : 1 << $clog2(LR_LAG_MAX + LANES + 2);
   logic [DW-1:0] lr_disp;
   logic          lr_ok, lr_valid;
   logic [XW-1:0] col5;
   logic [YW-1:0] row5;
-
   sgm_lr_check #(
-    .D(D), .SW(SW), .DW(DW), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(YW)
+    .D(D), .SW(SW), .DW(DW), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(YW), .LANES(LANES), .ROW_BANKS(LR_BANKS)
   ) u_lr (
     .clk_i       (clk_i),
     .rst_ni      (rst_ni),
@@ -323,8 +435,8 @@ module sgm_top #(
     .wta_col_i   (col4),
     .wta_row_i   (row4),
     .wta_valid_i (valid4),
-    .rd_col_i    (col3),
-    .rd_row_i    (row3),
+    .rd_col_i    (rd_col),
+    .rd_row_i    (rd_row),
     .disp_o      (lr_disp),
     .valid_o     (lr_ok),
     .col_o       (col5),
@@ -359,13 +471,15 @@ module sgm_top #(
 
   // ------------------------------------------------------------ edge snapping
   // The left gray of each pixel goes into the stage's row memory as it leaves
-  // the census unit, about two rows before the pixel's disparity arrives.
+  // the census unit, about two rows before the pixel's disparity arrives (with
+  // K lanes LR_LAG rows more: GRAY_ROWS covers LR_LAG_MAX + 3 rows).
+  localparam int GRAY_ROWS = LANES == 1 ? 4 : 1 << $clog2(LR_LAG_MAX + 4);
   logic [DW-1:0] snap_disp;
   logic          snap_ok, snap_valid;
   logic [XW-1:0] col7;
   logic [YW-1:0] row7;
 
-  sgm_edge_snap #(.DW(DW), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(YW)) u_snap (
+  sgm_edge_snap #(.DW(DW), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(YW), .GRAY_ROWS(GRAY_ROWS)) u_snap (
     .clk_i       (clk_i),
     .rst_ni      (rst_ni),
     .en_i        (en),
