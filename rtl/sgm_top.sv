@@ -410,8 +410,10 @@ module sgm_top #(
   // Read side: with one lane the S side's position; with K lanes the census
   // output's raster position LR_LAG rows back (the frame's LR_LAG taken at its
   // first centre, so that slots of the frame before still in flight keep theirs),
-  // registered; the memories then hold LR_BANKS rows.
-  localparam int LR_BANKS = LANES == 1 ? 2 : 1 << $clog2(LR_LAG_MAX + LANES + 2);
+  // registered; the memories then hold LR_BANKS rows: the lanes write row y + B
+  // after the read side has read row y when B >= LR_LAG + 1 (docs/reschedule.md),
+  // one row spare.
+  localparam int LR_BANKS = LANES == 1 ? 2 : 1 << $clog2(LR_LAG_MAX + 2);
   logic [DW-1:0] lr_disp;
   logic          lr_ok, lr_valid;
   logic [XW-1:0] col5;
@@ -472,8 +474,9 @@ module sgm_top #(
   // ------------------------------------------------------------ edge snapping
   // The left gray of each pixel goes into the stage's row memory as it leaves
   // the census unit, about two rows before the pixel's disparity arrives (with
-  // K lanes LR_LAG rows more: GRAY_ROWS covers LR_LAG_MAX + 3 rows).
-  localparam int GRAY_ROWS = LANES == 1 ? 4 : 1 << $clog2(LR_LAG_MAX + 4);
+  // K lanes LR_LAG rows more: read about LR_LAG + 2 rows after the write, so
+  // GRAY_ROWS >= LR_LAG_MAX + 3).
+  localparam int GRAY_ROWS = LANES == 1 ? 4 : 1 << $clog2(LR_LAG_MAX + 3);
   logic [DW-1:0] snap_disp;
   logic          snap_ok, snap_valid;
   logic [XW-1:0] col7;
