@@ -23,7 +23,7 @@
 // Undefined addresses answer SLVERR (reads return 0, writes are ignored);
 // writes to read-only registers are ignored with OKAY.
 //
-// Parameters: D, MAX_WIDTH, MAX_HEIGHT, CENSUS_H as sgm_top; ADDR_W AXI address bits.
+// Parameters: D, MAX_WIDTH, MAX_HEIGHT, CENSUS_H, LANES as sgm_top; ADDR_W AXI address bits.
 // Latency and throughput: those of sgm_top; register responses one cycle
 // after the request.
 module sgm_axi #(
@@ -31,6 +31,7 @@ module sgm_axi #(
   parameter int MAX_WIDTH  /*verilator public*/ = 1280,
   parameter int MAX_HEIGHT /*verilator public*/ = 1024,
   parameter int CENSUS_H   /*verilator public*/ = 5,
+  parameter int LANES      /*verilator public*/ = 1,
   parameter int ADDR_W     = 8,
   localparam int XW        = $clog2(MAX_WIDTH + 1),
   localparam int YW        = $clog2(MAX_HEIGHT + 16)
@@ -238,7 +239,7 @@ module sgm_axi #(
 
   assign s_tready_o = core_tready && !hold_input;
 
-  sgm_top #(.D(D), .MAX_WIDTH(MAX_WIDTH), .MAX_HEIGHT(MAX_HEIGHT), .CENSUS_H(CENSUS_H)) u_core (
+  sgm_top #(.D(D), .MAX_WIDTH(MAX_WIDTH), .MAX_HEIGHT(MAX_HEIGHT), .CENSUS_H(CENSUS_H), .LANES(LANES)) u_core (
     .clk_i         (clk_i),
     .rst_ni        (rst_ni && !core_reset),
     .s_tdata_i     (s_tdata_i),

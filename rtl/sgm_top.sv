@@ -18,7 +18,8 @@
 // engine (K cycles for the 0 degree loop), the WTA and the LR check's S side,
 // and the LR check's memories restore raster order for the stages behind it
 // (fill, snap, median, output), LR_LAG rows behind the census.
-// Frame constraints: max(D, 16) <= width <= MAX_WIDTH, 9 <= height <= MAX_HEIGHT
+// Frame constraints: MIN_FRAME_WIDTH (max(D, 16); with many lanes at least the
+// engine's K SKEW + 1) <= width <= MAX_WIDTH, 9 <= height <= MAX_HEIGHT
 // (frames outside are dropped and flagged in error_o[3], as are P2' < P1 and cfg_mode_i = 3).
 // Throughput: one pixel per clock while a frame streams; after its last input
 // pixel a frame needs about 6 more lines of flush (8 with the 9x9 census; input stalled) and, at its
@@ -46,9 +47,11 @@ module sgm_top #(
   localparam int LR_WAIT    = (D + 1) * LANES + 4,
   localparam int LR_LAG_MAX = LANES == 1 ? 0 :
                               2 * (LANES - 1) + (LR_WAIT + MIN_FRAME_WIDTH - 1) / MIN_FRAME_WIDTH,
-  // Rows before a frame's row 0 (negative, YW-bit wrap) and after its last
-  // (flush) must not alias: 16 with one lane, LR_LAG_MAX and the lanes' lead more.
-  localparam int YW        = $clog2(MAX_HEIGHT + 16 + (LANES == 1 ? 0 : 2 * LR_LAG_MAX + 2 * LANES + 4)),
+  localparam int YW        = $clog2(MAX_HEIGHT + 16),  // height ports
+  // Row positions inside the core: rows before a frame's row 0 (negative,
+  // RW-bit wrap) and after its last (flush) must not alias: 16 with one lane,
+  // LR_LAG_MAX and the lanes' lead more.
+  localparam int RW        = $clog2(MAX_HEIGHT + 16 + (LANES == 1 ? 0 : 2 * LR_LAG_MAX + 2 * LANES + 4)),
   localparam int LD        = $clog2(D),
   localparam int DW        = LD + 4,
   localparam int NB        = 9 * CENSUS_H - 1,            // census bits: 44 (9x5), 80 (9x9)
@@ -100,7 +103,7 @@ module sgm_top #(
   logic          en;
   logic [7:0]    pix_l, pix_r;
   logic [XW-1:0] col0, width;
-  logic [YW-1:0] row0, height;
+  logic [RW-1:0] row0, height;
   logic [7:0]    p1, p2;
   logic [1:0]    mode;
   logic          subpixel, lr_en, fill_en, snap_en, median_en, p2_mode, weights_eq;
@@ -114,7 +117,7 @@ module sgm_top #(
     .MIN_WIDTH (MIN_FRAME_WIDTH),
     .MAX_HEIGHT(MAX_HEIGHT),
     .XW        (XW),
-    .YW        (YW),
+    .YW        (RW),
     .PW        (8),
     .DW        (DW),
     .FIFO_DEPTH(4)
@@ -132,7 +135,7 @@ module sgm_top #(
     .m_tvalid_o    (m_tvalid_o),
     .m_tready_i    (m_tready_i),
     .cfg_width_i   (cfg_width_i),
-    .cfg_height_i  (cfg_height_i),
+    .cfg_height_i  (RW'(cfg_height_i)),
     .cfg_p1_i      (cfg_p1_i),
     .cfg_p2_i      (cfg_p2_i),
     .cfg_mode_i    (cfg_mode_i),
@@ -173,7 +176,7 @@ module sgm_top #(
     .error_set_o   (error_event_o)
   );
   assign frame_width_o  = width;
-  assign frame_height_o = height;
+  assign frame_height_o = height[YW-1:0];
 
   // ------------------------------------------------------------ census
   logic [NB-1:0]  census_l, census_r;
@@ -181,15 +184,15 @@ module sgm_top #(
   logic [7:0]    centre;
   logic [31:0]   nbr;
   logic [XW-1:0] col1;
-  logic [YW-1:0] row1;
+  logic [RW-1:0] row1;
   logic          valid1;
   logic [7:0]    unused_centre_r;
   logic [31:0]   unused_nbr_r;
   logic [XW-1:0] unused_col_r;
-  logic [YW-1:0] unused_row_r;
+  logic [RW-1:0] unused_row_r;
   logic          unused_valid_r;
 
-  sgm_census_unit #(.CENSUS_H(CENSUS_H), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(YW)) u_census_l (
+  sgm_census_unit #(.CENSUS_H(CENSUS_H), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(RW)) u_census_l (
     .clk_i    (clk_i),
     .rst_ni   (rst_ni),
     .en_i     (en),
@@ -207,7 +210,7 @@ module sgm_top #(
     .valid_o  (valid1)
   );
 
-  sgm_census_unit #(.CENSUS_H(CENSUS_H), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(YW)) u_census_r (
+  sgm_census_unit #(.CENSUS_H(CENSUS_H), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(RW)) u_census_r (
     .clk_i    (clk_i),
     .rst_ni   (rst_ni),
     .en_i     (en),
@@ -238,12 +241,12 @@ module sgm_top #(
   logic [7:0]     lane_centre;
   logic [31:0]    lane_nbr;
   logic [XW-1:0]  lane_col;
-  logic [YW-1:0]  lane_row;
+  logic [RW-1:0]  lane_row;
   logic           lane_valid;
   // The LR check's read position: the path engine's output position (col3,
   // row3) with one lane, the census output LR_LAG rows back with K lanes.
   logic [XW-1:0]  col3, rd_col;
-  logic [YW-1:0]  row3, rd_row;
+  logic [RW-1:0]  row3, rd_row;
 
   if (LANES == 1) begin : g_raster
     assign {lane_census_l, lane_rank_l, lane_census_r, lane_rank_r, lane_centre, lane_nbr} =
@@ -267,7 +270,7 @@ module sgm_top #(
     );
     sgm_lane_deal #(
       .WIDTH(DEAL_W), .LANES(LANES), .SKEW(SKEW), .LANE_LEAD(LANE_LEAD), .ROWS(DEAL_ROWS),
-      .MAX_WIDTH(MAX_WIDTH), .XW(XW), .YW(YW)
+      .MAX_WIDTH(MAX_WIDTH), .XW(XW), .YW(RW)
     ) u_deal (
       .clk_i    (clk_i),
       .rst_ni   (rst_ni),
@@ -287,15 +290,21 @@ module sgm_top #(
     // The LR check's read position (see LR check below).
     localparam int LAGW = $clog2(LR_LAG_MAX + 1);
     // LR_LAG for the frame's width: 2 (K - 1) + ceil(LR_WAIT / W), where
-    // ceil(LR_WAIT / W) = 1 + #{m >= 1 : m W < LR_WAIT}.
+    // ceil(LR_WAIT / W) = 1 + #{m >= 1 : m W < LR_WAIT} and m W < LR_WAIT iff
+    // W <= (LR_WAIT - 1) / m (constant comparisons; only m with m x
+    // MIN_FRAME_WIDTH < LR_WAIT can hold).
+    localparam int LAG_TERMS = (LR_WAIT - 1) / MIN_FRAME_WIDTH;
+    logic [LAG_TERMS-1:0] narrow;  // bit m - 1: m W < LR_WAIT
+    for (genvar m = 1; m <= LAG_TERMS; m++) begin : g_lag_term
+      assign narrow[m-1] = {{(32 - XW){1'b0}}, width} <= 32'((LR_WAIT - 1) / m);
+    end
     logic [LAGW-1:0] lag_d, lag_q;
     always_comb begin
       lag_d = LAGW'(2 * LANES - 1);
-      for (int m = 1; m * MIN_FRAME_WIDTH < LR_WAIT; m++)
-        if (int'(width) * m < LR_WAIT) lag_d = lag_d + 1'b1;
+      for (int m = 0; m < LAG_TERMS; m++) lag_d = lag_d + LAGW'(narrow[m]);
     end
     logic [XW-1:0] rd_col_q;
-    logic [YW-1:0] rd_row_q;
+    logic [RW-1:0] rd_row_q;
     always_ff @(posedge clk_i) begin
       if (!rst_ni) begin
         lag_q <= LAGW'(LR_LAG_MAX);
@@ -306,7 +315,7 @@ module sgm_top #(
     always_ff @(posedge clk_i) begin
       if (en) begin
         rd_col_q <= col1;
-        rd_row_q <= row1 - YW'(lag_q);
+        rd_row_q <= row1 - RW'(lag_q);
       end
     end
     assign rd_col = rd_col_q;
@@ -339,10 +348,10 @@ module sgm_top #(
   // GRAY_LEAD slot ahead of the costs (its P2 lookup then runs in the slot
   // before the pixel and P2r is registered behind the table's RAM).
   localparam int GRAY_LEAD = 1;
-  logic [YW-1:0] row2;
+  logic [RW-1:0] row2;
   logic [7:0]    centre2;
   logic [31:0]   nbr2;
-  sgm_delay #(.WIDTH(YW + 8 + 32), .DEPTH(COST_LATENCY - GRAY_LEAD)) u_align_cost (
+  sgm_delay #(.WIDTH(RW + 8 + 32), .DEPTH(COST_LATENCY - GRAY_LEAD)) u_align_cost (
     .clk_i (clk_i),
     .en_i  (en),
     .d_i   ({lane_row, lane_centre, lane_nbr}),
@@ -356,7 +365,7 @@ module sgm_top #(
   // Its previous-row reads run three slots or more ahead of the costs: the
   // census unit's column (COST_LATENCY slots ahead) goes straight in.
   sgm_path_engine #(
-    .D(D), .CW(CBITS), .LW(LW), .PW(8), .MAX_WIDTH(MAX_WIDTH), .XW(XW), .YW(YW), .GRAY_LEAD(GRAY_LEAD),
+    .D(D), .CW(CBITS), .LW(LW), .PW(8), .MAX_WIDTH(MAX_WIDTH), .XW(XW), .YW(RW), .GRAY_LEAD(GRAY_LEAD),
     .COL_LEAD(COST_LATENCY), .LANES(LANES)
   ) u_paths (
     .clk_i       (clk_i),
@@ -385,10 +394,10 @@ module sgm_top #(
   logic [LD-1:0] win_d;
   logic [DW-1:0] win_disp;
   logic [XW-1:0] col4;
-  logic [YW-1:0] row4;
+  logic [RW-1:0] row4;
   logic          valid4;
 
-  sgm_wta #(.D(D), .SW(SW), .CW(XW), .RW(YW)) u_wta (
+  sgm_wta #(.D(D), .SW(SW), .CW(XW), .RW(RW)) u_wta (
     .clk_i      (clk_i),
     .rst_ni     (rst_ni),
     .en_i       (en),
@@ -417,9 +426,9 @@ module sgm_top #(
   logic [DW-1:0] lr_disp;
   logic          lr_ok, lr_valid;
   logic [XW-1:0] col5;
-  logic [YW-1:0] row5;
+  logic [RW-1:0] row5;
   sgm_lr_check #(
-    .D(D), .SW(SW), .DW(DW), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(YW), .LANES(LANES), .ROW_BANKS(LR_BANKS)
+    .D(D), .SW(SW), .DW(DW), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(RW), .LANES(LANES), .ROW_BANKS(LR_BANKS)
   ) u_lr (
     .clk_i       (clk_i),
     .rst_ni      (rst_ni),
@@ -450,9 +459,9 @@ module sgm_top #(
   logic [DW-1:0] fill_disp;
   logic          fill_ok, fill_valid;
   logic [XW-1:0] col6;
-  logic [YW-1:0] row6;
+  logic [RW-1:0] row6;
 
-  sgm_hole_fill #(.DW(DW), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(YW)) u_fill (
+  sgm_hole_fill #(.DW(DW), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(RW)) u_fill (
     .clk_i       (clk_i),
     .rst_ni      (rst_ni),
     .en_i        (en),
@@ -480,9 +489,9 @@ module sgm_top #(
   logic [DW-1:0] snap_disp;
   logic          snap_ok, snap_valid;
   logic [XW-1:0] col7;
-  logic [YW-1:0] row7;
+  logic [RW-1:0] row7;
 
-  sgm_edge_snap #(.DW(DW), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(YW), .GRAY_ROWS(GRAY_ROWS)) u_snap (
+  sgm_edge_snap #(.DW(DW), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(RW), .GRAY_ROWS(GRAY_ROWS)) u_snap (
     .clk_i       (clk_i),
     .rst_ni      (rst_ni),
     .en_i        (en),
@@ -507,9 +516,9 @@ module sgm_top #(
 
   // ------------------------------------------------------------ median
   logic [XW-1:0] unused_col8;
-  logic [YW-1:0] unused_row8;
+  logic [RW-1:0] unused_row8;
 
-  sgm_median5x5 #(.DW(DW), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(YW)) u_median (
+  sgm_median5x5 #(.DW(DW), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(RW)) u_median (
     .clk_i       (clk_i),
     .rst_ni      (rst_ni),
     .en_i        (en),

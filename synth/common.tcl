@@ -15,6 +15,7 @@
 #   SYNTH_MAX_WIDTH  MAX_WIDTH
 #   SYNTH_MAX_HEIGHT MAX_HEIGHT (default 1024, the RTL default)
 #   SYNTH_CENSUS_H   CENSUS_H, census window height (5, the default, or 9: the paper's 9x9)
+#   SYNTH_LANES      LANES, row lanes of the schedule (1, the default: the raster)
 #   SYNTH_OUT        output directory of this target (created by make)
 #
 # Files written into SYNTH_OUT by this part:
@@ -32,10 +33,11 @@ set d          [env_or SYNTH_D 64]
 set max_width  [env_or SYNTH_MAX_WIDTH 1280]
 set max_height [env_or SYNTH_MAX_HEIGHT 1024]
 set census_h   [env_or SYNTH_CENSUS_H 5]
+set lanes      [env_or SYNTH_LANES 1]
 set out        [env_or SYNTH_OUT build/synth]
 
 yosys read_verilog -sv {*}[lsort [glob $rtl/*.sv]]
-yosys chparam -set D $d -set MAX_WIDTH $max_width -set MAX_HEIGHT $max_height -set CENSUS_H $census_h sgm_top
+yosys chparam -set D $d -set MAX_WIDTH $max_width -set MAX_HEIGHT $max_height -set CENSUS_H $census_h -set LANES $lanes sgm_top
 yosys hierarchy -check -top sgm_top
 yosys proc
 yosys tee -o $out/check.txt check

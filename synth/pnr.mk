@@ -10,6 +10,7 @@
 #   make pnr-ci         D=16, MAX_WIDTH=128 on LFE5U-45F speed 6; fails unless the
 #                       design routes and nextpnr reports an fmax (in `make test`)
 #   make pnr-one        one run: PNR_D, PNR_MAX_WIDTH, PNR_DEVICE, PNR_PACKAGE, PNR_SPEED
+#                       (every target takes PNR_LANES, the core's LANES, default 1)
 #   make pnr-summary    rebuild summary.{json,md} from what build/pnr holds
 #
 # Yosys and nextpnr run one at a time (flock on build/pnr/.lock, also under
@@ -21,6 +22,7 @@ PNR_D            ?= 64
 # at D = 64 (synth/README.md, "Place and route").
 PNR_MAX_WIDTH    ?= 1024
 PNR_MAX_HEIGHT   ?= 1024
+PNR_LANES        ?= 1
 PNR_DEVICE       ?= 85k
 PNR_PACKAGE      ?= CABGA381
 PNR_SPEEDS       ?= 8 6
@@ -34,6 +36,7 @@ PNR_CI_D         ?= 16
 PNR_CI_MAX_WIDTH ?= 128
 PNR_CI_DEVICE    ?= 45k
 PNR_CI_SPEED     ?= 6
+PNR_CI_LANES     ?= 1
 # Extra nextpnr options of a run (recorded in its meta.txt and summary). The CI
 # smoke only has to show that the core routes and gets an fmax: without
 # timing-driven placement and with router2 it takes about 4 min of CPU instead
@@ -58,7 +61,7 @@ PNR_BENCH_REPORT     := $(BUILD)/bench/report.json
 TEST_EXTRA += pnr-ci
 
 PNR_DIR     := $(BUILD)/pnr
-PNR_CFG      = $(PNR_DIR)/d$(PNR_D)-w$(PNR_MAX_WIDTH)
+PNR_CFG      = $(PNR_DIR)/d$(PNR_D)-w$(PNR_MAX_WIDTH)$(if $(filter-out 1,$(PNR_LANES)),-k$(PNR_LANES))
 PNR_DEVNAME  = LFE5U-$(subst k,F,$(PNR_DEVICE))
 PNR_RUN      = $(PNR_CFG)/lfe5u-$(subst k,f,$(PNR_DEVICE))-$(PNR_SPEED)
 PNR_LOCK     = $(PNR_DIR)/.lock
@@ -85,10 +88,10 @@ pnr: pnr-tools $(PNR_SUMMARY)
 
 pnr-ci: pnr-tools $(PNR_SUMMARY)
 	@start=$$(date +%s); \
-	 $(MAKE) --no-print-directory pnr-one PNR_D=$(PNR_CI_D) PNR_MAX_WIDTH=$(PNR_CI_MAX_WIDTH) \
+	 $(MAKE) --no-print-directory pnr-one PNR_D=$(PNR_CI_D) PNR_MAX_WIDTH=$(PNR_CI_MAX_WIDTH) PNR_LANES=$(PNR_CI_LANES) \
 	   PNR_DEVICE=$(PNR_CI_DEVICE) PNR_SPEED=$(PNR_CI_SPEED) PNR_FLAGS="$(PNR_CI_FLAGS)" && \
 	 $(MAKE) --no-print-directory pnr-summary \
-	   PNR_CHECK=d$(PNR_CI_D)-w$(PNR_CI_MAX_WIDTH)/lfe5u-$(subst k,f,$(PNR_CI_DEVICE))-$(PNR_CI_SPEED) && \
+	   PNR_CHECK=d$(PNR_CI_D)-w$(PNR_CI_MAX_WIDTH)$(if $(filter-out 1,$(PNR_CI_LANES)),-k$(PNR_CI_LANES))/lfe5u-$(subst k,f,$(PNR_CI_DEVICE))-$(PNR_CI_SPEED) && \
 	 echo "pnr-ci: OK ($$(( $$(date +%s) - start )) s)"
 
 pnr-one: $(PNR_RUN)/done
@@ -110,9 +113,9 @@ $(PNR_SUMMARY): synth/pnr_summary.cpp tools/report_json.cpp tools/report_json.hp
 # Synthesis of one configuration: the hierarchical netlist of the whole core.
 $(PNR_CFG)/synth/done: $(PNR_DEPS) | pnr-tools
 	@rm -rf $(@D) && mkdir -p $(@D)
-	@echo "pnr: synth_ecp5, D=$(PNR_D) MAX_WIDTH=$(PNR_MAX_WIDTH) (log: $(@D)/yosys.log)"
+	@echo "pnr: synth_ecp5, D=$(PNR_D) MAX_WIDTH=$(PNR_MAX_WIDTH) LANES=$(PNR_LANES) (log: $(@D)/yosys.log)"
 	@start=$$(date +%s); \
-	 SYNTH_RTL=rtl SYNTH_D=$(PNR_D) SYNTH_MAX_WIDTH=$(PNR_MAX_WIDTH) SYNTH_MAX_HEIGHT=$(PNR_MAX_HEIGHT) SYNTH_OUT=$(@D) \
+	 SYNTH_RTL=rtl SYNTH_D=$(PNR_D) SYNTH_MAX_WIDTH=$(PNR_MAX_WIDTH) SYNTH_MAX_HEIGHT=$(PNR_MAX_HEIGHT) SYNTH_LANES=$(PNR_LANES) SYNTH_OUT=$(@D) \
 	   SYNTH_ECP5_FLAGS="$(PNR_SYNTH_FLAGS)" \
 	   flock $(PNR_LOCK) timeout $(PNR_TIMEOUT) nice -n $(PNR_NICE) yosys -q -l $(@D)/yosys.log -c synth/ecp5.tcl \
 	   > $(@D)/yosys.out 2>&1; rc=$$?; \
@@ -158,7 +161,7 @@ define pnr_route
 endef
 
 $(PNR_RUN)/done: $(PNR_CFG)/synth/done | pnr-tools
-	$(call pnr_route,$(PNR_CFG),D=$(PNR_D) MAX_WIDTH=$(PNR_MAX_WIDTH),echo "kind=core"; echo "d=$(PNR_D)"; echo "max_width=$(PNR_MAX_WIDTH)";)
+	$(call pnr_route,$(PNR_CFG),D=$(PNR_D) MAX_WIDTH=$(PNR_MAX_WIDTH) LANES=$(PNR_LANES),echo "kind=core"; echo "d=$(PNR_D)"; echo "max_width=$(PNR_MAX_WIDTH)"; echo "lanes=$(PNR_LANES)";)
 
 # ------------------------------------------------------------------ the loop alone
 # `make pnr-loop`: the 0 degree recursion alone (synth/sgm_path_loop.sv, the loop

@@ -373,6 +373,7 @@ void writeSummary(const std::string& root, const std::vector<Run>& allRuns, doub
     j.beginObject();
     writeRunHeader(j, r);
     j.key("max_width").integer(std::atol(meta(r, "max_width").c_str()));
+    j.key("lanes").integer(meta(r, "lanes") == "?" ? 1 : std::atol(meta(r, "lanes").c_str()));  // runs before lanes: 1
     j.key("lut4").integer(r.lut4);
     j.key("lut4_available").integer(r.lut4Avail);
     j.key("lutram_slices").integer(r.lutram);

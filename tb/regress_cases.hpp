@@ -30,7 +30,7 @@ using synth::Rng;
 
 constexpr int kD = Vsgm_top_sgm_top::D;
 constexpr int kMaxWidth = Vsgm_top_sgm_top::MAX_WIDTH;
-constexpr int kMinWidth = kD > 16 ? kD : 16;
+constexpr int kMinWidth = Vsgm_top_sgm_top::MIN_FRAME_WIDTH;  // max(D, 16), more with many lanes
 constexpr int kMinHeight = 9;
 
 struct Frame {

@@ -79,7 +79,8 @@ int main(int argc, char** argv) {
     if (!xmlPath.empty() && !std::filesystem::is_directory(std::filesystem::absolute(xmlPath).parent_path()))
       throw Error("--xml: no directory for " + xmlPath);
 
-    std::cout << "sgm-regress: D=" << kD << " MAX_WIDTH=" << kMaxWidth << ", master seed " << master
+    std::cout << "sgm-regress: D=" << kD << " MAX_WIDTH=" << kMaxWidth << " LANES=" << Vsgm_top_sgm_top::LANES
+              << ", master seed " << master
               << (oneCase ? ", case " + std::to_string(only) : ", " + std::to_string(frames) + " good frames") << "\n";
     Totals totals;
     std::vector<std::pair<std::string, std::string>> results;

@@ -81,7 +81,7 @@ TEST(SgmTop, SyntheticFramesBackToBackWithStalls) {
     Harness core("sgm_top_synthetic", 11, {stall, stall});
     std::mt19937 rng(3);
     std::vector<FrameInput> frames;
-    const int narrowest = std::max(kD, 16);  // the core's minimum width
+    const int narrowest = Vsgm_top_sgm_top::MIN_FRAME_WIDTH;  // the core's minimum width
     for (const auto [w, h] : {std::pair{narrowest, 9}, {narrowest + 37, 17}, {narrowest + 84, 12}, {narrowest + 1, 10}})
       frames.push_back(syntheticPair(w, h, rng, hardwareDefaults()));
     expectBitExact(core, frames, "stall " + std::to_string(stall));
@@ -89,7 +89,7 @@ TEST(SgmTop, SyntheticFramesBackToBackWithStalls) {
 }
 
 
-constexpr int kMinWidth = kD > 16 ? kD : 16;
+constexpr int kMinWidth = Vsgm_top_sgm_top::MIN_FRAME_WIDTH;  // max(D, 16), more with many lanes
 constexpr int kMaxHeight = Vsgm_top_sgm_top::MAX_HEIGHT;  // of this build
 
 // Frames at the build's limits: MAX_WIDTH wide, MAX_HEIGHT tall, and both at
@@ -121,7 +121,7 @@ TEST(SgmTop, OutOfRangeConfigurationIsDroppedThenGoodFrame) {
   sgm::Params unified = hardwareDefaults();
   unified.mode = sgm::CostMode::kUnified, unified.median = false;
   const std::vector<std::pair<std::string, FrameInput>> bad = {
-      {"width below max(D, 16)", syntheticPair(kMinWidth - 1, 9, rng, hardwareDefaults())},
+      {"width below MIN_FRAME_WIDTH", syntheticPair(kMinWidth - 1, 9, rng, hardwareDefaults())},
       {"width above MAX_WIDTH", syntheticPair(kMaxWidth + 1, 9, rng, hardwareDefaults())},
       {"height 8", syntheticPair(kMinWidth + 5, 8, rng, hardwareDefaults())},
       {"height above MAX_HEIGHT", syntheticPair(kMinWidth, kMaxHeight + 1, rng, hardwareDefaults())},
