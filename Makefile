@@ -102,17 +102,19 @@ golden: $(BIN)/sgm-golden $(BIN)/sgm-eval
 
 # ---------------------------------------------------------------- simulation
 # make sim [LEFT=... RIGHT=... [GT=...] [GT_SCALE=...]] [OUT=build/sim] [D=64] [MAX_WIDTH=1280]
-#          [STALL=0.0] [SEED=1] [FRAMES=1] [TRACE=1] [PRESET=default|paper] [CENSUS=9x5|9x9]
+#          [STALL=0.0] [SEED=1] [FRAMES=1] [TRACE=1] [PRESET=default|paper] [CENSUS=9x5|9x9] [LANES=1]
 # The program is sim/sgm_sim.cpp; CENSUS sets the core's census window (-GCENSUS_H),
-# PRESET=paper implies CENSUS=9x9 and runs sgm-sim --preset paper.
+# PRESET=paper implies CENSUS=9x9 and runs sgm-sim --preset paper. LANES = K row lanes
+# (-GLANES, docs/reschedule.md; also taken by make synth).
 OUT       ?= $(BUILD)/sim
 D         ?= 64
 MAX_WIDTH ?= 1280
 MAX_HEIGHT ?= 1024
+LANES     ?= 1
 PRESET    ?=
 CENSUS    ?= $(if $(filter paper,$(PRESET)),9x9,9x5)
 CENSUS_H   = $(if $(filter 9x9,$(CENSUS)),9,$(if $(filter 9x5,$(CENSUS)),5,$(error CENSUS=$(CENSUS): expected 9x5 or 9x9)))
-SIM_BIN    = $(BIN)/sgm-sim-d$(D)-w$(MAX_WIDTH)$(if $(filter-out 1024,$(MAX_HEIGHT)),-h$(MAX_HEIGHT))$(if $(filter 9,$(CENSUS_H)),-c9x9)$(if $(filter 1,$(TRACE)),-trace)
+SIM_BIN    = $(BIN)/sgm-sim-d$(D)-w$(MAX_WIDTH)$(if $(filter-out 1024,$(MAX_HEIGHT)),-h$(MAX_HEIGHT))$(if $(filter 9,$(CENSUS_H)),-c9x9)$(if $(filter-out 1,$(LANES)),-k$(LANES))$(if $(filter 1,$(TRACE)),-trace)
 SIM_ARGS   = --out $(OUT) --d $(D) $(if $(PRESET),--preset $(PRESET)) $(if $(filter 9,$(CENSUS_H)),--census 9x9) \
              $(if $(LEFT),--left $(LEFT)) $(if $(RIGHT),--right $(RIGHT)) \
              $(if $(GT),--gt $(GT)) $(if $(GT_SCALE),--gt-scale $(GT_SCALE)) $(if $(STALL),--stall $(STALL)) \
@@ -121,9 +123,9 @@ SIM_VFLAGS = -O3 --x-assign fast --x-initial fast
 
 $(BIN)/sgm-sim-d%: sim/sgm_sim.cpp $(RTL_SRC) $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
 	@mkdir -p $(BIN) $(BUILD)/verilator
-	@echo "verilating sgm_top (D=$(D), MAX_WIDTH=$(MAX_WIDTH), census 9x$(CENSUS_H)) for $@"
+	@echo "verilating sgm_top (D=$(D), MAX_WIDTH=$(MAX_WIDTH), census 9x$(CENSUS_H), LANES=$(LANES)) for $@"
 	@$(VERILATOR) --cc --exe --build -j $(JOBS) -Wall $(VLT) $(SIM_VFLAGS) $(VL_TRACE) -y rtl --top-module sgm_top \
-	  -GD=$(D) -GMAX_WIDTH=$(MAX_WIDTH) -GMAX_HEIGHT=$(MAX_HEIGHT) -GCENSUS_H=$(CENSUS_H) -Mdir $(BUILD)/verilator/$(notdir $@) -o $(abspath $@) \
+	  -GD=$(D) -GMAX_WIDTH=$(MAX_WIDTH) -GMAX_HEIGHT=$(MAX_HEIGHT) -GCENSUS_H=$(CENSUS_H) -GLANES=$(LANES) -Mdir $(BUILD)/verilator/$(notdir $@) -o $(abspath $@) \
 	  rtl/sgm_top.sv $(abspath sim/sgm_sim.cpp) $(abspath $(EVAL_OBJ)) $(abspath $(GOLDEN_LIB)) \
 	  -CFLAGS "$(VL_CFLAGS) -DSGM_D=$(D) -DSGM_MAX_WIDTH=$(MAX_WIDTH) -DSGM_MAX_HEIGHT=$(MAX_HEIGHT)" -LDFLAGS "$(OPENCV_LIBS) -pthread" \
 	  > $(BUILD)/verilator-$(notdir $@).log || { tail -30 $(BUILD)/verilator-$(notdir $@).log; exit 1; }

@@ -261,11 +261,12 @@ module sgm_top #(
     // a ring of at least 2K rows (sgm_lane_deal, docs/reschedule.md).
     localparam int LANE_LEAD = LANES + CENSUS_LEAD - 2 > CENSUS_LEAD ? LANES + CENSUS_LEAD - 2 : CENSUS_LEAD;
     localparam int DEAL_ROWS = 1 << $clog2(2 * LANES);
+    wire  sof0 = col0 == '0 && row0 == '0;  // the frame's first slot
     logic sof1;  // the census output is the frame's first centre
     sgm_delay #(.WIDTH(1), .DEPTH(CENSUS_LATENCY)) u_sof_delay (
       .clk_i (clk_i),
       .en_i  (en),
-      .d_i   (col0 == '0 && row0 == '0),
+      .d_i   (sof0),
       .q_o   (sof1)
     );
     sgm_lane_deal #(

@@ -2,7 +2,7 @@
 # paper's Table III (included by the main Makefile; synth/README.md explains
 # the flow, the outputs and the figures).
 #
-#   make synth [D=64] [MAX_WIDTH=1280] [CENSUS=9x5|9x9]
+#   make synth [D=64] [MAX_WIDTH=1280] [CENSUS=9x5|9x9] [LANES=1]
 #                                        xc7, xc6s, generic and iCE40 synthesis of
 #                                        that configuration (CENSUS=9x9: the paper's
 #                                        census window, sgm_top's CENSUS_H = 9), the
@@ -41,7 +41,8 @@ ICE40_SEED        ?= 1
 SYNTH_DIR    := $(BUILD)/synth
 SYNTH_CENSUS ?= $(if $(CENSUS),$(CENSUS),9x5)
 SYNTH_CENSUS_H = $(if $(filter 9x9,$(SYNTH_CENSUS)),9,$(if $(filter 9x5,$(SYNTH_CENSUS)),5,$(error CENSUS=$(SYNTH_CENSUS): expected 9x5 or 9x9)))
-SYNTH_CFG     = d$(D)-w$(MAX_WIDTH)$(if $(filter 9,$(SYNTH_CENSUS_H)),-c9x9)
+SYNTH_LANES  ?= $(if $(LANES),$(LANES),1)
+SYNTH_CFG     = d$(D)-w$(MAX_WIDTH)$(if $(filter 9,$(SYNTH_CENSUS_H)),-c9x9)$(if $(filter-out 1,$(SYNTH_LANES)),-k$(SYNTH_LANES))
 SYNTH_OUT     = $(SYNTH_DIR)/$(SYNTH_CFG)
 SYNTH_LOOP    = $(SYNTH_DIR)/ice40-loop-d$(ICE40_LOOP_D)
 SYNTH_LOCK    = $(SYNTH_DIR)/.lock
@@ -94,7 +95,7 @@ define synth_yosys
 	@echo "synth: $(1), D=$(D) MAX_WIDTH=$(MAX_WIDTH) census $(SYNTH_CENSUS) (log: $(@D)/yosys.log)"
 	@start=$$(date +%s); \
 	 commit=$$(git log -1 --format=%h -- rtl 2>/dev/null)$$(git status --porcelain -- rtl 2>/dev/null | grep -q . && echo -dirty); \
-	 SYNTH_RTL=rtl SYNTH_D=$(D) SYNTH_MAX_WIDTH=$(MAX_WIDTH) SYNTH_MAX_HEIGHT=$(SYNTH_MAX_HEIGHT) SYNTH_CENSUS_H=$(SYNTH_CENSUS_H) SYNTH_OUT=$(@D) $(3) \
+	 SYNTH_RTL=rtl SYNTH_D=$(D) SYNTH_MAX_WIDTH=$(MAX_WIDTH) SYNTH_MAX_HEIGHT=$(SYNTH_MAX_HEIGHT) SYNTH_CENSUS_H=$(SYNTH_CENSUS_H) SYNTH_LANES=$(SYNTH_LANES) SYNTH_OUT=$(@D) $(3) \
 	   flock $(SYNTH_LOCK) timeout $(SYNTH_TIMEOUT) yosys -q -l $(@D)/yosys.log -c $(2) > $(@D)/yosys.out 2>&1; rc=$$?; \
 	 if [ $$rc != 0 ]; then \
 	   if [ $$rc = 124 ]; then echo "synth: $(1): Yosys timed out after $(SYNTH_TIMEOUT) s (SYNTH_TIMEOUT)"; \
