@@ -40,13 +40,14 @@ module sgm_top #(
   localparam int MIN_FRAME_WIDTH /*verilator public*/ =
       (LANES * SKEW + 1 > D && LANES * SKEW + 1 > 16) ? LANES * SKEW + 1 : (D > 16 ? D : 16),
   // The LR check's read side runs LR_LAG whole rows behind the census output:
-  // its S side finishes row y (the row tail) during the first D columns of the
-  // lane's next row, 2 (K - 1) W + LR_WAIT slots behind the census position of
-  // (0, y + 1) (derivation in docs/reschedule.md); LR_LAG = 2 (K - 1) +
-  // ceil(LR_WAIT / W) per frame, at most LR_LAG_MAX.
-  localparam int LR_WAIT    = (D + 1) * LANES + 4,
+  // every word the read of left pixel (x, y) needs (its WTA result, dR of the
+  // diagonal, or of the row tail the lane writes during the first D columns of
+  // its next row) is written (2K - 3) W + LR_WAIT slots or less after the census
+  // output passed (x, y + 1) (derivation in docs/reschedule.md); LR_LAG =
+  // 2K - 3 + ceil(LR_WAIT / W) per frame, at most LR_LAG_MAX.
+  localparam int LR_WAIT    = D * LANES + 3,
   localparam int LR_LAG_MAX = LANES == 1 ? 0 :
-                              2 * (LANES - 1) + (LR_WAIT + MIN_FRAME_WIDTH - 1) / MIN_FRAME_WIDTH,
+                              2 * LANES - 3 + (LR_WAIT + MIN_FRAME_WIDTH - 1) / MIN_FRAME_WIDTH,
   localparam int YW        = $clog2(MAX_HEIGHT + 16),  // height ports
   // Row positions inside the core: rows before a frame's row 0 (negative,
   // RW-bit wrap) and after its last (flush) must not alias: 16 with one lane,
@@ -290,7 +291,7 @@ module sgm_top #(
 
     // The LR check's read position (see LR check below).
     localparam int LAGW = $clog2(LR_LAG_MAX + 1);
-    // LR_LAG for the frame's width: 2 (K - 1) + ceil(LR_WAIT / W), where
+    // LR_LAG for the frame's width: 2K - 3 + ceil(LR_WAIT / W), where
     // ceil(LR_WAIT / W) = 1 + #{m >= 1 : m W < LR_WAIT} and m W < LR_WAIT iff
     // W <= (LR_WAIT - 1) / m (constant comparisons; only m with m x
     // MIN_FRAME_WIDTH < LR_WAIT can hold).
@@ -301,7 +302,7 @@ module sgm_top #(
     end
     logic [LAGW-1:0] lag_d, lag_q;
     always_comb begin
-      lag_d = LAGW'(2 * LANES - 1);
+      lag_d = LAGW'(2 * LANES - 2);
       for (int m = 0; m < LAG_TERMS; m++) lag_d = lag_d + LAGW'(narrow[m]);
     end
     logic [XW-1:0] rd_col_q;

@@ -94,7 +94,8 @@ int main(int argc, char** argv) {
     if (w > SGM_MAX_WIDTH)
       throw Error("width " + std::to_string(w) + " exceeds this simulator's MAX_WIDTH=" + std::to_string(SGM_MAX_WIDTH) +
                   " (make sim MAX_WIDTH=" + std::to_string(w) + " builds another)");
-    if (w < std::max(SGM_D, 16)) throw Error("width " + std::to_string(w) + " is below the core's minimum " + std::to_string(std::max(SGM_D, 16)));
+    constexpr int kMinWidth = Vsgm_top_sgm_top::MIN_FRAME_WIDTH;  // max(D, 16), more with many lanes
+    if (w < kMinWidth) throw Error("width " + std::to_string(w) + " is below the core's minimum " + std::to_string(kMinWidth));
     if (h > SGM_MAX_HEIGHT)
       throw Error("height " + std::to_string(h) + " exceeds MAX_HEIGHT=" + std::to_string(SGM_MAX_HEIGHT));
 
@@ -152,6 +153,7 @@ int main(int argc, char** argv) {
     json.key("width").integer(w);
     json.key("height").integer(h);
     json.key("disparities").integer(params.disparities);
+    json.key("lanes").integer(Vsgm_top_sgm_top::LANES);
     json.key("mode").string(costModeName(params.mode));
     json.key("census").string(censusWindowName(params.census));
     json.key("preset").string(presetName(params));

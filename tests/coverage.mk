@@ -26,7 +26,7 @@ $(eval $(call regress_build,$(COV_REGRESS_BIN),16,128,$(COV_VFLAGS)))
 # `make rtl-tests` does not run them.
 COV_FIXTURES   := p2-lut stream-ctrl hole-fill median5x5 edge-snap census-unit cost-volume-d16 \
                   path-ring-d16 path-ring-d16-k12 path-engine-d16 wta-d16 lr-check-d16 top-d16 axi-d16 \
-                  path-engine-d16-k2 cost-lanes-d16-k3 lr-lanes-d16-k3 lane-deal-k3
+                  path-engine-d16-k2 cost-lanes-d16-k3 lr-lanes-d16-k3 lane-deal-k3 top-d16-k2
 COV_SAVED_BINS := $(RTL_TEST_BINS)
 RTL_TEST_BINS  :=
 $(foreach f,$(COV_FIXTURES),$(eval $(call rtl_test,cov-$(f),$(FIXTURE_TOP_$(f)),$(FIXTURE_FLAGS_$(f)) $(COV_VFLAGS),$(FIXTURE_TEST_$(f)))))
