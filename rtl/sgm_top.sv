@@ -262,13 +262,22 @@ module sgm_top #(
     // a ring of at least 2K rows (sgm_lane_deal, docs/reschedule.md).
     localparam int LANE_LEAD = LANES + CENSUS_LEAD - 2 > CENSUS_LEAD ? LANES + CENSUS_LEAD - 2 : CENSUS_LEAD;
     localparam int DEAL_ROWS = 1 << $clog2(2 * LANES);
-    wire  sof0 = col0 == '0 && row0 == '0;  // the frame's first slot
     logic sof1;  // the census output is the frame's first centre
-    sgm_delay #(.WIDTH(1), .DEPTH(CENSUS_LATENCY)) u_sof_delay (
-      .clk_i (clk_i),
-      .en_i  (en),
-      .d_i   (sof0),
-      .q_o   (sof1)
+    sgm_lane_timing #(
+      .LANES(LANES), .LR_WAIT(LR_WAIT), .LR_LAG_MAX(LR_LAG_MAX), .MIN_FRAME_WIDTH(MIN_FRAME_WIDTH),
+      .CENSUS_LATENCY(CENSUS_LATENCY), .XW(XW), .RW(RW)
+    ) u_timing (
+      .clk_i     (clk_i),
+      .rst_ni    (rst_ni),
+      .en_i      (en),
+      .width_i   (width),
+      .col_i     (col0),
+      .row_i     (row0),
+      .cen_col_i (col1),
+      .cen_row_i (row1),
+      .sof_o     (sof1),
+      .rd_col_o  (rd_col),
+      .rd_row_o  (rd_row)
     );
     sgm_lane_deal #(
       .WIDTH(DEAL_W), .LANES(LANES), .SKEW(SKEW), .LANE_LEAD(LANE_LEAD), .ROWS(DEAL_ROWS),
@@ -289,39 +298,6 @@ module sgm_top #(
       .valid_o  (lane_valid)
     );
 
-    // The LR check's read position (see LR check below).
-    localparam int LAGW = $clog2(LR_LAG_MAX + 1);
-    // LR_LAG for the frame's width: 2K - 3 + ceil(LR_WAIT / W), where
-    // ceil(LR_WAIT / W) = 1 + #{m >= 1 : m W < LR_WAIT} and m W < LR_WAIT iff
-    // W <= (LR_WAIT - 1) / m (constant comparisons; only m with m x
-    // MIN_FRAME_WIDTH < LR_WAIT can hold).
-    localparam int LAG_TERMS = (LR_WAIT - 1) / MIN_FRAME_WIDTH;
-    logic [LAG_TERMS-1:0] narrow;  // bit m - 1: m W < LR_WAIT
-    for (genvar m = 1; m <= LAG_TERMS; m++) begin : g_lag_term
-      assign narrow[m-1] = {{(32 - XW){1'b0}}, width} <= 32'((LR_WAIT - 1) / m);
-    end
-    logic [LAGW-1:0] lag_d, lag_q;
-    always_comb begin
-      lag_d = LAGW'(2 * LANES - 2);
-      for (int m = 0; m < LAG_TERMS; m++) lag_d = lag_d + LAGW'(narrow[m]);
-    end
-    logic [XW-1:0] rd_col_q;
-    logic [RW-1:0] rd_row_q;
-    always_ff @(posedge clk_i) begin
-      if (!rst_ni) begin
-        lag_q <= LAGW'(LR_LAG_MAX);
-      end else if (en && sof1) begin
-        lag_q <= lag_d;
-      end
-    end
-    always_ff @(posedge clk_i) begin
-      if (en) begin
-        rd_col_q <= col1;
-        rd_row_q <= row1 - RW'(lag_q);
-      end
-    end
-    assign rd_col = rd_col_q;
-    assign rd_row = rd_row_q;
   end
 
   // ------------------------------------------------------------ costs
