@@ -18,8 +18,12 @@
 // Configuration is sampled with the tuser beat's handshake (kept per input
 // buffer entry) and applied when that frame starts; the P2 table is refilled then (lut_start_o) and the
 // frame's first slot follows when lut_ready_i is high. A two-entry input
-// buffer keeps s_tready_o and the pipeline enable en_o free of combinational
-// paths from the stream inputs.
+// buffer keeps s_tready_o free of combinational paths from the stream inputs.
+// The slot (en_o, pixels, position) is decided one cycle ahead and comes from
+// registers: en_o drives every register of the pipeline, so it must not be
+// the end of a logic path. The output FIFO's room is counted for the cycle of
+// the decided slot, without that cycle's pop (under back-pressure the FIFO
+// holds one entry less, never one too many).
 //
 // Parameters: MAX_WIDTH, MIN_WIDTH (>= max(D, 16)), MAX_HEIGHT, XW/YW column/row
 // bits (rows count on past the frame while flushing: MAX_HEIGHT + flush rows
@@ -147,8 +151,11 @@ module sgm_stream_ctrl #(
   logic [17:0]    fifo_q [0:FIFO_DEPTH-1];  // {tuser, tlast, tdata}
   logic [FAW:0]   count_q;
   logic [FAW-1:0] rd_q, wr_q;
-  wire room = count_q < (FAW+1)'(FIFO_DEPTH);
   wire pop  = m_tvalid_o && m_tready_i;
+  wire push;
+  // Room in the cycle of the slot decided now: this cycle's push may still
+  // come, this cycle's pop is not counted.
+  wire room = count_q + (FAW+1)'(push) < (FAW+1)'(FIFO_DEPTH);
 
   // ---------------------------------------------------------------- slots
   logic [XW-1:0] x_q;          // position of the next slot
@@ -169,18 +176,27 @@ module sgm_stream_ctrl #(
   wire drop     = state_q == IDLE && head_ok && !(head_sof && pend_ok);
   assign in_pop = take || drop;
 
-  assign en_o        = take || gen_slot;
-  assign pix_left_o  = take ? head[7:0] : 8'd0;
-  assign pix_right_o = take ? head[15:8] : 8'd0;
-  assign col_o       = x_q;
-  assign row_o       = y_q;
-  assign busy_o      = state_q != IDLE;
+  // The slot decided in this cycle enters the pipeline in the next.
+  wire slot = take || gen_slot;
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) en_o <= 1'b0;
+    else         en_o <= slot;
+  end
+  always_ff @(posedge clk_i) begin
+    if (slot) begin
+      pix_left_o  <= take ? head[7:0] : 8'd0;
+      pix_right_o <= take ? head[15:8] : 8'd0;
+      col_o       <= x_q;
+      row_o       <= y_q;
+    end
+  end
+  assign busy_o = state_q != IDLE;
 
   // Framing errors of the beat being taken.
   wire err_early   = take && head_eol && !last_col;
   wire err_missing = take && !head_eol && last_col;
 
-  wire push     = en_o && res_valid_i;
+  assign push   = en_o && res_valid_i;
   wire out_last = out_x_q == width_o - 1'b1 && out_y_q == height_o - 1'b1;
 
   always_ff @(posedge clk_i) begin
@@ -264,7 +280,7 @@ module sgm_stream_ctrl #(
       out_x_q <= '0;
       out_y_q <= '0;
     end else begin
-      if (en_o) begin
+      if (slot) begin
         if (last_col) begin
           x_q <= '0;
           y_q <= y_q + 1'b1;
