@@ -22,8 +22,8 @@
 // engine's K SKEW + 1) <= width <= MAX_WIDTH, 9 <= height <= MAX_HEIGHT
 // (frames outside are dropped and flagged in error_o[3], as are P2' < P1 and cfg_mode_i = 3).
 // Throughput: one pixel per clock while a frame streams; after its last input
-// pixel a frame needs about 6 more lines of flush (8 with the 9x9 census; input stalled) and, at its
-// start, the P2 table fill (about 2 x 256 cycles).
+// pixel a frame needs about 6 more lines of flush (8 with the 9x9 census; K lanes add LR_LAG,
+// about 2K - 2 lines; input stalled) and, at its start, the P2 table fill (about 2 x 256 cycles).
 // Latency: about 6 lines + D + a few tens of pixels from a pixel in to its
 // disparity out.
 module sgm_top #(
