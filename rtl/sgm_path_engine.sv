@@ -217,23 +217,33 @@ module sgm_path_engine #(
   // ------------------------------------------------------ previous-row reads
   // At B' - 4: col_i delayed COL_LEAD - 3 + K - 1 slots.
   localparam int READ_DELAY = COL_LEAD - 3 + K - 1;
-  logic [XW-1:0] col_r;
-  if (READ_DELAY > 0) begin : g_col_read
-    sgm_delay #(.WIDTH(XW), .DEPTH(READ_DELAY)) u_col_r (
-      .clk_i (clk_i),
-      .en_i  (en_i),
-      .d_i   (col_i),
-      .q_o   (col_r)
-    );
-  end else begin : g_col_now
-    assign col_r = col_i;
-  end
-
   // Read addresses: M90 at x, M45 at x - 1 (unused at x = 0: 45 deg start),
-  // M135 at x + 1 (unused at the last column: 135 deg start).
-  wire [AW-1:0] addr90  = AW'(col_r);
-  wire [AW-1:0] addr45  = col_r == '0 ? '0 : AW'(col_r - 1'b1);
-  wire [AW-1:0] addr135 = col_r == width_i - 1'b1 ? '0 : AW'(col_r + 1'b1);
+  // M135 at x + 1 (unused at the last column: 135 deg start). When the column
+  // is there a slot before the read (READ_DELAY > 0) the addresses are
+  // computed then and registered, so that no comparison with the width sits in
+  // front of the memories (distributed RAM reads asynchronously).
+  function automatic logic [3*AW-1:0] read_addrs(input logic [XW-1:0] col, input logic [XW-1:0] width);
+    read_addrs = {col == width - 1'b1 ? AW'(0) : AW'(col + 1'b1), AW'(col), col == '0 ? AW'(0) : AW'(col - 1'b1)};
+  endfunction
+  logic [AW-1:0] addr90, addr45, addr135;
+  if (READ_DELAY > 0) begin : g_addr_reg
+    logic [XW-1:0] col_e;  // the column one slot before the read
+    if (READ_DELAY > 1) begin : g_col_early
+      sgm_delay #(.WIDTH(XW), .DEPTH(READ_DELAY - 1)) u_col_e (
+        .clk_i (clk_i),
+        .en_i  (en_i),
+        .d_i   (col_i),
+        .q_o   (col_e)
+      );
+    end else begin : g_col_now
+      assign col_e = col_i;
+    end
+    always_ff @(posedge clk_i) begin
+      if (en_i) {addr135, addr90, addr45} <= read_addrs(col_e, width_i);
+    end
+  end else begin : g_addr_now
+    assign {addr135, addr90, addr45} = read_addrs(col_i, width_i);
+  end
 
   logic [LWORD-1:0] mem45  [0:MAX_WIDTH-1];
   logic [LWORD-1:0] mem90  [0:MAX_WIDTH-1];
