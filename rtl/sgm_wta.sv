@@ -17,7 +17,9 @@
 //   P    den = a + b - 2m, |num| = |a - b|, refine flag; dividend
 //        N = 16 |num| + den and divisor V = 2 den of the quotient q.
 //   Q1   restoring division, quotient bits 3 and 2 (q < 16 because N <= 17 den)
-//   Q2   quotient bits 1 and 0; disp = 16 d* +- q; output registers.
+//   Q2   quotient bits 1 and 0; disp = 16 d* +- q without an adder (q < 16:
+//        16 d* + q = {d*, q}, 16 d* - q = {d* - 1, 16 - q} for q > 0, d* - 1
+//        computed in Q1); output registers.
 //
 // Parameters: D disparities (power of two, 16 .. 128), SW width of S,
 // CW column bits, RW row bits of the slot position (passed through).
@@ -154,7 +156,7 @@ module sgm_wta #(
   logic [SW+1:0] q_div_q;
   logic [1:0]    q_hi_q;
   logic          q_neg_q, q_ref_q;
-  logic [LD-1:0] q_d_q;
+  logic [LD-1:0] q_d_q, q_dm1_q;  // d*, d* - 1
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
@@ -164,6 +166,7 @@ module sgm_wta #(
       q_neg_q <= p_neg_q;
       q_ref_q <= p_ref_q;
       q_d_q   <= p_d_q;
+      q_dm1_q <= p_d_q - 1'b1;
     end
   end
 
@@ -174,12 +177,11 @@ module sgm_wta #(
   wire [QW-1:0] r1 = q1 ? q_rem_q - v1 : q_rem_q;
   wire          q0 = r1 >= v0;
   wire [3:0]    q  = q_ref_q ? {q_hi_q, q1, q0} : 4'd0;
-  wire [DW-1:0] whole = {q_d_q, 4'b0000};
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       d_o    <= q_d_q;
-      disp_o <= q_neg_q ? whole - DW'(q) : whole + DW'(q);
+      disp_o <= q_neg_q && q != 4'd0 ? {q_dm1_q, 4'd0 - q} : {q_d_q, q};
     end
   end
 
