@@ -18,8 +18,8 @@
 // The row test belongs to the column (its slot row, fixed while it is in the
 // window): live = valid and row inside; the column test belongs to the centre.
 //
-// Selection, bitwise (radix) k-th smallest, MSB first, one pipeline stage per
-// bit: with C the candidates (initially the n counted entries) and k = (n-1)/2,
+// Selection, bitwise (radix) k-th smallest, MSB first, two pipeline stages per
+// bit (the count, then the decision): with C the candidates (initially the n counted entries) and k = (n-1)/2,
 // at bit b let z = #{e in C : bit b of v_e = 0}; if k < z the result has bit
 // b = 0 and C keeps those entries, else bit b = 1, k -= z and C keeps the
 // entries with bit b = 1. No comparators and no sorting: per bit one 25-input
@@ -28,7 +28,8 @@
 //   stage 0   line-buffer read, pixel register
 //   stage A   window shift, live flags, column masks of the centre
 //   stage S   counted set, n (25-input popcount), k = (n - 1) / 2
-//   DW stages one result bit each, the last one drives the outputs
+//   2 DW stages one result bit per two (count | decide), the last one drives
+//             the outputs (the count alone was one ECP5 clock of 10.1 ns)
 // Cost (Yosys 0.23 synth_xilinx, xc7): DW = 8, MAX_WIDTH = 128: ~830 LUT +
 // 65 SRL16, ~530 FF, 67 CARRY4, line buffer in 26 RAM64M (40-bit words do not
 // fit one RAMB18); DW = 10, MAX_WIDTH = 512: ~955 LUT + 80 SRL16, ~610 FF,
@@ -45,7 +46,7 @@
 // out_valid_o = the centre lies inside the frame and its own slot was a frame
 // pixel (in_valid_i, stored with it: a slot of an earlier frame still in
 // flight after a frame switch may have a position inside the new frame).
-// Latency: LATENCY_ROWS * width + LATENCY slots (pixel (x, y) leaves DW + 3
+// Latency: LATENCY_ROWS * width + LATENCY slots (pixel (x, y) leaves 2 DW + 3
 // slots after input slot (x + 2, y + 2)). Throughput: one pixel per enabled slot.
 module sgm_median5x5 #(
   parameter int DW        /*verilator public*/ = 8,
@@ -72,7 +73,7 @@ module sgm_median5x5 #(
 );
 
   localparam int LATENCY_ROWS /*verilator public*/ = 2;
-  localparam int LATENCY      /*verilator public*/ = DW + 5;
+  localparam int LATENCY      /*verilator public*/ = 2 * DW + 5;
 
   localparam int AW = $clog2(MAX_WIDTH);
   localparam int EW = DW + 2;            // line-buffer entry {frame pixel, valid, disp}
@@ -174,41 +175,58 @@ module sgm_median5x5 #(
   wire [KW-1:0] k_s     = KW'((n_counted - 1'b1) >> 1);  // (n - 1) / 2; unused when n = 0
 
   // ------------------------------------------------------------ bit stages
-  // Registers of bit stage i: cand_q[i*N +: N], kk_q[i*KW +: KW], side_q[i*SW +: SW],
+  // Bit stage i (deciding bit B = DW-1-i) is two slots (the 25-input count and
+  // the decision each have a clock of their own):
+  //   count   from cand_q, kk_q, planes_q, res_q: z = #{zeros}, registered with
+  //           the two candidate subsets (zeros, ones = cand & plane B), k, the
+  //           result so far and planes B-1 .. 0 (planes2_q)
+  //   decide  bit B = k >= z; the subset, k (- z) and the result for stage i+1
+  // Registers of bit stage i: cand_q[i*N +: N], kk_q[i*KW +: KW],
   // planes_q[plane_off(i) +: (DW-i)*N]; res_q[(i-1)*DW +: DW] for i >= 1
-  // (bits DW-1 .. DW-i decided, the others 0).
+  // (bits DW-1 .. DW-i decided, the others 0); of its count half: z_q, zero_q,
+  // one_q, kc_q, rc_q at index i, planes2_q[plane_off(i+1) - N*DW +: B*N].
   logic [DW*N-1:0]  cand_q;
   logic [DW*KW-1:0] kk_q;
-  logic [DW*SW-1:0] side_q;
+  logic [2*DW*SW-1:0] side_q;
   logic [PB-1:0]    planes_q;
-  logic [DW-1:0]    ok_q;     // the centre is a real pixel
+  logic [2*DW-1:0]  ok_q;     // the centre is a real pixel
+
+  logic [DW*5-1:0]      z_d, z_q;
+  logic [(DW-1)*N-1:0]  zero_d, zero_q, one_d, one_q;  // the last stage needs only z
+  logic [DW*KW-1:0]     kc_q;
+  logic [DW*DW-1:0]     rc_d, rc_q;
+  logic [PB-N*DW-1:0]   planes_d, planes2_q;
 
   logic [(DW-1)*N-1:0]  cand_d;
   logic [(DW-1)*KW-1:0] kk_d;
   logic [(DW-1)*DW-1:0] res_d;
-  logic [PB-N*DW-1:0]   planes_d;
   logic [DW-1:0]        res_last;
 
   for (genvar i = 0; i < DW; i++) begin : g_bit
     localparam int B = DW - 1 - i;  // the bit decided here
+    // count half
     wire [N-1:0]  cand  = cand_q[i*N +: N];
-    wire [KW-1:0] kk    = kk_q[i*KW +: KW];
     wire [N-1:0]  plane = planes_q[plane_off(i) + B*N +: N];
-    wire [N-1:0]  zeros = cand & ~plane;
-    wire [4:0]    z     = popcount25(zeros);
-    wire          one   = {1'b0, kk} >= z;  // bit B of the k-th smallest
-    wire [DW-1:0] res;
-    if (i == 0) begin : g_first
-      assign res = '0;
-    end else begin : g_next
-      assign res = res_q[(i-1)*DW +: DW];
-    end
-    wire [DW-1:0] res_n = res | (DW'(one) << B);
-    if (i < DW - 1) begin : g_pass
-      assign cand_d[i*N +: N]    = one ? cand & plane : zeros;
-      assign kk_d[i*KW +: KW]    = one ? kk - z[KW-1:0] : kk;
-      assign res_d[i*DW +: DW]   = res_n;
+    assign z_d[i*5 +: 5]    = popcount25(cand & ~plane);
+    if (i < DW - 1) begin : g_sets
+      assign zero_d[i*N +: N] = cand & ~plane;
+      assign one_d[i*N +: N]  = cand & plane;
       assign planes_d[plane_off(i+1) - N*DW +: B*N] = planes_q[plane_off(i) +: B*N];
+    end
+    if (i == 0) begin : g_first
+      assign rc_d[i*DW +: DW] = '0;
+    end else begin : g_next
+      assign rc_d[i*DW +: DW] = res_q[(i-1)*DW +: DW];
+    end
+    // decide half
+    wire [4:0]    z     = z_q[i*5 +: 5];
+    wire [KW-1:0] kk    = kc_q[i*KW +: KW];
+    wire          one   = {1'b0, kk} >= z;  // bit B of the k-th smallest
+    wire [DW-1:0] res_n = rc_q[i*DW +: DW] | (DW'(one) << B);
+    if (i < DW - 1) begin : g_pass
+      assign cand_d[i*N +: N]  = one ? one_q[i*N +: N] : zero_q[i*N +: N];
+      assign kk_d[i*KW +: KW]  = one ? kk - z[KW-1:0] : kk;
+      assign res_d[i*DW +: DW] = res_n;
     end else begin : g_out
       assign res_last = res_n;
     end
@@ -218,16 +236,24 @@ module sgm_median5x5 #(
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
+      // count halves
+      z_q       <= z_d;
+      zero_q    <= zero_d;
+      one_q     <= one_d;
+      kc_q      <= kk_q;
+      rc_q      <= rc_d;
+      planes2_q <= planes_d;
+      // decide halves
       cand_q   <= {cand_d, counted};
       kk_q     <= {kk_d, k_s};
       res_q    <= res_d;
-      planes_q <= {planes_d, planes_s};
-      side_q   <= {side_q[(DW-1)*SW-1:0], mena_q, live_q[CENTRE], val_q[CENTRE*DW +: DW], cxa_q, cya_q};
+      planes_q <= {planes2_q, planes_s};
+      side_q   <= {side_q[(2*DW-1)*SW-1:0], mena_q, live_q[CENTRE], val_q[CENTRE*DW +: DW], cxa_q, cya_q};
     end
   end
 
   // Output: the last bit stage.
-  wire [SW-1:0] side = side_q[(DW-1)*SW +: SW];
+  wire [SW-1:0] side = side_q[(2*DW-1)*SW +: SW];
   wire          men  = side[SW-1];
   wire          cval = side[SW-2];
   wire [DW-1:0] cdisp = side[CW+RW +: DW];
@@ -276,8 +302,8 @@ module sgm_median5x5 #(
     end else if (en_i) begin
       v0_q        <= 1'b1;
       oka_q       <= v0_q && armed_q && centre_in && real_q[1];
-      ok_q        <= {ok_q[DW-2:0], oka_q};
-      out_valid_o <= ok_q[DW-1];
+      ok_q        <= {ok_q[2*DW-2:0], oka_q};
+      out_valid_o <= ok_q[2*DW-1];
     end
   end
 

@@ -16,14 +16,15 @@
 //        smallest d.
 //   P    den = a + b - 2m, |num| = |a - b|, refine flag; dividend
 //        N = 16 |num| + den and divisor V = 2 den of the quotient q.
-//   Q1   restoring division, quotient bits 3 and 2 (q < 16 because N <= 17 den)
-//   Q2   quotient bits 1 and 0; disp = 16 d* +- q without an adder (q < 16:
-//        16 d* + q = {d*, q}, 16 d* - q = {d* - 1, 16 - q} for q > 0, d* - 1
-//        computed in Q1); output registers.
+//   Q3 .. Q0  restoring division, one quotient bit per slot, 3 down to 0 (q < 16
+//        because N <= 17 den; two bits per slot were 10.5 ns on ECP5); after
+//        Q0 disp = 16 d* +- q without an adder (q < 16: 16 d* + q = {d*, q},
+//        16 d* - q = {d* - 1, 16 - q} for q > 0, d* - 1 computed in Q3);
+//        output registers.
 //
 // Parameters: D disparities (power of two, 16 .. 128), SW width of S,
 // CW column bits, RW row bits of the slot position (passed through).
-// Latency: LATENCY = TREE_STAGES + 3 slots (D = 16: 5, 32/64: 6, 128: 7): the
+// Latency: LATENCY = TREE_STAGES + 5 slots (D = 16: 7, 32/64: 8, 128: 9): the
 // result of the slot presented at enabled edge n is on the outputs after
 // enabled edge n + LATENCY - 1. Throughput: one pixel per slot.
 // Reset: only the valid_o pipeline (control); data registers start unknown.
@@ -36,7 +37,7 @@ module sgm_wta #(
   localparam int DW          = LD + 4,
   localparam int LPS         = 2,                     // comparator levels per slot
   localparam int TREE_STAGES = (LD + LPS - 1) / LPS,
-  localparam int LATENCY     /*verilator public*/ = TREE_STAGES + 3
+  localparam int LATENCY     /*verilator public*/ = TREE_STAGES + 5
 ) (
   input  wire              clk_i,
   input  wire              rst_ni,
@@ -144,44 +145,45 @@ module sgm_wta #(
     end
   end
 
-  // ---------------------------------------------------- Q1: quotient bits 3, 2
-  wire [QW-1:0] v3 = {p_div_q, 3'b000};
-  wire [QW-1:0] v2 = {1'b0, p_div_q, 2'b00};
-  wire          q3 = p_num_q >= v3;
-  wire [QW-1:0] r3 = q3 ? p_num_q - v3 : p_num_q;
-  wire          q2 = r3 >= v2;
-  wire [QW-1:0] r2 = q2 ? r3 - v2 : r3;
-
-  logic [QW-1:0] q_rem_q;
-  logic [SW+1:0] q_div_q;
-  logic [1:0]    q_hi_q;
-  logic          q_neg_q, q_ref_q;
-  logic [LD-1:0] q_d_q, q_dm1_q;  // d*, d* - 1
-
-  always_ff @(posedge clk_i) begin
-    if (en_i) begin
-      q_rem_q <= r2;
-      q_div_q <= p_div_q;
-      q_hi_q  <= {q3, q2};
-      q_neg_q <= p_neg_q;
-      q_ref_q <= p_ref_q;
-      q_d_q   <= p_d_q;
-      q_dm1_q <= p_d_q - 1'b1;
-    end
+  // ---------------------------------------------------- Q3 .. Q0: one quotient bit each
+  // Stage j (3 .. 0) of the restoring division: bit j = rem >= V 2^j, rem -= it.
+  // Word j of qs is the input of stage j: the P registers for stage 3, the
+  // registers qs_q[j] behind stage j + 1 for the others (rem of stage 3 = N);
+  // the quotient bits decided so far are in hi (bits 3 .. j+1).
+  localparam int XQ = QW + SW + 2 + 4 + 2 + 2 * LD;  // {rem, V, hi, neg, refine, d*, d* - 1}
+  logic [3*XQ-1:0] qs_q;
+  wire  [3*XQ-1:0] qs_d;   // word j - 1: the result of stage j
+  wire  [XQ-1:0]   q3_in = {p_num_q, p_div_q, 4'd0, p_neg_q, p_ref_q, p_d_q, p_d_q - 1'b1};
+  wire  [4*XQ-1:0] qs    = {q3_in, qs_q};
+  for (genvar j = 3; j >= 1; j--) begin : g_qstep
+    wire [QW-1:0]   rem, v;
+    wire [SW+1:0]   div;
+    wire [3:0]      hi;
+    wire [2*LD+1:0] rest;  // {neg, refine, d*, d* - 1}
+    assign {rem, div, hi, rest} = qs[j*XQ +: XQ];
+    assign v = QW'(div) << j;
+    wire qb = rem >= v;
+    assign qs_d[(j-1)*XQ +: XQ] = {qb ? rem - v : rem, div, hi | (4'(qb) << j), rest};
   end
 
-  // ---------------------------------------------------- Q2: quotient bits 1, 0
-  wire [QW-1:0] v1 = {2'b00, q_div_q, 1'b0};
-  wire [QW-1:0] v0 = {3'b000, q_div_q};
-  wire          q1 = q_rem_q >= v1;
-  wire [QW-1:0] r1 = q1 ? q_rem_q - v1 : q_rem_q;
-  wire          q0 = r1 >= v0;
-  wire [3:0]    q  = q_ref_q ? {q_hi_q, q1, q0} : 4'd0;
+  always_ff @(posedge clk_i) begin
+    if (en_i) qs_q <= qs_d;
+  end
+
+  // Q0: bit 0; disp = 16 d* +- q by concatenation; output registers.
+  wire [QW-1:0] rem0;
+  wire [SW+1:0] div0;
+  wire [3:0]    hi0;
+  wire          neg0, ref0;
+  wire [LD-1:0] d0, dm10;
+  assign {rem0, div0, hi0, neg0, ref0, d0, dm10} = qs[0 +: XQ];
+  wire          q0 = rem0 >= QW'(div0);
+  wire [3:0]    q  = ref0 ? hi0 | {3'b000, q0} : 4'd0;
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      d_o    <= q_d_q;
-      disp_o <= q_neg_q && q != 4'd0 ? {q_dm1_q, 4'd0 - q} : {q_d_q, q};
+      d_o    <= d0;
+      disp_o <= neg0 && q != 4'd0 ? {dm10, 4'd0 - q} : {d0, q};
     end
   end
 
