@@ -4,7 +4,7 @@
 // are defined once, in sw/include/sgm_regs.h, and the localparams below are
 // checked against that header by tests/rtl/test_sgm_axi.cpp.
 //
-//   identification  ID, D, MAX_WIDTH, MAX_HEIGHT, CENSUS (read-only)
+//   identification  ID, D, MAX_WIDTH, MAX_HEIGHT, CENSUS, MIN_WIDTH, LANES (read-only)
 //   control         CTRL (enable, soft reset, hold), FRAME_SIZE, PENALTY, CONFIG
 //   status          STATUS (busy), FRAMES, ERROR (sticky, W1C), ERROR_COUNT,
 //                   LAST_SIZE
@@ -81,6 +81,8 @@ module sgm_axi #(
   localparam logic [ADDR_W-1:0] ADDR_MAX_WIDTH   /*verilator public*/ = ADDR_W'('h08);
   localparam logic [ADDR_W-1:0] ADDR_MAX_HEIGHT  /*verilator public*/ = ADDR_W'('h0C);
   localparam logic [ADDR_W-1:0] ADDR_CENSUS      /*verilator public*/ = ADDR_W'('h10);
+  localparam logic [ADDR_W-1:0] ADDR_MIN_WIDTH   /*verilator public*/ = ADDR_W'('h14);
+  localparam logic [ADDR_W-1:0] ADDR_LANES       /*verilator public*/ = ADDR_W'('h18);
   localparam logic [ADDR_W-1:0] ADDR_CTRL        /*verilator public*/ = ADDR_W'('h20);
   localparam logic [ADDR_W-1:0] ADDR_FRAME_SIZE  /*verilator public*/ = ADDR_W'('h24);
   localparam logic [ADDR_W-1:0] ADDR_PENALTY     /*verilator public*/ = ADDR_W'('h28);
@@ -93,7 +95,7 @@ module sgm_axi #(
   localparam logic [ADDR_W-1:0] ADDR_IRQ_ENABLE  /*verilator public*/ = ADDR_W'('h48);
   localparam logic [ADDR_W-1:0] ADDR_IRQ_STATUS  /*verilator public*/ = ADDR_W'('h4C);
 
-  localparam logic [31:0] ID_VALUE       /*verilator public*/ = 32'h5347_4D01;  // "SGM", version 1
+  localparam logic [31:0] ID_VALUE       /*verilator public*/ = 32'h5347_4D02;  // "SGM", version 2
   localparam logic [31:0] PENALTY_RESET  /*verilator public*/ = 32'h0000_6412;  // P1 18, P2' 100
   localparam logic [31:0] CONFIG_RESET   /*verilator public*/ = 32'h0000_7131;  // rsad, all stages on, tol 1
   localparam logic [31:0] CTRL_MASK      = 32'h0000_0005;  // ENABLE, HOLD (SOFT_RESET reads 0)
@@ -149,7 +151,7 @@ module sgm_axi #(
 
   function automatic logic defined(input logic [ADDR_W-1:0] a);
     case (a)
-      ADDR_ID, ADDR_D, ADDR_MAX_WIDTH, ADDR_MAX_HEIGHT, ADDR_CENSUS, ADDR_CTRL, ADDR_FRAME_SIZE, ADDR_PENALTY,
+      ADDR_ID, ADDR_D, ADDR_MAX_WIDTH, ADDR_MAX_HEIGHT, ADDR_CENSUS, ADDR_MIN_WIDTH, ADDR_LANES, ADDR_CTRL, ADDR_FRAME_SIZE, ADDR_PENALTY,
       ADDR_CONFIG, ADDR_STATUS, ADDR_FRAMES, ADDR_ERROR, ADDR_ERROR_COUNT, ADDR_LAST_SIZE, ADDR_IRQ_ENABLE,
       ADDR_IRQ_STATUS: defined = 1'b1;
       default: defined = 1'b0;
@@ -236,6 +238,7 @@ module sgm_axi #(
   logic [3:0]  error, error_event;
   logic [XW-1:0] frame_width;
   logic [YW-1:0] frame_height;
+  logic [XW-1:0] core_min_width;
 
   assign s_tready_o = core_tready && !hold_input;
 
@@ -270,7 +273,8 @@ module sgm_axi #(
     .error_o       (error),
     .error_event_o (error_event),
     .frame_width_o (frame_width),
-    .frame_height_o(frame_height)
+    .frame_height_o(frame_height),
+    .min_width_o   (core_min_width)
   );
 
   // ------------------------------------------------------------ status
@@ -316,6 +320,8 @@ module sgm_axi #(
       ADDR_MAX_WIDTH:   reg_rdata = 32'(MAX_WIDTH);
       ADDR_MAX_HEIGHT:  reg_rdata = 32'(MAX_HEIGHT);
       ADDR_CENSUS:      reg_rdata = {16'd0, 8'(CENSUS_HEIGHT), 8'(CENSUS_WIDTH)};
+      ADDR_MIN_WIDTH:   reg_rdata = 32'(core_min_width);
+      ADDR_LANES:       reg_rdata = 32'(LANES);
       ADDR_CTRL:        reg_rdata = ctrl_q;
       ADDR_FRAME_SIZE:  reg_rdata = frame_size_q;
       ADDR_PENALTY:     reg_rdata = penalty_q;

@@ -97,8 +97,12 @@ module sgm_top #(
   // The configuration of the frame in flight (taken at its start of frame;
   // still the finished frame's in the cycle of frame_done_o).
   output logic [XW-1:0] frame_width_o,
-  output logic [YW-1:0] frame_height_o
+  output logic [YW-1:0] frame_height_o,
+  // The build's narrowest frame (MIN_FRAME_WIDTH, a constant): sgm_axi's MIN_WIDTH.
+  output logic [XW-1:0] min_width_o
 );
+
+  assign min_width_o = XW'(MIN_FRAME_WIDTH);
 
   // ------------------------------------------------------------ control
   logic          en;

@@ -18,6 +18,10 @@ uint32_t Driver::encodeConfig(const FrameConfig& f) {
          (f.p2Paper ? SGM_CONFIG_P2_PAPER : 0u) | (f.weightsEqual ? SGM_CONFIG_WEIGHTS_EQUAL : 0u);
 }
 
+bool Driver::sizeFits(const Identity& id, uint32_t width, uint32_t height) {
+  return width >= id.minWidth && width <= id.maxWidth && height >= SGM_MIN_HEIGHT && height <= id.maxHeight;
+}
+
 bool Driver::identify(Identity* id) {
   const uint32_t value = read(SGM_REG_ID);
   if (id) {
@@ -28,6 +32,8 @@ bool Driver::identify(Identity* id) {
     const uint32_t census = read(SGM_REG_CENSUS);
     id->censusWidth = census >> SGM_CENSUS_WIDTH_SHIFT & SGM_CENSUS_FIELD_MASK;
     id->censusHeight = census >> SGM_CENSUS_HEIGHT_SHIFT & SGM_CENSUS_FIELD_MASK;
+    id->minWidth = read(SGM_REG_MIN_WIDTH);
+    id->lanes = read(SGM_REG_LANES);
   }
   return value == SGM_ID_VALUE;
 }

@@ -30,6 +30,7 @@ struct Identity {
   uint32_t version = 0;  // low byte of ID
   uint32_t disparities = 0, maxWidth = 0, maxHeight = 0;
   uint32_t censusWidth = 0, censusHeight = 0;
+  uint32_t minWidth = 0, lanes = 0;  // narrowest frame width, row lanes
 };
 
 // One frame's run-time configuration (the fields of FRAME_SIZE, PENALTY, CONFIG).
@@ -74,6 +75,9 @@ class Driver {
   uint32_t interrupts();                 // IRQ_STATUS
   void clearInterrupts(uint32_t mask);
 
+  // Whether the core of this identity takes a frame of this size (the core drops
+  // any other and flags ERROR.CONFIG): minWidth <= width <= maxWidth, 9 <= height <= maxHeight.
+  static bool sizeFits(const Identity& id, uint32_t width, uint32_t height);
   static uint32_t encodeSize(uint32_t width, uint32_t height);
   static uint32_t encodePenalty(const FrameConfig& frame);
   static uint32_t encodeConfig(const FrameConfig& frame);

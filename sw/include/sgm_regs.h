@@ -16,6 +16,8 @@
 #define SGM_REG_MAX_WIDTH       0x08u /* MAX_WIDTH of the build */
 #define SGM_REG_MAX_HEIGHT      0x0Cu /* MAX_HEIGHT of the build */
 #define SGM_REG_CENSUS          0x10u /* census window: [7:0] width, [15:8] height */
+#define SGM_REG_MIN_WIDTH       0x14u /* narrowest frame width of the build (map version 2) */
+#define SGM_REG_LANES           0x18u /* row lanes of the build, LANES (map version 2) */
 
 /* ---- control (read-write) */
 #define SGM_REG_CTRL            0x20u
@@ -36,7 +38,8 @@
 #define SGM_REG_IRQ_STATUS      0x4Cu /* write 1 to clear; irq_o = |(IRQ_STATUS & IRQ_ENABLE) */
 
 /* ---- values and fields */
-#define SGM_ID_VALUE            0x53474D01u /* 'S' 'G' 'M', version 1 */
+#define SGM_ID_VALUE            0x53474D02u /* 'S' 'G' 'M', version 2 (1 had no MIN_WIDTH, LANES) */
+#define SGM_MIN_HEIGHT          9u /* shortest frame of every build (sgm_stream_ctrl) */
 #define SGM_ID_MAGIC_MASK       0xFFFFFF00u
 #define SGM_ID_VERSION_MASK     0x000000FFu
 

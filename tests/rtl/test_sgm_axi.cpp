@@ -111,6 +111,8 @@ TEST(SgmAxi, RtlOffsetsAndResetValuesMatchTheHeader) {
       {"MAX_WIDTH", {Rtl::ADDR_MAX_WIDTH, SGM_REG_MAX_WIDTH}},
       {"MAX_HEIGHT", {Rtl::ADDR_MAX_HEIGHT, SGM_REG_MAX_HEIGHT}},
       {"CENSUS", {Rtl::ADDR_CENSUS, SGM_REG_CENSUS}},
+      {"MIN_WIDTH", {Rtl::ADDR_MIN_WIDTH, SGM_REG_MIN_WIDTH}},
+      {"LANES", {Rtl::ADDR_LANES, SGM_REG_LANES}},
       {"CTRL", {Rtl::ADDR_CTRL, SGM_REG_CTRL}},
       {"FRAME_SIZE", {Rtl::ADDR_FRAME_SIZE, SGM_REG_FRAME_SIZE}},
       {"PENALTY", {Rtl::ADDR_PENALTY, SGM_REG_PENALTY}},
@@ -143,6 +145,12 @@ struct RegisterSpec {
 constexpr sgm::CensusShape kCensus =
     sgm::censusShape(Rtl::CENSUS_H == 9 ? sgm::CensusWindow::k9x9 : sgm::CensusWindow::k9x5);
 
+// MIN_WIDTH of a one-lane build is max(D, 16) (sgm_top MIN_FRAME_WIDTH; the
+// fixture's builds have one lane). SizeFitsAgreesWithTheCore checks the value by
+// behaviour: a frame one column narrower is dropped.
+static_assert(Rtl::LANES == 1, "kOneLaneMinWidth holds for one-lane builds");
+constexpr uint32_t kOneLaneMinWidth = Rtl::D > 16 ? uint32_t(Rtl::D) : 16u;
+
 std::vector<RegisterSpec> registers() {
   return {
       {"ID", SGM_REG_ID, SGM_ID_VALUE, 0},
@@ -151,6 +159,8 @@ std::vector<RegisterSpec> registers() {
       {"MAX_HEIGHT", SGM_REG_MAX_HEIGHT, uint32_t(Rtl::MAX_HEIGHT), 0},
       {"CENSUS", SGM_REG_CENSUS,
        uint32_t(kCensus.width) << SGM_CENSUS_WIDTH_SHIFT | uint32_t(kCensus.height) << SGM_CENSUS_HEIGHT_SHIFT, 0},
+      {"MIN_WIDTH", SGM_REG_MIN_WIDTH, kOneLaneMinWidth, 0},
+      {"LANES", SGM_REG_LANES, uint32_t(Rtl::LANES), 0},
       {"CTRL", SGM_REG_CTRL, 0, SGM_CTRL_MASK},
       {"FRAME_SIZE", SGM_REG_FRAME_SIZE, 0, 0xFFFFFFFFu},
       {"PENALTY", SGM_REG_PENALTY, SGM_PENALTY_RESET, SGM_PENALTY_MASK},
@@ -173,6 +183,36 @@ TEST(SgmAxi, ResetValuesAndIdentification) {
   EXPECT_EQ(id.disparities, uint32_t(kD));
   EXPECT_EQ(id.censusWidth * id.censusHeight, uint32_t(kCensus.bits + 1));
   EXPECT_EQ(c.model().irq_o, 0);
+}
+
+// The identification's frame limits (MIN_WIDTH, MAX_WIDTH, MAX_HEIGHT, the
+// shortest frame) through the driver's sizeFits agree with what the core takes:
+// a frame just outside is dropped with ERROR.CONFIG, one on the border streams.
+TEST(SgmAxi, SizeFitsAgreesWithTheCore) {
+  AxiCore c("sgm_axi_sizefits", 3, {0, 0});
+  drv::Identity id;
+  ASSERT_TRUE(c.driver.identify(&id));
+  EXPECT_EQ(id.lanes, uint32_t(Rtl::LANES));
+  ASSERT_GE(id.minWidth, 16u);
+  const uint32_t w = id.minWidth, h = SGM_MIN_HEIGHT;
+  EXPECT_TRUE(drv::Driver::sizeFits(id, w, h));
+  EXPECT_TRUE(drv::Driver::sizeFits(id, id.maxWidth, id.maxHeight));
+  EXPECT_FALSE(drv::Driver::sizeFits(id, id.maxWidth + 1, h));
+  EXPECT_FALSE(drv::Driver::sizeFits(id, w, id.maxHeight + 1));
+  for (const cv::Size bad : {cv::Size(int(w) - 1, int(h)), cv::Size(int(w), int(h) - 1)}) {
+    EXPECT_FALSE(drv::Driver::sizeFits(id, uint32_t(bad.width), uint32_t(bad.height))) << bad;
+    c.driver.configure(frameConfig(defaults(), bad));
+    c.driver.enable(c.enabled = true);
+    const uint32_t before = c.driver.errors().counts[3];
+    const FrameInput f = scene(bad.width, bad.height, 21, defaults());
+    c.extra.push(sgm::tb::frameBeats(f.left.data, f.right.data, bad.width, bad.height, f.left.step, f.right.step));
+    while (!c.extra.empty()) c.steps(1);
+    c.steps(20);
+    EXPECT_EQ(c.driver.errors().counts[3], before + 1) << "a " << bad << " frame is dropped";
+  }
+  c.driver.clearErrors();
+  c.expectBitExact({scene(int(w), int(h), 22, defaults())}, "the narrowest, shortest frame");
+  EXPECT_EQ(c.driver.errors().sticky, 0u);
 }
 
 // Read-back of every writable bit, reserved bits reading 0, byte strobes,
@@ -220,7 +260,7 @@ TEST(SgmAxi, UndefinedAddressesAnswerSlverrAndChangeNothing) {
     EXPECT_EQ(read.data, 0u) << "read 0x" << std::hex << a;
     EXPECT_EQ(c.bus.write(a, 0xFFFFFFFFu).resp, sgm::tb::kAxilSlvErr) << "write 0x" << std::hex << a;
   }
-  EXPECT_EQ(undefined, 64 - 16);
+  EXPECT_EQ(undefined, 64 - 18);
   for (size_t k = 0; k < registers().size(); ++k)
     EXPECT_EQ(c.bus.read(registers()[k].offset).data, before[k]) << registers()[k].name;
   // Address bits [1:0] are ignored.
