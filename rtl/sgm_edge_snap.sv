@@ -22,6 +22,9 @@
 //         |I(n) - I(n-1)| and its drop flag (a drop at n-1) are computed once,
 //         when it enters; an entry takes part only if it continues the row of
 //         x (frame pixels of the same row: positions arrive in raster order).
+//   max   the maxima of the step candidates (two compare-select levels), the
+//         drops and x's fields, registered (the maxima and the comparison in
+//         one slot were the 5-lane core's critical path at 97.4 MHz)
 //   dec   the snapping decision (step comparisons), registered
 //   out   the selected disparity, output registers.
 // Parameters: DW disparity width (4 fractional bits), MAX_WIDTH, CW column /
@@ -31,7 +34,7 @@
 // Positions: every slot carries (col_i, row_i) of a virtual raster. width_i
 // and height_i complete the interface the other row stages share; positions
 // and in_valid_i say everything this stage needs.
-// Latency: LATENCY = 8 slots, LATENCY_ROWS = 0. Throughput: one pixel per slot.
+// Latency: LATENCY = 9 slots, LATENCY_ROWS = 0. Throughput: one pixel per slot.
 // Reset: control only (frame-pixel flags).
 module sgm_edge_snap #(
   parameter int DW        /*verilator public*/ = 8,
@@ -65,7 +68,7 @@ module sgm_edge_snap #(
 );
 
   localparam int LATENCY_ROWS /*verilator public*/ = 0;
-  localparam int LATENCY      /*verilator public*/ = 8;
+  localparam int LATENCY      /*verilator public*/ = 9;
 
   localparam int AW = $clog2(MAX_WIDTH);
   localparam int GB = $clog2(GRAY_ROWS);  // bank bits (row mod GRAY_ROWS)
@@ -152,7 +155,31 @@ module sgm_edge_snap #(
   wire [8:0] right0 = st_p1;
   wire [8:0] right1 = max9(st_p1, st_p2);
   wire [8:0] right2 = max9(right1, st_p3);
-  wire [2:0] hit = drop & {left2 > right2, left1 > right1, left0 > right0};
+
+  // max: the maxima, the drops and x's fields registered.
+  logic [6*9-1:0]  mx_q;     // {left2, left1, left0, right2, right1, right0}
+  logic [2:0]      mdrop_q;
+  logic [3*DW-1:0] mcand_q;  // disp(x+1), disp(x+2), disp(x+3)
+  logic [DW-1:0]   mdx_q;
+  logic            mvx_q, mwen_q;
+  logic [CW-1:0]   mcol_q;
+  logic [RW-1:0]   mrow_q;
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      mx_q    <= {left2, left1, left0, right2, right1, right0};
+      mdrop_q <= drop;
+      mcand_q <= {win_q[0*EW + CW + RW +: DW], win_q[1*EW + CW + RW +: DW], win_q[2*EW + CW + RW +: DW]};
+      mdx_q   <= d_x;
+      mvx_q   <= v_x;
+      mwen_q  <= wen_q[3];
+      mcol_q  <= win_q[3*EW + RW +: CW];
+      mrow_q  <= win_q[3*EW +: RW];
+    end
+  end
+
+  wire [8:0] ml2 = mx_q[5*9 +: 9], ml1 = mx_q[4*9 +: 9], ml0 = mx_q[3*9 +: 9];
+  wire [8:0] mr2 = mx_q[2*9 +: 9], mr1 = mx_q[1*9 +: 9], mr0 = mx_q[0*9 +: 9];
+  wire [2:0] hit = mdrop_q & {ml2 > mr2, ml1 > mr1, ml0 > mr0};
 
   // dec: the decision registered (the step comparisons in one slot, the
   // selection of the snapped disparity in the next).
@@ -165,12 +192,12 @@ module sgm_edge_snap #(
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       hit_q   <= hit;
-      cand_q  <= {win_q[0*EW + CW + RW +: DW], win_q[1*EW + CW + RW +: DW], win_q[2*EW + CW + RW +: DW]};
-      dx_q    <= d_x;
-      vx_q    <= v_x;
-      wen_x_q <= wen_q[3];
-      colx_q  <= win_q[3*EW + RW +: CW];
-      rowx_q  <= win_q[3*EW +: RW];
+      cand_q  <= mcand_q;
+      dx_q    <= mdx_q;
+      vx_q    <= mvx_q;
+      wen_x_q <= mwen_q;
+      colx_q  <= mcol_q;
+      rowx_q  <= mrow_q;
     end
   end
 
@@ -191,19 +218,21 @@ module sgm_edge_snap #(
   end
 
   // ------------------------------------------------------------ control
-  logic dec_real_q;
+  logic max_real_q, dec_real_q;
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       p0_real_q   <= 1'b0;
       p1_real_q   <= 1'b0;
       wreal_q     <= '0;
+      max_real_q  <= 1'b0;
       dec_real_q  <= 1'b0;
       out_valid_o <= 1'b0;
     end else if (en_i) begin
       p0_real_q   <= in_valid_i;
       p1_real_q   <= p0_real_q;
       wreal_q     <= {wreal_q[NW-2:0], p1_real_q};
-      dec_real_q  <= wreal_q[3];
+      max_real_q  <= wreal_q[3];
+      dec_real_q  <= max_real_q;
       out_valid_o <= dec_real_q;
     end
   end
