@@ -156,24 +156,20 @@ module sgm_edge_snap #(
   wire [8:0] right1 = max9(st_p1, st_p2);
   wire [8:0] right2 = max9(right1, st_p3);
 
-  // max: the maxima, the drops and x's fields registered.
+  // max: the maxima and the drops registered; x's fields {disp(x+1), disp(x+2),
+  // disp(x+3), disp(x), valid(x), snap enable, col, row} ride along in one
+  // bundle through max and dec.
+  localparam int XF = 4 * DW + 2 + CW + RW;
+  wire  [XF-1:0]   xf = {win_q[0*EW + CW + RW +: DW], win_q[1*EW + CW + RW +: DW], win_q[2*EW + CW + RW +: DW],
+                         d_x, v_x, wen_q[3], win_q[3*EW + RW +: CW], win_q[3*EW +: RW]};
   logic [6*9-1:0]  mx_q;     // {left2, left1, left0, right2, right1, right0}
   logic [2:0]      mdrop_q;
-  logic [3*DW-1:0] mcand_q;  // disp(x+1), disp(x+2), disp(x+3)
-  logic [DW-1:0]   mdx_q;
-  logic            mvx_q, mwen_q;
-  logic [CW-1:0]   mcol_q;
-  logic [RW-1:0]   mrow_q;
+  logic [2*XF-1:0] xf_q;     // x's fields at max (low half) and at dec (high half)
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       mx_q    <= {left2, left1, left0, right2, right1, right0};
       mdrop_q <= drop;
-      mcand_q <= {win_q[0*EW + CW + RW +: DW], win_q[1*EW + CW + RW +: DW], win_q[2*EW + CW + RW +: DW]};
-      mdx_q   <= d_x;
-      mvx_q   <= v_x;
-      mwen_q  <= wen_q[3];
-      mcol_q  <= win_q[3*EW + RW +: CW];
-      mrow_q  <= win_q[3*EW +: RW];
+      xf_q    <= {xf_q[0 +: XF], xf};
     end
   end
 
@@ -183,23 +179,16 @@ module sgm_edge_snap #(
 
   // dec: the decision registered (the step comparisons in one slot, the
   // selection of the snapped disparity in the next).
-  logic [2:0]    hit_q;
-  logic [3*DW-1:0] cand_q;   // disp(x+1), disp(x+2), disp(x+3)
-  logic [DW-1:0] dx_q;
-  logic          vx_q, wen_x_q;
-  logic [CW-1:0] colx_q;
-  logic [RW-1:0] rowx_q;
+  logic [2:0]      hit_q;
   always_ff @(posedge clk_i) begin
-    if (en_i) begin
-      hit_q   <= hit;
-      cand_q  <= mcand_q;
-      dx_q    <= mdx_q;
-      vx_q    <= mvx_q;
-      wen_x_q <= mwen_q;
-      colx_q  <= mcol_q;
-      rowx_q  <= mrow_q;
-    end
+    if (en_i) hit_q <= hit;
   end
+  wire  [3*DW-1:0] cand_q;   // disp(x+1), disp(x+2), disp(x+3)
+  wire  [DW-1:0]   dx_q;
+  wire             vx_q, wen_x_q;
+  wire  [CW-1:0]   colx_q;
+  wire  [RW-1:0]   rowx_q;
+  assign {cand_q, dx_q, vx_q, wen_x_q, colx_q, rowx_q} = xf_q[XF +: XF];
 
   logic [DW-1:0] snapped;
   always_comb begin
