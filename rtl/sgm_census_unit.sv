@@ -204,7 +204,9 @@ module sgm_census_unit #(
   logic [RKW-1:0] rank3;
   sgm_popcount #(.N(NB)) u_rank (
     .bits_i  (census3_q),
-    .count_o (rank3)
+    .count_o (rank3),
+    .ones1_o (),
+    .ones2_o ()
   );
 
   always_ff @(posedge clk_i) begin

@@ -9,11 +9,14 @@
 //
 // Parameters: none (the disparity only enters through outside_i).
 // Latency: 2 enabled cycles. Stage A registers the rank difference (signed),
-// Hamming distance and the out-of-image flag of the slot; stage B selects by
-// mode_i, which belongs to stage B's slot (the slot entered one enabled cycle
-// earlier). Stage B is one adder: the mode and the out-of-image case select
-// its operands, and |rank difference| = (diff xor sign) + sign takes its
-// +sign as the carry in, so no separate absolute value or output mux.
+// the Hamming distance as its two weighted counts (sgm_popcount ones1_o + 2
+// ones2_o; the popcount with its own final adder was the 5-lane core's critical
+// path at 10.1 ns on ECP5) and the out-of-image flag of the slot; stage B
+// selects by mode_i, which belongs to stage B's slot (the slot entered one
+// enabled cycle earlier), and is one three-operand sum: the
+// mode and the out-of-image case select its operands, and |rank difference| =
+// (diff xor sign) + sign takes its +sign as the carry in, so no separate
+// absolute value or output mux.
 // Throughput: one cost per enabled cycle. No control registers, no reset.
 module sgm_cost_pe #(
   parameter int  NB    = 44,
@@ -31,21 +34,28 @@ module sgm_cost_pe #(
   output logic [CBITS-1:0]  cost_o
 );
 
-  logic [RKW-1:0] hamming;
+  // The Hamming distance as its two weighted counts (hamming = ham1 + 2 ham2):
+  // stage A registers them, stage B adds them into the cost.
+  logic [RKW-1:0] ham1;
+  logic [RKW-2:0] ham2;
   sgm_popcount #(.N(NB)) u_hamming (
     .bits_i  (lcensus_i ^ rcensus_i),
-    .count_o (hamming)
+    .count_o (),
+    .ones1_o (ham1),
+    .ones2_o (ham2)
   );
 
   // Stage A
   logic [RKW:0]   diff_q;  // lrank - rrank, two's complement (-NB .. NB)
-  logic [RKW-1:0] ham_q;
+  logic [RKW-1:0] ham1_q;
+  logic [RKW-2:0] ham2_q;
   logic           out_q;
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       diff_q <= {1'b0, lrank_i} - {1'b0, rrank_i};
-      ham_q  <= hamming;
+      ham1_q <= ham1;
+      ham2_q <= ham2;
       out_q  <= outside_i;
     end
   end
@@ -61,11 +71,12 @@ module sgm_cost_pe #(
   wire [CBITS-1:0] cmax1   = CBITS'(NB);  // Cmax of rt and rsad, half of unified's
   wire [RKW-1:0]   rt_xor  = diff_q[RKW-1:0] ^ {RKW{neg}};
   wire [CBITS-1:0] rt_op   = out_q ? cmax1 : use_rt ? CBITS'(rt_xor) : '0;
-  wire [CBITS-1:0] ham_op  = out_q ? (mode_i[1] ? cmax1 : '0) : use_ham ? CBITS'(ham_q) : '0;
+  wire [CBITS-1:0] ham_op  = out_q ? (mode_i[1] ? cmax1 : '0) : use_ham ? CBITS'(ham1_q) : '0;
+  wire [CBITS-1:0] ham2_op = !out_q && use_ham ? CBITS'({ham2_q, 1'b0}) : '0;
   wire             rt_cin  = !out_q && use_rt && neg;
 
   always_ff @(posedge clk_i) begin
-    if (en_i) cost_o <= rt_op + ham_op + CBITS'(rt_cin);
+    if (en_i) cost_o <= rt_op + ham_op + ham2_op + CBITS'(rt_cin);
   end
 
 endmodule
