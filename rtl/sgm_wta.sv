@@ -8,7 +8,8 @@
 //          when subpixel_i and 0 < d* < D-1 and den > 0; else disp = 16 d*.
 //
 // Structure (one register stage per slot, all stages advance only when en_i):
-//   T1 .. T(TREE_STAGES)  binary comparator tree, LPS levels per stage. A node
+//   T1 .. T(TREE_STAGES)  binary comparator tree, LPS = 1 level per stage (two
+//        levels per stage were the 5-lane core's critical path, 10.0 ns on ECP5). A node
 //        is {b, a, m, d}: the candidate's cost m, its index d and the costs of
 //        its neighbours a = S(d-1), b = S(d+1), carried along so that the
 //        winner arrives with the three costs the refinement needs. The upper
@@ -24,7 +25,7 @@
 //
 // Parameters: D disparities (power of two, 16 .. 128), SW width of S,
 // CW column bits, RW row bits of the slot position (passed through).
-// Latency: LATENCY = TREE_STAGES + 5 slots (D = 16: 7, 32/64: 8, 128: 9): the
+// Latency: LATENCY = TREE_STAGES + 5 slots (D = 16: 9, 32: 10, 64: 11, 128: 12): the
 // result of the slot presented at enabled edge n is on the outputs after
 // enabled edge n + LATENCY - 1. Throughput: one pixel per slot.
 // Reset: only the valid_o pipeline (control); data registers start unknown.
@@ -35,7 +36,7 @@ module sgm_wta #(
   parameter int RW /*verilator public*/ = 11,
   localparam int LD          = $clog2(D),
   localparam int DW          = LD + 4,
-  localparam int LPS         = 2,                     // comparator levels per slot
+  localparam int LPS         = 1,                     // comparator levels per slot
   localparam int TREE_STAGES = (LD + LPS - 1) / LPS,
   localparam int LATENCY     /*verilator public*/ = TREE_STAGES + 5
 ) (
