@@ -177,14 +177,15 @@ module sgm_median5x5 #(
   // ------------------------------------------------------------ bit stages
   // Bit stage i (deciding bit B = DW-1-i) is two slots (the 25-input count and
   // the decision each have a clock of their own):
-  //   count   from cand_q, kk_q, planes_q, res_q: z = #{zeros}, registered with
-  //           the two candidate subsets (zeros, ones = cand & plane B), k, the
-  //           result so far and planes B-1 .. 0 (planes2_q)
-  //   decide  bit B = k >= z; the subset, k (- z) and the result for stage i+1
+  //   count   from cand_q, kk_q, planes_q, res_q: z = #{cand & ~plane B},
+  //           registered with the candidates, plane B, k, the result so far and
+  //           planes B-1 .. 0 (planes2_q)
+  //   decide  bit B = k >= z; the subset cand & (plane B xnor bit B) (one LUT3
+  //           per entry), k (- z) and the result for stage i+1
   // Registers of bit stage i: cand_q[i*N +: N], kk_q[i*KW +: KW],
   // planes_q[plane_off(i) +: (DW-i)*N]; res_q[(i-1)*DW +: DW] for i >= 1
-  // (bits DW-1 .. DW-i decided, the others 0); of its count half: z_q, zero_q,
-  // one_q, kc_q, rc_q at index i, planes2_q[plane_off(i+1) - N*DW +: B*N].
+  // (bits DW-1 .. DW-i decided, the others 0); of its count half: z_q, cc_q,
+  // pb_q, kc_q, rc_q at index i, planes2_q[plane_off(i+1) - N*DW +: B*N].
   logic [DW*N-1:0]  cand_q;
   logic [DW*KW-1:0] kk_q;
   logic [2*DW*SW-1:0] side_q;
@@ -192,7 +193,7 @@ module sgm_median5x5 #(
   logic [2*DW-1:0]  ok_q;     // the centre is a real pixel
 
   logic [DW*5-1:0]      z_d, z_q;
-  logic [(DW-1)*N-1:0]  zero_d, zero_q, one_d, one_q;  // the last stage needs only z
+  logic [(DW-1)*N-1:0]  cc_d, cc_q, pb_d, pb_q;  // candidates, plane B (the last stage needs only z)
   logic [DW*KW-1:0]     kc_q;
   logic [DW*DW-1:0]     rc_d, rc_q;
   logic [PB-N*DW-1:0]   planes_d, planes2_q;
@@ -209,8 +210,8 @@ module sgm_median5x5 #(
     wire [N-1:0]  plane = planes_q[plane_off(i) + B*N +: N];
     assign z_d[i*5 +: 5]    = popcount25(cand & ~plane);
     if (i < DW - 1) begin : g_sets
-      assign zero_d[i*N +: N] = cand & ~plane;
-      assign one_d[i*N +: N]  = cand & plane;
+      assign cc_d[i*N +: N] = cand;
+      assign pb_d[i*N +: N] = plane;
       assign planes_d[plane_off(i+1) - N*DW +: B*N] = planes_q[plane_off(i) +: B*N];
     end
     if (i == 0) begin : g_first
@@ -224,7 +225,7 @@ module sgm_median5x5 #(
     wire          one   = {1'b0, kk} >= z;  // bit B of the k-th smallest
     wire [DW-1:0] res_n = rc_q[i*DW +: DW] | (DW'(one) << B);
     if (i < DW - 1) begin : g_pass
-      assign cand_d[i*N +: N]  = one ? one_q[i*N +: N] : zero_q[i*N +: N];
+      assign cand_d[i*N +: N]  = cc_q[i*N +: N] & ~(pb_q[i*N +: N] ^ {N{one}});
       assign kk_d[i*KW +: KW]  = one ? kk - z[KW-1:0] : kk;
       assign res_d[i*DW +: DW] = res_n;
     end else begin : g_out
@@ -238,8 +239,8 @@ module sgm_median5x5 #(
     if (en_i) begin
       // count halves
       z_q       <= z_d;
-      zero_q    <= zero_d;
-      one_q     <= one_d;
+      cc_q      <= cc_d;
+      pb_q      <= pb_d;
       kc_q      <= kk_q;
       rc_q      <= rc_d;
       planes2_q <= planes_d;

@@ -8,8 +8,12 @@
 //          when subpixel_i and 0 < d* < D-1 and den > 0; else disp = 16 d*.
 //
 // Structure (one register stage per slot, all stages advance only when en_i):
-//   T1 .. T(TREE_STAGES)  binary comparator tree, LPS = 1 level per stage (two
-//        levels per stage were the 5-lane core's critical path, 10.0 ns on ECP5). A node
+//   T0   the D/2 comparisons of the tree's first level, registered with S (the
+//        first tree stage from the path engine's registers was the 5-lane core's
+//        critical path, 10.0 ns on ECP5; a register behind every level instead
+//        would cost the LUT6 that merges two levels of 2:1 selects on xc7)
+//   T1 .. T(TREE_STAGES-1)  binary comparator tree, LPS = 2 levels per stage, the
+//        first level's selection by T0's registered comparisons. A node
 //        is {b, a, m, d}: the candidate's cost m, its index d and the costs of
 //        its neighbours a = S(d-1), b = S(d+1), carried along so that the
 //        winner arrives with the three costs the refinement needs. The upper
@@ -25,7 +29,7 @@
 //
 // Parameters: D disparities (power of two, 16 .. 128), SW width of S,
 // CW column bits, RW row bits of the slot position (passed through).
-// Latency: LATENCY = TREE_STAGES + 5 slots (D = 16: 9, 32: 10, 64: 11, 128: 12): the
+// Latency: LATENCY = TREE_STAGES + 5 slots (D = 16: 8, 32/64: 9, 128: 10): the
 // result of the slot presented at enabled edge n is on the outputs after
 // enabled edge n + LATENCY - 1. Throughput: one pixel per slot.
 // Reset: only the valid_o pipeline (control); data registers start unknown.
@@ -36,8 +40,8 @@ module sgm_wta #(
   parameter int RW /*verilator public*/ = 11,
   localparam int LD          = $clog2(D),
   localparam int DW          = LD + 4,
-  localparam int LPS         = 1,                     // comparator levels per slot
-  localparam int TREE_STAGES = (LD + LPS - 1) / LPS,
+  localparam int LPS         = 2,                     // comparator levels per slot
+  localparam int TREE_STAGES = 1 + (LD + LPS - 1) / LPS,  // T0 and the level pairs
   localparam int LATENCY     /*verilator public*/ = TREE_STAGES + 5
 ) (
   input  wire              clk_i,
@@ -83,9 +87,21 @@ module sgm_wta #(
   assign {row_o, col_o} = pos_q[(LATENCY-1)*PW +: PW];
   assign valid_o        = valid_q[LATENCY-1];
 
+  // ---------------------------------------------------- T0: first-level comparisons
+  // c1_q[i]: S(2i+1) < S(2i) (the upper input wins only when strictly smaller).
+  logic [D*SW-1:0] s_q;
+  logic [D/2-1:0]  c1_q;
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      s_q <= s_i;
+      for (int i = 0; i < D / 2; i++) c1_q[i] <= s_i[(2*i+1)*SW +: SW] < s_i[(2*i)*SW +: SW];
+    end
+  end
+
   // ---------------------------------------------------- T: comparator tree
   // Level l has D >> l nodes; level LD is the winner. Levels l % LPS == 0 and
-  // the last level are registered, the others are combinational.
+  // the last level are registered, the others are combinational; level 1
+  // selects by c1_q.
   for (genvar l = 0; l <= LD; l++) begin : g_lvl
     logic [(D>>l)*NW-1:0] node;
     if (l == 0) begin : g_leaf
@@ -94,21 +110,22 @@ module sgm_wta #(
         if (i == 0) begin : g_first
           assign a = '0;                       // no refinement at d = 0
         end else begin : g_a
-          assign a = s_i[(i-1)*SW +: SW];
+          assign a = s_q[(i-1)*SW +: SW];
         end
         if (i == D - 1) begin : g_last
           assign b = '0;                       // no refinement at d = D-1
         end else begin : g_b
-          assign b = s_i[(i+1)*SW +: SW];
+          assign b = s_q[(i+1)*SW +: SW];
         end
-        assign node[i*NW +: NW] = {b, a, s_i[i*SW +: SW], LD'(i)};
+        assign node[i*NW +: NW] = {b, a, s_q[i*SW +: SW], LD'(i)};
       end
     end else begin : g_cmp
       logic [(D>>l)*NW-1:0] pick;
       for (genvar i = 0; i < (D >> l); i++) begin : g_node
         wire [NW-1:0] lo = g_lvl[l-1].node[(2*i)*NW +: NW];
         wire [NW-1:0] hi = g_lvl[l-1].node[(2*i+1)*NW +: NW];
-        assign pick[i*NW +: NW] = hi[LD +: SW] < lo[LD +: SW] ? hi : lo;
+        wire          up = l == 1 ? c1_q[i] : hi[LD +: SW] < lo[LD +: SW];
+        assign pick[i*NW +: NW] = up ? hi : lo;
       end
       if (l % LPS == 0 || l == LD) begin : g_reg
         always_ff @(posedge clk_i) begin
