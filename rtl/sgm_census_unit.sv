@@ -88,8 +88,9 @@ module sgm_census_unit #(
   logic [LB-1:0] mem_q [0:MAX_WIDTH-1];
   logic [LB-1:0] rd_q;
   logic [7:0]    pix1_q;
-  logic [CW-1:0] col1_q, width1_q;
-  logic [RW-1:0] row1_q, height1_q;
+  logic [CW-1:0] col1_q, wm4_q;
+  logic [RW-1:0] row1_q;
+  logic [(2*RY+2)*(RW+1)-1:0] hgt1_q;  // hgt1_q[k (RW + 1) +: RW + 1] = height + k
   logic          v1_q;
 
   always_ff @(posedge clk_i) begin
@@ -105,8 +106,8 @@ module sgm_census_unit #(
       pix1_q    <= pix_i;
       col1_q    <= col_i;
       row1_q    <= row_i;
-      width1_q  <= width_i;
-      height1_q <= height_i;
+      wm4_q     <= width_i - CW'(RX);
+      for (int k = 0; k <= 2 * RY + 1; k++) hgt1_q[k*(RW+1) +: RW+1] <= {1'b0, height_i} + (RW+1)'(k);
     end
   end
 
@@ -133,22 +134,37 @@ module sgm_census_unit #(
   // Centre of the slot: x >= 4 -> (x - 4, y - RY), else (width + x - 4, y - RY - 1).
   // Window row i holds raster row y - 2RY + i (x >= 4) or y - 2RY - 1 + i (x < 4, the
   // centre column is in the previous virtual row), i.e. row cy + i - RY, inside
-  // the frame when off <= y + i < height + off with off = 2RY or 2RY + 1. Window column
-  // j holds cx + j - 4, inside when 4 <= cx + j < width + 4.
+  // the frame when off <= y + i < height + off with off = 2RY or 2RY + 1, that is
+  // y >= off - i and y < height + (off - i): hgt1_q holds height + k, registered
+  // in s1 for k = 0 .. 2RY + 1, so each row test is one comparison.
+  // Window column j holds cx + j - 4, inside when 4 <= cx + j < width + 4; since
+  // 0 <= x < width and width >= 16 that is x + j >= 8 when x >= 4 (cx = x - 4; the
+  // upper bound holds) and x + j < 8 when x < 4 (cx = width + x - 4; the lower
+  // bound holds): a comparison of x with a constant, no adder on the path.
   wire             wrap   = col1_q < CW'(RX);
-  wire  [CW-1:0]   cx     = wrap ? width1_q + col1_q - CW'(RX) : col1_q - CW'(RX);
-  wire  [RW+1:0]   roff   = wrap ? (RW+2)'(2 * RY + 1) : (RW+2)'(2 * RY);
+  wire  [CW-1:0]   cx     = wrap ? wm4_q + col1_q : col1_q - CW'(RX);
   wire  [RW-1:0]   cy     = row1_q - (wrap ? RW'(RY + 1) : RW'(RY));
   logic [WR-1:0]   row_ok;
   logic [WC-1:0]   col_ok;
 
   for (genvar i = 0; i < WR; i++) begin : g_row_mask
-    wire [RW+1:0] yi = {2'b00, row1_q} + (RW+2)'(i);
-    assign row_ok[i] = yi >= roff && yi < {2'b00, height1_q} + roff;
+    localparam int OFF0 = 2 * RY - i;      // off - i, x >= 4
+    localparam int OFF1 = 2 * RY + 1 - i;  // off - i, x < 4 (>= 1)
+    wire below0 = {1'b0, row1_q} < hgt1_q[OFF0*(RW+1) +: RW+1];
+    wire below1 = {1'b0, row1_q} < hgt1_q[OFF1*(RW+1) +: RW+1];
+    wire ok1    = row1_q >= RW'(OFF1) && below1;
+    if (OFF0 == 0) begin : g_top
+      assign row_ok[i] = wrap ? ok1 : below0;
+    end else begin : g_above
+      assign row_ok[i] = wrap ? ok1 : row1_q >= RW'(OFF0) && below0;
+    end
   end
   for (genvar j = 0; j < WC; j++) begin : g_col_mask
-    wire [CW+1:0] xj = {2'b00, cx} + (CW+2)'(j);
-    assign col_ok[j] = xj >= (CW+2)'(RX) && xj < {2'b00, width1_q} + (CW+2)'(RX);
+    if (j == 2 * RX) begin : g_right
+      assign col_ok[j] = !wrap;
+    end else begin : g_inner
+      assign col_ok[j] = wrap ? col1_q < CW'(2 * RX - j) : col1_q >= CW'(2 * RX - j);
+    end
   end
 
   logic [WR-1:0] row_ok2_q;
