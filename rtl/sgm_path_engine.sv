@@ -186,6 +186,7 @@ module sgm_path_engine #(
   logic [LW-1:0]   min0_c;
   sgm_path_ring #(.D(D), .CW(CW), .LW(LW), .PW(PW), .LANES(K)) u_ring (
     .clk_i   (clk_i),
+    .rst_ni  (rst_ni),
     .en_i    (en_i),
     .p1_i    (p1_i),
     .cost_i  (cost_b),
@@ -204,11 +205,12 @@ module sgm_path_engine #(
   logic [XW-1:0]   col_p;
   logic [YW-1:0]   row_p;
   if (K > 1) begin : g_carry
-    sgm_delay #(.WIDTH(D*CW + 3*PW + 3 + XW + YW), .DEPTH(K - 1)) u_carry (
-      .clk_i (clk_i),
-      .en_i  (en_i),
-      .d_i   ({cost_b, p2r_b[PW +: 3*PW], start_b, col_b, row_b}),
-      .q_o   ({cost_p, p2r_p, start, col_p, row_p})
+    sgm_delay_ram #(.WIDTH(D*CW + 3*PW + 3 + XW + YW), .DEPTH(K - 1)) u_carry (
+      .clk_i  (clk_i),
+      .rst_ni (rst_ni),
+      .en_i   (en_i),
+      .d_i    ({cost_b, p2r_b[PW +: 3*PW], start_b, col_b, row_b}),
+      .q_o    ({cost_p, p2r_p, start, col_p, row_p})
     );
   end else begin : g_no_carry
     assign {cost_p, p2r_p, start, col_p, row_p} = {cost_b, p2r_b[PW +: 3*PW], start_b, col_b, row_b};

@@ -15,8 +15,9 @@
 // (counted from 1; none before the first unit); a boundary inside the sub-PE
 // takes at most one, and any further register placed there joins the loop
 // register after the last tree level, which closes the loop. So K = U gives
-// one unit per stage. The Lr vector travels beside the tree through the same
-// registers, and the inputs a sub-PE part takes later (min Lr of the previous
+// one unit per stage. The Lr vector travels beside the tree as many slots as
+// the tree's registers (a rotating memory, sgm_delay_ram), and the inputs a
+// sub-PE part takes later (min Lr of the previous
 // pixel; cost, P2r and path start) are carried with the pixel. LANES = 1 is
 // the loop of the single-lane core: combinational PEs and tree, one register
 // after the tree.
@@ -35,6 +36,7 @@ module sgm_path_ring #(
   localparam int LATENCY = LANES
 ) (
   input  wire             clk_i,
+  input  wire             rst_ni,   // the Lr carry's pointer (sgm_delay_ram)
   input  wire             en_i,
   input  wire  [PW-1:0]   p1_i,     // configuration (constant while the frame flows)
   // Slot input: the pixel of this slot's lane.
@@ -125,14 +127,14 @@ module sgm_path_ring #(
   // ------------------------------------------------------ the minimum tree
   // Level l (0 = the leaves: the D PE results padded with all ones to P) holds
   // P / 4^l nodes; node n of level l + 1 is the minimum of nodes 4n .. 4n + 3
-  // of level l (the heap order of sgm_min_tree). lvl_in[l] = {nodes, Lr} of
+  // of level l (the heap order of sgm_min_tree). lvl_in[l] = the nodes of
   // level l before the registers of its unit (2 + l), lvl_out[l] after them.
-  localparam int VW = P * LW + D * LW;
+  localparam int VW = P * LW;
   // split_var: each level is its own variable for Verilator (no false loop).
   logic [VW-1:0] lvl_in  [LEVELS+1] /* verilator split_var */;
   logic [VW-1:0] lvl_out [LEVELS+1] /* verilator split_var */;
 
-  assign lvl_in[0] = {{(P-D){{LW{1'b1}}}}, lr_pe, lr_pe};
+  assign lvl_in[0] = {{(P-D){{LW{1'b1}}}}, lr_pe};
 
   for (genvar l = 0; l <= LEVELS; l++) begin : g_level
     localparam int NR = regs_after(2 + l);
@@ -150,23 +152,38 @@ module sgm_path_ring #(
     end
     if (l < LEVELS) begin : g_nodes
       localparam int N = P / (ARITY ** (l + 1));  // nodes of level l + 1
-      logic [P*LW-1:0] nodes;
       for (genvar n = 0; n < P; n++) begin : g_node
         if (n < N) begin : g_min
           sgm_min_tree #(.N(ARITY), .W(LW), .ARITY(ARITY)) u_node (
-            .values_i (lvl_out[l][D*LW + ARITY*n*LW +: ARITY*LW]),
-            .min_o    (nodes[n*LW +: LW])
+            .values_i (lvl_out[l][ARITY*n*LW +: ARITY*LW]),
+            .min_o    (lvl_in[l+1][n*LW +: LW])
           );
         end else begin : g_pad
-          assign nodes[n*LW +: LW] = {LW{1'b1}};
+          assign lvl_in[l+1][n*LW +: LW] = {LW{1'b1}};
         end
       end
-      assign lvl_in[l+1] = {nodes, lvl_out[l][0 +: D*LW]};
     end
   end
 
-  assign lr_fb  = lvl_out[LEVELS][0 +: D*LW];
-  assign min_fb = lvl_out[LEVELS][D*LW +: LW];
+  // The Lr vector travels beside the tree as far as all of its registers
+  // together (LR_DELAY = K slots minus the sub-PE's own registers), in a
+  // rotating memory rather than a register chain (sgm_delay_ram: half the xc7
+  // LUTs of the SRLs a chain becomes).
+  function automatic integer lr_delay();
+    integer l;
+    lr_delay = 0;
+    for (l = 0; l <= LEVELS; l++) lr_delay = lr_delay + regs_after(2 + l);
+  endfunction
+  localparam int LR_DELAY = lr_delay();
+  sgm_delay_ram #(.WIDTH(D * LW), .DEPTH(LR_DELAY)) u_lr_carry (
+    .clk_i  (clk_i),
+    .rst_ni (rst_ni),
+    .en_i   (en_i),
+    .d_i    (lr_pe),
+    .q_o    (lr_fb)
+  );
+
+  assign min_fb = lvl_out[LEVELS][0 +: LW];
   assign lr_o   = lr_fb;
   assign min_o  = min_fb;
 

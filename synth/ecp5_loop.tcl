@@ -13,7 +13,7 @@ set flags [env_or SYNTH_ECP5_FLAGS ""]
 set out   [env_or SYNTH_OUT build/pnr/loop-d$d-k$lanes/synth]
 set here  [file dirname [info script]]
 
-yosys read_verilog -sv $rtl/sgm_path_pe.sv $rtl/sgm_min_tree.sv $rtl/sgm_path_ring.sv $here/sgm_path_loop.sv
+yosys read_verilog -sv $rtl/sgm_path_pe.sv $rtl/sgm_min_tree.sv $rtl/sgm_delay_ram.sv $rtl/sgm_path_ring.sv $here/sgm_path_loop.sv
 yosys chparam -set D $d -set LANES $lanes sgm_path_loop
 yosys hierarchy -check -top sgm_path_loop
 yosys synth_ecp5 {*}$flags -top sgm_path_loop -json $out/netlist.json

@@ -15,7 +15,7 @@ set d   [env_or SYNTH_LOOP_D 16]
 set out [env_or SYNTH_OUT build/synth/ice40-loop-d$d]
 set here [file dirname [info script]]
 
-yosys read_verilog -sv $rtl/sgm_path_pe.sv $rtl/sgm_min_tree.sv $rtl/sgm_path_ring.sv $here/sgm_path_loop.sv
+yosys read_verilog -sv $rtl/sgm_path_pe.sv $rtl/sgm_min_tree.sv $rtl/sgm_delay_ram.sv $rtl/sgm_path_ring.sv $here/sgm_path_loop.sv
 yosys chparam -set D $d sgm_path_loop
 yosys hierarchy -check -top sgm_path_loop
 yosys synth_ice40 -top sgm_path_loop -json $out/netlist.json

@@ -172,7 +172,7 @@ PNR_LOOP_D     ?= 64
 PNR_LOOP_LANES ?= 1 2 3 4
 PNR_LOOP_CFG    = $(PNR_DIR)/loop-d$(PNR_LOOP_D)-k$(PNR_LOOP_K)
 PNR_LOOP_RUN    = $(PNR_LOOP_CFG)/lfe5u-$(subst k,f,$(PNR_DEVICE))-$(PNR_SPEED)
-PNR_LOOP_DEPS  := synth/sgm_path_loop.sv synth/ecp5_loop.tcl rtl/sgm_path_pe.sv rtl/sgm_min_tree.sv rtl/sgm_path_ring.sv
+PNR_LOOP_DEPS  := synth/sgm_path_loop.sv synth/ecp5_loop.tcl rtl/sgm_path_pe.sv rtl/sgm_min_tree.sv rtl/sgm_delay_ram.sv rtl/sgm_path_ring.sv
 
 .PHONY: pnr-loop pnr-loop-one
 pnr-loop: pnr-tools $(PNR_SUMMARY)

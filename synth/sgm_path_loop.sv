@@ -56,6 +56,7 @@ module sgm_path_loop #(
   logic [LW-1:0]   min0_q;
   sgm_path_ring #(.D(D), .CW(CW), .LW(LW), .PW(PW), .LANES(LANES)) u_ring (
     .clk_i   (clk_i),
+    .rst_ni  (1'b1),   // no reset pin: the Lr carry's pointer starts at its power-up value
     .en_i    (en_i),
     .p1_i    (p1),
     .cost_i  (cost_b),

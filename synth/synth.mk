@@ -124,7 +124,7 @@ $(SYNTH_OUT)/xc7-flat/done: $(SYNTH_COMMON) synth/xilinx_flat.tcl | check-tools
 
 # The loop harness: synth_ice40, nextpnr-ice40 (placed and routed, timing
 # report), icetime on the routed design as a second opinion.
-$(SYNTH_LOOP)/done: synth/sgm_path_loop.sv synth/ice40_loop.tcl rtl/sgm_path_pe.sv rtl/sgm_min_tree.sv rtl/sgm_path_ring.sv | check-tools
+$(SYNTH_LOOP)/done: synth/sgm_path_loop.sv synth/ice40_loop.tcl rtl/sgm_path_pe.sv rtl/sgm_min_tree.sv rtl/sgm_delay_ram.sv rtl/sgm_path_ring.sv | check-tools
 	@rm -rf $(@D) && mkdir -p $(@D)
 	@echo "synth: iCE40 loop harness, D=$(ICE40_LOOP_D), $(ICE40_DEVICE) (logs: $(@D)/)"
 	@start=$$(date +%s); \

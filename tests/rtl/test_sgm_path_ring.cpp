@@ -109,6 +109,7 @@ std::string runFrame(Top& top, const Frame& f, std::mt19937& rng, double idle) {
 TEST(SgmPathRing, RandomFramesBackToBack) {
   Top top("sgm_path_ring");
   top->en_i = 0;
+  top.reset();
   std::mt19937 rng(5);
   const int sizes[][2] = {{1, 5}, {2, 7}, {16, 9}, {37, 11}, {kD + 3, 6}};
   int k = 0;
@@ -122,6 +123,7 @@ TEST(SgmPathRing, RandomFramesBackToBack) {
 TEST(SgmPathRing, PenaltyExtremes) {
   Top top("sgm_path_ring_extremes");
   top->en_i = 0;
+  top.reset();
   std::mt19937 rng(6);
   for (auto [p1, p2] : {std::pair{0, 0}, {0, 255}, {255, 255}, {20, 200}})
     EXPECT_EQ(runFrame(top, randomFrame(40, 2 * kLanes + 1, p1, p2, sgm::P2Mode::kKnee, rng), rng, 0.0), "");
