@@ -15,7 +15,10 @@
 //
 // Pipeline (all stages advance only when en_i):
 //   P0    input registers (pixel, position, frame-pixel flag)
-//   P1    gray read of the P0 pixel
+//   P1    gray read of the P0 pixel (the block RAM's read register)
+//   P2    the gray registered again (the block RAM's clock-to-out, 4.3 ns on
+//         ECP5, in front of the step was the 5-lane core's critical path at
+//         108.9 MHz)
 //   W     a window along the stream, w[0] the newest; the pixel leaving is
 //         x = w[3], with x+1 .. x+3 in w[2] .. w[0]; x-1, x-2 keep only their
 //         step and row-continuation flags (w[4], w[5]). Each pixel's step
@@ -34,7 +37,7 @@
 // Positions: every slot carries (col_i, row_i) of a virtual raster. width_i
 // and height_i complete the interface the other row stages share; positions
 // and in_valid_i say everything this stage needs.
-// Latency: LATENCY = 9 slots, LATENCY_ROWS = 0. Throughput: one pixel per slot.
+// Latency: LATENCY = 10 slots, LATENCY_ROWS = 0. Throughput: one pixel per slot.
 // Reset: control only (frame-pixel flags).
 module sgm_edge_snap #(
   parameter int DW        /*verilator public*/ = 8,
@@ -68,7 +71,7 @@ module sgm_edge_snap #(
 );
 
   localparam int LATENCY_ROWS /*verilator public*/ = 0;
-  localparam int LATENCY      /*verilator public*/ = 9;
+  localparam int LATENCY      /*verilator public*/ = 10;
 
   localparam int AW = $clog2(MAX_WIDTH);
   localparam int GB = $clog2(GRAY_ROWS);  // bank bits (row mod GRAY_ROWS)
@@ -81,11 +84,11 @@ module sgm_edge_snap #(
     if (en_i && gray_we_i) gray_mem[{gray_row_i[GB-1:0], gray_col_i[AW-1:0]}] <= gray_i;
   end
 
-  // ------------------------------------------------------------ P0, P1
-  logic [EW-1:0] p0_q, p1_q;
-  logic          p0_real_q, p1_real_q;
-  logic          p0_en_q, p1_en_q;
-  logic [7:0]    p1_gray_q;
+  // ------------------------------------------------------------ P0, P1, P2
+  logic [EW-1:0] p0_q, p1_q, p2_q;
+  logic          p0_real_q, p1_real_q, p2_real_q;
+  logic          p0_en_q, p1_en_q, p2_en_q;
+  logic [7:0]    p1_gray_q, p2_gray_q;
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
@@ -94,11 +97,14 @@ module sgm_edge_snap #(
       p1_q      <= p0_q;
       p1_en_q   <= p0_en_q;
       p1_gray_q <= gray_mem[{p0_q[GB-1:0], p0_q[RW +: AW]}];
+      p2_q      <= p1_q;
+      p2_en_q   <= p1_en_q;
+      p2_gray_q <= p1_gray_q;
     end
   end
 
   // ------------------------------------------------------------ window
-  // Entering pixel n (from P1) against the newest entry, pixel n-1:
+  // Entering pixel n (from P2) against the newest entry, pixel n-1:
   //   cont  n and n-1 are frame pixels of the same row
   //   step  step(n) = |I(n) - I(n-1)| with bit 8 set when cont (0: absent, never wins)
   //   drop  a drop at e = n-1 (cont, both valid, disp(n-1) > disp(n) + 32)
@@ -112,21 +118,21 @@ module sgm_edge_snap #(
 
   wire [DW-1:0] prev_disp = win_q[CW + RW +: DW];
   wire          prev_vld  = win_q[EW - 1];
-  wire          new_vld   = p1_q[EW - 1];
-  wire [DW-1:0] new_disp  = p1_q[CW + RW +: DW];
-  wire          new_cont  = p1_real_q && wreal_q[0] && p1_q[0 +: RW] == win_q[0 +: RW];
-  wire [7:0]    new_mag   = p1_gray_q >= wgray_q ? p1_gray_q - wgray_q : wgray_q - p1_gray_q;
+  wire          new_vld   = p2_q[EW - 1];
+  wire [DW-1:0] new_disp  = p2_q[CW + RW +: DW];
+  wire          new_cont  = p2_real_q && wreal_q[0] && p2_q[0 +: RW] == win_q[0 +: RW];
+  wire [7:0]    new_mag   = p2_gray_q >= wgray_q ? p2_gray_q - wgray_q : wgray_q - p2_gray_q;
   wire          new_drop  = new_cont && prev_vld && new_vld &&
                             {1'b0, prev_disp} > {1'b0, new_disp} + (DW+1)'(32);
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      win_q   <= {win_q[(NW-1)*EW-1:0], p1_q};
+      win_q   <= {win_q[(NW-1)*EW-1:0], p2_q};
       wcont_q <= {wcont_q[3:0], new_cont};
       wstep_q <= {wstep_q[(NW+1)*9-1:0], new_cont ? {1'b1, new_mag} : 9'd0};
       wdrop_q <= {wdrop_q[1:0], new_drop};
-      wgray_q <= p1_gray_q;
-      wen_q   <= {wen_q[NW-2:0], p1_en_q};
+      wgray_q <= p2_gray_q;
+      wen_q   <= {wen_q[NW-2:0], p2_en_q};
     end
   end
 
@@ -212,6 +218,7 @@ module sgm_edge_snap #(
     if (!rst_ni) begin
       p0_real_q   <= 1'b0;
       p1_real_q   <= 1'b0;
+      p2_real_q   <= 1'b0;
       wreal_q     <= '0;
       max_real_q  <= 1'b0;
       dec_real_q  <= 1'b0;
@@ -219,7 +226,8 @@ module sgm_edge_snap #(
     end else if (en_i) begin
       p0_real_q   <= in_valid_i;
       p1_real_q   <= p0_real_q;
-      wreal_q     <= {wreal_q[NW-2:0], p1_real_q};
+      p2_real_q   <= p1_real_q;
+      wreal_q     <= {wreal_q[NW-2:0], p2_real_q};
       max_real_q  <= wreal_q[3];
       dec_real_q  <= max_real_q;
       out_valid_o <= dec_real_q;
