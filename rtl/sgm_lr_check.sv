@@ -51,6 +51,8 @@
 //   R1  read lt_mem[bank (y-1) % 2][x]
 //   R1o the memory's output register
 //   R2  xr = x - d; read dr_mem[bank (y-1) % 2][xr] when x >= d
+//   R2o the memory's output register (the block RAM's clock-to-out in front of
+//       the comparison was the 5-lane core's critical path at 101.8 MHz)
 //   R3  valid = !check_en || (x >= d && |dR - d| <= tol); output registers.
 // Order of memory accesses (slot = S-side slot, a write at slot t is visible
 // to reads at slots > t):
@@ -79,7 +81,7 @@
 // CW column bits (must hold width), RW row bits (must hold every virtual row
 // of a frame, flush rows included), LANES (K >= 1), ROW_BANKS (rows per
 // memory, a power of two: 2 with one lane and the S-side read position).
-// Latency: one row plus LATENCY = 4 slots: left pixel (x, y) presented on the
+// Latency: one row plus LATENCY = 5 slots: left pixel (x, y) presented on the
 // WTA side is on the outputs after the enabled edge of S slot (x, y+1) plus
 // LATENCY - 1 edges, i.e. S slot (x, y) + width + LATENCY - 1 edges.
 // Throughput: one pixel per slot. Reset: control registers only (tail counter,
@@ -94,7 +96,7 @@ module sgm_lr_check #(
   parameter int LANES     /*verilator public*/ = 1,
   parameter int ROW_BANKS /*verilator public*/ = 2,
   localparam int LD       = $clog2(D),
-  localparam int LATENCY  /*verilator public*/ = 4
+  localparam int LATENCY  /*verilator public*/ = 5
 ) (
   input  wire              clk_i,
   input  wire              rst_ni,
@@ -358,16 +360,37 @@ module sgm_lr_check #(
     end
   end
 
-  // ------------------------------------------------------------ R3 / outputs
-  wire [LD-1:0] diff = r2_dr_q > r2_d_q ? r2_dr_q - r2_d_q : r2_d_q - r2_dr_q;
-  wire          pass = !r2_chk_q || (r2_ok_q && diff <= LD'(r2_tol_q));
+  // ------------------------------------------------------------ R2o
+  logic [LD-1:0] r2o_dr_q, r2o_d_q;
+  logic [DW-1:0] r2o_disp_q;
+  logic [CW-1:0] r2o_col_q;
+  logic [RW-1:0] r2o_row_q;
+  logic          r2o_ok_q, r2o_real_q, r2o_chk_q;
+  logic [2:0]    r2o_tol_q;
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      disp_o  <= r2_disp_q;
+      r2o_dr_q   <= r2_dr_q;
+      r2o_d_q    <= r2_d_q;
+      r2o_disp_q <= r2_disp_q;
+      r2o_ok_q   <= r2_ok_q;
+      r2o_col_q  <= r2_col_q;
+      r2o_row_q  <= r2_row_q;
+      r2o_chk_q  <= r2_chk_q;
+      r2o_tol_q  <= r2_tol_q;
+    end
+  end
+
+  // ------------------------------------------------------------ R3 / outputs
+  wire [LD-1:0] diff = r2o_dr_q > r2o_d_q ? r2o_dr_q - r2o_d_q : r2o_d_q - r2o_dr_q;
+  wire          pass = !r2o_chk_q || (r2o_ok_q && diff <= LD'(r2o_tol_q));
+
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      disp_o  <= r2o_disp_q;
       valid_o <= pass;
-      col_o   <= r2_col_q;
-      row_o   <= r2_row_q;
+      col_o   <= r2o_col_q;
+      row_o   <= r2o_row_q;
     end
   end
 
@@ -385,12 +408,14 @@ module sgm_lr_check #(
       r1_real_q   <= 1'b0;
       r1o_real_q  <= 1'b0;
       r2_real_q   <= 1'b0;
+      r2o_real_q  <= 1'b0;
       out_valid_o <= 1'b0;
     end else if (en_i) begin
       r1_real_q   <= in_real && armed_q;
       r1o_real_q  <= r1_real_q;
       r2_real_q   <= r1_real;
-      out_valid_o <= r2_real_q;
+      r2o_real_q  <= r2_real_q;
+      out_valid_o <= r2o_real_q;
     end
   end
 
