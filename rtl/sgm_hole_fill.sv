@@ -60,7 +60,7 @@ module sgm_hole_fill #(
 );
 
   localparam int LATENCY_ROWS /*verilator public*/ = 1;
-  localparam int LATENCY      /*verilator public*/ = 3;
+  localparam int LATENCY      /*verilator public*/ = 4;
 
   localparam int AW  = $clog2(MAX_WIDTH);            // column address bits
   localparam int RIW = $clog2((MAX_WIDTH + 1) / 2);  // run index bits
@@ -113,7 +113,7 @@ module sgm_hole_fill #(
   logic [TW-1:0] right2_q;
   logic [CW-1:0] col2_q;
   logic [RW-1:0] row2_q;
-  logic          ok2_q;
+  logic          ok2_q, ok2o_q;
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
@@ -144,21 +144,38 @@ module sgm_hole_fill #(
     if (!rst_ni) begin
       ok1_q       <= 1'b0;
       ok2_q       <= 1'b0;
+      ok2o_q      <= 1'b0;
       out_valid_o <= 1'b0;
     end else if (en_i) begin
       ok1_q       <= armed_q && row_i != '0 && row_i <= height_i && col_i < width_i;
       ok2_q       <= ok1_q && word1_q[PW-1];
-      out_valid_o <= ok2_q;
+      ok2o_q      <= ok2_q;
+      out_valid_o <= ok2o_q;
+    end
+  end
+
+  // Stage 2o: the run-table entry registered again (the block RAM's clock-to-out
+  // in front of stage 3's comparisons).
+  logic [PW-1:0] word2o_q;
+  logic [TW-1:0] right2o_q;
+  logic [CW-1:0] col2o_q;
+  logic [RW-1:0] row2o_q;
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      word2o_q  <= word2_q;
+      right2o_q <= right2_q;
+      col2o_q   <= col2_q;
+      row2o_q   <= row2_q;
     end
   end
 
   // Stage 3: own disparity if it agrees with a neighbour, else min of the existing neighbours.
-  wire [DW-1:0] disp2   = word2_q[PW-2 -: DW];
-  wire          valid2  = word2_q[PW-2-DW];
-  wire          left_e2 = word2_q[DW+RIW];
-  wire [DW-1:0] left2   = word2_q[RIW +: DW];
-  wire          right_e2 = right2_q[DW];
-  wire [DW-1:0] right2  = right2_q[DW-1:0];
+  wire [DW-1:0] disp2   = word2o_q[PW-2 -: DW];
+  wire          valid2  = word2o_q[PW-2-DW];
+  wire          left_e2 = word2o_q[DW+RIW];
+  wire [DW-1:0] left2   = word2o_q[RIW +: DW];
+  wire          right_e2 = right2o_q[DW];
+  wire [DW-1:0] right2  = right2o_q[DW-1:0];
 
   // |own - n| <= 16 (1 px), on DW + 1 bits.
   function automatic logic agrees(input logic [DW-1:0] own, input logic [DW-1:0] n);
@@ -177,8 +194,8 @@ module sgm_hole_fill #(
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      col_o <= col2_q;
-      row_o <= row2_q;
+      col_o <= col2o_q;
+      row_o <= row2o_q;
       if (!valid2 && (left_e2 || right_e2)) begin
         disp_o  <= fill;
         valid_o <= 1'b1;
