@@ -17,8 +17,8 @@
 //
 // Structure: s1 input registers and the delay line (D taps of (NB + RKW) bit
 // registers, 50 / 87, tap 0 = the slot's own right census; with K > 1 the
-// K - 1 slots between two taps are one (K - 1)-word memory of (D - 1) taps'
-// width with a rotating pointer, asynchronous read: distributed RAM), s2 + s3
+// K - 1 slots between two taps are one sgm_delay_ram of (D - 1) taps' width:
+// a (K - 1)-word distributed RAM at a rotating pointer), s2 + s3
 // the two PE stages (sgm_cost_pe).
 //
 // Parameters: D disparities, CW column bits, NB census bits (44 for the 9x5 census,
@@ -58,7 +58,9 @@ module sgm_cost_volume #(
   logic [CW-1:0] col1_q, col2_q;
   logic [1:0]    mode1_q, mode2_q;
   logic          valid1_q, valid2_q;
-  logic [D*EW-1:0] line_q;
+  logic [EW-1:0]       tap0_q;  // tap 0
+  logic [(D-1)*EW-1:0] taps_q;  // taps 1 .. D-1
+  wire  [D*EW-1:0]     line = {taps_q, tap0_q};
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
@@ -73,31 +75,18 @@ module sgm_cost_volume #(
   end
 
   always_ff @(posedge clk_i) begin
-    if (en_i) line_q[0 +: EW] <= {rrank_i, rcensus_i};
+    if (en_i) tap0_q <= {rrank_i, rcensus_i};
   end
 
-  if (LANES == 1) begin : g_shift
-    always_ff @(posedge clk_i) begin
-      if (en_i) line_q[EW +: (D-1)*EW] <= line_q[0 +: (D-1)*EW];
-    end
-  end else begin : g_lanes
-    // Tap d of slot n + 1 = tap d - 1 of slot n - (K - 1): the gap memory's word
-    // at the pointer was written K - 1 slots ago.
-    localparam int GAP = LANES - 1;
-    localparam int PTRW = GAP > 1 ? $clog2(GAP) : 1;
-    logic [(D-1)*EW-1:0] gap_mem [0:GAP-1];
-    logic [PTRW-1:0]     ptr_q;
-    always_ff @(posedge clk_i) begin
-      if (en_i) begin
-        gap_mem[ptr_q]          <= line_q[0 +: (D-1)*EW];
-        line_q[EW +: (D-1)*EW]  <= gap_mem[ptr_q];
-      end
-    end
-    always_ff @(posedge clk_i) begin
-      if (!rst_ni) ptr_q <= '0;
-      else if (en_i) ptr_q <= ptr_q == PTRW'(GAP - 1) ? '0 : ptr_q + 1'b1;
-    end
-  end
+  // Tap d of slot n + 1 = tap d - 1 of slot n - (K - 1): taps 1 .. D-1 are taps
+  // 0 .. D-2 delayed by K slots (K = 1: one register, the shift register).
+  sgm_delay_ram #(.WIDTH((D - 1) * EW), .DEPTH(LANES)) u_taps (
+    .clk_i  (clk_i),
+    .rst_ni (rst_ni),
+    .en_i   (en_i),
+    .d_i    (line[0 +: (D-1)*EW]),
+    .q_o    (taps_q)
+  );
 
   // ------------------------------------------------------------ s2, s3: PEs
   for (genvar d = 0; d < D; d++) begin : g_pe
@@ -114,8 +103,8 @@ module sgm_cost_volume #(
       .mode_i    (mode2_q),
       .lcensus_i (lcensus1_q),
       .lrank_i   (lrank1_q),
-      .rcensus_i (line_q[d*EW +: NB]),
-      .rrank_i   (line_q[d*EW+NB +: RKW]),
+      .rcensus_i (line[d*EW +: NB]),
+      .rrank_i   (line[d*EW+NB +: RKW]),
       .outside_i (outside),
       .cost_o    (cost_o[d*CBITS +: CBITS])
     );
