@@ -167,9 +167,27 @@ module sgm_stream_ctrl #(
   logic [XW-1:0] out_x_q;      // position of the next output pixel
   logic [YW-1:0] out_y_q;
 
+  // Row and column ends as flags kept beside the positions, so that no
+  // comparison with the configuration sits between the positions and the FSM
+  // or the FIFO (the 5-lane core's critical path at 7d29a88). wm2_q and hm1_q
+  // follow width_o / height_o one cycle later: those change only in IDLE, and
+  // the first slot comes after FILL. last_col_q: x_q == width - 1, kept
+  // exact on every slot (width >= MIN_WIDTH >= 16, so 0 is never the last
+  // column); last_row: y_q == height - 1, one cycle behind y_q, which is early
+  // enough because y_q changes only at a last column and is next read at the
+  // next one (>= 16 slots later). The same for the output positions.
+  logic [XW-1:0] wm2_q;
+  logic [YW-1:0] hm1_q;
+  logic          last_col_q, last_row_q, out_eol_q, out_last_row_q;
+  always_ff @(posedge clk_i) begin
+    wm2_q          <= width_o - XW'(2);
+    hm1_q          <= height_o - 1'b1;
+    last_row_q     <= y_q == hm1_q;
+    out_last_row_q <= out_y_q == hm1_q;
+  end
+
   wire first_px = x_q == '0 && y_q == '0;
-  wire last_col = x_q == width_o - 1'b1;
-  wire last_px  = last_col && y_q == height_o - 1'b1;
+  wire last_px  = last_col_q && last_row_q;
 
   // RUN takes the head beat as the next slot, except a tuser beat inside the
   // frame, which is left for the next frame.
@@ -197,11 +215,11 @@ module sgm_stream_ctrl #(
   assign busy_o = state_q != IDLE;
 
   // Framing errors of the beat being taken.
-  wire err_early   = take && head_eol && !last_col;
-  wire err_missing = take && !head_eol && last_col;
+  wire err_early   = take && head_eol && !last_col_q;
+  wire err_missing = take && !head_eol && last_col_q;
 
   assign push   = en_o && res_valid_i;
-  wire out_last = out_x_q == width_o - 1'b1 && out_y_q == height_o - 1'b1;
+  wire out_last = out_eol_q && out_last_row_q;
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
@@ -279,25 +297,31 @@ module sgm_stream_ctrl #(
   // Slot position: restarts at the frame's first slot, counts on through the flush rows.
   always_ff @(posedge clk_i) begin
     if (state_q == IDLE) begin
-      x_q     <= '0;
-      y_q     <= '0;
-      out_x_q <= '0;
-      out_y_q <= '0;
+      x_q       <= '0;
+      y_q       <= '0;
+      last_col_q  <= 1'b0;
+      out_x_q   <= '0;
+      out_y_q   <= '0;
+      out_eol_q <= 1'b0;
     end else begin
       if (slot) begin
-        if (last_col) begin
-          x_q <= '0;
-          y_q <= y_q + 1'b1;
+        if (last_col_q) begin
+          x_q      <= '0;
+          y_q      <= y_q + 1'b1;
+          last_col_q <= 1'b0;
         end else begin
-          x_q <= x_q + 1'b1;
+          x_q      <= x_q + 1'b1;
+          last_col_q <= x_q == wm2_q;
         end
       end
       if (push) begin
-        if (out_x_q == width_o - 1'b1) begin
-          out_x_q <= '0;
-          out_y_q <= out_y_q + 1'b1;
+        if (out_eol_q) begin
+          out_x_q   <= '0;
+          out_y_q   <= out_y_q + 1'b1;
+          out_eol_q <= 1'b0;
         end else begin
-          out_x_q <= out_x_q + 1'b1;
+          out_x_q   <= out_x_q + 1'b1;
+          out_eol_q <= out_x_q == wm2_q;
         end
       end
     end
@@ -311,7 +335,7 @@ module sgm_stream_ctrl #(
       wr_q    <= '0;
     end else begin
       if (push) begin
-        fifo_q[wr_q] <= {out_x_q == '0 && out_y_q == '0, out_x_q == width_o - 1'b1, res_ok_i,
+        fifo_q[wr_q] <= {out_x_q == '0 && out_y_q == '0, out_eol_q, res_ok_i,
                          {(15 - DW){1'b0}}, res_disp_i};
         wr_q         <= wr_q == FAW'(FIFO_DEPTH - 1) ? '0 : wr_q + 1'b1;
       end
