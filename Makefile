@@ -171,11 +171,12 @@ FIXTURE_TEST_$(1) := $(if $(4),$(4),tests/rtl/test_$(2).cpp)
 $(BIN)/rtl-$(1): $(if $(4),$(4),tests/rtl/test_$(2).cpp) $(RTL_SRC) $(RTL_TOPS) $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
 	@mkdir -p $(BIN) $(BUILD)/verilator
 	@echo "verilating $(2) for $$@ (log: $(BUILD)/verilator-$(1).log)"
-	@$(VERILATOR) --cc --exe --build -j $(JOBS) -Wall $(VLT) --x-assign unique --x-initial unique $(VL_TRACE) \
+	@s=$$$$(date +%s); $(VERILATOR) --cc --exe --build -j $(JOBS) -Wall $(VLT) --x-assign unique --x-initial unique $(VL_TRACE) \
 	  -y rtl -y tb/tops --top-module $(2) $(3) -Mdir $(BUILD)/verilator/$(1) -o $(abspath $(BIN))/rtl-$(1) \
 	  $(wildcard rtl/$(2).sv tb/tops/$(2).sv) $(abspath $(if $(4),$(4),tests/rtl/test_$(2).cpp)) $(abspath $(EVAL_OBJ)) $(abspath $(GOLDEN_LIB)) \
 	  -CFLAGS "$(VL_CFLAGS)" -LDFLAGS "$(VL_LDFLAGS)" > $(BUILD)/verilator-$(1).log || \
-	  { tail -30 $(BUILD)/verilator-$(1).log; exit 1; }
+	  { tail -30 $(BUILD)/verilator-$(1).log; exit 1; }; \
+	  echo "time: build rtl-$(1) $$$$(( $$$$(date +%s) - s )) s"
 endef
 
 $(eval $(call rtl_test,p2-lut,sgm_p2_lut,))
@@ -244,8 +245,9 @@ RESULTS := $(BUILD)/test-results
 
 rtl-tests: $(RTL_TEST_BINS)
 	@mkdir -p $(RESULTS)
-	@for t in $(RTL_TEST_BINS); do echo "== $$t"; \
-	  SGM_DATA="$(DATA)" $$t --gtest_output=xml:$(RESULTS)/$$(basename $$t).xml || exit 1; done
+	@for t in $(RTL_TEST_BINS); do echo "== $$t"; s=$$(date +%s); \
+	  SGM_DATA="$(DATA)" $$t --gtest_output=xml:$(RESULTS)/$$(basename $$t).xml || exit 1; \
+	  echo "time: run $$(basename $$t) $$(( $$(date +%s) - s )) s"; done
 
 # verilator --lint-only -Wall on every module; waivers live in rtl/lint.vlt.
 lint: | check-tools
@@ -269,7 +271,8 @@ unit-test: $(BIN)/unit-tests golden
 
 # One closing line over every GoogleTest binary of this run.
 test: lint unit-test rtl-tests
-	@for t in $(TEST_EXTRA); do $(MAKE) --no-print-directory $$t || exit 1; done
+	@for t in $(TEST_EXTRA); do s=$$(date +%s); $(MAKE) --no-print-directory $$t || exit 1; \
+	  echo "time: $$t $$(( $$(date +%s) - s )) s"; done
 	@scripts/test-summary.sh $(RESULTS)
 
 clean:
