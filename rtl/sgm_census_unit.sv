@@ -25,7 +25,8 @@
 //       write addresses of one cycle differ because consecutive slots of a frame
 //       have different columns), centre position and the CENSUS_H + 9 row/column masks.
 //   s3  census: NB (44 / 80) masked compares, centre and neighbours.
-//   s4  rank (popcount tree), all outputs registered.
+//   s4  rank's two weighted counts (the popcount tree without its final adder).
+//   s5  rank = their sum; all outputs registered.
 // Rows of an earlier frame or of flush slots still in the buffer are never
 // used: every such window pixel is masked by the centre position (rows above 0
 // of a new frame are negative, columns of another virtual row lie outside
@@ -44,8 +45,8 @@
 // height + RY, the last flush row the census needs).
 // Frame: width_i >= 16, height_i >= 9, constant during a frame (sampled with
 // every slot).
-// Latency: LATENCY = 4 slots for every parameter value (s1 .. s4): the outputs
-// during slot t belong to the input of slot t - 4. The top mirrors it as its own
+// Latency: LATENCY = 5 slots for every parameter value (s1 .. s5): the outputs
+// during slot t belong to the input of slot t - 5. The top mirrors it as its own
 // localparam (hierarchical parameter references are not portable).
 // Throughput: one slot per enabled cycle.
 module sgm_census_unit #(
@@ -73,7 +74,7 @@ module sgm_census_unit #(
   output logic             valid_o
 );
 
-  localparam int LATENCY /*verilator public*/ = 4;
+  localparam int LATENCY /*verilator public*/ = 5;
   localparam int RX = 4;                // window columns dx = -RX .. RX
   localparam int RY = (CENSUS_H - 1) / 2;  // window rows dy = -RY .. RY (2 / 4)
   localparam int WC = 2 * RX + 1;       // 9 columns
@@ -216,23 +217,45 @@ module sgm_census_unit #(
     end
   end
 
-  // ------------------------------------------------------------ s4: rank, outputs
-  logic [RKW-1:0] rank3;
+  // ------------------------------------------------------------ s4: rank's two weighted counts
+  // rank = ones1 + 2 ones2 (sgm_popcount): the popcount with its final adder
+  // in one slot was the 5-lane core's critical path at 6b1d454 (9.4 ns on ECP5).
+  logic [RKW-1:0] ones1, ones1_4q;
+  logic [RKW-2:0] ones2, ones2_4q;
   sgm_popcount #(.N(NB)) u_rank (
     .bits_i  (census3_q),
-    .count_o (rank3),
-    .ones1_o (),
-    .ones2_o ()
+    .ones1_o (ones1),
+    .ones2_o (ones2)
   );
+
+  logic [NB-1:0] census4_q;
+  logic [7:0]    centre4_q;
+  logic [31:0]   nbr4_q;
+  logic [CW-1:0] cx4_q;
+  logic [RW-1:0] cy4_q;
+  logic          v4_q;
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      census_o <= census3_q;
-      rank_o   <= rank3;
-      centre_o <= centre3_q;
-      nbr_o    <= nbr3_q;
-      col_o    <= cx3_q;
-      row_o    <= cy3_q;
+      ones1_4q  <= ones1;
+      ones2_4q  <= ones2;
+      census4_q <= census3_q;
+      centre4_q <= centre3_q;
+      nbr4_q    <= nbr3_q;
+      cx4_q     <= cx3_q;
+      cy4_q     <= cy3_q;
+    end
+  end
+
+  // ------------------------------------------------------------ s5: rank, outputs
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      census_o <= census4_q;
+      rank_o   <= ones1_4q + {ones2_4q, 1'b0};
+      centre_o <= centre4_q;
+      nbr_o    <= nbr4_q;
+      col_o    <= cx4_q;
+      row_o    <= cy4_q;
     end
   end
 
@@ -242,12 +265,14 @@ module sgm_census_unit #(
       v1_q    <= 1'b0;
       v2_q    <= 1'b0;
       v3_q    <= 1'b0;
+      v4_q    <= 1'b0;
       valid_o <= 1'b0;
     end else if (en_i) begin
       v1_q    <= 1'b1;
       v2_q    <= v1_q && row_ok[RY];
       v3_q    <= v2_q;
-      valid_o <= v3_q;
+      v4_q    <= v3_q;
+      valid_o <= v4_q;
     end
   end
 

@@ -40,7 +40,6 @@ module sgm_cost_pe #(
   logic [RKW-2:0] ham2;
   sgm_popcount #(.N(NB)) u_hamming (
     .bits_i  (lcensus_i ^ rcensus_i),
-    .count_o (),
     .ones1_o (ham1),
     .ones2_o (ham2)
   );

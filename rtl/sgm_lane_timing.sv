@@ -25,7 +25,7 @@ module sgm_lane_timing #(
   parameter int LR_WAIT         = 35,
   parameter int LR_LAG_MAX      = 4,
   parameter int MIN_FRAME_WIDTH = 16,
-  parameter int CENSUS_LATENCY  = 4,
+  parameter int CENSUS_LATENCY  = 5,
   parameter int XW              = 8,
   parameter int RW              = 8
 ) (

@@ -238,7 +238,7 @@ module sgm_top #(
   // lane the census output itself; with K lanes through sgm_lane_deal, whose
   // frame starts at the census unit's first centre of a frame, (W - 4, -(RY + 1)),
   // CENSUS_LATENCY slots after the frame's first slot (0, 0).
-  localparam int CENSUS_LATENCY = 4;                  // sgm_census_unit LATENCY
+  localparam int CENSUS_LATENCY = 5;                  // sgm_census_unit LATENCY
   localparam int CENSUS_LEAD    = (CENSUS_H - 1) / 2 + 1;  // rows of the census raster before row 0
   localparam int DEAL_W         = 2 * (NB + RKW) + 40;
   logic [NB-1:0]  lane_census_l, lane_census_r;

@@ -37,7 +37,7 @@ module tb_cost_front #(
 );
 
   // Mirrors of sgm_census_unit::LATENCY and sgm_cost_volume::LATENCY (checked by the test).
-  localparam int CENSUS_LATENCY /*verilator public*/ = 4;
+  localparam int CENSUS_LATENCY /*verilator public*/ = 5;
   localparam int COST_LATENCY   /*verilator public*/ = 3;
 
   logic [7:0]    l_centre, r_centre;

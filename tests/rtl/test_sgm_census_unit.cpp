@@ -130,7 +130,7 @@ cv::Mat randomImage(int w, int h, std::mt19937& rng, int levels = 256) {
 
 TEST(SgmCensusUnit, LatencyConstant) {
   // The top aligns the other signals with this value (docs/rtl.md pipeline table).
-  EXPECT_EQ(kLatency, 4);
+  EXPECT_EQ(kLatency, 5);
 }
 
 TEST(SgmCensusUnit, RandomImagesSeveralSizes) {

@@ -200,7 +200,7 @@ constexpr CostMode kModes[] = {CostMode::kRt, CostMode::kRsad, CostMode::kUnifie
 TEST(SgmCostVolume, LatencyConstants) {
   // The wrapper mirrors sgm_census_unit / sgm_cost_volume LATENCY; the stream
   // checks below hold the RTL to them slot by slot.
-  EXPECT_EQ(kCensusLatency, 4);
+  EXPECT_EQ(kCensusLatency, 5);
   EXPECT_EQ(int(Rtl::COST_LATENCY), 3);
 }
 
