@@ -203,7 +203,18 @@ module sgm_lr_check #(
   end
 
   // ------------------------------------------------------------ row tail
-  wire last_col = valid_i && col_i == width_i - CW'(1);
+  // width - 1 and width - (D - 1) registered with each slot, used from the next
+  // one on: width_i is constant within a frame and the first slot of a row is
+  // never its last (width >= 16); the compare behind a subtractor was the
+  // 5-lane core's critical path at c9253c6 (8.8 ns on ECP5).
+  logic [CW-1:0] wm1_q, wmd_q;
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      wm1_q <= width_i - CW'(1);
+      wmd_q <= width_i - CW'(D - 1);
+    end
+  end
+  wire last_col = valid_i && col_i == wm1_q;
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
@@ -230,7 +241,7 @@ module sgm_lr_check #(
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       if (last_col) begin
-        tail_col_q  <= width_i - CW'(D - 1);
+        tail_col_q  <= wmd_q;
         tail_bank_q <= row_i[BW-1:0];
       end else if (tail_cnt_p != '0) begin
         tail_col_q  <= tail_col_p + 1'b1;
