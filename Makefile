@@ -228,14 +228,19 @@ $(eval $(call rtl_test,lr-lanes-d16-k1,sgm_lr_check,-GD=16 -GMAX_WIDTH=128 -GRW=
 $(eval $(call rtl_test,lr-lanes-d16-k3,sgm_lr_check,-GD=16 -GMAX_WIDTH=128 -GRW=8 -GLANES=3 -GROW_BANKS=8,tests/rtl/test_sgm_lr_check_lanes.cpp))
 $(eval $(call rtl_test,lr-lanes-d64-k6,sgm_lr_check,-GD=64 -GMAX_WIDTH=256 -GRW=9 -GLANES=6 -GROW_BANKS=16,tests/rtl/test_sgm_lr_check_lanes.cpp))
 $(eval $(call rtl_test,census-unit,sgm_census_unit,-GMAX_WIDTH=128 -GCW=8 -GRW=8))
+# The census unit in the slot order of K row lanes (tests/rtl/test_sgm_census_unit_lanes.cpp).
+$(eval $(call rtl_test,census-lanes-k1,sgm_census_unit,-GMAX_WIDTH=64 -GCW=8 -GRW=8 -GLANES=1,tests/rtl/test_sgm_census_unit_lanes.cpp))
+$(eval $(call rtl_test,census-lanes-k2,sgm_census_unit,-GMAX_WIDTH=64 -GCW=8 -GRW=8 -GLANES=2,tests/rtl/test_sgm_census_unit_lanes.cpp))
+$(eval $(call rtl_test,census-lanes-k3-9x9,sgm_census_unit,-GMAX_WIDTH=64 -GCW=8 -GRW=8 -GLANES=3 -GCENSUS_H=9,tests/rtl/test_sgm_census_unit_lanes.cpp))
+$(eval $(call rtl_test,census-lanes-k6,sgm_census_unit,-GMAX_WIDTH=64 -GCW=8 -GRW=8 -GLANES=6,tests/rtl/test_sgm_census_unit_lanes.cpp))
 # tests/rtl/test_sgm_cost_volume.cpp drives the wrapper tb_cost_front (two census units + the volume): the later --top-module wins.
 $(eval $(call rtl_test,cost-volume-d16,sgm_cost_volume,--top-module tb_cost_front tb/tops/tb_cost_front.sv -GD=16 -GMAX_WIDTH=128 -GCW=8 -GRW=8))
 $(eval $(call rtl_test,cost-volume-d64,sgm_cost_volume,--top-module tb_cost_front tb/tops/tb_cost_front.sv -GD=64 -GMAX_WIDTH=512 -GCW=10 -GRW=9))
-# Rows dealt to lanes (docs/reschedule.md): LANE_LEAD = K + 1 (3 at K = 1) and ROWS >= 2K rows.
-$(eval $(call rtl_test,lane-deal-k1,sgm_lane_deal,-GLANES=1 -GLANE_LEAD=3 -GROWS=2))
-$(eval $(call rtl_test,lane-deal-k2,sgm_lane_deal,-GLANES=2 -GLANE_LEAD=3 -GROWS=4))
-$(eval $(call rtl_test,lane-deal-k3,sgm_lane_deal,-GLANES=3 -GLANE_LEAD=4 -GROWS=8))
-$(eval $(call rtl_test,lane-deal-k6,sgm_lane_deal,-GLANES=6 -GLANE_LEAD=7 -GROWS=16))
+# Rows dealt to lanes from the stream controller's raster (docs/reschedule.md): LANE_LEAD = max(1, K - 1) and ROWS >= max(2, 2K - 2) rows (a power of two).
+$(eval $(call rtl_test,lane-deal-k1,sgm_lane_deal,-GLANES=1 -GLANE_LEAD=1 -GROWS=2))
+$(eval $(call rtl_test,lane-deal-k2,sgm_lane_deal,-GLANES=2 -GLANE_LEAD=1 -GROWS=2))
+$(eval $(call rtl_test,lane-deal-k3,sgm_lane_deal,-GLANES=3 -GLANE_LEAD=2 -GROWS=4))
+$(eval $(call rtl_test,lane-deal-k6,sgm_lane_deal,-GLANES=6 -GLANE_LEAD=5 -GROWS=16))
 # The volume in lane order (docs/reschedule.md): the right delay line's taps K slots apart.
 $(eval $(call rtl_test,cost-lanes-d16-k1,sgm_cost_volume,-GD=16 -GCW=8 -GLANES=1,tests/rtl/test_sgm_cost_volume_lanes.cpp))
 $(eval $(call rtl_test,cost-lanes-d16-k3,sgm_cost_volume,-GD=16 -GCW=8 -GLANES=3,tests/rtl/test_sgm_cost_volume_lanes.cpp))

@@ -3,27 +3,42 @@
 // 9x9), census and rank of ONE image (docs/algorithm.md section 2, docs/rtl.md
 // "Window and census"). The core instantiates it twice (left, right).
 //
-// Input: one slot of the step stream per enabled cycle, (col_i, row_i) = (x, y)
-// in the virtual raster, pix_i the gray pixel (0 on flush slots, row_i >= height).
+// Input: one slot per enabled cycle, (col_i, row_i) = (x, y) the slot's position
+// and pix_i its gray pixel (any value on rows outside 0 .. height-1), active_i = 1;
+// active_i = 0 marks a slot without a position (a lane still waiting for its start
+// at a frame's beginning): it writes nothing and gives valid_o = 0 (pix_i, col_i,
+// row_i don't care).
+// Slot order: K = LANES row lanes (docs/reschedule.md, tb/lane_schedule.hpp): slot
+// K n + k belongs to lane k, each lane a virtual raster of its own rows (consecutive
+// active slots of a lane are consecutive positions of its rows; the row after y in
+// a lane is y + K), and every column is visited in row order with the slots of
+// (x, y - 1) and (x, y) at least 2 slots apart (lane k running `skew` >= 1 columns
+// behind lane k - 1 and width > (K - 1) skew + 1). K = 1 is the plain raster of
+// the core (sgm_stream_ctrl's step stream). A frame may start at any slot.
 // Output: the census of the centre of that slot,
 //   (cx, cy) = (x - 4, y - RY)             if x >= 4
-//            = (width + x - 4, y - RY - 1) otherwise,     RY = (CENSUS_H - 1) / 2,
+//            = (width + x - 4, y - RY - K) otherwise,     RY = (CENSUS_H - 1) / 2
+// (the centre column of x < 4 is in the lane's previous row, K rows up),
 // with census bit k = I(q) < I(p) in golden censusBitIndex order (row-major over
 // dy = -RY..RY, dx = -4..4, centre skipped), 0 for window pixels outside the frame;
 // rank = popcount; centre = I(cx, cy); nbr = I of the four path predecessors,
 // 8 bits each LSB first: 0 deg (cx-1, cy), 45 deg (cx-1, cy-1), 90 deg (cx, cy-1),
-// 135 deg (cx+1, cy-1) (don't care outside the frame); valid_o = the slot came
-// through the pipeline since reset and 0 <= cy < height (0 <= cx < width holds
-// by construction). col_o/row_o = (cx, cy) (row_o meaningless when !valid_o).
+// 135 deg (cx+1, cy-1) (don't care outside the frame); valid_o = the slot was
+// active, came through the pipeline since reset and 0 <= cy < height (0 <= cx <
+// width holds by construction). col_o/row_o = (cx, cy) (row_o meaningless when
+// !valid_o).
 //
 // Structure (stage = one enabled cycle):
 //   s1  line buffer read mem[x] (rows y-2RY .. y-1 of column x), input registers;
 //       width/height are captured here and travel with the slot, so a new frame
 //       may enter while the previous one is still in the pipeline.
-//   s2  window shift (column x, rows y-2RY .. y enters), line buffer write-back of
-//       {rows y-2RY+1 .. y} to mem[x] (the address read one slot earlier; read and
-//       write addresses of one cycle differ because consecutive slots of a frame
-//       have different columns), centre position and the CENSUS_H + 9 row/column masks.
+//   s2  window: the new column (column x, rows y-2RY .. y) enters a register, the
+//       other 8 columns are the lane's previous slot's newest 8 (K slots earlier,
+//       an sgm_delay_ram of DEPTH = K: one register at K = 1, else K - 1 words of
+//       distributed RAM and a register); line buffer write-back of {rows y-2RY+1 ..
+//       y} to mem[x] (the address read one slot earlier; read and write addresses
+//       of one cycle differ because the two visits of a column are 2 slots apart),
+//       active slots only; centre position and the CENSUS_H + 9 row/column masks.
 //   s3  census: NB (44 / 80) masked compares, centre and neighbours.
 //   s4  rank's two weighted counts (the popcount tree without its final adder).
 //   s5  rank = their sum; all outputs registered.
@@ -32,17 +47,21 @@
 // of a new frame are negative, columns of another virtual row lie outside
 // 0 .. width-1). If one column arrives in two consecutive slots (possible only
 // across a frame boundary) the second read misses the first write-back; the
-// missed rows are the previous frame's and masked.
+// missed rows are the previous frame's and masked. Likewise the window columns a
+// lane's first slots of a frame take from the slots K earlier (another frame or
+// an inactive slot) are masked.
 //
 // Memory: one MAX_WIDTH x 8 (CENSUS_H - 1) bit simple dual-port RAM (32 bits for
 // 9x5, 64 for 9x9: the paper's 9-line buffer; synchronous read with enable,
 // write with enable, no same-address read and write) + 9 CENSUS_H x 8 bit window
-// registers.
+// registers, and at K > 1 a (K - 1) x 8 CENSUS_H x 8 bit delay memory (the other
+// lanes' windows).
 //
 // Parameters: CENSUS_H window height (5 or 9; the width is 9); NB = 9 CENSUS_H - 1
 // census bits, RKW = $clog2(NB + 1) rank bits; MAX_WIDTH largest frame width; CW
-// column/width bits (2^CW > MAX_WIDTH); RW row/height bits (row_i must hold
-// height + RY, the last flush row the census needs).
+// column/width bits (2^CW > MAX_WIDTH); RW row/height bits, rows wrap (row_i must
+// hold the last flush row the census needs, height + RY + K - 1, and a row -m < 0
+// must satisfy 2^RW - m >= height + 2 RY + K); LANES = K row lanes (>= 1).
 // Frame: width_i >= 16, height_i >= 9, constant during a frame (sampled with
 // every slot).
 // Latency: LATENCY = 5 slots for every parameter value (s1 .. s5): the outputs
@@ -50,16 +69,18 @@
 // localparam (hierarchical parameter references are not portable).
 // Throughput: one slot per enabled cycle.
 module sgm_census_unit #(
-  parameter int CENSUS_H  = 5,
+  parameter int CENSUS_H  /*verilator public*/ = 5,
   parameter int MAX_WIDTH /*verilator public*/ = 1280,
   parameter int CW        = 11,
   parameter int RW        = 11,
+  parameter int LANES     /*verilator public*/ = 1,
   localparam int NB       = 9 * CENSUS_H - 1,     // census bits (44 / 80)
   localparam int RKW      = $clog2(NB + 1)        // rank bits (6 / 7)
 ) (
   input  wire              clk_i,
   input  wire              rst_ni,
   input  wire              en_i,
+  input  wire              active_i,
   input  wire  [7:0]       pix_i,
   input  wire  [CW-1:0]    col_i,
   input  wire  [RW-1:0]    row_i,
@@ -82,77 +103,102 @@ module sgm_census_unit #(
   localparam int MID = RY * WC + RX;    // window index of the centre (22 / 40)
   localparam int LB = 8 * (WR - 1);     // line buffer word: WR - 1 rows of 8 bits
   localparam int AW = MAX_WIDTH > 1 ? $clog2(MAX_WIDTH) : 1;  // line buffer address bits (<= CW)
+  // Bottom-border constants height + k, k = 0 .. 2RY (x >= 4) and K .. 2RY + K (x < 4):
+  // NH entries, entry e = HIDX(k) holds k = HOFF(e) (e <= 2RY: e, else e + HSHIFT).
+  localparam int HSHIFT = LANES > 2 * RY + 1 ? LANES - 2 * RY - 1 : 0;
+  localparam int NH     = 2 * RY + LANES + 1 - HSHIFT;
 
   // ------------------------------------------------------------ s1: line buffer read
   // mem_q[c][8k +: 8] = row y-2RY+k of column c (k = 2RY-1 the newest), seen from the next
-  // slot y of that column.
+  // slot y of that column (the previous row's slot; with lanes another lane's).
   logic [LB-1:0] mem_q [0:MAX_WIDTH-1];
   logic [LB-1:0] rd_q;
   logic [7:0]    pix1_q;
   logic [CW-1:0] col1_q, wm4_q;
   logic [RW-1:0] row1_q;
-  logic [(2*RY+2)*(RW+1)-1:0] hgt1_q;  // hgt1_q[k (RW + 1) +: RW + 1] = height + k
-  logic          v1_q;
+  logic [NH*(RW+1)-1:0] hgt1_q;  // hgt1_q[e (RW + 1) +: RW + 1] = height + HOFF(e)
+  logic          v1_q;           // the slot came through the pipeline since reset
+  logic          act1_q;         // the slot is active (a position of its lane)
 
   always_ff @(posedge clk_i) begin
     if (en_i) rd_q <= mem_q[col_i[AW-1:0]];
   end
 
+  // An inactive slot (a lane waiting for its start) writes nothing.
   always_ff @(posedge clk_i) begin
-    if (en_i && v1_q) mem_q[col1_q[AW-1:0]] <= {pix1_q, rd_q[LB-1:8]};
+    if (en_i && v1_q && act1_q) mem_q[col1_q[AW-1:0]] <= {pix1_q, rd_q[LB-1:8]};
   end
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
+      act1_q    <= active_i;
       pix1_q    <= pix_i;
       col1_q    <= col_i;
       row1_q    <= row_i;
       wm4_q     <= width_i - CW'(RX);
-      for (int k = 0; k <= 2 * RY + 1; k++) hgt1_q[k*(RW+1) +: RW+1] <= {1'b0, height_i} + (RW+1)'(k);
+      for (int k = 0; k <= 2 * RY; k++) hgt1_q[k*(RW+1) +: RW+1] <= {1'b0, height_i} + (RW+1)'(k);
+      for (int e = 2 * RY + 1; e < NH; e++) hgt1_q[e*(RW+1) +: RW+1] <= {1'b0, height_i} + (RW+1)'(e + HSHIFT);
     end
   end
 
   // ------------------------------------------------------------ s2: window, position, masks
-  // win_q[(WC i + j) * 8 +: 8]: window row i (dy = i - RY, i = 0 the oldest row),
-  // column j (dx = j - RX, j = WC - 1 the newest column).
-  logic [WR*WC*8-1:0] win_q;
-  wire  [WR*8-1:0]    new_col = {pix1_q, rd_q};  // byte i = row y-2RY+i
+  // The window by age: column j (dx = j - RX) of a slot is age a = WC - 1 - j, the new
+  // column of the lane's slot a K slots earlier. age0_q (age 0) is loaded with the new
+  // column; ages 1 .. WC-1 are ages 0 .. WC-2 of the lane's previous slot, K slots
+  // earlier: an sgm_delay_ram of DEPTH = LANES (K = 1: one register, the shift).
+  // win[(WC i + j) * 8 +: 8]: window row i (dy = i - RY, i = 0 the oldest row),
+  // column j (j = WC - 1 the newest column).
+  localparam int CB = WR * 8;            // one window column
+  wire  [CB-1:0]        new_col = {pix1_q, rd_q};  // byte i = row y-2RY+i
+  logic [CB-1:0]        age0_q;          // age 0
+  logic [(WC-1)*CB-1:0] ages_q;          // ages 1 .. WC-1
+  wire  [WC*CB-1:0]     ages = {ages_q, age0_q};
+  wire  [WR*WC*8-1:0]   win;
+
+  always_ff @(posedge clk_i) begin
+    if (en_i) age0_q <= new_col;
+  end
+
+  sgm_delay_ram #(.WIDTH((WC - 1) * CB), .DEPTH(LANES)) u_ages (
+    .clk_i  (clk_i),
+    .rst_ni (rst_ni),
+    .en_i   (en_i),
+    .d_i    (ages[0 +: (WC-1)*CB]),
+    .q_o    (ages_q)
+  );
 
   for (genvar i = 0; i < WR; i++) begin : g_win_row
     for (genvar j = 0; j < WC; j++) begin : g_win_col
-      if (j < WC - 1) begin : g_shift
-        always_ff @(posedge clk_i) begin
-          if (en_i) win_q[(WC*i+j)*8 +: 8] <= win_q[(WC*i+j+1)*8 +: 8];
-        end
-      end else begin : g_load
-        always_ff @(posedge clk_i) begin
-          if (en_i) win_q[(WC*i+j)*8 +: 8] <= new_col[i*8 +: 8];
-        end
-      end
+      assign win[(WC*i+j)*8 +: 8] = ages[(WC-1-j)*CB + i*8 +: 8];
     end
   end
 
-  // Centre of the slot: x >= 4 -> (x - 4, y - RY), else (width + x - 4, y - RY - 1).
-  // Window row i holds raster row y - 2RY + i (x >= 4) or y - 2RY - 1 + i (x < 4, the
-  // centre column is in the previous virtual row), i.e. row cy + i - RY, inside
-  // the frame when off <= y + i < height + off with off = 2RY or 2RY + 1, that is
-  // y >= off - i and y < height + (off - i): hgt1_q holds height + k, registered
-  // in s1 for k = 0 .. 2RY + 1, so each row test is one comparison.
+  // Centre of the slot: x >= 4 -> (x - 4, y - RY), else (width + x - 4, y - RY - K).
+  // Window row i holds row y - 2RY + i (x >= 4) or y - 2RY - K + i (x < 4: the
+  // centre column and every column left of it are in the lane's previous row,
+  // K rows up; the columns of row y in the window are masked), i.e. row cy + i - RY,
+  // inside the frame when off <= y + i < height + off with off = 2RY or 2RY + K,
+  // that is y >= off - i and y < height + (off - i): hgt1_q holds height + k for
+  // every k = off - i needed (0 .. 2RY for x >= 4, K .. 2RY + K for x < 4; entry
+  // HIDX(k)), registered in s1, so each row test is one comparison. Rows wrap in
+  // RW bits: a row -m < 0 reads as 2^RW - m, outside every test as long as
+  // 2^RW - m >= height + 2RY + K.
   // Window column j holds cx + j - 4, inside when 4 <= cx + j < width + 4; since
   // 0 <= x < width and width >= 16 that is x + j >= 8 when x >= 4 (cx = x - 4; the
   // upper bound holds) and x + j < 8 when x < 4 (cx = width + x - 4; the lower
   // bound holds): a comparison of x with a constant, no adder on the path.
   wire             wrap   = col1_q < CW'(RX);
   wire  [CW-1:0]   cx     = wrap ? wm4_q + col1_q : col1_q - CW'(RX);
-  wire  [RW-1:0]   cy     = row1_q - (wrap ? RW'(RY + 1) : RW'(RY));
+  wire  [RW-1:0]   cy     = row1_q - (wrap ? RW'(RY + LANES) : RW'(RY));
   logic [WR-1:0]   row_ok;
   logic [WC-1:0]   col_ok;
 
   for (genvar i = 0; i < WR; i++) begin : g_row_mask
-    localparam int OFF0 = 2 * RY - i;      // off - i, x >= 4
-    localparam int OFF1 = 2 * RY + 1 - i;  // off - i, x < 4 (>= 1)
+    localparam int OFF0 = 2 * RY - i;          // off - i, x >= 4
+    localparam int OFF1 = 2 * RY + LANES - i;  // off - i, x < 4 (>= K)
+    localparam int IDX1 = OFF1 > 2 * RY ? OFF1 - HSHIFT : OFF1;  // HIDX(OFF1); HIDX(OFF0) = OFF0
     wire below0 = {1'b0, row1_q} < hgt1_q[OFF0*(RW+1) +: RW+1];
-    wire below1 = {1'b0, row1_q} < hgt1_q[OFF1*(RW+1) +: RW+1];
+    wire below1 = {1'b0, row1_q} < hgt1_q[IDX1*(RW+1) +: RW+1];
     wire ok1    = row1_q >= RW'(OFF1) && below1;
     if (OFF0 == 0) begin : g_top
       assign row_ok[i] = wrap ? ok1 : below0;
@@ -184,15 +230,15 @@ module sgm_census_unit #(
   end
 
   // ------------------------------------------------------------ s3: census
-  wire  [7:0]    centre = win_q[MID*8 +: 8];
+  wire  [7:0]    centre = win[MID*8 +: 8];
   logic [NB-1:0] census;
 
   for (genvar i = 0; i < WR; i++) begin : g_cen_row
     for (genvar j = 0; j < WC; j++) begin : g_cen_col
       if (WC * i + j < MID) begin : g_before
-        assign census[WC*i+j] = row_ok2_q[i] && col_ok2_q[j] && win_q[(WC*i+j)*8 +: 8] < centre;
+        assign census[WC*i+j] = row_ok2_q[i] && col_ok2_q[j] && win[(WC*i+j)*8 +: 8] < centre;
       end else if (WC * i + j > MID) begin : g_after
-        assign census[WC*i+j-1] = row_ok2_q[i] && col_ok2_q[j] && win_q[(WC*i+j)*8 +: 8] < centre;
+        assign census[WC*i+j-1] = row_ok2_q[i] && col_ok2_q[j] && win[(WC*i+j)*8 +: 8] < centre;
       end
     end
   end
@@ -210,8 +256,8 @@ module sgm_census_unit #(
     if (en_i) begin
       census3_q <= census;
       centre3_q <= centre;
-      nbr3_q    <= {win_q[(MID-WC+1)*8 +: 8], win_q[(MID-WC)*8 +: 8], win_q[(MID-WC-1)*8 +: 8],
-                    win_q[(MID-1)*8 +: 8]};
+      nbr3_q    <= {win[(MID-WC+1)*8 +: 8], win[(MID-WC)*8 +: 8], win[(MID-WC-1)*8 +: 8],
+                    win[(MID-1)*8 +: 8]};
       cx3_q     <= cx2_q;
       cy3_q     <= cy2_q;
     end
@@ -269,7 +315,7 @@ module sgm_census_unit #(
       valid_o <= 1'b0;
     end else if (en_i) begin
       v1_q    <= 1'b1;
-      v2_q    <= v1_q && row_ok[RY];
+      v2_q    <= v1_q && act1_q && row_ok[RY];
       v3_q    <= v2_q;
       v4_q    <= v3_q;
       valid_o <= v4_q;

@@ -13,8 +13,9 @@
 //
 // Inputs per slot (en_i): the raster position col_i / row_i (rows < 0 wrap in
 // YW bits, consecutive slots are consecutive positions within a frame) and its
-// payload. Outputs, one slot later: the lane slot's position, payload and
-// valid_o (0 <= row < height_i, the lane started).
+// payload. Outputs, one slot later: the lane slot's position, payload,
+// valid_o (0 <= row < height_i, the lane started) and active_o (the lane
+// started: its slots are positions of its raster, whatever the row).
 //
 // Parameters: WIDTH payload bits, LANES (K >= 1), SKEW columns, LANE_LEAD rows,
 // ROWS ring rows (a power of two), MAX_WIDTH, XW column bits, YW row bits.
@@ -43,7 +44,8 @@ module sgm_lane_deal #(
   output logic [WIDTH-1:0] data_o,
   output logic [XW-1:0]    col_o,
   output logic [YW-1:0]    row_o,
-  output logic             valid_o
+  output logic             valid_o,
+  output logic             active_o   // the lane has started (any row)
 );
 
   localparam int BW  = $clog2(ROWS);
@@ -111,8 +113,13 @@ module sgm_lane_deal #(
   end
 
   always_ff @(posedge clk_i) begin
-    if (!rst_ni) valid_o <= 1'b0;
-    else if (en_i) valid_o <= cur_active && cur_row < height_i;
+    if (!rst_ni) begin
+      valid_o  <= 1'b0;
+      active_o <= 1'b0;
+    end else if (en_i) begin
+      valid_o  <= cur_active && cur_row < height_i;
+      active_o <= cur_active;
+    end
   end
 
 endmodule

@@ -1,15 +1,16 @@
 `default_nettype none
-// sgm_lane_timing: the two frame-relative positions sgm_top needs with K > 1
-// row lanes (docs/reschedule.md, docs/rtl.md "Lanes: the slot schedule"):
+// sgm_lane_timing: the frame-relative positions sgm_top needs with K > 1 row
+// lanes (docs/reschedule.md, docs/rtl.md "Lanes: the slot schedule"):
 //
-//   sof_o        the census output is the frame's first centre: the frame's
-//                first slot (col_i, row_i) = (0, 0) delayed by CENSUS_LATENCY
-//                slots (sgm_lane_deal restarts its lanes there).
-//   rd_col_o /   the LR check's read position: the census output position
-//   rd_row_o     (cen_col_i, cen_row_i) LR_LAG rows back, registered, with
-//                LR_LAG = 2K - 3 + ceil(LR_WAIT / W) for the frame's width W,
-//                taken at the frame's first centre (slots of the frame before,
-//                still in flight, keep the previous value).
+//   sof_o        the slot is the frame's first, (col_i, row_i) = (0, 0) at the
+//                stream controller (sgm_lane_deal restarts its lanes there).
+//   rd_col_o /   the LR check's read position: the raster census position (the
+//   rd_row_o     centre a census unit in raster order would output for this
+//                slot, CENSUS_LATENCY slots later: (x - 4, y - RY), or
+//                (W + x - 4, y - RY - 1) for x < 4) LR_LAG rows back,
+//                registered, with LR_LAG = 2K - 3 + ceil(LR_WAIT / W) for the
+//                frame's width W, taken at the frame's first centre (slots of
+//                the frame before, still in flight, keep the previous value).
 //
 // ceil(LR_WAIT / W) = 1 + #{m >= 1 : m W < LR_WAIT}, and m W < LR_WAIT iff
 // W <= (LR_WAIT - 1) / m: one constant comparison per m, for the m with
@@ -17,15 +18,17 @@
 //
 // Parameters: LANES (K >= 2), LR_WAIT and LR_LAG_MAX (sgm_top derives them),
 // MIN_FRAME_WIDTH (the narrowest frame), CENSUS_LATENCY (sgm_census_unit's),
-// XW column bits, RW row bits.
-// Latency: sof_o CENSUS_LATENCY slots after its (0, 0); rd_col_o / rd_row_o one
-// slot after the census position. Throughput: one slot per en_i.
+// CENSUS_RY (the census window's rows above the centre), XW column bits, RW
+// row bits.
+// Latency: sof_o 0; rd_col_o / rd_row_o CENSUS_LATENCY + 1 slots after the
+// slot's position. Throughput: one slot per en_i.
 module sgm_lane_timing #(
   parameter int LANES           = 2,
   parameter int LR_WAIT         = 35,
   parameter int LR_LAG_MAX      = 4,
   parameter int MIN_FRAME_WIDTH = 16,
   parameter int CENSUS_LATENCY  = 5,
+  parameter int CENSUS_RY       = 2,
   parameter int XW              = 8,
   parameter int RW              = 8
 ) (
@@ -35,8 +38,6 @@ module sgm_lane_timing #(
   input  wire  [XW-1:0] width_i,    // the frame's width (sgm_stream_ctrl)
   input  wire  [XW-1:0] col_i,      // the slot's position at the stream control
   input  wire  [RW-1:0] row_i,
-  input  wire  [XW-1:0] cen_col_i,  // the slot's position at the census output
-  input  wire  [RW-1:0] cen_row_i,
   output logic          sof_o,
   output logic [XW-1:0] rd_col_o,
   output logic [RW-1:0] rd_row_o
@@ -46,12 +47,27 @@ module sgm_lane_timing #(
   localparam int LAG_TERMS = (LR_WAIT - 1) / MIN_FRAME_WIDTH;
 
   // ------------------------------------------------------------ frame start
-  wire sof0 = col_i == '0 && row_i == '0;
+  // sof_o at the slot itself; sof_cen at the raster census's first centre.
+  assign sof_o = col_i == '0 && row_i == '0;
+  logic sof_cen;
   sgm_delay #(.WIDTH(1), .DEPTH(CENSUS_LATENCY)) u_sof_delay (
     .clk_i (clk_i),
     .en_i  (en_i),
-    .d_i   (sof0),
-    .q_o   (sof_o)
+    .d_i   (sof_o),
+    .q_o   (sof_cen)
+  );
+
+  // ------------------------------------------------------------ raster census position
+  wire          wrap   = col_i < XW'(4);
+  wire [XW-1:0] cx     = wrap ? width_i - XW'(4) + col_i : col_i - XW'(4);
+  wire [RW-1:0] cy     = row_i - (wrap ? RW'(CENSUS_RY + 1) : RW'(CENSUS_RY));
+  logic [XW-1:0] cen_col;
+  logic [RW-1:0] cen_row;
+  sgm_delay #(.WIDTH(XW + RW), .DEPTH(CENSUS_LATENCY)) u_cen_delay (
+    .clk_i (clk_i),
+    .en_i  (en_i),
+    .d_i   ({cx, cy}),
+    .q_o   ({cen_col, cen_row})
   );
 
   // ------------------------------------------------------------ LR_LAG
@@ -69,7 +85,7 @@ module sgm_lane_timing #(
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       lag_q <= LAGW'(LR_LAG_MAX);
-    end else if (en_i && sof_o) begin
+    end else if (en_i && sof_cen) begin
       lag_q <= lag_d;
     end
   end
@@ -77,8 +93,8 @@ module sgm_lane_timing #(
   // ------------------------------------------------------------ read position
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      rd_col_o <= cen_col_i;
-      rd_row_o <= cen_row_i - RW'(lag_q);
+      rd_col_o <= cen_col;
+      rd_row_o <= cen_row - RW'(lag_q);
     end
   end
 

@@ -3,8 +3,8 @@
 // Yao & Cheng, one pixel per clock (docs/algorithm.md defines every bit,
 // docs/rtl.md the architecture).
 //
-//   s_axis (left + right gray) -> sgm_stream_ctrl -> 2 x sgm_census_unit
-//   [-> sgm_lane_deal, LANES > 1] -> sgm_cost_volume (D PEs) -> sgm_path_engine (4 paths, S) -> sgm_wta
+//   s_axis (left + right gray) -> sgm_stream_ctrl [-> sgm_lane_deal, LANES > 1] -> 2 x sgm_census_unit
+//   -> sgm_cost_volume (D PEs) -> sgm_path_engine (4 paths, S) -> sgm_wta
 //   -> sgm_lr_check -> sgm_hole_fill -> sgm_edge_snap -> sgm_median5x5 -> sgm_stream_ctrl -> m_axis
 //
 // Parameters: D disparities (16, 32, 64, 128), MAX_WIDTH, MAX_HEIGHT (public to
@@ -14,10 +14,11 @@
 // line buffers 4 / 8 lines per image, rank, popcounts, Cmax 88 / 160, costs
 // CBITS 7 / 8 bits, LW, SW, the path-buffer word). LANES = K row lanes
 // (docs/reschedule.md, docs/rtl.md "Lanes"): 1 is the raster schedule; K > 1
-// deals the census output to K row lanes that share the cost volume, the path
-// engine (K cycles for the 0 degree loop), the WTA and the LR check's S side,
-// and the LR check's memories restore raster order for the stages behind it
-// (fill, snap, median, output), LR_LAG rows behind the census.
+// deals the input's gray pairs to K row lanes that share the census units, the
+// cost volume, the path engine (K cycles for the 0 degree loop), the WTA and
+// the LR check's S side, and the LR check's memories restore raster order for
+// the stages behind it (fill, snap, median, output), LR_LAG rows behind the
+// raster census position.
 // Frame constraints: MIN_FRAME_WIDTH (max(D, 16); with many lanes at least the
 // engine's K SKEW + 1) <= width <= MAX_WIDTH, 9 <= height <= MAX_HEIGHT
 // (frames outside are dropped and flagged in error_o[3], as are P2' < P1 and cfg_mode_i = 3).
@@ -39,13 +40,16 @@ module sgm_top #(
   localparam int SKEW       = 1 + (5 + ($clog2(D) + 1) / 2 + LANES - 1) / LANES,
   localparam int MIN_FRAME_WIDTH /*verilator public*/ =
       (LANES * SKEW + 1 > D && LANES * SKEW + 1 > 16) ? LANES * SKEW + 1 : (D > 16 ? D : 16),
-  // The LR check's read side runs LR_LAG whole rows behind the census output:
-  // every word the read of left pixel (x, y) needs (its WTA result, dR of the
-  // diagonal, or of the row tail the lane writes during the first D columns of
-  // its next row) is written (2K - 3) W + LR_WAIT slots or less after the census
-  // output passed (x, y + 1) (derivation in docs/reschedule.md); LR_LAG =
-  // 2K - 3 + ceil(LR_WAIT / W) per frame, at most LR_LAG_MAX.
-  localparam int LR_WAIT    = D * LANES + 3,
+  // The LR check's read side runs LR_LAG whole rows behind the raster census
+  // position (where a census unit in raster order would be): every word the
+  // read of left pixel (x, y) needs (its WTA result, dR of the diagonal, or of
+  // the row tail the lane writes during the first D columns of its next row) is
+  // written (2K - 3) W + LR_WAIT slots or less after that position passed
+  // (x, y + 1) (derivation in docs/reschedule.md; the lanes' census outputs come
+  // 4K slots later than a census behind the deal would give them: its 4 columns
+  // of lag cost K slots each in a lane); LR_LAG = 2K - 3 + ceil(LR_WAIT / W) per
+  // frame, at most LR_LAG_MAX.
+  localparam int LR_WAIT    = (D + 4) * LANES + 3,
   localparam int LR_LAG_MAX = LANES == 1 ? 0 :
                               2 * LANES - 3 + (LR_WAIT + MIN_FRAME_WIDTH - 1) / MIN_FRAME_WIDTH,
   localparam int YW        = $clog2(MAX_HEIGHT + 16),  // height ports
@@ -183,93 +187,41 @@ module sgm_top #(
   assign frame_width_o  = width;
   assign frame_height_o = height[YW-1:0];
 
-  // ------------------------------------------------------------ census
-  logic [NB-1:0]  census_l, census_r;
-  logic [RKW-1:0] rank_l, rank_r;
-  logic [7:0]    centre;
-  logic [31:0]   nbr;
-  logic [XW-1:0] col1;
-  logic [RW-1:0] row1;
-  logic          valid1;
-  logic [7:0]    unused_centre_r;
-  logic [31:0]   unused_nbr_r;
-  logic [XW-1:0] unused_col_r;
-  logic [RW-1:0] unused_row_r;
-  logic          unused_valid_r;
-
-  sgm_census_unit #(.CENSUS_H(CENSUS_H), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(RW)) u_census_l (
-    .clk_i    (clk_i),
-    .rst_ni   (rst_ni),
-    .en_i     (en),
-    .pix_i    (pix_l),
-    .col_i    (col0),
-    .row_i    (row0),
-    .width_i  (width),
-    .height_i (height),
-    .census_o (census_l),
-    .rank_o   (rank_l),
-    .centre_o (centre),
-    .nbr_o    (nbr),
-    .col_o    (col1),
-    .row_o    (row1),
-    .valid_o  (valid1)
-  );
-
-  sgm_census_unit #(.CENSUS_H(CENSUS_H), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(RW)) u_census_r (
-    .clk_i    (clk_i),
-    .rst_ni   (rst_ni),
-    .en_i     (en),
-    .pix_i    (pix_r),
-    .col_i    (col0),
-    .row_i    (row0),
-    .width_i  (width),
-    .height_i (height),
-    .census_o (census_r),
-    .rank_o   (rank_r),
-    .centre_o (unused_centre_r),
-    .nbr_o    (unused_nbr_r),
-    .col_o    (unused_col_r),
-    .row_o    (unused_row_r),
-    .valid_o  (unused_valid_r)
-  );
-
   // ------------------------------------------------------------ lanes
-  // The census output (raster order) as the slot stream of the lanes: with one
-  // lane the census output itself; with K lanes through sgm_lane_deal, whose
-  // frame starts at the census unit's first centre of a frame, (W - 4, -(RY + 1)),
-  // CENSUS_LATENCY slots after the frame's first slot (0, 0).
+  // The slot stream of the census units: with one lane the stream controller's
+  // raster itself; with K lanes sgm_lane_deal deals the raster's gray pairs to
+  // the K row lanes (docs/reschedule.md "The deal in front of the census"):
+  // its frame starts at the frame's first slot (0, 0), lanes LANE_LEAD = K - 1
+  // rows ahead of the raster's row 0, its ring DEAL_ROWS >= 2K - 2 rows (a power
+  // of two: 2, 4, 16 at K = 2, 3, 6). The
+  // census units then run in lane order (their LANES), and their output is the
+  // lanes' slot stream for the cost volume, the path engine and the WTA.
   localparam int CENSUS_LATENCY = 5;                  // sgm_census_unit LATENCY
-  localparam int CENSUS_LEAD    = (CENSUS_H - 1) / 2 + 1;  // rows of the census raster before row 0
-  localparam int DEAL_W         = 2 * (NB + RKW) + 40;
-  logic [NB-1:0]  lane_census_l, lane_census_r;
-  logic [RKW-1:0] lane_rank_l, lane_rank_r;
-  logic [7:0]     lane_centre;
-  logic [31:0]    lane_nbr;
-  logic [XW-1:0]  lane_col;
-  logic [RW-1:0]  lane_row;
-  logic           lane_valid;
+  localparam int CENSUS_RY      = (CENSUS_H - 1) / 2;  // the centre's rows behind the input
+  logic [7:0]    cen_pix_l, cen_pix_r;
+  logic [XW-1:0] cen_col;
+  logic [RW-1:0] cen_row;
+  logic          cen_active;
   // The LR check's read position: the path engine's output position (col3,
-  // row3) with one lane, the census output LR_LAG rows back with K lanes.
+  // row3) with one lane, with K lanes the raster census position LR_LAG rows back.
   logic [XW-1:0]  col3, rd_col;
   logic [RW-1:0]  row3, rd_row;
 
   if (LANES == 1) begin : g_raster
-    assign {lane_census_l, lane_rank_l, lane_census_r, lane_rank_r, lane_centre, lane_nbr} =
-           {census_l, rank_l, census_r, rank_r, centre, nbr};
-    assign lane_col   = col1;
-    assign lane_row   = row1;
-    assign lane_valid = valid1;
+    assign {cen_pix_r, cen_pix_l} = {pix_r, pix_l};
+    assign cen_col    = col0;
+    assign cen_row    = row0;
+    assign cen_active = 1'b1;
     assign rd_col     = col3;
     assign rd_row     = row3;
   end else begin : g_lanes
-    // Lead rows so that every position is read after the census wrote it, and
-    // a ring of at least 2K rows (sgm_lane_deal, docs/reschedule.md).
-    localparam int LANE_LEAD = LANES + CENSUS_LEAD - 2 > CENSUS_LEAD ? LANES + CENSUS_LEAD - 2 : CENSUS_LEAD;
-    localparam int DEAL_ROWS = 1 << $clog2(2 * LANES);
-    logic sof1;  // the census output is the frame's first centre
+    localparam int LANE_LEAD = LANES - 1;
+    localparam int DEAL_ROWS = 1 << $clog2(2 * LANES - 2);
+    logic sof0;  // the slot is the frame's first, (0, 0)
+    logic unused_deal_valid;
     sgm_lane_timing #(
       .LANES(LANES), .LR_WAIT(LR_WAIT), .LR_LAG_MAX(LR_LAG_MAX), .MIN_FRAME_WIDTH(MIN_FRAME_WIDTH),
-      .CENSUS_LATENCY(CENSUS_LATENCY), .XW(XW), .RW(RW)
+      .CENSUS_LATENCY(CENSUS_LATENCY), .CENSUS_RY(CENSUS_RY), .XW(XW), .RW(RW)
     ) u_timing (
       .clk_i     (clk_i),
       .rst_ni    (rst_ni),
@@ -277,14 +229,12 @@ module sgm_top #(
       .width_i   (width),
       .col_i     (col0),
       .row_i     (row0),
-      .cen_col_i (col1),
-      .cen_row_i (row1),
-      .sof_o     (sof1),
+      .sof_o     (sof0),
       .rd_col_o  (rd_col),
       .rd_row_o  (rd_row)
     );
     sgm_lane_deal #(
-      .WIDTH(DEAL_W), .LANES(LANES), .SKEW(SKEW), .LANE_LEAD(LANE_LEAD), .ROWS(DEAL_ROWS),
+      .WIDTH(16), .LANES(LANES), .SKEW(SKEW), .LANE_LEAD(LANE_LEAD), .ROWS(DEAL_ROWS),
       .MAX_WIDTH(MAX_WIDTH), .XW(XW), .YW(RW)
     ) u_deal (
       .clk_i    (clk_i),
@@ -292,17 +242,69 @@ module sgm_top #(
       .en_i     (en),
       .width_i  (width),
       .height_i (height),
-      .sof_i    (sof1),
-      .data_i   ({census_l, rank_l, census_r, rank_r, centre, nbr}),
-      .col_i    (col1),
-      .row_i    (row1),
-      .data_o   ({lane_census_l, lane_rank_l, lane_census_r, lane_rank_r, lane_centre, lane_nbr}),
-      .col_o    (lane_col),
-      .row_o    (lane_row),
-      .valid_o  (lane_valid)
+      .sof_i    (sof0),
+      .data_i   ({pix_r, pix_l}),
+      .col_i    (col0),
+      .row_i    (row0),
+      .data_o   ({cen_pix_r, cen_pix_l}),
+      .col_o    (cen_col),
+      .row_o    (cen_row),
+      .valid_o  (unused_deal_valid),
+      .active_o (cen_active)
     );
-
   end
+
+  // ------------------------------------------------------------ census
+  logic [NB-1:0]  lane_census_l, lane_census_r;
+  logic [RKW-1:0] lane_rank_l, lane_rank_r;
+  logic [7:0]     lane_centre;
+  logic [31:0]    lane_nbr;
+  logic [XW-1:0]  lane_col;
+  logic [RW-1:0]  lane_row;
+  logic           lane_valid;
+  logic [7:0]     unused_centre_r;
+  logic [31:0]    unused_nbr_r;
+  logic [XW-1:0]  unused_col_r;
+  logic [RW-1:0]  unused_row_r;
+  logic           unused_valid_r;
+
+  sgm_census_unit #(.CENSUS_H(CENSUS_H), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(RW), .LANES(LANES)) u_census_l (
+    .clk_i    (clk_i),
+    .rst_ni   (rst_ni),
+    .en_i     (en),
+    .active_i (cen_active),
+    .pix_i    (cen_pix_l),
+    .col_i    (cen_col),
+    .row_i    (cen_row),
+    .width_i  (width),
+    .height_i (height),
+    .census_o (lane_census_l),
+    .rank_o   (lane_rank_l),
+    .centre_o (lane_centre),
+    .nbr_o    (lane_nbr),
+    .col_o    (lane_col),
+    .row_o    (lane_row),
+    .valid_o  (lane_valid)
+  );
+
+  sgm_census_unit #(.CENSUS_H(CENSUS_H), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(RW), .LANES(LANES)) u_census_r (
+    .clk_i    (clk_i),
+    .rst_ni   (rst_ni),
+    .en_i     (en),
+    .active_i (cen_active),
+    .pix_i    (cen_pix_r),
+    .col_i    (cen_col),
+    .row_i    (cen_row),
+    .width_i  (width),
+    .height_i (height),
+    .census_o (lane_census_r),
+    .rank_o   (lane_rank_r),
+    .centre_o (unused_centre_r),
+    .nbr_o    (unused_nbr_r),
+    .col_o    (unused_col_r),
+    .row_o    (unused_row_r),
+    .valid_o  (unused_valid_r)
+  );
 
   // ------------------------------------------------------------ costs
   localparam int COST_LATENCY = 3;  // sgm_cost_volume
@@ -398,8 +400,8 @@ module sgm_top #(
   // ------------------------------------------------------------ LR check
   // S side: the path engine's slot stream; WTA side: the winner of the same S,
   // sgm_wta's LATENCY slots later (sgm_lr_check accepts any lag below a row).
-  // Read side: with one lane the S side's position; with K lanes the census
-  // output's raster position LR_LAG rows back (the frame's LR_LAG taken at its
+  // Read side: with one lane the S side's position; with K lanes the raster
+  // census position LR_LAG rows back (sgm_lane_timing; the frame's LR_LAG taken at its
   // first centre, so that slots of the frame before still in flight keep theirs),
   // registered; the memories then hold LR_BANKS rows: the lanes write row y + B
   // after the read side has read row y when B >= LR_LAG + 1 (docs/reschedule.md),
@@ -465,8 +467,9 @@ module sgm_top #(
   // ------------------------------------------------------------ edge snapping
   // The left gray of each pixel goes into the stage's row memory as it leaves
   // the census unit, about two rows before the pixel's disparity arrives (with
-  // K lanes LR_LAG rows more: read about LR_LAG + 2 rows after the write, so
-  // GRAY_ROWS >= LR_LAG_MAX + 3).
+  // K lanes LR_LAG rows more: read about LR_LAG + 2 rows after the raster
+  // census position passed it, and the lanes write it later than that position
+  // and overwrite its bank no earlier, so GRAY_ROWS >= LR_LAG_MAX + 3).
   localparam int GRAY_ROWS = LANES == 1 ? 4 : 1 << $clog2(LR_LAG_MAX + 3);
   logic [DW-1:0] snap_disp;
   logic          snap_ok, snap_valid;
@@ -480,10 +483,10 @@ module sgm_top #(
     .snap_en_i   (snap_en),
     .width_i     (width),
     .height_i    (height),
-    .gray_we_i   (valid1),
-    .gray_col_i  (col1),
-    .gray_row_i  (row1),
-    .gray_i      (centre),
+    .gray_we_i   (lane_valid),
+    .gray_col_i  (lane_col),
+    .gray_row_i  (lane_row),
+    .gray_i      (lane_centre),
     .disp_i      (fill_disp),
     .valid_i     (fill_ok),
     .in_valid_i  (fill_valid),

@@ -53,6 +53,7 @@ void runStream(Top& top, const std::vector<cv::Mat>& frames, const StreamOptions
       top, opt.enablePattern(),
       [](Vsgm_census_unit& m, std::mt19937& junk) {
         m.pix_i = junk() & 0xff;
+        m.active_i = junk() & 1;
         m.col_i = junk() & 0xff;
         m.row_i = junk() & 0xff;
       },
@@ -69,6 +70,7 @@ void runStream(Top& top, const std::vector<cv::Mat>& frames, const StreamOptions
         s,
         [&](Vsgm_census_unit& m) {
           m.pix_i = sgm::tb::pixelOf(img, in);
+          m.active_i = 1;  // the raster of one lane: every slot has a position
           m.col_i = in.x;
           m.row_i = in.y;
           m.width_i = img.cols;
@@ -220,6 +222,7 @@ TEST(SgmCensusUnit, ResetMidFrame) {
   top->width_i = first.cols;
   top->height_i = first.rows;
   top->en_i = 1;
+  top->active_i = 1;
   for (int y = 0; y < 12; ++y)
     for (int x = 0; x < first.cols; ++x) {
       top->pix_i = first.at<uint8_t>(y, x);

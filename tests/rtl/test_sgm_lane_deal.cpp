@@ -1,11 +1,12 @@
 // sgm_lane_deal against the lane schedule of tb/lane_schedule.hpp: a raster
-// stream that starts like the census unit's (the frame's first slot at column
-// W - 4 of row -3, rows on past the frame as flush) carries a tag of its frame,
+// stream that starts like the stream controller's (the frame's first slot at
+// (0, 0), rows on past the frame as flush) carries a tag of its frame,
 // row and column; every lane-side output slot must carry the position the
 // schedule gives for it (K lanes, SKEW, LANE_LEAD of the build) and, when
 // valid, the tag of that position: a read before the raster wrote it, or after
-// the ring overwrote it, gives another position's tag. Frames of different
-// widths back to back, random idle cycles, the build's parameters from the model.
+// the ring overwrote it, gives another position's tag; active_o must say
+// whether the slot's lane has started. Frames of different widths back to
+// back, random idle cycles, the build's parameters from the model.
 #include "Vsgm_lane_deal.h"
 #include "Vsgm_lane_deal_sgm_lane_deal.h"
 #include "idle_slot.hpp"
@@ -25,7 +26,6 @@ using Rtl = Vsgm_lane_deal_sgm_lane_deal;
 constexpr int kLanes = int(Rtl::LANES);
 constexpr int kSkew = int(Rtl::SKEW);
 constexpr int kLaneLead = int(Rtl::LANE_LEAD);
-constexpr int kRasterLead = 3;  // the census unit's first centre row of a frame
 constexpr uint32_t kRowMask = 0xff;  // YW = 8
 
 uint16_t tagOf(int frame, int row, int col) {
@@ -38,10 +38,9 @@ uint16_t tagOf(int frame, int row, int col) {
 std::string runFrame(Top& top, int frame, int w, int h, std::mt19937& rng, double idle) {
   const sgm::tb::LaneSchedule lanes(w, kLanes, kSkew, kLaneLead);
   const long slots = lanes.slotsToCover(h) + 2;
-  long raster = long(w) - 4;  // raster index of the first slot: (W - 4, -3)
   long received = 0;
-  for (long m = 0; m < slots; ++m, ++raster) {
-    const int rcol = int(raster % w), rrow = int(raster / w) - kRasterLead;
+  for (long m = 0; m < slots; ++m) {
+    const int rcol = int(m % w), rrow = int(m / w);  // the raster slot m
     top->sof_i = m == 0;
     top->col_i = rcol;
     top->row_i = uint32_t(rrow) & kRowMask;
@@ -56,6 +55,8 @@ std::string runFrame(Top& top, int frame, int w, int h, std::mt19937& rng, doubl
                               std::to_string(w) + ") lane slot " + std::to_string(m) + " (x=" +
                               std::to_string(want.col) + ", y=" + std::to_string(want.row) + ")";
     if (bool(top->valid_o) != inside) return where + ": valid_o " + std::to_string(top->valid_o);
+    const bool started = m / kLanes >= (m % kLanes) * kSkew;
+    if (bool(top->active_o) != started) return where + ": active_o " + std::to_string(top->active_o);
     if (!inside) continue;
     if (int(top->col_o) != want.col || int(top->row_o) != want.row)
       return where + ": position (" + std::to_string(top->col_o) + ", " + std::to_string(top->row_o) + ")";
