@@ -197,9 +197,11 @@ $(eval $(call rtl_test,top-d128,sgm_top,-GD=128 -GMAX_WIDTH=256 -GMAX_HEIGHT=64 
 # Aloe in the paper preset at D = 64.
 $(eval $(call rtl_test,top-d16-9x9,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GCENSUS_H=9 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,top-d64-9x9,sgm_top,-GD=64 -GMAX_WIDTH=512 -GMAX_HEIGHT=384 -GCENSUS_H=9 -CFLAGS -DSGM_D=64))
-# K row lanes (docs/reschedule.md): the whole core at 2 lanes (9x5) and 3 lanes (9x9).
+# K row lanes (docs/reschedule.md): the whole core at 2 lanes (9x5) and 3 lanes (9x9). The
+# 3-lane build has its rotating delays as register chains (SGM_DELAY_CHAIN, the form the ECP5
+# flow builds, rtl/sgm_delay_ram.sv); every other build has them in distributed RAM.
 $(eval $(call rtl_test,top-d16-k2,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GLANES=2 -CFLAGS -DSGM_D=16))
-$(eval $(call rtl_test,top-d16-k3-9x9,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GLANES=3 -GCENSUS_H=9 -CFLAGS -DSGM_D=16))
+$(eval $(call rtl_test,top-d16-k3-9x9,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GLANES=3 -GCENSUS_H=9 -DSGM_DELAY_CHAIN -CFLAGS -DSGM_D=16))
 # sgm_axi configured through the driver (sw/) over an AXI4-Lite bus model.
 $(eval $(call rtl_test,axi-d16,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
 $(BIN)/rtl-axi-d16: sw/sgm_driver.cpp $(wildcard sw/include/*.h*)

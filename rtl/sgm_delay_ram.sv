@@ -9,7 +9,12 @@
 // Why: Yosys maps a register chain of three or more slots to one SRL16E per bit
 // on xc7 (a LUT each), a memory to RAM32M, which keeps 8 bits of a rotating
 // delay in 4 LUTs (its write port reads at the same pointer): half the slice
-// LUTs (synth/README.md). On ECP5 the memory becomes DPR16X4 (4 bits each).
+// LUTs (synth/README.md). On ECP5 the memory becomes DPR16X4 (4 bits each),
+// which takes six LUT positions (two slices of RAM, the write port's slice)
+// for 4 bits: there a register chain is the cheaper form, since a flip-flop
+// fed by a flip-flop takes no LUT position. Defining SGM_DELAY_CHAIN (the
+// ECP5 flow does, synth/pnr.mk PNR_DEFINES) builds the register chain
+// (sgm_delay) instead: the same values after DEPTH slots.
 // Use it for the wide delays of the engine; narrow ones stay sgm_delay.
 //
 // Parameters: WIDTH bits, DEPTH slots (>= 1; DEPTH 1 is one register).
@@ -25,10 +30,25 @@ module sgm_delay_ram #(
   output logic [WIDTH-1:0] q_o
 );
 
+`ifdef SGM_DELAY_CHAIN
+  localparam bit CHAIN = 1'b1;
+`else
+  localparam bit CHAIN = 1'b0;
+`endif
+
   if (DEPTH == 1) begin : g_one
     always_ff @(posedge clk_i) begin
       if (en_i) q_o <= d_i;
     end
+    logic unused_rst;
+    assign unused_rst = rst_ni;
+  end else if (CHAIN) begin : g_chain
+    sgm_delay #(.WIDTH(WIDTH), .DEPTH(DEPTH)) u_chain (
+      .clk_i(clk_i),
+      .en_i (en_i),
+      .d_i  (d_i),
+      .q_o  (q_o)
+    );
     logic unused_rst;
     assign unused_rst = rst_ni;
   end else begin : g_ram

@@ -24,7 +24,7 @@
 // slot order of K row lanes (slot K n + k belongs to lane k, each lane a raster
 // of its own rows); the diagonal array and the row tail are then per lane: the
 // state a slot continues is the one its lane left K slots earlier (the
-// registers delayed K - 1 slots more in a rotating K - 1 word memory). The
+// registers delayed K - 1 slots more in an sgm_delay_ram of depth K - 1). The
 // memories hold ROW_BANKS rows (bank = row mod ROW_BANKS, a power of two), so
 // the read side can run in raster order behind the lanes: every word of row y
 // must be written before the read of row y + 1 reaches it (the row tail is
@@ -144,7 +144,8 @@ module sgm_lr_check #(
   // written out) and the row tail. The state of the slot's lane is the one it
   // left K slots earlier: with K = 1 the registers themselves, else the
   // registers (the state of the slot before) delayed K - 1 slots more in one
-  // rotating memory of K - 1 words (distributed RAM), as in sgm_cost_volume.
+  // sgm_delay_ram (distributed RAM with an output register, or a register
+  // chain in the ECP5 flow), as in sgm_cost_volume.
   localparam int STW = (D-1)*SW + 2*(D-1)*LD + CW + BW + LD;
 
   logic [(D-1)*SW-1:0] dmin_q, dmin_p;   // _q: next state of the previous slot; _p: of this lane
@@ -158,23 +159,20 @@ module sgm_lr_check #(
     assign {dmin_p, darg_p, tail_p, tail_col_p, tail_bank_p, tail_cnt_p} =
            {dmin_q, darg_q, tail_q, tail_col_q, tail_bank_q, tail_cnt_q};
   end else begin : g_lanes
-    localparam int GAP  = LANES - 1;
-    localparam int PTRW = GAP > 1 ? $clog2(GAP) : 1;
-    logic [STW-1:0]  gap_mem [0:GAP-1];
-    logic [PTRW-1:0] ptr_q;
-    logic [PTRW:0]   warm_q;   // slots since reset < GAP: the memory holds no state yet
-    wire  [STW-1:0]  gap_out = gap_mem[ptr_q];
+    localparam int GAP = LANES - 1;
+    localparam int WW  = GAP > 1 ? $clog2(GAP + 1) : 1;
+    logic [WW-1:0]  warm_q;   // slots since reset < GAP: the delay holds no state yet
+    logic [STW-1:0] gap_out;
+    sgm_delay_ram #(.WIDTH(STW), .DEPTH(GAP)) u_gap (
+      .clk_i (clk_i),
+      .rst_ni(rst_ni),
+      .en_i  (en_i),
+      .d_i   ({dmin_q, darg_q, tail_q, tail_col_q, tail_bank_q, tail_cnt_q}),
+      .q_o   (gap_out)
+    );
     always_ff @(posedge clk_i) begin
-      if (en_i) gap_mem[ptr_q] <= {dmin_q, darg_q, tail_q, tail_col_q, tail_bank_q, tail_cnt_q};
-    end
-    always_ff @(posedge clk_i) begin
-      if (!rst_ni) begin
-        ptr_q  <= '0;
-        warm_q <= (PTRW+1)'(GAP);
-      end else if (en_i) begin
-        ptr_q <= ptr_q == PTRW'(GAP - 1) ? '0 : ptr_q + 1'b1;
-        if (warm_q != '0) warm_q <= warm_q - 1'b1;
-      end
+      if (!rst_ni) warm_q <= WW'(GAP);
+      else if (en_i && warm_q != '0) warm_q <= warm_q - 1'b1;
     end
     assign {dmin_p, darg_p, tail_p, tail_col_p, tail_bank_p} = gap_out[STW-1:LD];
     assign tail_cnt_p = warm_q != '0 ? '0 : gap_out[LD-1:0];

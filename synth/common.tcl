@@ -17,6 +17,8 @@
 #   SYNTH_CENSUS_H   CENSUS_H, census window height (5, the default, or 9: the paper's 9x9)
 #   SYNTH_LANES      LANES, row lanes of the schedule (1, the default: the raster)
 #   SYNTH_OUT        output directory of this target (created by make)
+#   SYNTH_DEFINES    Verilog macros to define, space-separated (the ECP5 flow:
+#                    SGM_DELAY_CHAIN, rtl/sgm_delay_ram.sv; none by default)
 #
 # Files written into SYNTH_OUT by this part:
 #   check.txt      `check` of the elaborated design
@@ -35,8 +37,9 @@ set max_height [env_or SYNTH_MAX_HEIGHT 1024]
 set census_h   [env_or SYNTH_CENSUS_H 5]
 set lanes      [env_or SYNTH_LANES 1]
 set out        [env_or SYNTH_OUT build/synth]
+set defines    [env_or SYNTH_DEFINES ""]
 
-yosys read_verilog -sv {*}[lsort [glob $rtl/*.sv]]
+yosys read_verilog -sv {*}[lmap m $defines {string cat -D $m}] {*}[lsort [glob $rtl/*.sv]]
 yosys chparam -set D $d -set MAX_WIDTH $max_width -set MAX_HEIGHT $max_height -set CENSUS_H $census_h -set LANES $lanes sgm_top
 yosys hierarchy -check -top sgm_top
 yosys proc

@@ -12,10 +12,28 @@ source [file join [file dirname [info script]] common.tcl]
 
 # SYNTH_ECP5_FLAGS: extra synth_ecp5 options (synth/pnr.mk, PNR_SYNTH_FLAGS).
 set synth_flags [env_or SYNTH_ECP5_FLAGS ""]
+# SYNTH_ECP5_CMP_LUT: comparisons of at most this many bits as LUT logic
+# (synth/ecp5_cmp_lut.v); empty or 0: every comparison to synth_ecp5's carry chains.
+set cmp_lut [env_or SYNTH_ECP5_CMP_LUT 0]
+set cmp_map [file join [file dirname [info script]] ecp5_cmp_lut.v]
 
 set stages {}
 foreach_stage {
-  yosys synth_ecp5 {*}$synth_flags -top $mod
+  if {$cmp_lut > 0} {
+    # synth_ecp5 up to its coarse step, the comparisons mapped after the
+    # first width reduction (as synth_ecp5's own cmp2lut step sits), then the rest.
+    yosys synth_ecp5 {*}$synth_flags -top $mod -run begin:coarse
+    yosys proc
+    yosys flatten
+    yosys opt_expr
+    yosys opt_clean
+    yosys wreduce
+    yosys opt_clean
+    yosys techmap -D SGM_CMP_LUT_MAX=$cmp_lut -map $cmp_map
+    yosys synth_ecp5 {*}$synth_flags -top $mod -run coarse:
+  } else {
+    yosys synth_ecp5 {*}$synth_flags -top $mod
+  }
   yosys tee -q -o $out/$name.stat.txt stat
   yosys design -save stage_$name
   lappend stages [list $mod $name]

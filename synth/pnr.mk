@@ -51,14 +51,28 @@ PNR_FLAGS        ?=
 # the LFE5U-85F (synth/README.md, "Place and route").
 PNR_SYNTH_FLAGS  ?= -nowidelut
 PNR_CI_FLAGS     ?= --no-tmdriv --router router2
+# Verilog macros of every run (recorded with the synth_ecp5 options).
+# SGM_DELAY_CHAIN: sgm_delay_ram's rotating delays as register chains. On ECP5 a
+# DPR16X4 (4 bits of distributed RAM) takes six LUT positions and a flip-flop
+# fed by a flip-flop none, so the chains free LUT positions for the logic at the
+# price of flip-flops, of which the core uses less than half (synth/README.md,
+# "D = 64 on the LFE5U-85F: what the slices hold").
+PNR_DEFINES      ?= SGM_DELAY_CHAIN
+# Comparisons of at most this many bits as LUT logic instead of carry chains
+# (synth/ecp5_cmp_lut.v; 0: all to carry chains). A carry chain costs nextpnr-ecp5
+# a CCU2C in front (the constant carry-in) and, for a comparison, one behind (the
+# carry-out reaches the fabric only through a CCU2C): a 9-bit comparison packs
+# into about 15 LUT positions as a chain, 11.5 as LUT logic (synth/README.md).
+PNR_CMP_LUT      ?= 12
 # Cycles per pixel for the video-format table: the largest cycles_per_pixel of
 # build/bench/report.json when `make bench` has run, otherwise this figure
 # (README.md, accuracy table: whole-core test, the worst of the five scenes).
 PNR_CYCLES_PER_PIXEL ?= 1.026
 PNR_CPP_SOURCE       ?= README.md accuracy table, whole-core test, worst of five scenes (Aloe 320x277)
 PNR_BENCH_REPORT     := $(BUILD)/bench/report.json
-# CI routes the small configuration (see the main Makefile's TEST_EXTRA).
-TEST_EXTRA += pnr-ci
+# CI routes the small configuration (see the main Makefile's TEST_EXTRA), after
+# proving the comparison map equal to Yosys' own comparisons.
+TEST_EXTRA += ecp5-cmp-check pnr-ci
 
 PNR_DIR     := $(BUILD)/pnr
 PNR_CFG      = $(PNR_DIR)/d$(PNR_D)-w$(PNR_MAX_WIDTH)$(if $(filter-out 1,$(PNR_LANES)),-k$(PNR_LANES))
@@ -66,9 +80,9 @@ PNR_DEVNAME  = LFE5U-$(subst k,F,$(PNR_DEVICE))
 PNR_RUN      = $(PNR_CFG)/lfe5u-$(subst k,f,$(PNR_DEVICE))-$(PNR_SPEED)
 PNR_LOCK     = $(PNR_DIR)/.lock
 PNR_SUMMARY  = $(BIN)/pnr-summary
-PNR_DEPS    := $(RTL_SRC) synth/common.tcl synth/ecp5.tcl
+PNR_DEPS    := $(RTL_SRC) synth/common.tcl synth/ecp5.tcl synth/ecp5_cmp_lut.v
 
-.PHONY: pnr pnr-ci pnr-one pnr-summary pnr-tools pnr-clean pnr-help
+.PHONY: pnr pnr-ci pnr-one pnr-summary pnr-tools pnr-clean pnr-help ecp5-cmp-check
 
 pnr-help:
 	@echo "make pnr [PNR_D=64 PNR_MAX_WIDTH=1024 PNR_SPEEDS=\"8 6\" PNR_FREQ=125]  LFE5U-85F, one run per speed -> build/pnr/summary.{json,md}"
@@ -96,6 +110,15 @@ pnr-ci: pnr-tools $(PNR_SUMMARY)
 
 pnr-one: $(PNR_RUN)/done
 
+# synth/ecp5_cmp_lut.v maps every kind of comparison of tests/synth/cmp_cases.v
+# (signed, unsigned, mixed widths, constants) to logic Yosys proves equal to it.
+ecp5-cmp-check: | check-tools
+	@mkdir -p $(BUILD)/synth
+	@yosys -q -l $(BUILD)/synth/ecp5-cmp-check.log -s tests/synth/ecp5_cmp_lut_check.ys > /dev/null 2>&1 || \
+	  { echo "ecp5-cmp-check: synth/ecp5_cmp_lut.v is not equal to the comparisons it maps ($(BUILD)/synth/ecp5-cmp-check.log):"; \
+	    grep -E '^ERROR' $(BUILD)/synth/ecp5-cmp-check.log | tail -3; exit 1; }
+	@echo "ecp5-cmp-check: OK (16 comparisons mapped and proven equal, 2 wider ones left to synth_ecp5)"
+
 pnr-summary: $(PNR_SUMMARY) | pnr-tools
 	@if [ -s $(PNR_BENCH_REPORT) ] && cpp=$$(grep -o '"cycles_per_pixel": *[0-9.]*' $(PNR_BENCH_REPORT) | \
 	       awk -F: '$$2 + 0 > m { m = $$2 + 0 } END { if (m) print m }') && [ -n "$$cpp" ]; then \
@@ -116,11 +139,11 @@ $(PNR_CFG)/synth/done: $(PNR_DEPS) | pnr-tools
 	@echo "pnr: synth_ecp5, D=$(PNR_D) MAX_WIDTH=$(PNR_MAX_WIDTH) LANES=$(PNR_LANES) (log: $(@D)/yosys.log)"
 	@start=$$(date +%s); \
 	 SYNTH_RTL=rtl SYNTH_D=$(PNR_D) SYNTH_MAX_WIDTH=$(PNR_MAX_WIDTH) SYNTH_MAX_HEIGHT=$(PNR_MAX_HEIGHT) SYNTH_LANES=$(PNR_LANES) SYNTH_OUT=$(@D) \
-	   SYNTH_ECP5_FLAGS="$(PNR_SYNTH_FLAGS)" \
+	   SYNTH_ECP5_FLAGS="$(PNR_SYNTH_FLAGS)" SYNTH_DEFINES="$(PNR_DEFINES)" SYNTH_ECP5_CMP_LUT=$(PNR_CMP_LUT) \
 	   flock $(PNR_LOCK) timeout $(PNR_TIMEOUT) nice -n $(PNR_NICE) yosys -q -l $(@D)/yosys.log -c synth/ecp5.tcl \
 	   > $(@D)/yosys.out 2>&1; rc=$$?; \
 	 if [ $$rc != 0 ]; then echo "pnr: Yosys failed (exit $$rc):"; grep -E '^ERROR' $(@D)/yosys.log | tail -5; exit 1; fi; \
-	 echo "$$(( $$(date +%s) - start ))" > $(@D)/seconds; echo "$(PNR_SYNTH_FLAGS)" > $(@D)/flags; \
+	 echo "$$(( $$(date +%s) - start ))" > $(@D)/seconds; echo "$(PNR_SYNTH_FLAGS)$(foreach m,$(PNR_DEFINES), -D$(m))$(if $(filter-out 0,$(PNR_CMP_LUT)), cmp-lut=$(PNR_CMP_LUT))" > $(@D)/flags; \
 	 echo "pnr: synth_ecp5 done in $$(cat $(@D)/seconds) s"
 	@touch $@
 
