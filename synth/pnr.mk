@@ -55,14 +55,17 @@ PNR_CI_FLAGS     ?= --no-tmdriv --router router2
 # SGM_DELAY_CHAIN: sgm_delay_ram's rotating delays as register chains. On ECP5 a
 # DPR16X4 (4 bits of distributed RAM) takes six LUT positions and a flip-flop
 # fed by a flip-flop none, so the chains free LUT positions for the logic at the
-# price of flip-flops, of which the core uses less than half (synth/README.md,
-# "D = 64 on the LFE5U-85F: what the slices hold").
+# price of flip-flops, of which the core used less than half (synth/README.md,
+# "What the slices hold").
 PNR_DEFINES      ?= SGM_DELAY_CHAIN
 # Comparisons of at most this many bits as LUT logic instead of carry chains
 # (synth/ecp5_cmp_lut.v; 0: all to carry chains). A carry chain costs nextpnr-ecp5
 # a CCU2C in front (the constant carry-in) and, for a comparison, one behind (the
 # carry-out reaches the fabric only through a CCU2C): a 9-bit comparison packs
 # into about 15 LUT positions as a chain, 11.5 as LUT logic (synth/README.md).
+# It is what lets D = 64 at six lanes fit the LFE5U-85F (75 % instead of 88 %
+# TRELLIS_COMB), at a price in clock: abc keeps the ripple deep, so the 5-lane
+# D = 16 core routes at 112.7 MHz instead of 121.3 (measured at edc75f0).
 PNR_CMP_LUT      ?= 12
 # Cycles per pixel for the video-format table: the largest cycles_per_pixel of
 # build/bench/report.json when `make bench` has run, otherwise this figure
