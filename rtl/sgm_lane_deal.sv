@@ -16,6 +16,9 @@
 // payload. Outputs, one slot later: the lane slot's position, payload,
 // valid_o (0 <= row < height_i, the lane started) and active_o (the lane
 // started: its slots are positions of its raster, whatever the row).
+// width_i is taken a cycle late (width - 1 is registered, so that no subtraction
+// sits in front of the last-column comparison): it may change with sof_i,
+// because no frame's column 0 is its last (width >= 2).
 //
 // Parameters: WIDTH payload bits, LANES (K >= 1), SKEW columns, LANE_LEAD rows,
 // ROWS ring rows (a power of two), MAX_WIDTH, XW column bits, YW row bits.
@@ -83,7 +86,9 @@ module sgm_lane_deal #(
   wire [WW-1:0]  cur_wait   = cur[XW + YW +: WW];
   wire [XW-1:0]  cur_col    = cur[YW +: XW];
   wire [YW-1:0]  cur_row    = cur[0 +: YW];
-  wire           cur_last   = cur_col == width_i - 1'b1;
+  logic [XW-1:0] wm1_q;  // width - 1, a cycle behind width_i
+  always_ff @(posedge clk_i) wm1_q <= width_i - 1'b1;
+  wire           cur_last   = cur_col == wm1_q;
 
   wire [LSW-1:0] advanced = !cur_active ? {1'b0, cur_wait - 1'b1, cur_col, cur_row} :
                             cur_last    ? {1'b1, WW'(0), XW'(0), cur_row + YW'(LANES)} :

@@ -2,8 +2,6 @@
 // sgm_lane_timing: the frame-relative positions sgm_top needs with K > 1 row
 // lanes (docs/reschedule.md, docs/rtl.md "Lanes: the slot schedule"):
 //
-//   sof_o        the slot is the frame's first, (col_i, row_i) = (0, 0) at the
-//                stream controller (sgm_lane_deal restarts its lanes there).
 //   rd_col_o /   the LR check's read position: the raster census position (the
 //   rd_row_o     centre a census unit in raster order would output for this
 //                slot, CENSUS_LATENCY slots later: (x - 4, y - RY), or
@@ -20,8 +18,10 @@
 // MIN_FRAME_WIDTH (the narrowest frame), CENSUS_LATENCY (sgm_census_unit's),
 // CENSUS_RY (the census window's rows above the centre), XW column bits, RW
 // row bits.
-// Latency: sof_o 0; rd_col_o / rd_row_o CENSUS_LATENCY + 1 slots after the
-// slot's position. Throughput: one slot per en_i.
+// Inputs per slot (en_i): the slot's position and sof_i, the slot is the frame's
+// first, (col_i, row_i) = (0, 0) (sgm_stream_ctrl's flag).
+// Latency: rd_col_o / rd_row_o CENSUS_LATENCY + 1 slots after the slot's
+// position. Throughput: one slot per en_i.
 module sgm_lane_timing #(
   parameter int LANES           = 2,
   parameter int LR_WAIT         = 35,
@@ -38,7 +38,7 @@ module sgm_lane_timing #(
   input  wire  [XW-1:0] width_i,    // the frame's width (sgm_stream_ctrl)
   input  wire  [XW-1:0] col_i,      // the slot's position at the stream control
   input  wire  [RW-1:0] row_i,
-  output logic          sof_o,
+  input  wire           sof_i,
   output logic [XW-1:0] rd_col_o,
   output logic [RW-1:0] rd_row_o
 );
@@ -47,13 +47,12 @@ module sgm_lane_timing #(
   localparam int LAG_TERMS = (LR_WAIT - 1) / MIN_FRAME_WIDTH;
 
   // ------------------------------------------------------------ frame start
-  // sof_o at the slot itself; sof_cen at the raster census's first centre.
-  assign sof_o = col_i == '0 && row_i == '0;
+  // sof_cen: the raster census's first centre.
   logic sof_cen;
   sgm_delay #(.WIDTH(1), .DEPTH(CENSUS_LATENCY)) u_sof_delay (
     .clk_i (clk_i),
     .en_i  (en_i),
-    .d_i   (sof_o),
+    .d_i   (sof_i),
     .q_o   (sof_cen)
   );
 

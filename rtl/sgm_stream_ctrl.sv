@@ -89,6 +89,7 @@ module sgm_stream_ctrl #(
   output logic [7:0]          pix_right_o,
   output logic [XW-1:0]       col_o,
   output logic [YW-1:0]       row_o,
+  output logic                sof_o,         // the slot is the frame's first: (col_o, row_o) = (0, 0)
   // Pipeline result of the current slot: a frame pixel when res_valid_i.
   input  wire                 res_valid_i,
   input  wire  [DW-1:0]       res_disp_i,
@@ -210,6 +211,7 @@ module sgm_stream_ctrl #(
       pix_right_o <= take ? head[15:8] : 8'd0;
       col_o       <= x_q;
       row_o       <= y_q;
+      sof_o       <= first_px;  // a flag beside the position (no comparison behind col_o / row_o)
     end
   end
   assign busy_o = state_q != IDLE;

@@ -112,6 +112,7 @@ module sgm_top #(
   logic          en;
   logic [7:0]    pix_l, pix_r;
   logic [XW-1:0] col0, width;
+  logic          sof0;  // the slot is the frame's first, (0, 0): a flag of the controller
   logic [RW-1:0] row0, height;
   logic [7:0]    p1, p2;
   logic [1:0]    mode;
@@ -176,6 +177,7 @@ module sgm_top #(
     .pix_right_o   (pix_r),
     .col_o         (col0),
     .row_o         (row0),
+    .sof_o         (sof0),
     .res_valid_i   (res_valid),
     .res_disp_i    (res_disp),
     .res_ok_i      (res_ok),
@@ -212,12 +214,12 @@ module sgm_top #(
     assign cen_col    = col0;
     assign cen_row    = row0;
     assign cen_active = 1'b1;
+    wire unused_sof = sof0;  // the lanes restart at it
     assign rd_col     = col3;
     assign rd_row     = row3;
   end else begin : g_lanes
     localparam int LANE_LEAD = LANES - 1;
     localparam int DEAL_ROWS = 1 << $clog2(2 * LANES - 2);
-    logic sof0;  // the slot is the frame's first, (0, 0)
     logic unused_deal_valid;
     sgm_lane_timing #(
       .LANES(LANES), .LR_WAIT(LR_WAIT), .LR_LAG_MAX(LR_LAG_MAX), .MIN_FRAME_WIDTH(MIN_FRAME_WIDTH),
@@ -229,7 +231,7 @@ module sgm_top #(
       .width_i   (width),
       .col_i     (col0),
       .row_i     (row0),
-      .sof_o     (sof0),
+      .sof_i     (sof0),
       .rd_col_o  (rd_col),
       .rd_row_o  (rd_row)
     );
