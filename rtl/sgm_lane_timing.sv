@@ -57,8 +57,13 @@ module sgm_lane_timing #(
   );
 
   // ------------------------------------------------------------ raster census position
+  // width - 4 registered, a cycle behind width_i (sgm_stream_ctrl changes the
+  // width only while idle, cycles before a frame's first slot), so that one
+  // adder sits in front of the delay.
+  logic [XW-1:0] wm4_q;
+  always_ff @(posedge clk_i) wm4_q <= width_i - XW'(4);
   wire          wrap   = col_i < XW'(4);
-  wire [XW-1:0] cx     = wrap ? width_i - XW'(4) + col_i : col_i - XW'(4);
+  wire [XW-1:0] cx     = wrap ? wm4_q + col_i : col_i - XW'(4);
   wire [RW-1:0] cy     = row_i - (wrap ? RW'(CENSUS_RY + 1) : RW'(CENSUS_RY));
   logic [XW-1:0] cen_col;
   logic [RW-1:0] cen_row;

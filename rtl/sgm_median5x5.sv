@@ -140,14 +140,18 @@ module sgm_median5x5 #(
   wire             wrap = x0_q < CW'(2);
   wire  [CW-1:0]   cx   = wrap ? w0_q + x0_q - CW'(2) : x0_q - CW'(2);
   wire  [RW:0]     ycb  = {1'b0, y0_q} - {{RW{1'b0}}, wrap};  // row of the bottom window row
-  wire  [CW:0]     cx1  = {1'b0, cx};
+  // Column masks (columns cx - 2 .. cx + 2 inside the frame) from x0 and the
+  // width alone, no adder in front of a comparison: off the wrap cx = x0 - 2,
+  // so cx - 2 >= 0 iff x0 >= 4, cx + 1 < W iff x0 <= W, cx + 2 < W iff x0 < W;
+  // at the wrap (x0 < 2) cx = W + x0 - 2 >= 2 (W >= 16), cx + 1 < W iff x0 == 0,
+  // cx + 2 < W never.
   logic [4:0]      col_ok;
   always_comb begin
-    col_ok[0] = cx >= CW'(2);
-    col_ok[1] = cx >= CW'(1);
+    col_ok[0] = wrap || x0_q >= CW'(4);
+    col_ok[1] = wrap || x0_q >= CW'(3);
     col_ok[2] = 1'b1;
-    col_ok[3] = cx1 + 1'b1 < {1'b0, w0_q};
-    col_ok[4] = cx1 + (CW+1)'(2) < {1'b0, w0_q};
+    col_ok[3] = wrap ? x0_q == '0 : x0_q <= w0_q;
+    col_ok[4] = !wrap && x0_q < w0_q;
   end
   wire centre_in = ycb >= (RW+1)'(2) && ycb < {1'b0, h0_q} + (RW+1)'(2) && x0_q < w0_q;
 
