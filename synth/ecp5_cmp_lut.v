@@ -10,9 +10,10 @@
 // LUT positions, as LUT logic into about 11.5 (synth/README.md, "What the
 // slices hold").
 //
-// The comparison is x < y (x <= y for $le and $ge) as a tree of (less, equal)
-// pairs over the bits; $gt and $ge swap the operands; signed operands compare
-// with their sign bits inverted. abc maps the tree into LUT4s.
+// The comparison is the ripple x < y from the least significant bit:
+// c[i + 1] = (~x[i] & y[i]) | (x[i] xnor y[i]) & c[i], c[0] = 1 for <= and >=;
+// $gt and $ge swap the operands; signed operands compare with their sign bits
+// inverted. abc restructures the ripple into LUT4s.
 (* techmap_celltype = "$lt $le $gt $ge" *)
 module _sgm_cmp_lut (A, B, Y);
   parameter A_SIGNED = 0;
@@ -49,28 +50,14 @@ module _sgm_cmp_lut (A, B, Y);
   wire [W-1:0] x = (SWAP ? b_ext : a_ext) ^ flip;
   wire [W-1:0] y = (SWAP ? a_ext : b_ext) ^ flip;
 
-  // Per bit (less, equal), combined pairwise in a balanced tree of log2(W)
-  // levels (the higher half decides unless it is equal): abc keeps a
-  // ripple nearly serial (seven LUT4 levels for nine bits in the engine), the
-  // tree gives it the short form to start from.
-  localparam N = 1 << $clog2(W);
-  wire [2*N-2:0] lt_t, eq_t;  // node i: children 2i + 1 (low), 2i + 2 (high)
+  wire [W:0] c;
+  assign c[0] = OREQ ? 1'b1 : 1'b0;
   genvar i;
   generate
-    for (i = 0; i < N; i = i + 1) begin : g_leaf
-      if (i < W) begin : g_bit
-        assign lt_t[N - 1 + i] = ~x[i] & y[i];
-        assign eq_t[N - 1 + i] = ~(x[i] ^ y[i]);
-      end else begin : g_pad
-        assign lt_t[N - 1 + i] = 1'b0;
-        assign eq_t[N - 1 + i] = 1'b1;
-      end
-    end
-    for (i = 0; i < N - 1; i = i + 1) begin : g_node
-      assign lt_t[i] = lt_t[2*i + 2] | (eq_t[2*i + 2] & lt_t[2*i + 1]);
-      assign eq_t[i] = eq_t[2*i + 2] & eq_t[2*i + 1];
+    for (i = 0; i < W; i = i + 1) begin : g_bit
+      assign c[i + 1] = (~x[i] & y[i]) | (~(x[i] ^ y[i]) & c[i]);
     end
   endgenerate
 
-  assign Y = {{(Y_WIDTH - 1){1'b0}}, OREQ ? lt_t[0] | eq_t[0] : lt_t[0]};
+  assign Y = {{(Y_WIDTH - 1){1'b0}}, c[W]};
 endmodule
