@@ -64,8 +64,9 @@ PNR_DEFINES      ?= SGM_DELAY_CHAIN
 # carry-out reaches the fabric only through a CCU2C): a 9-bit comparison packs
 # into about 15 LUT positions as a chain, 11.5 as LUT logic (synth/README.md).
 # It is what lets D = 64 at six lanes fit the LFE5U-85F (75 % instead of 88 %
-# TRELLIS_COMB), at a price in clock: abc keeps the ripple deep, so the 5-lane
-# D = 16 core routes at 112.7 MHz instead of 121.3 (measured at edc75f0).
+# TRELLIS_COMB), at a price in clock: abc maps a sub-PE's comparison to seven LUT4
+# levels, so the 5-lane D = 16 core routes at 112.7 MHz instead of 121.3 (edc75f0;
+# 112.0 at 305b236 with the lane control's cuts, synth/README.md).
 PNR_CMP_LUT      ?= 12
 # Cycles per pixel for the video-format table: the largest cycles_per_pixel of
 # build/bench/report.json when `make bench` has run, otherwise this figure
