@@ -214,7 +214,7 @@ module sgm_top #(
     assign cen_col    = col0;
     assign cen_row    = row0;
     assign cen_active = 1'b1;
-    wire unused_sof = sof0;  // the lanes restart at it
+    wire unused_sof = sof0;  // only the lanes restart at it
     assign rd_col     = col3;
     assign rd_row     = row3;
   end else begin : g_lanes
