@@ -12,8 +12,11 @@
 //        first tree stage from the path engine's registers was the 5-lane core's
 //        critical path, 10.0 ns on ECP5; a register behind every level instead
 //        would cost the LUT6 that merges two levels of 2:1 selects on xc7)
-//   T1 .. T(TREE_STAGES-1)  binary comparator tree, LPS = 2 levels per stage, the
-//        first level's selection by T0's registered comparisons. A node
+//   T1 .. T(TREE_STAGES-1)  binary comparator tree: T1 selects level 1 by T0's
+//        registered comparisons and compares and selects level 2, each stage
+//        after it one level (a comparison and a select: two levels per stage
+//        were the 5-lane D = 16 core's critical path on ECP5 with -abc9, 8.4 ns,
+//        118.5 MHz; 123.3 MHz with one). A node
 //        is {b, a, m, d}: the candidate's cost m, its index d and the costs of
 //        its neighbours a = S(d-1), b = S(d+1), carried along so that the
 //        winner arrives with the three costs the refinement needs. The upper
@@ -29,7 +32,7 @@
 //
 // Parameters: D disparities (power of two, 16 .. 128), SW width of S,
 // CW column bits, RW row bits of the slot position (passed through).
-// Latency: LATENCY = TREE_STAGES + 5 slots (D = 16: 8, 32/64: 9, 128: 10): the
+// Latency: LATENCY = TREE_STAGES + 5 slots (D = 16: 9, 32: 10, 64: 11, 128: 12): the
 // result of the slot presented at enabled edge n is on the outputs after
 // enabled edge n + LATENCY - 1. Throughput: one pixel per slot.
 // Reset: only the valid_o pipeline (control); data registers start unknown.
@@ -40,8 +43,7 @@ module sgm_wta #(
   parameter int RW /*verilator public*/ = 11,
   localparam int LD          = $clog2(D),
   localparam int DW          = LD + 4,
-  localparam int LPS         = 2,                     // comparator levels per slot
-  localparam int TREE_STAGES = 1 + (LD + LPS - 1) / LPS,  // T0 and the level pairs
+  localparam int TREE_STAGES = LD,                    // T0, T1 (levels 1, 2), levels 3 .. LD
   localparam int LATENCY     /*verilator public*/ = TREE_STAGES + 5
 ) (
   input  wire              clk_i,
@@ -99,9 +101,8 @@ module sgm_wta #(
   end
 
   // ---------------------------------------------------- T: comparator tree
-  // Level l has D >> l nodes; level LD is the winner. Levels l % LPS == 0 and
-  // the last level are registered, the others are combinational; level 1
-  // selects by c1_q.
+  // Level l has D >> l nodes; level LD is the winner. Levels 2 .. LD are
+  // registered, level 1 is combinational and selects by c1_q.
   for (genvar l = 0; l <= LD; l++) begin : g_lvl
     logic [(D>>l)*NW-1:0] node;
     if (l == 0) begin : g_leaf
@@ -127,7 +128,7 @@ module sgm_wta #(
         wire          up = l == 1 ? c1_q[i] : hi[LD +: SW] < lo[LD +: SW];
         assign pick[i*NW +: NW] = up ? hi : lo;
       end
-      if (l % LPS == 0 || l == LD) begin : g_reg
+      if (l >= 2) begin : g_reg
         always_ff @(posedge clk_i) begin
           if (en_i) node <= pick;
         end

@@ -49,7 +49,12 @@ PNR_FLAGS        ?=
 # logic into LUT4s itself: 25 % fewer TRELLIS_COMB cells on the whole core at
 # D = 16 (23,254 -> 17,334, measured 2026-11-24), which is what lets D = 64 fit
 # the LFE5U-85F (synth/README.md, "Place and route").
-PNR_SYNTH_FLAGS  ?= -nowidelut
+# -abc9: abc maps the LUTs knowing the delays of the carry chains and flip-flops
+# around them (timing-aware), instead of minimising LUT depth alone. 5-lane D = 16
+# on LFE5U-45F-8: 118.5 MHz at 20,412 TRELLIS_COMB against 112.0 MHz at 19,946
+# without it (RTL 305b236); D = 64 at six lanes packs into 65,128 TRELLIS_COMB of
+# the LFE5U-85F (77 %) against 62,808 (75 %) (RTL 35c3a53, measured 2026-11-26).
+PNR_SYNTH_FLAGS  ?= -nowidelut -abc9
 PNR_CI_FLAGS     ?= --no-tmdriv --router router2
 # Verilog macros of every run (recorded with the synth_ecp5 options).
 # SGM_DELAY_CHAIN: sgm_delay_ram's rotating delays as register chains. On ECP5 a

@@ -15,8 +15,8 @@ namespace sgm::tb {
 
 constexpr int log2Ceil(int n) { return n <= 1 ? 0 : 1 + log2Ceil((n + 1) / 2); }
 
-// sgm_wta's LATENCY: T0 + ceil(log2(D) / 2) tree stages + 5 (P, Q3 .. Q0, output).
-constexpr int wtaLatency(int d) { return 1 + (log2Ceil(d) + 1) / 2 + 5; }
+// sgm_wta's LATENCY: T0 + log2(D) - 1 tree stages (levels 1 and 2 in one) + 5 (P, Q3 .. Q0, output).
+constexpr int wtaLatency(int d) { return log2Ceil(d) + 5; }
 
 struct WtaResult {
   int d, disp;  // winner, and disparity in 1/16 px (sub-pixel refined when enabled)

@@ -38,7 +38,7 @@ constexpr int kRW = int(Rtl::RW);
 constexpr int kLatency = int(Rtl::LATENCY);
 constexpr int kMaxS = (1 << kSW) - 1;
 
-static_assert(kLatency == sgm::tb::wtaLatency(kD), "sgm_wta latency: T0 + ceil(log2(D) / 2) tree stages + 5");
+static_assert(kLatency == sgm::tb::wtaLatency(kD), "sgm_wta latency: T0 + log2(D) - 1 tree stages + 5");
 
 struct Frame {
   sgm::PathVolume s;
