@@ -14,11 +14,17 @@
 //   * run table, 2 banks x ceil(MAX_WIDTH / 2) words of {exists, value}:
 //     entry r is the right neighbour of run r, written by the valid pixel that
 //     ends the run ("none" for a run reaching the end of the row).
-// At input slot (x, y + 1): read pixel (x, y); next slot: read its run-table
-// entry; next slot: register min-of-existing. Both memories are simple dual
-// port (one synchronous write, one synchronous read with enable, never the
-// same address in the same slot): block RAM. With fill_en_i = 0 the left
-// neighbour and the run-table entries are written as "none".
+// At input slot (x, y + 1): read pixel (x, y); the slot after the next: read
+// its run-table entry (the pixel word registered once more in between: the
+// pixel memory's clock-to-out in front of the run table's address was the
+// 5-lane core's critical path on ECP5); then the entry is registered again and
+// the fill decided. The run table's writes are registered one slot (written at
+// the slot after their pixel), so that the read of row y's last pixel, which
+// falls in the second slot of row y + 2, comes before row y + 2's first write
+// to the same bank. Both memories are simple dual port (one synchronous write,
+// one synchronous read with enable, never the same address in the same slot):
+// block RAM. With fill_en_i = 0 the left neighbour and the run-table entries
+// are written as "none".
 //
 // Parameters: DW disparity width (4 fractional bits), MAX_WIDTH largest frame
 // width (memories are 2^ceil(log2 MAX_WIDTH) deep per bank), CW column/width
@@ -60,7 +66,7 @@ module sgm_hole_fill #(
 );
 
   localparam int LATENCY_ROWS /*verilator public*/ = 1;
-  localparam int LATENCY      /*verilator public*/ = 4;
+  localparam int LATENCY      /*verilator public*/ = 5;
 
   localparam int AW  = $clog2(MAX_WIDTH);            // column address bits
   localparam int RIW = $clog2((MAX_WIDTH + 1) / 2);  // run index bits
@@ -87,10 +93,22 @@ module sgm_hole_fill #(
   wire            run_we  = run_end || (last && !v_in);
   wire  [TW-1:0]  run_wd  = {run_end && fill_en_i, disp_i};
 
+  // The run-table write, one slot late (see above).
+  logic           run_we_q;
+  logic [RIW:0]   run_wa_q;
+  logic [TW-1:0]  run_wd_q;
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) run_we_q <= 1'b0;
+    else if (en_i) run_we_q <= run_we;
+  end
+
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       pix_mem[{row_i[0], col_i[AW-1:0]}] <= {in_valid_i, disp_i, v_in, left_e, left_q, run};
-      if (run_we) run_mem[{row_i[0], run}] <= run_wd;
+      if (run_we_q) run_mem[run_wa_q] <= run_wd_q;
+      run_wa_q <= {row_i[0], run};
+      run_wd_q <= run_wd;
       prev_valid_q <= v_in;
       if (v_in) begin
         left_e_q <= 1'b1;
@@ -103,11 +121,11 @@ module sgm_hole_fill #(
   end
 
   // ------------------------------------------------------------ read side (row y + 1)
-  // Stage 1: pixel word of (x, y).
-  logic [PW-1:0] word1_q;
-  logic [CW-1:0] col1_q;
-  logic [RW-1:0] row1_q;
-  logic          bank1_q, ok1_q;
+  // Stage 1: pixel word of (x, y); stage 1o: the same registered again.
+  logic [PW-1:0] word1_q, word1o_q;
+  logic [CW-1:0] col1_q, col1o_q;
+  logic [RW-1:0] row1_q, row1o_q;
+  logic          bank1_q, bank1o_q, ok1_q, ok1o_q;
   // Stage 2: run-table entry of its run.
   logic [PW-1:0] word2_q;
   logic [TW-1:0] right2_q;
@@ -121,10 +139,14 @@ module sgm_hole_fill #(
       col1_q   <= col_i;
       row1_q   <= row_i - 1'b1;
       bank1_q  <= ~row_i[0];
-      right2_q <= run_mem[{bank1_q, word1_q[RIW-1:0]}];
-      word2_q  <= word1_q;
-      col2_q   <= col1_q;
-      row2_q   <= row1_q;
+      word1o_q <= word1_q;
+      col1o_q  <= col1_q;
+      row1o_q  <= row1_q;
+      bank1o_q <= bank1_q;
+      right2_q <= run_mem[{bank1o_q, word1o_q[RIW-1:0]}];
+      word2_q  <= word1o_q;
+      col2_q   <= col1o_q;
+      row2_q   <= row1o_q;
     end
   end
 
@@ -143,12 +165,14 @@ module sgm_hole_fill #(
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       ok1_q       <= 1'b0;
+      ok1o_q      <= 1'b0;
       ok2_q       <= 1'b0;
       ok2o_q      <= 1'b0;
       out_valid_o <= 1'b0;
     end else if (en_i) begin
       ok1_q       <= armed_q && row_i != '0 && row_i <= height_i && col_i < width_i;
-      ok2_q       <= ok1_q && word1_q[PW-1];
+      ok1o_q      <= ok1_q;
+      ok2_q       <= ok1o_q && word1o_q[PW-1];
       ok2o_q      <= ok2_q;
       out_valid_o <= ok2o_q;
     end
