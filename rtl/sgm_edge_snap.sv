@@ -20,12 +20,14 @@
 //         ECP5, in front of the step was the 5-lane core's critical path at
 //         108.9 MHz)
 //   W     a window along the stream, w[0] the newest; the pixel leaving is
-//         x = w[3], with x+1 .. x+3 in w[2] .. w[0]; x-1, x-2 keep only their
-//         step and row-continuation flags (w[4], w[5]). Each pixel's step
+//         x = w[3], with x+1 .. x+3 in w[2] .. w[0]; x-1 and x-2 take part
+//         only through the pair maxima pm(n) = max(step(n), step(n-1)), computed
+//         a slot after n enters and carried to w[4]. Each pixel's step
 //         |I(n) - I(n-1)| and its drop flag (a drop at n-1) are computed once,
 //         when it enters; an entry takes part only if it continues the row of
 //         x (frame pixels of the same row: positions arrive in raster order).
-//   max   the maxima of the step candidates (two compare-select levels), the
+//   max   the maxima of the step candidates (one compare-select level on the
+//         pair maxima), the
 //         drops and x's fields, registered (the maxima and the comparison in
 //         one slot were the 5-lane core's critical path at 97.4 MHz)
 //   dec   the snapping decision (step comparisons), registered
@@ -103,18 +105,29 @@ module sgm_edge_snap #(
     end
   end
 
+  function automatic logic [8:0] max9(input logic [8:0] a, input logic [8:0] b);
+    max9 = a > b ? a : b;
+  endfunction
+
   // ------------------------------------------------------------ window
   // Entering pixel n (from P2) against the newest entry, pixel n-1:
   //   cont  n and n-1 are frame pixels of the same row
   //   step  step(n) = |I(n) - I(n-1)| with bit 8 set when cont (0: absent, never wins)
   //   drop  a drop at e = n-1 (cont, both valid, disp(n-1) > disp(n) + 32)
   logic [NW*EW-1:0] win_q;     // {valid, disp, col, row} of w[0] .. w[3]
-  logic [4:0]       wcont_q;   // w[0] .. w[4]
-  logic [(NW+2)*9-1:0] wstep_q;
+  logic [3:0]       wcont_q;   // w[0] .. w[3]
+  logic [NW*9-1:0] wstep_q;  // w[0] .. w[3]
   logic [2:0]       wdrop_q;   // w[0] .. w[2]
   logic [NW-1:0]    wreal_q;
   logic [NW-1:0]    wen_q;     // snap enable
   logic [7:0]       wgray_q;   // gray of w[0]
+  // Pair maxima along the window: pm(n) = max(step(n), step(n-1)) when n
+  // continues the row of n-1, else 0 (step(n) is 0 then, and n-1 is another
+  // row's). Computed from w[0] and w[1] and shifted with them, so that the
+  // maxima of the max stage are one compare-select level each (two levels
+  // there were the 5-lane core's critical path on ECP5, 8.0 ns at 124.5 MHz).
+  // wpm_q[j] is pm of w[j + 1].
+  logic [4*9-1:0]   wpm_q;
 
   wire [DW-1:0] prev_disp = win_q[CW + RW +: DW];
   wire          prev_vld  = win_q[EW - 1];
@@ -128,11 +141,12 @@ module sgm_edge_snap #(
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       win_q   <= {win_q[(NW-1)*EW-1:0], p2_q};
-      wcont_q <= {wcont_q[3:0], new_cont};
-      wstep_q <= {wstep_q[(NW+1)*9-1:0], new_cont ? {1'b1, new_mag} : 9'd0};
+      wcont_q <= {wcont_q[2:0], new_cont};
+      wstep_q <= {wstep_q[(NW-1)*9-1:0], new_cont ? {1'b1, new_mag} : 9'd0};
       wdrop_q <= {wdrop_q[1:0], new_drop};
       wgray_q <= p2_gray_q;
       wen_q   <= {wen_q[NW-2:0], p2_en_q};
+      wpm_q   <= {wpm_q[3*9-1:0], wcont_q[0] ? max9(wstep_q[0*9 +: 9], wstep_q[1*9 +: 9]) : 9'd0};
     end
   end
 
@@ -143,24 +157,22 @@ module sgm_edge_snap #(
   // Drops e = x, x+1, x+2 (stored with e+1), inside the row of x.
   wire [2:0]    drop  = {wdrop_q[0] && c1 && c2, wdrop_q[1] && c1, wdrop_q[2]};
   // Steps: right of x present whenever their drop is; left of x masked to the row.
-  wire [8:0] st_p3 = wstep_q[0*9 +: 9], st_p2 = wstep_q[1*9 +: 9], st_p1 = wstep_q[2*9 +: 9];
+  wire [8:0] st_p3 = wstep_q[0*9 +: 9], st_p1 = wstep_q[2*9 +: 9];
   wire [8:0] st_0  = wstep_q[3*9 +: 9];
-  wire [8:0] st_m1 = wcont_q[3] ? wstep_q[4*9 +: 9] : 9'd0;
-  wire [8:0] st_m2 = wcont_q[3] && wcont_q[4] ? wstep_q[5*9 +: 9] : 9'd0;
-
-  function automatic logic [8:0] max9(input logic [8:0] a, input logic [8:0] b);
-    max9 = a > b ? a : b;
-  endfunction
 
   // edge(e) <= x iff the best left candidate (max(1, e-2) .. x) beats every
   // right one (x+1 .. e+1) strictly (ties go to the larger k). An absent left
-  // step is 0 and never beats.
-  wire [8:0] left1  = max9(st_m1, st_0);
-  wire [8:0] left0  = max9(st_m2, left1);
+  // step is 0 and never beats. By the pair maxima: max(st_m1, st_0) = pm(x);
+  // max(st_m2, st_m1, st_0) = max(st_0, pm(x-1)) when x continues its row,
+  // else 0 like every left step; max(st_p1, st_p2) = pm(x+2) where it matters
+  // (the drop at x+1 is only a drop when x+2 continues the row).
+  wire [8:0] pm_p2  = wpm_q[0*9 +: 9], pm_0 = wpm_q[2*9 +: 9], pm_m1 = wpm_q[3*9 +: 9];
+  wire [8:0] left1  = pm_0;
+  wire [8:0] left0  = wcont_q[3] ? max9(st_0, pm_m1) : 9'd0;
   wire [8:0] left2  = st_0;
   wire [8:0] right0 = st_p1;
-  wire [8:0] right1 = max9(st_p1, st_p2);
-  wire [8:0] right2 = max9(right1, st_p3);
+  wire [8:0] right1 = pm_p2;
+  wire [8:0] right2 = max9(pm_p2, st_p3);
 
   // max: the maxima and the drops registered; x's fields {disp(x+1), disp(x+2),
   // disp(x+3), disp(x), valid(x), snap enable, col, row} ride along in one
