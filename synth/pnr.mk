@@ -10,7 +10,7 @@
 #   make pnr-ci         D=16, MAX_WIDTH=128 on LFE5U-45F speed 6; fails unless the
 #                       design routes and nextpnr reports an fmax (in `make test`)
 #   make pnr-one        one run: PNR_D, PNR_MAX_WIDTH, PNR_DEVICE, PNR_PACKAGE, PNR_SPEED
-#                       (every target takes PNR_LANES, the core's LANES, default 1)
+#                       (every target takes PNR_LANES, the core's LANES, default 6)
 #   make pnr-summary    rebuild summary.{json,md} from what build/pnr holds
 #
 # Yosys and nextpnr run one at a time (flock on build/pnr/.lock, also under
@@ -22,7 +22,10 @@ PNR_D            ?= 64
 # at D = 64 (synth/README.md, "Place and route").
 PNR_MAX_WIDTH    ?= 1024
 PNR_MAX_HEIGHT   ?= 1024
-PNR_LANES        ?= 1
+# Six lanes: the 0 degree recursion gets six slots, which is what a 125 MHz clock
+# at D = 64 needs (docs/rtl.md, the loop alone in `make pnr-loop`); one lane
+# (the paper's schedule, one slot) reaches about a fifth of that (`make pnr-ci`).
+PNR_LANES        ?= 6
 PNR_DEVICE       ?= 85k
 PNR_PACKAGE      ?= CABGA381
 PNR_SPEEDS       ?= 8 6
