@@ -51,6 +51,35 @@ TEST(RightPath, IsTheMirroredLeftPath) {
       ASSERT_EQ(sum[size_t(x) * nd + d], 7 + 2 * left.at(w - 1 - x, 0)[d]) << "x " << x << " d " << d;
 }
 
+// In blocks of B: block [x0, x0 + B) holds the whole-row path of the row cut at
+// x0 + 2B (its first pixel beyond the block's look-ahead), i.e. the path started at
+// x0 + 2B - 1; a block at least as wide as the row is the whole row.
+TEST(RightPath, BlocksAreTheRowCutOneBlockAhead) {
+  std::mt19937 rng(11);
+  const int w = 41, nd = 8, p1 = 7, p2 = 110;
+  CostVolume c(w, 1, nd);
+  for (auto& v : c.data) v = uint8_t(rng() % 45);
+  cv::Mat gray(1, w, CV_8UC1);
+  for (int x = 0; x < w; ++x) gray.at<uint8_t>(0, x) = uint8_t(rng() % 256);
+  const sgm::P2Table table = sgm::makeP2Table(p1, p2);
+  for (const int block : {1, 3, 8, 20, 41, 64}) {
+    std::vector<uint16_t> sum(size_t(w) * nd, 0);
+    sgm::addRightPath(c.at(0, 0), gray.ptr<uint8_t>(0), w, nd, p1, table, 1, sum.data(), block);
+    for (int x0 = 0; x0 < w; x0 += block) {
+      const int cut = std::min(w, x0 + 2 * block);  // the row as the block's path sees it
+      std::vector<uint16_t> whole(size_t(cut) * nd, 0);
+      sgm::addRightPath(c.at(0, 0), gray.ptr<uint8_t>(0), cut, nd, p1, table, 1, whole.data());
+      for (int x = x0; x < std::min(w, x0 + block); ++x)
+        for (int d = 0; d < nd; ++d)
+          ASSERT_EQ(sum[size_t(x) * nd + d], whole[size_t(x) * nd + d]) << "block " << block << " x " << x << " d " << d;
+    }
+  }
+  std::vector<uint16_t> row(size_t(w) * nd, 0), wide(size_t(w) * nd, 0);
+  sgm::addRightPath(c.at(0, 0), gray.ptr<uint8_t>(0), w, nd, p1, table, 1, row.data());
+  sgm::addRightPath(c.at(0, 0), gray.ptr<uint8_t>(0), w, nd, p1, table, 1, wide.data(), w);
+  EXPECT_EQ(row, wide);
+}
+
 TEST(RightPath, AggregateAddsItToTheFourPaths) {
   std::mt19937 rng(9);
   const int w = 30, h = 7, nd = 10, p1 = 8, p2 = 90;
@@ -150,15 +179,22 @@ TEST(Experiments, StreamingPipelineEqualsStagesAndChangesTheResult) {
   EXPECT_EQ(cv::countNonZero(streamed.disp != staged.result.disp), 0);
   EXPECT_EQ(cv::countNonZero(streamed.valid != staged.result.valid), 0);
   EXPECT_GT(cv::countNonZero(streamed.disp != today.disp) + cv::countNonZero(streamed.valid != today.valid), 0);
+  p.rightPathBlock = 2;  // the blocks of the fifth path, streamed and staged alike
+  const sgm::DisparityMap blocks = sgm::runPipeline(scene.left, scene.right, p);
+  const sgm::PipelineStages blocksStaged = sgm::runPipelineStages(scene.left, scene.right, p);
+  EXPECT_EQ(cv::countNonZero(blocks.disp != blocksStaged.result.disp), 0);
+  EXPECT_EQ(cv::countNonZero(blocks.valid != blocksStaged.result.valid), 0);
+  EXPECT_GT(cv::countNonZero(blocks.disp != streamed.disp) + cv::countNonZero(blocks.valid != streamed.valid), 0);
 }
 
 TEST(Experiments, OptionsAndRanges) {
-  std::vector<std::string> args = {"prog", "--right-path", "3", "--uniqueness", "10", "--ad-weight", "8", "--ad-cap", "16",
+  std::vector<std::string> args = {"prog", "--right-path", "3", "--right-block", "48", "--uniqueness", "10", "--ad-weight", "8", "--ad-cap", "16",
                                    "--subpixel-fit", "linear"};
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   const sgm::Params p = sgm::CliArgs(int(argv.size()), argv.data(), sgm::CliArgs::pipelineOptions()).pipelineParams();
   EXPECT_EQ(p.rightPathWeight, 3);
+  EXPECT_EQ(p.rightPathBlock, 48);
   EXPECT_EQ(p.uniqueness, 10);
   EXPECT_EQ(p.adWeight, 8);
   EXPECT_EQ(p.adCap, 16);
@@ -167,6 +203,9 @@ TEST(Experiments, OptionsAndRanges) {
   sgm::Params bad;
   bad.rightPathWeight = sgm::kMaxRightPathWeight + 1;
   expectError([&] { bad.validate(); }, {"right-path"});
+  bad = sgm::Params{};
+  bad.rightPathBlock = sgm::kMaxRightPathBlock + 1;
+  expectError([&] { bad.validate(); }, {"right-path block"});
   bad = sgm::Params{};
   bad.adWeight = 64, bad.adCap = 255;  // 44 + 64 * 255 / 8 > 255
   expectError([&] { bad.validate(); }, {"8 bits"});

@@ -279,6 +279,7 @@ std::string goldenParamsText(const Params& p) {
                      onOff(p.fill) + ", snap " + onOff(p.snap) + ", median " + onOff(p.median);
   if (p.experimental())
     text += "; golden-only experiments (not in the RTL): right path " + std::to_string(p.rightPathWeight) +
+            (p.rightPathBlock ? " block " + std::to_string(p.rightPathBlock) : std::string()) +
             ", uniqueness " + std::to_string(p.uniqueness) + ", AD weight " + std::to_string(p.adWeight) + " cap " +
             std::to_string(p.adCap) + ", sub-pixel fit " + (p.linearSubpixel ? "linear" : "parabola") + ", MGM " +
             onOff(p.mgm);
@@ -299,6 +300,7 @@ void writeGoldenParamFields(JsonWriter& j, const Params& p) {
   j.key("median").boolean(p.median);
   // Golden-only experiments (docs/algorithm.md section 12), off unless set.
   j.key("right_path_weight").integer(p.rightPathWeight);
+  j.key("right_path_block").integer(p.rightPathBlock);  // 0: the whole row
   j.key("uniqueness").integer(p.uniqueness);
   j.key("ad_weight").integer(p.adWeight);
   j.key("ad_cap").integer(p.adCap);

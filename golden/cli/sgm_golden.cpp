@@ -20,6 +20,7 @@ const char* kUsage =
     "                  [--preset default|paper]  (options after a preset override it)\n"
     "golden-only experiments, NOT in the RTL (off by default; docs/algorithm.md section 12):\n"
     "                  [--right-path W] fifth path from the right over one buffered row, weight W (0..8)\n"
+    "                  [--right-block B] the fifth path per block of B px with one block of look-ahead (0: the row)\n"
     "                  [--uniqueness U] uniqueness ratio U % (0..99)\n"
     "                  [--ad-weight W] [--ad-cap T] C += W * min(|IL - IR|, T) / 8\n"
     "                  [--subpixel-fit parabola|linear] linear: the equiangular (V) fit\n"

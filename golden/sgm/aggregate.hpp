@@ -52,9 +52,10 @@ PathVolume pathCost(const CostVolume& cost, const cv::Mat& grayLeft, int pathInd
 // 0 degrees from the right (p - r = (x + 1, y)), computed over each completed row of
 // C (one buffered row in hardware), weighted by rightPathWeight. mgm (golden-only)
 // replaces each path's recursion by the raster-order MGM one (kMgmPerpendicular).
+// rightPathBlock > 0 computes the fifth path per block of that many pixels (addRightPath).
 PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1, int p2,
                          P2Mode p2Mode = P2Mode::kKnee, PathWeighting weights = PathWeighting::k3232,
-                         int rightPathWeight = 0, bool mgm = false);
+                         int rightPathWeight = 0, bool mgm = false, int rightPathBlock = 0);
 
 // The streaming form used by the pipeline: rows in order, never more than a
 // few rows of C and S in memory, the work of each row split over two workers.
@@ -66,12 +67,15 @@ using CostRowFn = std::function<void(int y, int x0, int x1, uint8_t* row)>;
 using SumRowFn = std::function<void(int worker, int y, const uint16_t* row)>;
 void aggregateRows(int width, int height, int disparities, const cv::Mat& grayLeft, int p1, int p2,
                    P2Mode p2Mode, PathWeighting weights, const CostRowFn& costRow, const SumRowFn& sink,
-                   int rightPathWeight = 0, bool mgm = false);
+                   int rightPathWeight = 0, bool mgm = false, int rightPathBlock = 0);
 
 // The golden-only fifth path over one row: Lr for r = (1, 0), from x = W-1 down to 0,
 // added to sum (W x D) with the given weight. cost is the row of C, grayRow the row of
-// the left image.
+// the left image. block > 0: the row in blocks of that many pixels, each block's path
+// started (Lr = C) one block to its right (at x0 + 2 block - 1, or at W - 1), the next
+// block being its warm-up: a bounded look-ahead instead of the whole row (in hardware
+// a few blocks of C per row lane instead of the row). block = 0: the whole row.
 void addRightPath(const uint8_t* cost, const uint8_t* grayRow, int width, int disparities, int p1,
-                  const P2Table& p2Table, int weight, uint16_t* sum);
+                  const P2Table& p2Table, int weight, uint16_t* sum, int block = 0);
 
 }  // namespace sgm

@@ -79,7 +79,7 @@ const std::set<std::string>& CliArgs::pipelineOptions() {
   static const std::set<std::string> names = {"d",    "p1",   "p2",     "mode",   "subpixel", "lr",     "fill",
                                               "snap", "median", "census", "p2-mode", "weights", "preset",
                                               // golden-only experiments (not in the RTL)
-                                              "right-path", "uniqueness", "ad-weight", "ad-cap", "subpixel-fit", "mgm"};
+                                              "right-path", "right-block", "uniqueness", "ad-weight", "ad-cap", "subpixel-fit", "mgm"};
   return names;
 }
 
@@ -106,6 +106,7 @@ Params CliArgs::pipelineParams(Params p) const {
   if (has("p2-mode")) p.p2Mode = parseP2Mode(text("p2-mode", ""));
   if (has("weights")) p.weights = parsePathWeighting(text("weights", ""));
   p.rightPathWeight = int(integer("right-path", p.rightPathWeight, 0, kMaxRightPathWeight));
+  p.rightPathBlock = int(integer("right-block", p.rightPathBlock, 0, kMaxRightPathBlock));
   p.uniqueness = int(integer("uniqueness", p.uniqueness, 0, 99));
   p.adWeight = int(integer("ad-weight", p.adWeight, 0, kMaxAdWeight));
   p.adCap = int(integer("ad-cap", p.adCap, 0, 255));

@@ -60,6 +60,7 @@ bool Params::operator==(const Params& o) const {
   return disparities == o.disparities && p1 == o.p1 && p2 == o.p2 && mode == o.mode && subpixel == o.subpixel &&
          lrTolerance == o.lrTolerance && fill == o.fill && snap == o.snap && median == o.median &&
          census == o.census && p2Mode == o.p2Mode && weights == o.weights && rightPathWeight == o.rightPathWeight &&
+         rightPathBlock == o.rightPathBlock &&
          uniqueness == o.uniqueness && adWeight == o.adWeight && adCap == o.adCap && linearSubpixel == o.linearSubpixel &&
          mgm == o.mgm;
 }
@@ -114,6 +115,9 @@ void Params::validate() const {
   if (rightPathWeight < 0 || rightPathWeight > kMaxRightPathWeight)
     throw Error("right-path weight " + std::to_string(rightPathWeight) + " out of range 0.." +
                 std::to_string(kMaxRightPathWeight));
+  if (rightPathBlock < 0 || rightPathBlock > kMaxRightPathBlock)
+    throw Error("right-path block " + std::to_string(rightPathBlock) + " out of range 0.." +
+                std::to_string(kMaxRightPathBlock));
   if (uniqueness < 0 || uniqueness > 99) throw Error("uniqueness " + std::to_string(uniqueness) + " out of range 0..99");
   if (adWeight < 0 || adWeight > kMaxAdWeight || adCap < 0 || adCap > 255)
     throw Error("AD term weight " + std::to_string(adWeight) + " / cap " + std::to_string(adCap) +

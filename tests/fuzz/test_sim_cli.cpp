@@ -100,6 +100,7 @@ TEST_F(SgmSimCli, ParametersTheBuildOrTheCoreCannotTake) {
       {{"--p2-mode", "steep"}, "unknown P2 mode 'steep'"},
       {{"--weights", "1111"}, "unknown path weights '1111'"},
       {{"--right-path", "3"}, "golden-only experiments, not in the core"},
+      {{"--right-block", "32"}, "golden-only experiments, not in the core"},
       {{"--uniqueness", "10"}, "golden-only experiments, not in the core"},
       {{"--ad-weight", "2"}, "golden-only experiments, not in the core"},
       {{"--subpixel-fit", "linear"}, "golden-only experiments, not in the core"},
