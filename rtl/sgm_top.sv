@@ -109,7 +109,7 @@ module sgm_top #(
   assign min_width_o = XW'(MIN_FRAME_WIDTH);
 
   // ------------------------------------------------------------ control
-  logic          en;
+  logic          en, en_ctrl;  // en: en_ctrl on the clock network where the flow asks for it
   logic [7:0]    pix_l, pix_r;
   logic [XW-1:0] col0, width;
   logic          sof0;  // the slot is the frame's first, (0, 0): a flag of the controller
@@ -172,7 +172,7 @@ module sgm_top #(
     .weights_o     (weights_eq),
     .lut_start_o   (lut_start),
     .lut_ready_i   (lut_ready),
-    .en_o          (en),
+    .en_o          (en_ctrl),
     .pix_left_o    (pix_l),
     .pix_right_o   (pix_r),
     .col_o         (col0),
@@ -186,6 +186,14 @@ module sgm_top #(
     .error_o       (error_o),
     .error_set_o   (error_event_o)
   );
+
+  // The enable reaches every flip-flop of the datapath: on ECP5 it rides a
+  // global network (sgm_global_buf, SGM_ECP5_GLOBAL).
+  sgm_global_buf u_en_global (
+    .sig_i (en_ctrl),
+    .sig_o (en)
+  );
+
   assign frame_width_o  = width;
   assign frame_height_o = height[YW-1:0];
 

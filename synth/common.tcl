@@ -18,7 +18,8 @@
 #   SYNTH_LANES      LANES, row lanes of the schedule (1, the default: the raster)
 #   SYNTH_OUT        output directory of this target (created by make)
 #   SYNTH_DEFINES    Verilog macros to define, space-separated (the ECP5 flow:
-#                    SGM_DELAY_CHAIN, rtl/sgm_delay_ram.sv; none by default)
+#                    SGM_DELAY_CHAIN, rtl/sgm_delay_ram.sv, and SGM_ECP5_GLOBAL,
+#                    rtl/sgm_global_buf.sv; none by default)
 #
 # Files written into SYNTH_OUT by this part:
 #   check.txt      `check` of the elaborated design
@@ -39,6 +40,9 @@ set lanes      [env_or SYNTH_LANES 1]
 set out        [env_or SYNTH_OUT build/synth]
 set defines    [env_or SYNTH_DEFINES ""]
 
+# SGM_ECP5_GLOBAL: sgm_global_buf instantiates the ECP5 DCCA, a primitive the
+# elaboration needs to know (as synth_ecp5 reads it: a black box).
+if {"SGM_ECP5_GLOBAL" in $defines} { yosys read_verilog -lib +/ecp5/cells_bb.v }
 yosys read_verilog -sv {*}[lmap m $defines {string cat -D $m}] {*}[lsort [glob $rtl/*.sv]]
 yosys chparam -set D $d -set MAX_WIDTH $max_width -set MAX_HEIGHT $max_height -set CENSUS_H $census_h -set LANES $lanes sgm_top
 yosys hierarchy -check -top sgm_top

@@ -66,7 +66,13 @@ PNR_CI_FLAGS     ?= --no-tmdriv --router router2
 # fed by a flip-flop none, so the chains free LUT positions for the logic at the
 # price of flip-flops, of which the core used less than half (synth/README.md,
 # "What the slices hold").
-PNR_DEFINES      ?= SGM_DELAY_CHAIN
+# SGM_ECP5_GLOBAL: the pipeline enable through a DCCA onto a global network
+# (rtl/sgm_global_buf.sv). Routed through the fabric, the enable (a flip-flop
+# driving every flip-flop of the datapath) was the most congested net of D = 64
+# at six lanes (router2's congestion map: 1,151 overused wires, the next net
+# 411); at D = 16 with five lanes it is neutral (124.4 MHz against 123.7 on
+# LFE5U-45F-8, measured 2026-11-27; synth/README.md).
+PNR_DEFINES      ?= SGM_DELAY_CHAIN SGM_ECP5_GLOBAL
 # Comparisons of at most this many bits as LUT logic instead of carry chains
 # (synth/ecp5_cmp_lut.v; 0: all to carry chains). A carry chain costs nextpnr-ecp5
 # a CCU2C in front (the constant carry-in) and, for a comparison, one behind (the
