@@ -95,11 +95,11 @@ module sgm_axi #(
   localparam logic [ADDR_W-1:0] ADDR_IRQ_ENABLE  /*verilator public*/ = ADDR_W'('h48);
   localparam logic [ADDR_W-1:0] ADDR_IRQ_STATUS  /*verilator public*/ = ADDR_W'('h4C);
 
-  localparam logic [31:0] ID_VALUE       /*verilator public*/ = 32'h5347_4D02;  // "SGM", version 2
+  localparam logic [31:0] ID_VALUE       /*verilator public*/ = 32'h5347_4D03;  // "SGM", version 3
   localparam logic [31:0] PENALTY_RESET  /*verilator public*/ = 32'h0000_6412;  // P1 18, P2' 100
   localparam logic [31:0] CONFIG_RESET   /*verilator public*/ = 32'h0000_7131;  // rsad, all stages on, tol 1
   localparam logic [31:0] CTRL_MASK      = 32'h0000_0005;  // ENABLE, HOLD (SOFT_RESET reads 0)
-  localparam logic [31:0] CONFIG_MASK    = 32'h0003_7733;
+  localparam logic [31:0] CONFIG_MASK    = 32'h7F03_7733;
   localparam logic [31:0] PENALTY_MASK   = 32'h0000_FFFF;
   localparam logic [31:0] IRQ_MASK       = 32'h0000_0003;
   localparam int CENSUS_WIDTH  = 9;  // the window of sgm_census_unit: 9 x CENSUS_H
@@ -212,7 +212,7 @@ module sgm_axi #(
   logic [XW-1:0] act_width;
   logic [YW-1:0] act_height;
   logic [15:0]   act_penalty;
-  logic [17:0]   act_config;
+  logic [30:0]   act_config;
   wire  [15:0]   shadow_width  = frame_size_q[15:0];
   wire  [15:0]   shadow_height = frame_size_q[31:16];
 
@@ -221,12 +221,12 @@ module sgm_axi #(
       act_width   <= '0;
       act_height  <= '0;
       act_penalty <= PENALTY_RESET[15:0];
-      act_config  <= CONFIG_RESET[17:0];
+      act_config  <= CONFIG_RESET[30:0];
     end else if (!hold) begin
       act_width   <= 32'(shadow_width) <= MAX_WIDTH ? shadow_width[XW-1:0] : '0;
       act_height  <= 32'(shadow_height) <= MAX_HEIGHT ? shadow_height[YW-1:0] : '0;
       act_penalty <= penalty_q[15:0];
-      act_config  <= config_q[17:0];
+      act_config  <= config_q[30:0];
     end
   end
 
@@ -268,6 +268,7 @@ module sgm_axi #(
     .cfg_median_i  (act_config[14]),
     .cfg_p2_mode_i (act_config[16]),
     .cfg_weights_i (act_config[17]),
+    .cfg_unique_i  (act_config[30:24]),
     .busy_o        (busy),
     .frame_done_o  (frame_done),
     .error_o       (error),
@@ -337,7 +338,7 @@ module sgm_axi #(
     endcase
   end
 
-  wire unused = &{1'b0, reg_re, reg_waddr[1:0], reg_raddr[1:0], error, act_config[3:2], act_config[7:6], act_config[11], act_config[15], shadow_width[15:XW],
+  wire unused = &{1'b0, reg_re, reg_waddr[1:0], reg_raddr[1:0], error, act_config[3:2], act_config[7:6], act_config[11], act_config[15], act_config[23:18], shadow_width[15:XW],
                   shadow_height[15:YW]};
 
 endmodule

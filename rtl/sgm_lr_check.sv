@@ -4,12 +4,13 @@
 //
 //   dR(xr) = argmin over d = 0 .. min(D-1, W-1-xr) of S(xr+d, d)  (ties: smallest d)
 //   left (x, y) with winner d is valid iff x - d >= 0 and |dR(x-d) - d| <= tol_i
-//   (check_en_i = 0: every pixel valid).
+//   (check_en_i = 0: every pixel valid), and in either case only if the WTA
+//   side's unique_i said the winner is unique (sgm_wta: uniqueness ratio).
 //
 // Two input streams:
 //   S side    s_i, col_i, row_i, valid_i (+ width_i, height_i): the slot stream.
 //             It also drives the output timing.
-//   WTA side  d_i, disp_i with their own position wta_col_i / wta_row_i /
+//   WTA side  d_i, disp_i, unique_i with their own position wta_col_i / wta_row_i /
 //             wta_valid_i: the sgm_wta result of the same S, connected directly
 //             (it arrives sgm_wta LATENCY slots after its S, no delay line of S
 //             needed). Any lag L of the WTA side behind the S side with
@@ -45,7 +46,8 @@
 //     the next row, where slot D-1 finalises nothing: no write port conflict).
 // dR goes through one registered write port into dr_mem (2 banks by row
 // parity x MAX_WIDTH x log2(D) bit). The WTA result {d, disp} of (x, y) goes
-// to lt_mem (2 banks x MAX_WIDTH x (log2(D) + DW) bit) at its own column.
+// to lt_mem (2 banks x MAX_WIDTH x (log2(D) + DW + 2) bit: with the unique and
+// frame-pixel flags) at its own column.
 //
 // Read side, at the S slot (x, y), y >= 1, for the left pixel (x, y-1):
 //   R1  read lt_mem[bank (y-1) % 2][x]
@@ -53,7 +55,7 @@
 //   R2  xr = x - d; read dr_mem[bank (y-1) % 2][xr] when x >= d
 //   R2o the memory's output register (the block RAM's clock-to-out in front of
 //       the comparison was the 5-lane core's critical path at 101.8 MHz)
-//   R3  valid = !check_en || (x >= d && |dR - d| <= tol); output registers.
+//   R3  valid = (!check_en || (x >= d && |dR - d| <= tol)) && unique; output registers.
 // Order of memory accesses (slot = S-side slot, a write at slot t is visible
 // to reads at slots > t):
 //   * dR(xr), xr <= W-D, of row y is written at slot (xr + D, y) and read no
@@ -84,7 +86,7 @@
 // Latency: one row plus LATENCY = 5 slots: left pixel (x, y) presented on the
 // WTA side is on the outputs after the enabled edge of S slot (x, y+1) plus
 // LATENCY - 1 edges, i.e. S slot (x, y) + width + LATENCY - 1 edges.
-// Throughput: one pixel per slot. Reset: control registers only (tail counter,
+// Throughput: one pixel per slot. Reset: control registers only (tail counter, row-end column,
 // dR write enable, out_valid pipeline).
 module sgm_lr_check #(
   parameter int D         /*verilator public*/ = 64,
@@ -114,6 +116,7 @@ module sgm_lr_check #(
   // WTA side: winner and disparity of pixel (wta_col_i, wta_row_i).
   input  wire  [LD-1:0]    d_i,
   input  wire  [DW-1:0]    disp_i,
+  input  wire              unique_i,     // the winner passed sgm_wta's uniqueness test
   input  wire  [CW-1:0]    wta_col_i,
   input  wire  [RW-1:0]    wta_row_i,
   input  wire              wta_valid_i,
@@ -123,7 +126,7 @@ module sgm_lr_check #(
   input  wire  [RW-1:0]    rd_row_i,
   // Output: left pixel (col_o, row_o) of the previous row.
   output logic [DW-1:0]    disp_o,
-  output logic             valid_o,      // left-right check passed
+  output logic             valid_o,      // left-right check (and uniqueness) passed
   output logic [CW-1:0]    col_o,
   output logic [RW-1:0]    row_o,
   output logic             out_valid_o   // the slot carries a pixel of the frame
@@ -132,7 +135,7 @@ module sgm_lr_check #(
   localparam int BW  = $clog2(ROW_BANKS);    // bank bits (row mod ROW_BANKS)
   localparam int MW  = ROW_BANKS * MAX_WIDTH; // words per memory
   localparam int MAW = $clog2(MW);
-  localparam int LW  = LD + DW;         // lt_mem word {frame pixel, d, disp} has LW + 1 bits
+  localparam int LW  = LD + DW + 1;     // lt_mem word {frame pixel, unique, d, disp} has LW + 1 bits
 
   // Word address of column col in bank b.
   function automatic logic [MAW-1:0] mem_addr(input logic [BW-1:0] b, input logic [CW-1:0] col);
@@ -204,13 +207,18 @@ module sgm_lr_check #(
   // width - 1 and width - (D - 1) registered with each slot, used from the next
   // one on: width_i is constant within a frame and the first slot of a row is
   // never its last (width >= 16); the compare behind a subtractor was the
-  // 5-lane core's critical path at c9253c6 (8.8 ns on ECP5).
+  // 5-lane core's critical path at c9253c6 (8.8 ns on ECP5). wm1_q resets to
+  // all ones, a column no frame has (CW holds MAX_WIDTH): before the first slot
+  // it must not equal that slot's column 0, or a row tail would start there and
+  // its writes would take the dR write port from the diagonal (a power-up value
+  // of 0, as an FPGA starts, lost dR(0) of the first frame's first row).
   logic [CW-1:0] wm1_q, wmd_q;
   always_ff @(posedge clk_i) begin
-    if (en_i) begin
-      wm1_q <= width_i - CW'(1);
-      wmd_q <= width_i - CW'(D - 1);
-    end
+    if (!rst_ni) wm1_q <= '1;
+    else if (en_i) wm1_q <= width_i - CW'(1);
+  end
+  always_ff @(posedge clk_i) begin
+    if (en_i) wmd_q <= width_i - CW'(D - 1);
   end
   wire last_col = valid_i && col_i == wm1_q;
 
@@ -289,7 +297,7 @@ module sgm_lr_check #(
   // earlier frame still in flight may have a row inside the next frame).
   logic [LW:0] lt_mem [0:MW-1];
   always_ff @(posedge clk_i) begin
-    if (en_i) lt_mem[mem_addr(wta_row_i[BW-1:0], wta_col_i)] <= {wta_valid_i, d_i, disp_i};
+    if (en_i) lt_mem[mem_addr(wta_row_i[BW-1:0], wta_col_i)] <= {wta_valid_i, unique_i, d_i, disp_i};
   end
 
   // ------------------------------------------------------------ R1
@@ -348,6 +356,7 @@ module sgm_lr_check #(
   logic [LD-1:0] r2_dr_q;
   logic [LD-1:0] r2_d_q;
   logic [DW-1:0] r2_disp_q;
+  logic          r2_uniq_q;
   logic [CW-1:0] r2_col_q;
   logic [RW-1:0] r2_row_q;
   logic          r2_ok_q, r2_real_q, r2_chk_q;
@@ -361,6 +370,7 @@ module sgm_lr_check #(
     if (en_i) begin
       r2_d_q    <= r1_d;
       r2_disp_q <= r1o_word_q[0 +: DW];
+      r2_uniq_q <= r1o_word_q[DW + LD];
       r2_ok_q   <= r1_ok;
       r2_col_q  <= r1o_col_q;
       r2_row_q  <= r1o_row_q;
@@ -374,7 +384,7 @@ module sgm_lr_check #(
   logic [DW-1:0] r2o_disp_q;
   logic [CW-1:0] r2o_col_q;
   logic [RW-1:0] r2o_row_q;
-  logic          r2o_ok_q, r2o_real_q, r2o_chk_q;
+  logic          r2o_ok_q, r2o_real_q, r2o_chk_q, r2o_uniq_q;
   logic [2:0]    r2o_tol_q;
 
   always_ff @(posedge clk_i) begin
@@ -382,6 +392,7 @@ module sgm_lr_check #(
       r2o_dr_q   <= r2_dr_q;
       r2o_d_q    <= r2_d_q;
       r2o_disp_q <= r2_disp_q;
+      r2o_uniq_q <= r2_uniq_q;
       r2o_ok_q   <= r2_ok_q;
       r2o_col_q  <= r2_col_q;
       r2o_row_q  <= r2_row_q;
@@ -392,7 +403,7 @@ module sgm_lr_check #(
 
   // ------------------------------------------------------------ R3 / outputs
   wire [LD-1:0] diff = r2o_dr_q > r2o_d_q ? r2o_dr_q - r2o_d_q : r2o_d_q - r2o_dr_q;
-  wire          pass = !r2o_chk_q || (r2o_ok_q && diff <= LD'(r2o_tol_q));
+  wire          pass = (!r2o_chk_q || (r2o_ok_q && diff <= LD'(r2o_tol_q))) && r2o_uniq_q;
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin

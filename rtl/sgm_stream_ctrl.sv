@@ -13,7 +13,7 @@
 // until the next tuser. A tuser inside a frame is not consumed: it starts the
 // next frame. A frame whose configuration is out of range (width outside
 // MIN_WIDTH .. MAX_WIDTH, height outside 9 .. MAX_HEIGHT, P2' below P1, cost
-// mode 3) is dropped whole.
+// mode 3, uniqueness ratio above 99) is dropped whole.
 //
 // Configuration is sampled with the tuser beat's handshake (kept per input
 // buffer entry) and applied when that frame starts; the P2 table is refilled then (lut_start_o) and the
@@ -67,6 +67,7 @@ module sgm_stream_ctrl #(
   input  wire                 cfg_median_i,
   input  wire                 cfg_p2_mode_i,
   input  wire                 cfg_weights_i,
+  input  wire  [6:0]          cfg_unique_i,
   // The latched configuration, constant while a frame's slots flow.
   output logic [XW-1:0]       width_o,
   output logic [YW-1:0]       height_o,
@@ -81,6 +82,7 @@ module sgm_stream_ctrl #(
   output logic                median_o,
   output logic                p2_mode_o,     // 0 knee, 1 paper (P2' / dI)
   output logic                weights_o,     // 0 = 3,2,3,2, 1 = equal
+  output logic [6:0]          unique_o,      // uniqueness ratio in % (0 .. 99; 0 off)
   output logic                lut_start_o,
   input  wire                 lut_ready_i,
   // Pipeline slots.
@@ -126,19 +128,19 @@ module sgm_stream_ctrl #(
   // (a one-beat malformed frame).
   // The range check of the configuration (in range: MIN_WIDTH .. MAX_WIDTH columns,
   // 9 .. MAX_HEIGHT rows, P2' >= P1 (the golden model's contract), cost mode 0, 1
-  // or 2; 3 is not a mode) is done as the word is written and kept with it, so
+  // or 2; 3 is not a mode; uniqueness ratio 0 .. 99) is done as the word is written and kept with it, so
   // that the start-of-frame decision reads one flag (its comparisons behind the
   // entry's distributed RAM were the 5-lane core's critical path at 95.8 MHz).
   wire cfg_ok = cfg_width_i >= XW'(MIN_WIDTH) && cfg_width_i <= XW'(MAX_WIDTH) &&
                 cfg_height_i >= YW'(9) && cfg_height_i <= YW'(MAX_HEIGHT) &&
-                cfg_p2_i >= cfg_p1_i && cfg_mode_i != 2'd3;
-  localparam int CFGW = XW + YW + 2 * PW + 13;
+                cfg_p2_i >= cfg_p1_i && cfg_mode_i != 2'd3 && cfg_unique_i <= 7'd99;
+  localparam int CFGW = XW + YW + 2 * PW + 20;
   logic [CFGW-1:0] pend_q [0:1];
   always_ff @(posedge clk_i) begin
     if (in_push && s_tuser_i)
       pend_q[in_wr_q] <= {cfg_ok, cfg_width_i, cfg_height_i, cfg_p1_i, cfg_p2_i, cfg_mode_i, cfg_subpixel_i,
                           cfg_lr_en_i, cfg_lr_tol_i, cfg_fill_i, cfg_snap_i, cfg_median_i, cfg_p2_mode_i,
-                          cfg_weights_i};
+                          cfg_weights_i, cfg_unique_i};
   end
   // The configuration of the head beat (meaningful when it is a tuser beat).
   logic [XW-1:0] pend_width;
@@ -147,9 +149,10 @@ module sgm_stream_ctrl #(
   logic [1:0]    pend_mode;
   logic          pend_subpixel, pend_lr_en, pend_fill, pend_snap, pend_median, pend_p2_mode, pend_weights;
   logic [2:0]    pend_lr_tol;
+  logic [6:0]    pend_unique;
   logic          pend_ok;
   assign {pend_ok, pend_width, pend_height, pend_p1, pend_p2, pend_mode, pend_subpixel, pend_lr_en,
-          pend_lr_tol, pend_fill, pend_snap, pend_median, pend_p2_mode, pend_weights} = pend_q[in_rd_q];
+          pend_lr_tol, pend_fill, pend_snap, pend_median, pend_p2_mode, pend_weights, pend_unique} = pend_q[in_rd_q];
 
   // ---------------------------------------------------------------- output FIFO
   localparam int FAW = $clog2(FIFO_DEPTH);
@@ -252,6 +255,7 @@ module sgm_stream_ctrl #(
             median_o    <= pend_median;
             p2_mode_o   <= pend_p2_mode;
             weights_o   <= pend_weights;
+            unique_o    <= pend_unique;
             lut_start_o <= 1'b1;
             state_q     <= FILL;
           end

@@ -93,6 +93,7 @@ module sgm_top #(
   input  wire          cfg_median_i,
   input  wire          cfg_p2_mode_i,  // P2 adaptation: 0 knee 4 P2' / (dI + 4), 1 paper P2' / dI
   input  wire          cfg_weights_i,  // path weights of S: 0 = 3,2,3,2, 1 = equal (the paper's sum)
+  input  wire  [6:0]   cfg_unique_i,   // uniqueness ratio in %: 0 off, 1 .. 99 (100 .. 127: out of range, error_o[3])
   // Status.
   output logic         busy_o,
   output logic         frame_done_o,
@@ -118,6 +119,7 @@ module sgm_top #(
   logic [1:0]    mode;
   logic          subpixel, lr_en, fill_en, snap_en, median_en, p2_mode, weights_eq;
   logic [2:0]    lr_tol;
+  logic [6:0]    uniq;
   logic          lut_start, lut_ready;
   logic          res_valid, res_ok;
   logic [DW-1:0] res_disp;
@@ -157,6 +159,7 @@ module sgm_top #(
     .cfg_median_i  (cfg_median_i),
     .cfg_p2_mode_i (cfg_p2_mode_i),
     .cfg_weights_i (cfg_weights_i),
+    .cfg_unique_i  (cfg_unique_i),
     .width_o       (width),
     .height_o      (height),
     .p1_o          (p1),
@@ -170,6 +173,7 @@ module sgm_top #(
     .median_o      (median_en),
     .p2_mode_o     (p2_mode),
     .weights_o     (weights_eq),
+    .unique_o      (uniq),
     .lut_start_o   (lut_start),
     .lut_ready_i   (lut_ready),
     .en_o          (en_ctrl),
@@ -387,6 +391,7 @@ module sgm_top #(
   // ------------------------------------------------------------ WTA
   logic [LD-1:0] win_d;
   logic [DW-1:0] win_disp;
+  logic          win_unique;
   logic [XW-1:0] col4;
   logic [RW-1:0] row4;
   logic          valid4;
@@ -396,12 +401,14 @@ module sgm_top #(
     .rst_ni     (rst_ni),
     .en_i       (en),
     .subpixel_i (subpixel),
+    .uniq_i     (uniq),
     .s_i        (sum),
     .col_i      (col3),
     .row_i      (row3),
     .valid_i    (valid3),
     .d_o        (win_d),
     .disp_o     (win_disp),
+    .unique_o   (win_unique),
     .col_o      (col4),
     .row_o      (row4),
     .valid_o    (valid4)
@@ -437,6 +444,7 @@ module sgm_top #(
     .valid_i     (valid3),
     .d_i         (win_d),
     .disp_i      (win_disp),
+    .unique_i    (win_unique),
     .wta_col_i   (col4),
     .wta_row_i   (row4),
     .wta_valid_i (valid4),

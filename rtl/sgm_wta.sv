@@ -6,6 +6,9 @@
 //   disp = 16 d* + sign(a - b) * q,  q = (|a - b| * 16 + den) / (2 den)  (floor, 0 .. 8)
 //          with a = S(d*-1), m = S(d*), b = S(d*+1), den = a + b - 2m,
 //          when subpixel_i and 0 < d* < D-1 and den > 0; else disp = 16 d*.
+//   unique = sec (100 - U) >= 100 S(d*), sec = min S(k) over |k - d*| > 1
+//          (docs/algorithm.md section 7: the uniqueness ratio U = uniq_i, 0 .. 99;
+//          U = 0 passes every pixel because sec >= S(d*)).
 //
 // Structure (one register stage per slot, all stages advance only when en_i):
 //   T0   the D/2 comparisons of the tree's first level, registered with S (the
@@ -21,14 +24,26 @@
 //        its neighbours a = S(d-1), b = S(d+1), carried along so that the
 //        winner arrives with the three costs the refinement needs. The upper
 //        (higher d) input wins only when strictly smaller: ties keep the
-//        smallest d.
+//        smallest d. For the uniqueness test a node over the disparities
+//        [lo, hi] also carries sec = min S(k) over k in [lo, hi], |k - d| > 1,
+//        exf = min S(k) over (lo, hi] and exl = min S(k) over [lo, hi) (a leaf:
+//        all three "none" = all ones, which no min changes; at the root sec is
+//        a real cost because D >= 4). Merging lo-half L = [lo, c] and hi-half
+//        R = [c + 1, hi]: sec = min(L.sec, L.d = c ? R.exf : R.m) when L wins,
+//        min(R.sec, R.d = c + 1 ? L.exl : L.m) when R wins; exf = min(L.exf,
+//        R.m); exl = min(L.m, R.exl). The candidates are compared beside the
+//        winner's comparison and selected by it: a 2:1 select more in front of
+//        a comparison and one behind it.
 //   P    den = a + b - 2m, |num| = |a - b|, refine flag; dividend
 //        N = 16 |num| + den and divisor V = 2 den of the quotient q.
 //   Q3 .. Q0  restoring division, one quotient bit per slot, 3 down to 0 (q < 16
 //        because N <= 17 den; two bits per slot were 10.5 ns on ECP5); after
 //        Q0 disp = 16 d* +- q without an adder (q < 16: 16 d* + q = {d*, q},
 //        16 d* - q = {d* - 1, 16 - q} for q > 0, d* - 1 computed in Q3);
-//        output registers.
+//        output registers. Beside them the uniqueness product
+//        sec (100 - U) by shift and add, two bits of (100 - U) per stage (P:
+//        bits 1..0, Q3: 3..2, Q2: 5..4, Q1: 6), 100 m = 64 m + 32 m + 4 m
+//        (P: 64 m + 32 m, Q3: + 4 m), compared in Q0.
 //
 // Parameters: D disparities (power of two, 16 .. 128), SW width of S,
 // CW column bits, RW row bits of the slot position (passed through).
@@ -50,6 +65,7 @@ module sgm_wta #(
   input  wire              rst_ni,
   input  wire              en_i,
   input  wire              subpixel_i,   // per frame: sub-pixel refinement on
+  input  wire  [6:0]       uniq_i,       // per frame: uniqueness ratio U in %, 0 .. 99 (0: off)
   // Slot input: S(d) = s_i[d*SW +: SW] and the position of the pixel.
   input  wire  [D*SW-1:0]  s_i,
   input  wire  [CW-1:0]    col_i,
@@ -58,12 +74,15 @@ module sgm_wta #(
   // Slot output, LATENCY slots later.
   output logic [LD-1:0]    d_o,
   output logic [DW-1:0]    disp_o,
+  output logic             unique_o,     // the winner passes the uniqueness test
   output logic [CW-1:0]    col_o,
   output logic [RW-1:0]    row_o,
   output logic             valid_o
 );
 
-  localparam int NW = 3 * SW + LD;  // tree node {b, a, m, d}
+  localparam int NW = 6 * SW + LD;  // tree node {exl, exf, sec, b, a, m, d}
+  localparam int UW = SW + 7;       // sec (100 - U) and 100 m: below 2^(SW+7)
+  localparam logic [SW-1:0] NONE = '1;  // "no cost" of sec / exf / exl (never below a cost)
   localparam int QW = SW + 5;       // dividend / shifted divisor width (N < 2^(SW+5))
 
   // ------------------------------------------------------------ position pipe
@@ -73,11 +92,13 @@ module sgm_wta #(
   logic [LATENCY*PW-1:0] pos_q;
   logic [LATENCY-1:0]    valid_q;
   logic [TREE_STAGES-1:0] sub_q;
+  logic [TREE_STAGES*7-1:0] uniq_q;  // uniq_i, likewise up to stage P
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      pos_q <= {pos_q[(LATENCY-1)*PW-1:0], row_i, col_i};
-      sub_q <= {sub_q[TREE_STAGES-2:0], subpixel_i};
+      pos_q  <= {pos_q[(LATENCY-1)*PW-1:0], row_i, col_i};
+      sub_q  <= {sub_q[TREE_STAGES-2:0], subpixel_i};
+      uniq_q <= {uniq_q[(TREE_STAGES-1)*7-1:0], uniq_i};
     end
   end
 
@@ -118,15 +139,37 @@ module sgm_wta #(
         end else begin : g_b
           assign b = s_q[(i+1)*SW +: SW];
         end
-        assign node[i*NW +: NW] = {b, a, s_q[i*SW +: SW], LD'(i)};
+        assign node[i*NW +: NW] = {NONE, NONE, NONE, b, a, s_q[i*SW +: SW], LD'(i)};
       end
     end else begin : g_cmp
       logic [(D>>l)*NW-1:0] pick;
       for (genvar i = 0; i < (D >> l); i++) begin : g_node
         wire [NW-1:0] lo = g_lvl[l-1].node[(2*i)*NW +: NW];
         wire [NW-1:0] hi = g_lvl[l-1].node[(2*i+1)*NW +: NW];
-        wire          up = l == 1 ? c1_q[i] : hi[LD +: SW] < lo[LD +: SW];
-        assign pick[i*NW +: NW] = up ? hi : lo;
+        wire [SW-1:0] lo_m = lo[LD +: SW];
+        wire [SW-1:0] hi_m = hi[LD +: SW];
+        wire          up = l == 1 ? c1_q[i] : hi_m < lo_m;
+        // Uniqueness fields (level 1: two leaves, no comparison needed).
+        wire [SW-1:0] sec, exf, exl;
+        if (l == 1) begin : g_pair
+          assign sec = NONE;
+          assign exf = hi_m;
+          assign exl = lo_m;
+        end else begin : g_merge
+          wire [SW-1:0] lo_sec = lo[LD + 3*SW +: SW], lo_exf = lo[LD + 4*SW +: SW], lo_exl = lo[LD + 5*SW +: SW];
+          wire [SW-1:0] hi_sec = hi[LD + 3*SW +: SW], hi_exf = hi[LD + 4*SW +: SW], hi_exl = hi[LD + 5*SW +: SW];
+          // lo's winner is its last index c / hi's winner its first index c + 1.
+          wire          lo_at_c  = lo[l-2:0] == '1;
+          wire          hi_at_c1 = hi[l-2:0] == '0;
+          wire [SW-1:0] lo_cand  = lo_at_c ? hi_exf : hi_m;   // for a lo winner
+          wire [SW-1:0] hi_cand  = hi_at_c1 ? lo_exl : lo_m;  // for a hi winner
+          wire [SW-1:0] sec_lo   = lo_cand < lo_sec ? lo_cand : lo_sec;
+          wire [SW-1:0] sec_hi   = hi_cand < hi_sec ? hi_cand : hi_sec;
+          assign sec = up ? sec_hi : sec_lo;
+          assign exf = hi_m < lo_exf ? hi_m : lo_exf;
+          assign exl = hi_exl < lo_m ? hi_exl : lo_m;
+        end
+        assign pick[i*NW +: NW] = {exl, exf, sec, up ? hi[0 +: 3*SW + LD] : lo[0 +: 3*SW + LD]};
       end
       if (l >= 2) begin : g_reg
         always_ff @(posedge clk_i) begin
@@ -140,8 +183,8 @@ module sgm_wta #(
 
   // ---------------------------------------------------- P: offset operands
   wire [LD-1:0] win_d;
-  wire [SW-1:0] win_a, win_m, win_b;
-  assign {win_b, win_a, win_m, win_d} = g_lvl[LD].node;
+  wire [SW-1:0] win_a, win_m, win_b, win_sec;
+  assign {win_sec, win_b, win_a, win_m, win_d} = g_lvl[LD].node[0 +: 4*SW+LD];  // the root's exf, exl: unused
 
   // den = a + b - 2m >= 0 because m is the minimum: exact in SW+1 bits.
   wire [SW:0]   den    = {1'b0, win_a} + {1'b0, win_b} - {win_m, 1'b0};
@@ -161,6 +204,42 @@ module sgm_wta #(
       p_neg_q <= neg;
       p_ref_q <= refine;
       p_d_q   <= win_d;
+    end
+  end
+
+  // Uniqueness: sec (100 - U) >= 100 m, by shift and add beside the division.
+  // k = 100 - U; stage P adds k[1:0] sec and 96 m, Q3 k[3:2], Q2 k[5:4], Q1 k[6]
+  // and Q3 the 4 m; Q0 compares (the output register holds the flag).
+  wire [6:0]    u_k = 7'd100 - uniq_q[(TREE_STAGES-1)*7 +: 7];
+  function automatic logic [UW-1:0] sec_times(input logic [SW-1:0] sec, input logic [1:0] k2, input int sh);
+    sec_times = (k2[0] ? UW'(sec) << sh : '0) + (k2[1] ? UW'(sec) << (sh + 1) : '0);
+  endfunction
+  // uP_*: after stage P, u3_* after Q3, u2_* after Q2, u1_* after Q1.
+  logic [UW-1:0] uP_acc_q, u3_acc_q, u2_acc_q, u1_acc_q;  // the product so far
+  logic [UW-1:0] uP_m_q, u3_m_q, u2_m_q, u1_m_q;          // 96 m after P, 100 m from Q3 on
+  logic [SW-1:0] uP_sec_q, u3_sec_q, u2_sec_q;            // sec, carried to Q1
+  logic [SW-1:0] uP_m4_q;                                 // m, for Q3's 4 m
+  logic [6:2]    uP_k_q;                                  // the bits of k still to add
+  logic [6:4]    u3_k_q;
+  logic          u2_k_q;
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      uP_acc_q <= sec_times(win_sec, u_k[1:0], 0);
+      uP_m_q   <= (UW'(win_m) << 6) + (UW'(win_m) << 5);
+      uP_m4_q  <= win_m;
+      uP_sec_q <= win_sec;
+      uP_k_q   <= u_k[6:2];
+      u3_acc_q <= uP_acc_q + sec_times(uP_sec_q, uP_k_q[3:2], 2);
+      u3_m_q   <= uP_m_q + (UW'(uP_m4_q) << 2);
+      u3_sec_q <= uP_sec_q;
+      u3_k_q   <= uP_k_q[6:4];
+      u2_acc_q <= u3_acc_q + sec_times(u3_sec_q, u3_k_q[5:4], 4);
+      u2_m_q   <= u3_m_q;
+      u2_sec_q <= u3_sec_q;
+      u2_k_q   <= u3_k_q[6];
+      u1_acc_q <= u2_acc_q + sec_times(u2_sec_q, {1'b0, u2_k_q}, 6);
+      u1_m_q   <= u2_m_q;
+      unique_o <= u1_acc_q >= u1_m_q;
     end
   end
 

@@ -15,7 +15,8 @@ uint32_t Driver::encodeConfig(const FrameConfig& f) {
   return (f.mode << SGM_CONFIG_MODE_SHIFT & SGM_CONFIG_MODE_MASK) | (f.subpixel ? SGM_CONFIG_SUBPIXEL : 0u) |
          (f.lrCheck ? SGM_CONFIG_LR_ENABLE : 0u) | (f.lrTolerance << SGM_CONFIG_LR_TOL_SHIFT & SGM_CONFIG_LR_TOL_MASK) |
          (f.fill ? SGM_CONFIG_FILL : 0u) | (f.snap ? SGM_CONFIG_SNAP : 0u) | (f.median ? SGM_CONFIG_MEDIAN : 0u) |
-         (f.p2Paper ? SGM_CONFIG_P2_PAPER : 0u) | (f.weightsEqual ? SGM_CONFIG_WEIGHTS_EQUAL : 0u);
+         (f.p2Paper ? SGM_CONFIG_P2_PAPER : 0u) | (f.weightsEqual ? SGM_CONFIG_WEIGHTS_EQUAL : 0u) |
+         (f.uniqueness << SGM_CONFIG_UNIQUENESS_SHIFT & SGM_CONFIG_UNIQUENESS_MASK);
 }
 
 bool Driver::sizeFits(const Identity& id, uint32_t width, uint32_t height) {
@@ -63,6 +64,7 @@ FrameConfig Driver::readConfig() {
   f.median = config & SGM_CONFIG_MEDIAN;
   f.p2Paper = config & SGM_CONFIG_P2_PAPER;
   f.weightsEqual = config & SGM_CONFIG_WEIGHTS_EQUAL;
+  f.uniqueness = (config & SGM_CONFIG_UNIQUENESS_MASK) >> SGM_CONFIG_UNIQUENESS_SHIFT;
   return f;
 }
 

@@ -55,6 +55,7 @@ struct FrameInput {
   long resetAfterBeats = -1;
   // >= 0: presented on cfg_mode_i instead of the code of params.mode (3, the unused encoding).
   int modeCode = -1;
+  int uniqueCode = -1;  // when >= 0, replaces cfg_unique_i (an out-of-range ratio on purpose)
   // The configuration is out of range: the core drops the frame whole (no output,
   // no frame_done_o); FrameOutput::errors is error_o once its last beat is in.
   bool dropped = false;
@@ -98,8 +99,9 @@ class CoreHarness {
   // Cycles watched after the last frame: no further output beat may appear.
   static constexpr int kDrainCycles = 64;
 
-  CoreHarness(const std::string& name, uint32_t seed, Stalls stalls)
-      : top_(name), source_(seed, stalls.sourceIdle), sink_(seed ^ 0x9e3779b9u, stalls.sinkBusy) {
+  // initialState: VerilatedTop's power-up state (2 random, 0 zeros, 1 ones).
+  CoreHarness(const std::string& name, uint32_t seed, Stalls stalls, int initialState = 2)
+      : top_(name, initialState), source_(seed, stalls.sourceIdle), sink_(seed ^ 0x9e3779b9u, stalls.sinkBusy) {
     top_->s_tvalid_i = 0;
     top_->m_tready_i = 0;
     top_.reset();
@@ -238,7 +240,8 @@ class CoreHarness {
     else throw Error("the model has no cfg_*_i ports: set a presenter");
   }
 
-  // modeCode, when set, replaces the mode's encoding (an out-of-range mode on purpose).
+  // modeCode / uniqueCode, when set, replace the mode's encoding / the uniqueness
+  // ratio (an out-of-range value on purpose).
   void presentPorts(const FrameInput& f) {
     const HardwareConfig c = hardwareConfig(f.params, f.left.cols, f.left.rows);
     top_->cfg_width_i = c.width;
@@ -254,6 +257,7 @@ class CoreHarness {
     top_->cfg_median_i = c.median;
     top_->cfg_p2_mode_i = c.p2Paper;
     top_->cfg_weights_i = c.weightsEqual;
+    top_->cfg_unique_i = f.uniqueCode >= 0 ? f.uniqueCode : c.uniqueness;
   }
 
   DisparityMap decode(size_t first, int w, int h) {

@@ -28,6 +28,7 @@ struct HardwareConfig {
   bool fill = false, snap = false, median = false;
   bool p2Paper = false;       // cfg_p2_mode_i: 0 knee, 1 paper (P2'/dI)
   bool weightsEqual = false;  // cfg_weights_i: 0 = 3,2,3,2, 1 = equal
+  int uniqueness = 0;         // cfg_unique_i: ratio in %, 0 = off
 };
 
 inline HardwareConfig hardwareConfig(const Params& p, int width, int height) {
@@ -36,6 +37,7 @@ inline HardwareConfig hardwareConfig(const Params& p, int width, int height) {
   c.subpixel = p.subpixel, c.lrEnable = p.lrTolerance >= 0, c.lrTolerance = std::max(p.lrTolerance, 0);
   c.fill = p.fill, c.snap = p.snap, c.median = p.median;
   c.p2Paper = p.p2Mode == P2Mode::kPaper, c.weightsEqual = p.weights == PathWeighting::kEqual;
+  c.uniqueness = p.uniqueness;
   return c;
 }
 

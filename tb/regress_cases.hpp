@@ -77,6 +77,7 @@ Params drawParams(Rng& rng) {
   // The run-time P2 form and path weights; the census window is the build's.
   p.p2Mode = rng.chance(0.5) ? P2Mode::kPaper : P2Mode::kKnee;
   p.weights = rng.chance(0.5) ? PathWeighting::kEqual : PathWeighting::k3232;
+  p.uniqueness = rng.chance(0.5) ? 0 : rng.chance(0.1) ? 99 : rng.uniform(1, 40);
   p.census = Vsgm_top_sgm_top::CENSUS_H == 9 ? CensusWindow::k9x9 : CensusWindow::k9x5;
   return p;
 }
@@ -85,7 +86,8 @@ std::string paramText(const Params& p) {
   std::ostringstream t;
   t << costModeName(p.mode) << " P1=" << p.p1 << " P2'=" << p.p2 << " sub=" << p.subpixel << " lr=" << p.lrTolerance
     << " fill=" << p.fill << " snap=" << p.snap << " median=" << p.median << " census=" << censusWindowName(p.census)
-    << " p2-mode=" << p2ModeName(p.p2Mode) << " weights=" << pathWeightingName(p.weights);
+    << " p2-mode=" << p2ModeName(p.p2Mode) << " weights=" << pathWeightingName(p.weights)
+    << " uniqueness=" << p.uniqueness;
   return t.str();
 }
 

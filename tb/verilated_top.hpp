@@ -22,8 +22,12 @@ namespace sgm::tb {
 template <class Model>
 class VerilatedTop {
  public:
-  explicit VerilatedTop(const std::string& name) : name_(name), context_(std::make_unique<VerilatedContext>()) {
-    context_->randReset(2);  // randomise initial state: the design must not rely on it
+  // initialState: how registers and memories start (Verilator's randReset): 2 random
+  // (the default: the design must not rely on it), 0 all zeros (an FPGA after
+  // configuration), 1 all ones.
+  explicit VerilatedTop(const std::string& name, int initialState = 2)
+      : name_(name), context_(std::make_unique<VerilatedContext>()) {
+    context_->randReset(initialState);
     model_ = std::make_unique<Model>(context_.get(), name.c_str());
 #if VM_TRACE
     const char* trace = std::getenv("TRACE");

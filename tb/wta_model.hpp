@@ -20,12 +20,13 @@ constexpr int wtaLatency(int d) { return log2Ceil(d) + 5; }
 
 struct WtaResult {
   int d, disp;  // winner, and disparity in 1/16 px (sub-pixel refined when enabled)
+  bool unique;  // sgm::isUnique at the uniqueness ratio (always true at 0)
 };
-inline WtaResult goldenWta(const uint16_t* s, int disparities, bool subpixel) {
+inline WtaResult goldenWta(const uint16_t* s, int disparities, bool subpixel, int uniqueness = 0) {
   const int d = sgm::winnerTakeAll(s, disparities);
   int disp = d * sgm::kSubpixelOne;
   if (subpixel && d > 0 && d < disparities - 1) disp += sgm::subpixelOffset(s[d - 1], s[d], s[d + 1]);
-  return {d, disp};
+  return {d, disp, sgm::isUnique(s, disparities, d, uniqueness)};
 }
 
 // Uniform S(p, d) in 0 .. maxValue.

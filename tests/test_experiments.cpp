@@ -1,6 +1,7 @@
 // Golden-only experiments of issue 15 (docs/algorithm.md section 12, not in the RTL):
-// the fifth path from the right, the uniqueness ratio, the AD term; their defaults
-// leave the pipeline unchanged, and the streaming pipeline equals the staged one.
+// the fifth path from the right, the AD term; their defaults leave the pipeline
+// unchanged, and the streaming pipeline equals the staged one. Also the uniqueness
+// ratio's golden rule (section 7, in the RTL since issue 15's first lever).
 #include "sgm/aggregate.hpp"
 #include "sgm/cli_args.hpp"
 #include "sgm/cost.hpp"
@@ -29,6 +30,10 @@ TEST(Experiments, OffByDefaultAndNotInAnyPreset) {
   q.rightPathWeight = 3;
   EXPECT_NE(q, p);
   EXPECT_EQ(sgm::presetName(q), "custom");
+  sgm::Params u = p;  // the uniqueness ratio is in the core: not an experiment
+  u.uniqueness = 15;
+  EXPECT_FALSE(u.experimental());
+  EXPECT_EQ(sgm::presetName(u), "custom");
 }
 
 // The fifth path on a row is the 0-degree path (left to right) of the mirrored row.

@@ -276,11 +276,12 @@ std::string goldenParamsText(const Params& p) {
                      p2ModeName(p.p2Mode) + ", weights " + pathWeightingName(p.weights) + ", P1=" + std::to_string(p.p1) +
                      ", P2'=" + std::to_string(p.p2) + ", sub-pixel " + onOff(p.subpixel) + ", LR check " +
                      (p.lrTolerance < 0 ? std::string("off") : "tol " + std::to_string(p.lrTolerance)) + ", fill " +
-                     onOff(p.fill) + ", snap " + onOff(p.snap) + ", median " + onOff(p.median);
+                     onOff(p.fill) + ", snap " + onOff(p.snap) + ", median " + onOff(p.median) +
+                     (p.uniqueness ? ", uniqueness " + std::to_string(p.uniqueness) : std::string());
   if (p.experimental())
     text += "; golden-only experiments (not in the RTL): right path " + std::to_string(p.rightPathWeight) +
             (p.rightPathBlock ? " block " + std::to_string(p.rightPathBlock) : std::string()) +
-            ", uniqueness " + std::to_string(p.uniqueness) + ", AD weight " + std::to_string(p.adWeight) + " cap " +
+            ", AD weight " + std::to_string(p.adWeight) + " cap " +
             std::to_string(p.adCap) + ", sub-pixel fit " + (p.linearSubpixel ? "linear" : "parabola") + ", MGM " +
             onOff(p.mgm);
   return text;
@@ -298,10 +299,10 @@ void writeGoldenParamFields(JsonWriter& j, const Params& p) {
   j.key("fill").boolean(p.fill);
   j.key("snap").boolean(p.snap);
   j.key("median").boolean(p.median);
+  j.key("uniqueness").integer(p.uniqueness);  // 0: off
   // Golden-only experiments (docs/algorithm.md section 12), off unless set.
   j.key("right_path_weight").integer(p.rightPathWeight);
   j.key("right_path_block").integer(p.rightPathBlock);  // 0: the whole row
-  j.key("uniqueness").integer(p.uniqueness);
   j.key("ad_weight").integer(p.adWeight);
   j.key("ad_cap").integer(p.adCap);
   j.key("subpixel_fit").string(p.linearSubpixel ? "linear" : "parabola");

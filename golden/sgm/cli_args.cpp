@@ -77,9 +77,9 @@ bool CliArgs::onOff(const std::string& name, bool fallback) const {
 
 const std::set<std::string>& CliArgs::pipelineOptions() {
   static const std::set<std::string> names = {"d",    "p1",   "p2",     "mode",   "subpixel", "lr",     "fill",
-                                              "snap", "median", "census", "p2-mode", "weights", "preset",
+                                              "snap", "median", "census", "p2-mode", "weights", "preset", "uniqueness",
                                               // golden-only experiments (not in the RTL)
-                                              "right-path", "right-block", "uniqueness", "ad-weight", "ad-cap", "subpixel-fit", "mgm"};
+                                              "right-path", "right-block", "ad-weight", "ad-cap", "subpixel-fit", "mgm"};
   return names;
 }
 

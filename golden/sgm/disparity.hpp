@@ -28,8 +28,8 @@ int subpixelOffsetLinear(int a, int m, int b);
 // d = 0 .. min(D-1, W-1-xr), ties to the smallest d.
 int rightDisparity(const PathVolume& s, int xr, int y);
 
-// Golden-only experiment (Params::uniqueness, not in the RTL): the winner d of s is
-// unique when no S(k) with |k - d| > 1 has S(k) (100 - ratio) < 100 S(d).
+// Uniqueness (Params::uniqueness, section 7): the winner d of s is unique when no
+// S(k) with |k - d| > 1 has S(k) (100 - ratio) < 100 S(d); always at ratio 0.
 bool isUnique(const uint16_t* s, int disparities, int d, int ratio);
 
 // WTA (+ sub-pixel when enabled) and the left-right check when tolerance >= 0,

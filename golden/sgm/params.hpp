@@ -86,18 +86,18 @@ struct Params {
   CensusWindow census = CensusWindow::k9x5;    // census window (section 2)
   P2Mode p2Mode = P2Mode::kKnee;               // P2 adaptation (section 4)
   PathWeighting weights = PathWeighting::k3232;  // path weights of S (section 5)
+  int uniqueness = 0;          // uniqueness ratio U (%, section 7): invalid when some S(k), |k - d*| > 1,
+                               // has S(k) (100 - U) < 100 S(d*); 0 = off
 
   // Golden-only experiments (issue 15, docs/algorithm.md section 12): NOT in the RTL,
   // every one off by default, so Params{} and the presets stay bit-exact with the core.
   int rightPathWeight = 0;  // fifth path, 0 degrees from the right over one buffered row, weight 0..kMaxRightPathWeight
   int rightPathBlock = 0;   // the fifth path per block of this many pixels with one block of look-ahead; 0 = whole row
-  int uniqueness = 0;       // uniqueness ratio (%): invalid when some S(d'), |d' - d| > 1, has
-                            // S(d') (100 - u) < 100 S(d); 0 = off
   int adWeight = 0;         // AD term added to C: adWeight * min(|IL(x) - IR(x-d)|, adCap) / 8; 0 = off
   int adCap = 20;           // the AD term's truncation (gray levels)
   bool linearSubpixel = false;  // sub-pixel by the equiangular (V) fit instead of the parabola
   bool mgm = false;             // raster-order MGM: each path averages two causal neighbours
-  bool experimental() const { return rightPathWeight || rightPathBlock || uniqueness || adWeight || linearSubpixel || mgm; }
+  bool experimental() const { return rightPathWeight || rightPathBlock || adWeight || linearSubpixel || mgm; }
 
   bool operator==(const Params& o) const;
   bool operator!=(const Params& o) const { return !(*this == o); }

@@ -43,6 +43,7 @@ struct FrameConfig {
   uint32_t lrTolerance = 1;
   bool fill = true, snap = true, median = true;
   bool p2Paper = false, weightsEqual = false;  // the paper's P2'/dI and equal path weights
+  uint32_t uniqueness = 0;  // uniqueness ratio in %, 0 (off) .. SGM_CONFIG_UNIQUENESS_MAX
 };
 
 struct Errors {

@@ -38,7 +38,7 @@
 #define SGM_REG_IRQ_STATUS      0x4Cu /* write 1 to clear; irq_o = |(IRQ_STATUS & IRQ_ENABLE) */
 
 /* ---- values and fields */
-#define SGM_ID_VALUE            0x53474D02u /* 'S' 'G' 'M', version 2 (1 had no MIN_WIDTH, LANES) */
+#define SGM_ID_VALUE            0x53474D03u /* 'S' 'G' 'M', version 3 (2 had no CONFIG.UNIQUENESS, 1 no MIN_WIDTH, LANES) */
 #define SGM_MIN_HEIGHT          9u /* shortest frame of every build (sgm_stream_ctrl) */
 #define SGM_ID_MAGIC_MASK       0xFFFFFF00u
 #define SGM_ID_VERSION_MASK     0x000000FFu
@@ -75,7 +75,10 @@
 #define SGM_CONFIG_MEDIAN       (1u << 14)
 #define SGM_CONFIG_P2_PAPER     (1u << 16) /* P2 adaptation: 0 knee max(P1, 4 P2'/(dI + 4)), 1 the paper's max(P1, P2'/dI) */
 #define SGM_CONFIG_WEIGHTS_EQUAL (1u << 17) /* path weights in S: 0 = 3,2,3,2, 1 = equal (the paper) */
-#define SGM_CONFIG_MASK         0x00037733u
+#define SGM_CONFIG_UNIQUENESS_SHIFT 24     /* 7 bits: uniqueness ratio in %, 0 off, 1 .. 99 (100 .. 127: frame dropped, ERROR.CONFIG) */
+#define SGM_CONFIG_UNIQUENESS_MASK  (0x7Fu << 24)
+#define SGM_CONFIG_UNIQUENESS_MAX   99u
+#define SGM_CONFIG_MASK         0x7F037733u
 
 #define SGM_STATUS_BUSY         (1u << 0) /* a frame is in flight */
 #define SGM_STATUS_RESETTING    (1u << 1) /* the soft reset is running */

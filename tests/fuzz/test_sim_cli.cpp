@@ -101,7 +101,7 @@ TEST_F(SgmSimCli, ParametersTheBuildOrTheCoreCannotTake) {
       {{"--weights", "1111"}, "unknown path weights '1111'"},
       {{"--right-path", "3"}, "golden-only experiments, not in the core"},
       {{"--right-block", "32"}, "golden-only experiments, not in the core"},
-      {{"--uniqueness", "10"}, "golden-only experiments, not in the core"},
+      {{"--uniqueness", "100"}, "--uniqueness=100 out of range"},
       {{"--ad-weight", "2"}, "golden-only experiments, not in the core"},
       {{"--subpixel-fit", "linear"}, "golden-only experiments, not in the core"},
       {{"--mgm", "on"}, "golden-only experiments, not in the core"},

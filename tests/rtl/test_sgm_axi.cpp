@@ -45,7 +45,7 @@ drv::FrameConfig frameConfig(const sgm::Params& p, cv::Size size) {
   drv::FrameConfig f;
   f.width = c.width, f.height = c.height, f.p1 = c.p1, f.p2 = c.p2, f.mode = c.mode, f.subpixel = c.subpixel;
   f.lrCheck = c.lrEnable, f.lrTolerance = c.lrTolerance, f.fill = c.fill, f.snap = c.snap, f.median = c.median;
-  f.p2Paper = c.p2Paper, f.weightsEqual = c.weightsEqual;
+  f.p2Paper = c.p2Paper, f.weightsEqual = c.weightsEqual, f.uniqueness = c.uniqueness;
   return f;
 }
 
@@ -278,10 +278,12 @@ TEST(SgmAxi, ConfigurationWrittenMidFrameActsFromTheNextFrame) {
   sgm::Params rt = defaults();
   rt.mode = sgm::CostMode::kRt, rt.lrTolerance = -1, rt.fill = false, rt.subpixel = false;
   sgm::Params strict = defaults();
-  strict.lrTolerance = 0, strict.p1 = 5, strict.p2 = 30, strict.snap = false;
+  strict.lrTolerance = 0, strict.p1 = 5, strict.p2 = 30, strict.snap = false, strict.uniqueness = 99;
+  sgm::Params unique = defaults();
+  unique.uniqueness = 20;
   const std::vector<FrameInput> frames = {scene(40, 14, 1, defaults()), scene(36, 12, 2, unified),
                                           scene(48, 11, 3, rt), scene(33, 15, 4, strict),
-                                          scene(40, 10, 5, defaults().rawSgm())};
+                                          scene(38, 12, 6, unique), scene(40, 10, 5, defaults().rawSgm())};
   c.expectBitExact(frames, "mid-frame configuration");
   ASSERT_EQ(c.busyWhenConfigured.size(), frames.size());
   for (size_t k = 1; k < frames.size(); ++k)

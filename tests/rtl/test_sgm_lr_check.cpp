@@ -52,13 +52,14 @@ struct Frame {
   bool subpixel = true;
   std::string name;
   int flushRows = 0;  // flush slots = width + LATENCY - 1 (the minimum) + flushRows * width
+  int uniqueness = 0;  // the ratio of the WTA side's unique flag (golden isUnique)
 };
 
 std::string describe(const Frame& f) {
   std::ostringstream o;
   o << "frame '" << f.name << "' " << f.s.width << "x" << f.s.height << " tolerance "
     << (f.tol < 0 ? std::string("off") : std::to_string(f.tol)) << " sub-pixel " << (f.subpixel ? "on" : "off")
-    << " (D=" << kD << ", MAX_WIDTH=" << kMaxWidth << ", LATENCY=1 row + " << kLatency << ")";
+    << " uniqueness " << f.uniqueness << " (D=" << kD << ", MAX_WIDTH=" << kMaxWidth << ", LATENCY=1 row + " << kLatency << ")";
   return o.str();
 }
 
@@ -67,20 +68,23 @@ sgm::Params paramsOf(const Frame& f) {
   p.disparities = kD;
   p.subpixel = f.subpixel;
   p.lrTolerance = f.tol;
+  p.uniqueness = f.uniqueness;
   return p;
 }
 
 // Golden WTA result (the WTA-side input) of every pixel of a frame.
 struct Wta {
   std::vector<int> d, disp;
+  std::vector<bool> unique;
 };
 Wta goldenWta(const Frame& f) {
   Wta w;
   for (int y = 0; y < f.s.height; ++y)
     for (int x = 0; x < f.s.width; ++x) {
-      const sgm::tb::WtaResult r = sgm::tb::goldenWta(f.s.at(x, y), kD, f.subpixel);
+      const sgm::tb::WtaResult r = sgm::tb::goldenWta(f.s.at(x, y), kD, f.subpixel, f.uniqueness);
       w.d.push_back(r.d);
       w.disp.push_back(r.disp);
+      w.unique.push_back(r.unique);
     }
   return w;
 }
@@ -106,6 +110,7 @@ void runFrames(Top& top, const std::vector<Frame>& frames, uint32_t seed, int la
         m.check_en_i = junk() & 1;
         m.d_i = junk() % kD;
         m.disp_i = junk() & ((1u << kDW) - 1);
+        m.unique_i = 0;
         m.wta_col_i = junk() & ((1u << kCW) - 1);
         m.wta_row_i = junk() & ((1u << kRW) - 1);
         m.wta_valid_i = junk() & 1;
@@ -158,12 +163,14 @@ void runFrames(Top& top, const std::vector<Frame>& frames, uint32_t seed, int la
               const size_t i = size_t(ws->y) * frames[ws->frame].s.width + ws->x;
               m.d_i = wta[ws->frame].d[i];
               m.disp_i = wta[ws->frame].disp[i];
+              m.unique_i = wta[ws->frame].unique[i];
               m.wta_col_i = ws->x;
               m.wta_row_i = ws->y;
               m.wta_valid_i = 1;
             } else {
               m.d_i = junk() % kD;
               m.disp_i = junk() & ((1u << kDW) - 1);
+              m.unique_i = junk() & 1;
               m.wta_col_i = ws ? ws->x : 0;
               m.wta_row_i = ws ? ws->y : 0;
               m.wta_valid_i = 0;
@@ -192,6 +199,7 @@ void runFrames(Top& top, const std::vector<Frame>& frames, uint32_t seed, int la
         const int d = wta[s.frame].d[size_t(oy) * sf.s.width + ox];
         std::ostringstream ctx;
         ctx << (ed != gd ? "left result memory (disp)" : "left-right check (valid)") << "; d* = " << d
+            << ", unique " << wta[s.frame].unique[size_t(oy) * sf.s.width + ox]
             << ", x - d* = " << ox - d;
         if (ox - d >= 0) ctx << ", golden dR(x - d*) = " << sgm::rightDisparity(sf.s, ox - d, oy);
         auto result = [](int disp, int valid) {
@@ -244,8 +252,25 @@ TEST(SgmLrCheck, SceneTolerances) {
              {sceneVolume(kMaxWidth, 12, rng), 0, true, "scene tol 0"},
              {sceneVolume(kMaxWidth, 12, rng), -1, true, "scene check off"},
              {sceneVolume(kMaxWidth, 12, rng), 3, false, "scene tol 3 integer"},
-             {sceneVolume(kMaxWidth, 12, rng), 7, true, "scene tol 7"}},
+             {sceneVolume(kMaxWidth, 12, rng), 7, true, "scene tol 7"},
+             {sceneVolume(kMaxWidth, 12, rng), 1, true, "scene tol 1 uniqueness 10", 0, 10},
+             {sceneVolume(kMaxWidth, 12, rng), -1, false, "scene check off uniqueness 30", 0, 30}},
             211, kWtaLatency);
+}
+
+// The first frame after reset from registers and memories that start all zeros
+// (an FPGA after configuration) or all ones, instead of random: no state the
+// reset leaves alone may reach a pixel (a stale row-end register equal to the
+// first slot's column 0 once started a row tail and lost dR(0)).
+TEST(SgmLrCheck, FirstFrameFromZeroOrOnesPowerUpState) {
+  for (int state : {0, 1}) {
+    Top top("sgm_lr_check_power_up_" + std::to_string(state), state);
+    std::mt19937 rng(28);
+    runFrames(top,
+              {{sceneVolume(kMaxWidth, 9, rng), 1, true, "power-up state " + std::to_string(state)},
+               {sceneVolume(kMinWidth + 5, 9, rng), 0, true, "second frame", 0, 10}},
+              228, kWtaLatency);
+  }
 }
 
 TEST(SgmLrCheck, RandomCostsManyTies) {
@@ -321,6 +346,7 @@ TEST(SgmLrCheck, RandomSoak) {
       Frame f{rng() % 2 ? sceneVolume(w, h, rng) : randomVolume(w, h, int(rng() % 8), rng), tol, bool(rng() % 4 != 0),
               "soak " + std::to_string(i) + " lag " + std::to_string(lag)};
       f.flushRows = int(rng() % 3);
+      f.uniqueness = rng() % 3 ? 0 : int(rng() % 100);
       frames.push_back(std::move(f));
     }
     Top top("sgm_lr_check_soak");
@@ -365,6 +391,7 @@ TEST(SgmLrCheck, Cones) {
                           std::to_string(y0) + ".."});
   }
   frames.push_back({crop(s, s.width - w, s.height - h, w, h), 0, false, "cones bottom right, integer"});
+  frames.push_back({crop(s, 0, 0, w, h), 1, true, "cones left, uniqueness 15", 0, 15});
   Top top("sgm_lr_check_cones");
   runFrames(top, frames, 700 + kD, kWtaLatency, 0.8);
 }

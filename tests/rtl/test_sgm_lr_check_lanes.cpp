@@ -48,11 +48,13 @@ struct Frame {
   sgm::PathVolume s;
   int tol = 1;  // < 0: check off
   bool subpixel = true;
+  int uniqueness = 0;  // the ratio of the WTA side's unique flag (golden isUnique)
 };
 
 class LrLanes {
  public:
-  LrLanes(const std::string& name, uint32_t seed, double idle) : top_(name), rng_(seed), idle_(idle) {
+  LrLanes(const std::string& name, uint32_t seed, double idle, int initialState = 2)
+      : top_(name, initialState), rng_(seed), idle_(idle) {
     top_->en_i = 0;
     top_.reset();
   }
@@ -63,6 +65,7 @@ class LrLanes {
     p.disparities = kD;
     p.subpixel = f.subpixel;
     p.lrTolerance = f.tol;
+    p.uniqueness = f.uniqueness;
     const sgm::DisparityMap want = sgm::selectDisparity(f.s, p);
     const sgm::tb::LaneSchedule lanes(w, kLanes, kSkew, kLeadRows);
     // The last slot that writes a word of row y (+1 for the registered dR port):
@@ -111,15 +114,17 @@ class LrLanes {
         const sgm::tb::SlotPosition wp = lanes.at(n - lag);
         const bool wreal = wp.row >= 0 && wp.row < h;
         const sgm::tb::WtaResult r =
-            sgm::tb::goldenWta(wreal ? f.s.at(wp.col, wp.row) : f.s.at(0, 0), kD, f.subpixel);
+            sgm::tb::goldenWta(wreal ? f.s.at(wp.col, wp.row) : f.s.at(0, 0), kD, f.subpixel, f.uniqueness);
         top_->d_i = wreal ? r.d : rng_() % kD;
         top_->disp_i = wreal ? r.disp : rng_() & 0xff;
+        top_->unique_i = wreal ? r.unique : rng_() & 1;
         top_->wta_col_i = wp.col;
         top_->wta_row_i = uint32_t(wp.row) & rowMask;
         top_->wta_valid_i = wreal;
       } else {  // before the frame's first WTA slot: a row outside the frame
         top_->d_i = 0;
         top_->disp_i = 0;
+        top_->unique_i = 0;
         top_->wta_col_i = 0;
         top_->wta_row_i = uint32_t(-kLeadRows - kLanes) & rowMask;
         top_->wta_valid_i = 0;
@@ -172,9 +177,20 @@ TEST(SgmLrCheckLanes, RandomVolumesBackToBack) {
   for (int w : widths) {
     w = std::min(w, kMaxWidth);
     const int h = 9 + k % 4;
-    Frame f{sgm::tb::randomVolume(w, h, kD, k % 2 ? 3 : kMaxS, rng), k % 3 - 1, k % 2 == 0};
+    Frame f{sgm::tb::randomVolume(w, h, kD, k % 2 ? 3 : kMaxS, rng), k % 3 - 1, k % 2 == 0, k % 2 ? 0 : 20};
     EXPECT_EQ(lr.run(f, k % 2 ? sgm::tb::wtaLatency(kD) : 0), "") << "frame " << k;
     ++k;
+  }
+}
+
+// The first frame after reset from an all-zeros or all-ones power-up state (an
+// FPGA after configuration starts at zero) instead of random.
+TEST(SgmLrCheckLanes, FirstFrameFromZeroOrOnesPowerUpState) {
+  for (int state : {0, 1}) {
+    LrLanes lr("sgm_lr_check_lanes_power_up_" + std::to_string(state), 6, 0.2, state);
+    std::mt19937 rng(42);
+    Frame f{sgm::tb::randomVolume(kMinWidth + 3, 9, kD, kMaxS, rng), 1, true, 10};
+    EXPECT_EQ(lr.run(f, sgm::tb::wtaLatency(kD)), "") << "power-up state " << state;
   }
 }
 

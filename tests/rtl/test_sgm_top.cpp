@@ -76,6 +76,21 @@ void expectBitExact(Harness& core, const std::vector<FrameInput>& frames, const 
   }
 }
 
+// The first frames after reset from registers and memories that start all zeros
+// (an FPGA after configuration) or all ones instead of random: nothing the reset
+// leaves alone may reach a pixel.
+TEST(SgmTop, FirstFramesFromZeroOrOnesPowerUpState) {
+  for (const int state : {0, 1}) {
+    Harness core("sgm_top_power_up_" + std::to_string(state), 15, {0.1, 0.1}, state);
+    std::mt19937 rng(15);
+    sgm::Params unique = hardwareDefaults();
+    unique.uniqueness = 20;
+    const std::vector<FrameInput> frames = {syntheticPair(Vsgm_top_sgm_top::MIN_FRAME_WIDTH + 9, 12, rng, hardwareDefaults()),
+                                            syntheticPair(Vsgm_top_sgm_top::MIN_FRAME_WIDTH, 9, rng, unique)};
+    expectBitExact(core, frames, "power-up state " + std::to_string(state));
+  }
+}
+
 TEST(SgmTop, SyntheticFramesBackToBackWithStalls) {
   for (const double stall : {0.0, 0.3}) {
     Harness core("sgm_top_synthetic", 11, {stall, stall});
@@ -126,13 +141,18 @@ TEST(SgmTop, OutOfRangeConfigurationIsDroppedThenGoodFrame) {
       {"height 8", syntheticPair(kMinWidth + 5, 8, rng, hardwareDefaults())},
       {"height above MAX_HEIGHT", syntheticPair(kMinWidth, kMaxHeight + 1, rng, hardwareDefaults())},
       {"P2' below P1", syntheticPair(kMinWidth + 2, 10, rng, inverted)},
-      {"cost mode 3", syntheticPair(kMinWidth + 4, 9, rng, hardwareDefaults())}};
+      {"cost mode 3", syntheticPair(kMinWidth + 4, 9, rng, hardwareDefaults())},
+      {"uniqueness 100", syntheticPair(kMinWidth + 3, 9, rng, hardwareDefaults())},
+      {"uniqueness 127", syntheticPair(kMinWidth + 1, 10, rng, hardwareDefaults())}};
   std::vector<FrameInput> frames = {syntheticPair(kMinWidth, 9, rng, equal)};
   for (size_t i = 0; i < bad.size(); ++i) {
     frames.push_back(bad[i].second);
     frames.back().dropped = true;
     frames.back().modeCode = bad[i].first == "cost mode 3" ? 3 : -1;
-    frames.push_back(syntheticPair(kMinWidth + 7 - int(i), 9 + int(i % 3), rng, i % 2 ? unified : hardwareDefaults()));
+    frames.back().uniqueCode = bad[i].first == "uniqueness 100" ? 100 : bad[i].first == "uniqueness 127" ? 127 : -1;
+    sgm::Params good = i % 2 ? unified : hardwareDefaults();
+    good.uniqueness = i == 6 ? 99 : 0;  // the largest ratio in range, after the first out of range
+    frames.push_back(syntheticPair(kMinWidth + 7 - int(i), 9 + int(i % 3), rng, good));
   }
   Harness core("sgm_top_bad_config", 13, {0.2, 0.2});
   const std::vector<sgm::tb::FrameOutput> out = core.run(frames);
@@ -165,6 +185,7 @@ TEST(SgmTop, SettingsSweep) {
     p.p2 = p.p1 + 2 * (tol * 17 % 23) + 1;    // odd difference to P1
     p.subpixel = tol % 2 == 0;
     p.fill = tol % 4 != 1, p.snap = tol % 4 != 2, p.median = tol % 4 != 3;
+    p.uniqueness = tol * 13 % 40;  // 0, 13, 26, 39, 12, 25, 38, 11
     frames.push_back(syntheticPair(kMinWidth + 5 * tol + 1, 9 + tol % 3, rng, p));
   }
   for (const auto [p1, p2] : {std::pair{255, 255}, {1, 1}, {0, 255}, {127, 129}}) {
@@ -191,7 +212,11 @@ TEST(SgmTop, ParameterSetsChangeFromFrameToFrame) {
   paperP2.p2Mode = sgm::P2Mode::kPaper, paperP2.weights = sgm::PathWeighting::k3232, paperP2.p1 = 10;
   sgm::Params kneeEqual = hardwareDefaults();
   kneeEqual.p2Mode = sgm::P2Mode::kKnee, kneeEqual.weights = sgm::PathWeighting::kEqual, kneeEqual.p2 = 255;
-  for (const sgm::Params& p : {unified, rt, paperP2, strict, kneeEqual, raw, hardwareDefaults()})
+  sgm::Params unique = hardwareDefaults();  // uniqueness with the LR check off and on
+  unique.uniqueness = 15, unique.lrTolerance = -1;
+  sgm::Params uniqueLr = hardwareDefaults();
+  uniqueLr.uniqueness = 30, uniqueLr.fill = false;
+  for (const sgm::Params& p : {unified, rt, paperP2, unique, strict, kneeEqual, uniqueLr, raw, hardwareDefaults()})
     frames.push_back(syntheticPair(kD + 20, 20, rng, p));
   expectBitExact(core, frames, "parameter sets");
 }

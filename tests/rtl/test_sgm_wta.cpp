@@ -45,16 +45,19 @@ struct Frame {
   bool subpixel = true;
   std::string name;
   int flush = kLatency - 1;  // slots after the last pixel (the minimum that drains the pipeline)
+  int uniqueness = 0;        // uniq_i: ratio in % (0 .. 99)
 };
 
 std::string describe(const Frame& f) {
   std::ostringstream o;
   o << "frame '" << f.name << "' " << f.s.width << "x" << f.s.height << " sub-pixel " << (f.subpixel ? "on" : "off")
-    << " (D=" << kD << ", SW=" << kSW << ", LATENCY=" << kLatency << ")";
+    << " uniqueness " << f.uniqueness << " (D=" << kD << ", SW=" << kSW << ", LATENCY=" << kLatency << ")";
   return o.str();
 }
 
-sgm::tb::WtaResult golden(const uint16_t* s, bool subpixel) { return sgm::tb::goldenWta(s, kD, subpixel); }
+sgm::tb::WtaResult golden(const uint16_t* s, bool subpixel, int uniqueness = 0) {
+  return sgm::tb::goldenWta(s, kD, subpixel, uniqueness);
+}
 
 // Streams the frames back to back on one model (reset once) and checks every
 // output slot. Stops at the first mismatch, naming pixel, expected, got, stage.
@@ -72,8 +75,9 @@ void runFrames(Top& top, const std::vector<Frame>& frames, uint32_t seed, double
         m.row_i = junk() & ((1u << kRW) - 1);
         m.valid_i = junk() & 1;
         m.subpixel_i = junk() & 1;
+        m.uniq_i = junk() & 127;
       },
-      [](Vsgm_wta& m) { return sgm::tb::portWords(m.d_o, m.disp_o, m.col_o, m.row_o, m.valid_o); });
+      [](Vsgm_wta& m) { return sgm::tb::portWords(m.d_o, m.disp_o, m.unique_o, m.col_o, m.row_o, m.valid_o); });
   driver.reset();
   ASSERT_EQ(int(top->valid_o), 0) << "valid_o after reset";
 
@@ -97,6 +101,7 @@ void runFrames(Top& top, const std::vector<Frame>& frames, uint32_t seed, double
             m.row_i = y;
             m.valid_i = real;
             m.subpixel_i = f.subpixel;
+            m.uniq_i = f.uniqueness;
           },
           [&] { return describe(f); });
       if (!ok) return;
@@ -115,8 +120,20 @@ void runFrames(Top& top, const std::vector<Frame>& frames, uint32_t seed, double
       ASSERT_EQ(int(top->row_o), s.y) << describe(sf) << ": row_o of slot (" << s.x << ", " << s.y << ")";
       if (!s.real) continue;
       const uint16_t* sp = sf.s.at(s.x, s.y);
-      const sgm::tb::WtaResult want = golden(sp, sf.subpixel);
+      const sgm::tb::WtaResult want = golden(sp, sf.subpixel, sf.uniqueness);
       const int gd = int(top->d_o), gdisp = int(top->disp_o);
+      const bool gunique = top->unique_o;
+      if (gd == want.d && gdisp == want.disp && gunique != want.unique) {
+        // The second minimum away from d* +- 1, for the message.
+        int sec = -1;
+        for (int k = 0; k < kD; ++k)
+          if (std::abs(k - gd) > 1 && (sec < 0 || sp[k] < sec)) sec = sp[k];
+        std::ostringstream ctx;
+        ctx << "uniqueness (tree's second minimum, product); S(d*) = " << int(sp[gd]) << ", min S(k), |k - d*| > 1 = "
+            << sec << ", U = " << sf.uniqueness;
+        FAIL() << sgm::tb::firstMismatch(s.x, s.y, describe(sf), "unique " + std::to_string(want.unique),
+                                         "unique " + std::to_string(gunique), ctx.str());
+      }
       if (gd != want.d || gdisp != want.disp) {
         std::ostringstream ctx;
         const int d = want.d;
@@ -175,6 +192,40 @@ sgm::PathVolume edgeCaseVolume(int w, int h, std::mt19937& rng) {
   return v;
 }
 
+// Cost vectors around the uniqueness test's boundary at ratio u: the winner d
+// (anywhere, 0 and D-1 included) with cost m, its neighbours d +- 1 at or just
+// above m (excluded from the test, ties included), and the second minimum away
+// from them at 100 m / (100 - u) rounded up, minus one, or plus one, placed at
+// d +- 2, at an end, or anywhere; the rest high. Large m reaches the top of SW.
+sgm::PathVolume uniquenessVolume(int w, int h, int u, std::mt19937& rng) {
+  sgm::PathVolume v(w, h, kD);
+  int k = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x, ++k) {
+      uint16_t* s = v.at(x, y);
+      const int top = std::min(kMaxS - 3, (kMaxS * (100 - u)) / 100);  // the largest m whose boundary fits SW bits
+      const int m = k % 5 == 0 ? top - int(rng() % 4) : int(rng() % std::min(top + 1, 2000));
+      const int d = k % 7 == 0 ? 0 : k % 7 == 1 ? kD - 1 : int(rng() % kD);
+      const int boundary = (100 * m + (100 - u) - 1) / (100 - u);  // least sec that passes
+      const int sec = std::min(kMaxS, std::max(m, boundary + int(rng() % 3) - 1));
+      for (int j = 0; j < kD; ++j) s[j] = uint16_t(std::min(kMaxS, sec + 1 + int(rng() % 50)));
+      int at;
+      switch (rng() % 4) {
+        case 0: at = d >= 2 ? d - 2 : d + 2; break;
+        case 1: at = d + 2 < kD ? d + 2 : d - 2; break;
+        case 2: at = d < kD / 2 ? kD - 1 : 0; break;
+        default: do at = int(rng() % kD); while (std::abs(at - d) <= 1); break;
+      }
+      s[at] = uint16_t(sec);
+      for (int n : {d - 1, d + 1})
+        if (n >= 0 && n < kD) s[n] = uint16_t(std::min(kMaxS, m + int(rng() % 3)));
+      s[d] = uint16_t(m);
+      // A tie at d - 1 would move the winner: keep d the first minimum.
+      if (d > 0 && s[d - 1] == m) s[d - 1] = uint16_t(m + 1);  // m <= kMaxS - 3
+    }
+  return v;
+}
+
 // ------------------------------------------------------------------ synthetic
 
 TEST(SgmWta, EdgeCases) {
@@ -184,6 +235,23 @@ TEST(SgmWta, EdgeCases) {
             {{edgeCaseVolume(32, 16, rng), true, "edge cases, sub-pixel"},
              {edgeCaseVolume(32, 16, rng), false, "edge cases, integer"}},
             111);
+}
+
+// The uniqueness flag at its boundary, per frame ratio (0 = off: always unique),
+// and on random and tie-heavy costs.
+TEST(SgmWta, Uniqueness) {
+  Top top("sgm_wta_unique");
+  std::mt19937 rng(18);
+  std::vector<Frame> frames;
+  for (int u : {15, 1, 50, 99, 0, 7, 33}) {
+    frames.push_back({uniquenessVolume(37, 9, u, rng), u % 2 == 1, "boundary U " + std::to_string(u)});
+    frames.back().uniqueness = u;
+  }
+  for (int u : {10, 25}) {
+    frames.push_back({randomVolume(31, 9, u == 10 ? 7 : kMaxS, rng), true, "random U " + std::to_string(u)});
+    frames.back().uniqueness = u;
+  }
+  runFrames(top, frames, 118);
 }
 
 // den = a + b - 2m = 0 cannot occur at the WTA winner: a = S(d*-1) > m, or d*-1
@@ -258,6 +326,8 @@ TEST(SgmWta, RandomSoak) {
     Frame f{i % 5 == 4 ? edgeCaseVolume(w, h, rng) : randomVolume(w, h, ranges[rng() % 5], rng), bool(rng() % 4 != 0),
             "soak " + std::to_string(i)};
     f.flush += int(rng() % 3) * w;
+    const int ratios[] = {0, 0, 5, 15, 40, 99};
+    f.uniqueness = ratios[rng() % 6];
     frames.push_back(std::move(f));
   }
   runFrames(top, frames, 117);
@@ -280,7 +350,7 @@ TEST(SgmWta, Cones) {
   Top top("sgm_wta_cones");
   runFrames(top,
             {{s, true, "cones D=" + std::to_string(kD) + " aggregated"},
-             {s, false, "cones D=" + std::to_string(kD) + " aggregated, integer"}},
+             {s, false, "cones D=" + std::to_string(kD) + " aggregated, integer", kLatency - 1, 15}},
             700 + kD, 0.8);
 }
 
