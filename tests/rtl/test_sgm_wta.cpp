@@ -100,8 +100,9 @@ void runFrames(Top& top, const std::vector<Frame>& frames, uint32_t seed, double
             m.col_i = x;
             m.row_i = y;
             m.valid_i = real;
-            m.subpixel_i = f.subpixel;
-            m.uniq_i = f.uniqueness;
+            // Flush slots carry junk settings too: each setting must travel with its own slot.
+            m.subpixel_i = real ? f.subpixel : driver.junk()() & 1;
+            m.uniq_i = real ? f.uniqueness : driver.junk()() & 127;
           },
           [&] { return describe(f); });
       if (!ok) return;
