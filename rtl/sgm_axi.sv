@@ -96,11 +96,11 @@ module sgm_axi #(
   localparam logic [ADDR_W-1:0] ADDR_IRQ_STATUS  /*verilator public*/ = ADDR_W'('h4C);
 
   localparam logic [31:0] ID_VALUE       /*verilator public*/ = 32'h5347_4D03;  // "SGM", version 3
-  localparam logic [31:0] PENALTY_RESET  /*verilator public*/ = 32'h0000_6412;  // P1 18, P2' 100
+  localparam logic [31:0] PENALTY_RESET  /*verilator public*/ = 32'h0014_6412;  // P1 18, P2' 100, AD cap 20, AD weight 0 (off)
   localparam logic [31:0] CONFIG_RESET   /*verilator public*/ = 32'h0000_7131;  // rsad, all stages on, tol 1
   localparam logic [31:0] CTRL_MASK      = 32'h0000_0005;  // ENABLE, HOLD (SOFT_RESET reads 0)
   localparam logic [31:0] CONFIG_MASK    = 32'h7F03_7733;
-  localparam logic [31:0] PENALTY_MASK   = 32'h0000_FFFF;
+  localparam logic [31:0] PENALTY_MASK   = 32'h0FFF_FFFF;
   localparam logic [31:0] IRQ_MASK       = 32'h0000_0003;
   localparam int CENSUS_WIDTH  = 9;  // the window of sgm_census_unit: 9 x CENSUS_H
   localparam int CENSUS_HEIGHT = CENSUS_H;
@@ -211,7 +211,7 @@ module sgm_axi #(
   // rejects (error_o[3]) like any other out-of-range size.
   logic [XW-1:0] act_width;
   logic [YW-1:0] act_height;
-  logic [15:0]   act_penalty;
+  logic [27:0]   act_penalty;
   logic [30:0]   act_config;
   wire  [15:0]   shadow_width  = frame_size_q[15:0];
   wire  [15:0]   shadow_height = frame_size_q[31:16];
@@ -220,12 +220,12 @@ module sgm_axi #(
     if (!rst_ni) begin
       act_width   <= '0;
       act_height  <= '0;
-      act_penalty <= PENALTY_RESET[15:0];
+      act_penalty <= PENALTY_RESET[27:0];
       act_config  <= CONFIG_RESET[30:0];
     end else if (!hold) begin
       act_width   <= 32'(shadow_width) <= MAX_WIDTH ? shadow_width[XW-1:0] : '0;
       act_height  <= 32'(shadow_height) <= MAX_HEIGHT ? shadow_height[YW-1:0] : '0;
-      act_penalty <= penalty_q[15:0];
+      act_penalty <= penalty_q[27:0];
       act_config  <= config_q[30:0];
     end
   end
@@ -259,6 +259,8 @@ module sgm_axi #(
     .cfg_height_i  (act_height),
     .cfg_p1_i      (act_penalty[7:0]),
     .cfg_p2_i      (act_penalty[15:8]),
+    .cfg_ad_cap_i  (act_penalty[23:16]),
+    .cfg_ad_weight_i(act_penalty[27:24]),
     .cfg_mode_i    (act_config[1:0]),
     .cfg_subpixel_i(act_config[4]),
     .cfg_lr_en_i   (act_config[5]),

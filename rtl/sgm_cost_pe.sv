@@ -6,9 +6,13 @@
 //   unified = rt + rsad                              (mode 2; 3 is rejected upstream,
 //                                                     but computes unified here)
 //   outside_i (x - d < 0, decided by the caller): Cmax of the mode (44, 44, 88).
+// plus the AD term (W = ad_weight_i, T = ad_cap_i; W = 0: off):
+//   C += (W min(|gray_L - gray_R|, T)) >> 3     (outside: (W T) >> 3)
+// The caller keeps Cmax + (W T) >> 3 below 2^CBITS (sgm_stream_ctrl rejects
+// other settings), so the sum never wraps.
 //
 // Parameters: none (the disparity only enters through outside_i).
-// Latency: 2 enabled cycles. Stage A registers the rank difference (signed),
+// Latency: 3 enabled cycles. Stage A registers the rank difference (signed),
 // the Hamming distance as its two weighted counts (sgm_popcount ones1_o + 2
 // ones2_o; the popcount with its own final adder was the 5-lane core's critical
 // path at 10.1 ns on ECP5) and the out-of-image flag of the slot; stage B
@@ -16,7 +20,9 @@
 // enabled cycle earlier), and is one three-operand sum: the
 // mode and the out-of-image case select its operands, and |rank difference| =
 // (diff xor sign) + sign takes its +sign as the carry in, so no separate
-// absolute value or output mux.
+// absolute value or output mux. Beside them, stage A registers min(AD, T) (T when
+// outside), stage B its product with W (four shifted copies, divided by 8),
+// and stage C adds the two.
 // Throughput: one cost per enabled cycle. No control registers, no reset.
 module sgm_cost_pe #(
   parameter int  NB    = 44,
@@ -31,6 +37,10 @@ module sgm_cost_pe #(
   input  wire  [NB-1:0]     rcensus_i,
   input  wire  [RKW-1:0]    rrank_i,
   input  wire               outside_i,
+  input  wire  [7:0]        lgray_i,      // stage A's slot, with lcensus_i
+  input  wire  [7:0]        rgray_i,      // stage A's slot, with rcensus_i
+  input  wire  [7:0]        ad_cap_i,     // T, stage A's slot
+  input  wire  [3:0]        ad_weight_i,  // W, stage B's slot (one enabled cycle behind stage A's)
   output logic [CBITS-1:0]  cost_o
 );
 
@@ -59,6 +69,16 @@ module sgm_cost_pe #(
     end
   end
 
+  // Stage A, AD term: |gray_L - gray_R| from the two differences (the one that
+  // does not borrow), truncated at T.
+  wire [8:0] gd_lr = {1'b0, lgray_i} - {1'b0, rgray_i};
+  wire [7:0] gd_rl = rgray_i - lgray_i;
+  wire [7:0] ad    = gd_lr[8] ? gd_rl : gd_lr[7:0];
+  logic [7:0] adm_q;  // min(AD, T), T outside the image
+  always_ff @(posedge clk_i) begin
+    if (en_i) adm_q <= outside_i || ad > ad_cap_i ? ad_cap_i : ad;
+  end
+
   // Stage B: cost = rt_op + ham_op + rt_cin.
   //   out_q:   NB + (unified ? NB : 0)
   //   mode 0:  (diff ^ sign) + sign      = rt
@@ -74,8 +94,22 @@ module sgm_cost_pe #(
   wire [CBITS-1:0] ham2_op = !out_q && use_ham ? CBITS'({ham2_q, 1'b0}) : '0;
   wire             rt_cin  = !out_q && use_rt && neg;
 
+  logic [CBITS-1:0] cen_q;   // the census cost
+  logic [CBITS-1:0] term_q;  // (W min(AD, T)) >> 3: below 2^CBITS (see the header)
+  wire  [11:0]      prod = (ad_weight_i[0] ? 12'(adm_q) : 12'd0) + (ad_weight_i[1] ? 12'(adm_q) << 1 : 12'd0) +
+                           (ad_weight_i[2] ? 12'(adm_q) << 2 : 12'd0) + (ad_weight_i[3] ? 12'(adm_q) << 3 : 12'd0);
   always_ff @(posedge clk_i) begin
-    if (en_i) cost_o <= rt_op + ham_op + ham2_op + CBITS'(rt_cin);
+    if (en_i) begin
+      cen_q  <= rt_op + ham_op + ham2_op + CBITS'(rt_cin);
+      term_q <= prod[3 +: CBITS];
+    end
+  end
+
+  wire unused_prod = ^{prod[2:0], prod[11:3+CBITS]};  // the division by 8; above 2^CBITS: excluded
+
+  // Stage C: C = census cost + AD term (no wrap: see the header).
+  always_ff @(posedge clk_i) begin
+    if (en_i) cost_o <= cen_q + term_q;
   end
 
 endmodule

@@ -6,7 +6,9 @@
 // Inputs per slot (same slot of the left and right sgm_census_unit): left and
 // right census/rank, the centre column col_i and valid_i; mode_i (0 rt, 1 rsad,
 // 2 unified; 3 behaves as unified) is sampled with the slot and travels with
-// it, so the top presents each frame's mode aligned with the census outputs.
+// it, so the top presents each frame's mode aligned with the census outputs;
+// likewise the AD term's weight and cap (ad_weight_i, ad_cap_i; weight 0: off)
+// with the centre grays lgray_i / rgray_i of the census units (sgm_cost_pe).
 //
 // Delay line: tap d holds the right census/rank of the slot d K slots earlier
 // (K = LANES), which is right pixel x - d of the same row whenever x - d >= 0
@@ -15,16 +17,16 @@
 // raster). Entries from another row or frame are only reached when col - d <
 // 0, where the PE outputs Cmax.
 //
-// Structure: s1 input registers and the delay line (D taps of (NB + RKW) bit
-// registers, 50 / 87, tap 0 = the slot's own right census; with K > 1 the
+// Structure: s1 input registers and the delay line (D taps of (NB + RKW + 8) bit
+// registers, 58 / 95: census, rank and gray, tap 0 = the slot's own right census; with K > 1 the
 // K - 1 slots between two taps are one sgm_delay_ram of (D - 1) taps' width:
-// a (K - 1)-word distributed RAM at a rotating pointer), s2 + s3
-// the two PE stages (sgm_cost_pe).
+// a (K - 1)-word distributed RAM at a rotating pointer), s2 .. s4
+// the three PE stages (sgm_cost_pe).
 //
 // Parameters: D disparities, CW column bits, NB census bits (44 for the 9x5 census,
 // 80 for the 9x9), LANES (K >= 1); RKW rank bits and CBITS cost bits follow.
-// Latency: LATENCY = 3 slots (1 + the PE's 2) for every parameter value:
-// cost_o, col_o, valid_o during slot t belong to the input of slot t - 3.
+// Latency: LATENCY = 4 slots (1 + the PE's 3) for every parameter value:
+// cost_o, col_o, valid_o during slot t belong to the input of slot t - 4.
 // cost_o[d*CBITS +: CBITS] = C(p, d) (0 .. 2 NB). Throughput: one slot per enabled cycle.
 module sgm_cost_volume #(
   parameter int  D     /*verilator public*/ = 64,
@@ -38,6 +40,10 @@ module sgm_cost_volume #(
   input  wire              rst_ni,
   input  wire              en_i,
   input  wire  [1:0]       mode_i,
+  input  wire  [3:0]       ad_weight_i,  // AD term weight W (0: off), with the slot
+  input  wire  [7:0]       ad_cap_i,     // AD term cap T, with the slot
+  input  wire  [7:0]       lgray_i,      // left centre gray (the census unit's centre_o)
+  input  wire  [7:0]       rgray_i,      // right centre gray
   input  wire  [NB-1:0]      lcensus_i,
   input  wire  [RKW-1:0]     lrank_i,
   input  wire  [CW-1:0]      col_i,
@@ -49,15 +55,17 @@ module sgm_cost_volume #(
   output logic             valid_o
 );
 
-  localparam int LATENCY /*verilator public*/ = 3;
-  localparam int EW = NB + RKW;  // delay line entry: {rank, census}
+  localparam int LATENCY /*verilator public*/ = 4;
+  localparam int EW = NB + RKW + 8;  // delay line entry: {gray, rank, census}
 
   // ------------------------------------------------------------ s1
   logic [NB-1:0]  lcensus1_q;
   logic [RKW-1:0] lrank1_q;
-  logic [CW-1:0] col1_q, col2_q;
+  logic [CW-1:0] col1_q, col2_q, col3_q;
   logic [1:0]    mode1_q, mode2_q;
-  logic          valid1_q, valid2_q;
+  logic [7:0]    lgray1_q, adcap1_q;
+  logic [3:0]    adw1_q, adw2_q;
+  logic          valid1_q, valid2_q, valid3_q;
   logic [EW-1:0]       tap0_q;  // tap 0
   logic [(D-1)*EW-1:0] taps_q;  // taps 1 .. D-1
   wire  [D*EW-1:0]     line = {taps_q, tap0_q};
@@ -68,14 +76,19 @@ module sgm_cost_volume #(
       lrank1_q   <= lrank_i;
       col1_q     <= col_i;
       mode1_q    <= mode_i;
+      lgray1_q   <= lgray_i;
+      adcap1_q   <= ad_cap_i;
+      adw1_q     <= ad_weight_i;
       col2_q     <= col1_q;
       mode2_q    <= mode1_q;
-      col_o      <= col2_q;
+      adw2_q     <= adw1_q;
+      col3_q     <= col2_q;
+      col_o      <= col3_q;
     end
   end
 
   always_ff @(posedge clk_i) begin
-    if (en_i) tap0_q <= {rrank_i, rcensus_i};
+    if (en_i) tap0_q <= {rgray_i, rrank_i, rcensus_i};
   end
 
   // Tap d of slot n + 1 = tap d - 1 of slot n - (K - 1): taps 1 .. D-1 are taps
@@ -88,7 +101,7 @@ module sgm_cost_volume #(
     .q_o    (taps_q)
   );
 
-  // ------------------------------------------------------------ s2, s3: PEs
+  // ------------------------------------------------------------ s2 .. s4: PEs
   for (genvar d = 0; d < D; d++) begin : g_pe
     wire outside;  // x - d < 0
     if (d == 0) begin : g_d0
@@ -106,6 +119,10 @@ module sgm_cost_volume #(
       .rcensus_i (line[d*EW +: NB]),
       .rrank_i   (line[d*EW+NB +: RKW]),
       .outside_i (outside),
+      .lgray_i   (lgray1_q),
+      .rgray_i   (line[d*EW+NB+RKW +: 8]),
+      .ad_cap_i  (adcap1_q),
+      .ad_weight_i(adw2_q),
       .cost_o    (cost_o[d*CBITS +: CBITS])
     );
   end
@@ -115,11 +132,13 @@ module sgm_cost_volume #(
     if (!rst_ni) begin
       valid1_q <= 1'b0;
       valid2_q <= 1'b0;
+      valid3_q <= 1'b0;
       valid_o  <= 1'b0;
     end else if (en_i) begin
       valid1_q <= valid_i;
       valid2_q <= valid1_q;
-      valid_o  <= valid2_q;
+      valid3_q <= valid2_q;
+      valid_o  <= valid3_q;
     end
   end
 

@@ -13,7 +13,8 @@
 // until the next tuser. A tuser inside a frame is not consumed: it starts the
 // next frame. A frame whose configuration is out of range (width outside
 // MIN_WIDTH .. MAX_WIDTH, height outside 9 .. MAX_HEIGHT, P2' below P1, cost
-// mode 3, uniqueness ratio above 99) is dropped whole.
+// mode 3, uniqueness ratio above 99, an AD term whose largest value added to the
+// mode's Cmax leaves the cost word) is dropped whole.
 //
 // Configuration is sampled with the tuser beat's handshake (kept per input
 // buffer entry) and applied when that frame starts; the P2 table is refilled then (lut_start_o) and the
@@ -25,7 +26,8 @@
 // the decided slot, without that cycle's pop (under back-pressure the FIFO
 // holds one entry less, never one too many).
 //
-// Parameters: MAX_WIDTH, MIN_WIDTH (>= max(D, 16)), MAX_HEIGHT, XW/YW column/row
+// Parameters: MAX_WIDTH, MIN_WIDTH (>= max(D, 16)), MAX_HEIGHT, NB census bits (the
+// cost word holds 0 .. 2^CBITS - 1, CBITS = bits of 2 NB), XW/YW column/row
 // bits (rows count on past the frame while flushing: MAX_HEIGHT + flush rows
 // must fit YW bits), PW penalty bits, DW disparity bits (DW <= 15), FIFO_DEPTH.
 // Throughput: one beat per cycle in both directions when the output is ready.
@@ -33,6 +35,7 @@ module sgm_stream_ctrl #(
   parameter int MAX_WIDTH  = 1280,
   parameter int MIN_WIDTH  = 64,
   parameter int MAX_HEIGHT = 1024,
+  parameter int NB         = 44,
   parameter int XW         = 11,
   parameter int YW         = 11,
   parameter int PW         = 8,
@@ -68,6 +71,8 @@ module sgm_stream_ctrl #(
   input  wire                 cfg_p2_mode_i,
   input  wire                 cfg_weights_i,
   input  wire  [6:0]          cfg_unique_i,
+  input  wire  [3:0]          cfg_ad_weight_i,
+  input  wire  [7:0]          cfg_ad_cap_i,
   // The latched configuration, constant while a frame's slots flow.
   output logic [XW-1:0]       width_o,
   output logic [YW-1:0]       height_o,
@@ -83,6 +88,8 @@ module sgm_stream_ctrl #(
   output logic                p2_mode_o,     // 0 knee, 1 paper (P2' / dI)
   output logic                weights_o,     // 0 = 3,2,3,2, 1 = equal
   output logic [6:0]          unique_o,      // uniqueness ratio in % (0 .. 99; 0 off)
+  output logic [3:0]          ad_weight_o,   // AD term weight (0 off)
+  output logic [7:0]          ad_cap_o,      // AD term cap
   output logic                lut_start_o,
   input  wire                 lut_ready_i,
   // Pipeline slots.
@@ -128,19 +135,27 @@ module sgm_stream_ctrl #(
   // (a one-beat malformed frame).
   // The range check of the configuration (in range: MIN_WIDTH .. MAX_WIDTH columns,
   // 9 .. MAX_HEIGHT rows, P2' >= P1 (the golden model's contract), cost mode 0, 1
-  // or 2; 3 is not a mode; uniqueness ratio 0 .. 99) is done as the word is written and kept with it, so
+  // or 2; 3 is not a mode; uniqueness ratio 0 .. 99; Cmax of the mode (NB, or 2 NB
+  // unified) + (W T) >> 3 within the cost word) is done as the word is written and kept with it, so
   // that the start-of-frame decision reads one flag (its comparisons behind the
   // entry's distributed RAM were the 5-lane core's critical path at 95.8 MHz).
+  // The AD term's largest value (W T) >> 3 added to the mode's Cmax stays within
+  // the cost word (the golden model's Params::validate, costLimit).
+  localparam int CBITS = $clog2(2 * NB + 1);
+  wire [11:0] ad_max  = 12'(cfg_ad_weight_i) * 12'(cfg_ad_cap_i);
+  wire [9:0]  ad_cmax = cfg_mode_i == 2'd2 ? 10'(2 * NB) : 10'(NB);
+  wire        ad_fits = ad_cmax + 10'(ad_max[11:3]) <= 10'((1 << CBITS) - 1);
+  wire        unused_ad = ^ad_max[2:0];
   wire cfg_ok = cfg_width_i >= XW'(MIN_WIDTH) && cfg_width_i <= XW'(MAX_WIDTH) &&
                 cfg_height_i >= YW'(9) && cfg_height_i <= YW'(MAX_HEIGHT) &&
-                cfg_p2_i >= cfg_p1_i && cfg_mode_i != 2'd3 && cfg_unique_i <= 7'd99;
-  localparam int CFGW = XW + YW + 2 * PW + 20;
+                cfg_p2_i >= cfg_p1_i && cfg_mode_i != 2'd3 && cfg_unique_i <= 7'd99 && ad_fits;
+  localparam int CFGW = XW + YW + 2 * PW + 32;
   logic [CFGW-1:0] pend_q [0:1];
   always_ff @(posedge clk_i) begin
     if (in_push && s_tuser_i)
       pend_q[in_wr_q] <= {cfg_ok, cfg_width_i, cfg_height_i, cfg_p1_i, cfg_p2_i, cfg_mode_i, cfg_subpixel_i,
                           cfg_lr_en_i, cfg_lr_tol_i, cfg_fill_i, cfg_snap_i, cfg_median_i, cfg_p2_mode_i,
-                          cfg_weights_i, cfg_unique_i};
+                          cfg_weights_i, cfg_unique_i, cfg_ad_weight_i, cfg_ad_cap_i};
   end
   // The configuration of the head beat (meaningful when it is a tuser beat).
   logic [XW-1:0] pend_width;
@@ -150,9 +165,12 @@ module sgm_stream_ctrl #(
   logic          pend_subpixel, pend_lr_en, pend_fill, pend_snap, pend_median, pend_p2_mode, pend_weights;
   logic [2:0]    pend_lr_tol;
   logic [6:0]    pend_unique;
+  logic [3:0]    pend_ad_weight;
+  logic [7:0]    pend_ad_cap;
   logic          pend_ok;
   assign {pend_ok, pend_width, pend_height, pend_p1, pend_p2, pend_mode, pend_subpixel, pend_lr_en,
-          pend_lr_tol, pend_fill, pend_snap, pend_median, pend_p2_mode, pend_weights, pend_unique} = pend_q[in_rd_q];
+          pend_lr_tol, pend_fill, pend_snap, pend_median, pend_p2_mode, pend_weights, pend_unique,
+          pend_ad_weight, pend_ad_cap} = pend_q[in_rd_q];
 
   // ---------------------------------------------------------------- output FIFO
   localparam int FAW = $clog2(FIFO_DEPTH);
@@ -256,6 +274,8 @@ module sgm_stream_ctrl #(
             p2_mode_o   <= pend_p2_mode;
             weights_o   <= pend_weights;
             unique_o    <= pend_unique;
+            ad_weight_o <= pend_ad_weight;
+            ad_cap_o    <= pend_ad_cap;
             lut_start_o <= 1'b1;
             state_q     <= FILL;
           end

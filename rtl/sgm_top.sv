@@ -48,8 +48,11 @@ module sgm_top #(
   // (x, y + 1) (derivation in docs/reschedule.md; the lanes' census outputs come
   // 4K slots later than a census behind the deal would give them: its 4 columns
   // of lag cost K slots each in a lane); LR_LAG = 2K - 3 + ceil(LR_WAIT / W) per
-  // frame, at most LR_LAG_MAX.
-  localparam int LR_WAIT    = (D + 4) * LANES + 3,
+  // frame, at most LR_LAG_MAX. LR_WAIT's constant is the cost volume's latency
+  // (3 when it was derived; 4 since the AD term's stage: each slot more there
+  // is a slot later for every write).
+  localparam int COST_LATENCY = 4,  // sgm_cost_volume LATENCY
+  localparam int LR_WAIT    = (D + 4) * LANES + COST_LATENCY,
   localparam int LR_LAG_MAX = LANES == 1 ? 0 :
                               2 * LANES - 3 + (LR_WAIT + MIN_FRAME_WIDTH - 1) / MIN_FRAME_WIDTH,
   localparam int YW        = $clog2(MAX_HEIGHT + 16),  // height ports
@@ -94,6 +97,8 @@ module sgm_top #(
   input  wire          cfg_p2_mode_i,  // P2 adaptation: 0 knee 4 P2' / (dI + 4), 1 paper P2' / dI
   input  wire          cfg_weights_i,  // path weights of S: 0 = 3,2,3,2, 1 = equal (the paper's sum)
   input  wire  [6:0]   cfg_unique_i,   // uniqueness ratio in %: 0 off, 1 .. 99 (100 .. 127: out of range, error_o[3])
+  input  wire  [3:0]   cfg_ad_weight_i, // AD term weight W: 0 off, 1 .. 15
+  input  wire  [7:0]   cfg_ad_cap_i,    // AD term cap T; Cmax of the mode + (W T) >> 3 >= 2^CBITS: out of range, error_o[3]
   // Status.
   output logic         busy_o,
   output logic         frame_done_o,
@@ -120,6 +125,8 @@ module sgm_top #(
   logic          subpixel, lr_en, fill_en, snap_en, median_en, p2_mode, weights_eq;
   logic [2:0]    lr_tol;
   logic [6:0]    uniq;
+  logic [3:0]    ad_weight;
+  logic [7:0]    ad_cap;
   logic          lut_start, lut_ready;
   logic          res_valid, res_ok;
   logic [DW-1:0] res_disp;
@@ -128,6 +135,7 @@ module sgm_top #(
     .MAX_WIDTH (MAX_WIDTH),
     .MIN_WIDTH (MIN_FRAME_WIDTH),
     .MAX_HEIGHT(MAX_HEIGHT),
+    .NB        (NB),
     .XW        (XW),
     .YW        (RW),
     .PW        (8),
@@ -160,6 +168,8 @@ module sgm_top #(
     .cfg_p2_mode_i (cfg_p2_mode_i),
     .cfg_weights_i (cfg_weights_i),
     .cfg_unique_i  (cfg_unique_i),
+    .cfg_ad_weight_i(cfg_ad_weight_i),
+    .cfg_ad_cap_i  (cfg_ad_cap_i),
     .width_o       (width),
     .height_o      (height),
     .p1_o          (p1),
@@ -174,6 +184,8 @@ module sgm_top #(
     .p2_mode_o     (p2_mode),
     .weights_o     (weights_eq),
     .unique_o      (uniq),
+    .ad_weight_o   (ad_weight),
+    .ad_cap_o      (ad_cap),
     .lut_start_o   (lut_start),
     .lut_ready_i   (lut_ready),
     .en_o          (en_ctrl),
@@ -276,7 +288,7 @@ module sgm_top #(
   logic [XW-1:0]  lane_col;
   logic [RW-1:0]  lane_row;
   logic           lane_valid;
-  logic [7:0]     unused_centre_r;
+  logic [7:0]     lane_centre_r;
   logic [31:0]    unused_nbr_r;
   logic [XW-1:0]  unused_col_r;
   logic [RW-1:0]  unused_row_r;
@@ -313,7 +325,7 @@ module sgm_top #(
     .height_i (height),
     .census_o (lane_census_r),
     .rank_o   (lane_rank_r),
-    .centre_o (unused_centre_r),
+    .centre_o (lane_centre_r),
     .nbr_o    (unused_nbr_r),
     .col_o    (unused_col_r),
     .row_o    (unused_row_r),
@@ -321,7 +333,6 @@ module sgm_top #(
   );
 
   // ------------------------------------------------------------ costs
-  localparam int COST_LATENCY = 3;  // sgm_cost_volume
   logic [D*CBITS-1:0] cost;
   logic [XW-1:0]      unused_col2;  // the engine takes the column COST_LATENCY slots earlier
   logic               valid2;
@@ -331,6 +342,10 @@ module sgm_top #(
     .rst_ni    (rst_ni),
     .en_i      (en),
     .mode_i    (mode),
+    .ad_weight_i(ad_weight),
+    .ad_cap_i  (ad_cap),
+    .lgray_i   (lane_centre),
+    .rgray_i   (lane_centre_r),
     .lcensus_i (lane_census_l),
     .lrank_i   (lane_rank_l),
     .col_i     (lane_col),

@@ -75,7 +75,7 @@ int main(int argc, char** argv) {
     if (params.p2 > 255) throw Error("P2'=" + std::to_string(params.p2) + " exceeds the core's 8-bit input");
     if (params.lrTolerance > 7) throw Error("LR tolerance " + std::to_string(params.lrTolerance) + " exceeds the core's 3-bit input");
     if (params.experimental())
-      throw Error("--right-path, --right-block, --ad-weight, --subpixel-fit linear and --mgm are golden-only experiments, not in the core");
+      throw Error("--right-path, --right-block, --subpixel-fit linear and --mgm are golden-only experiments, not in the core");
     const std::string out = args.text("out", "build/sim");
     checkOutputDirectory(out);  // before the simulation; created only to write the results
     const double stall = args.real("stall", 0.0, 0.0, 0.95);

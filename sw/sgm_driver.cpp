@@ -8,7 +8,9 @@ uint32_t Driver::encodeSize(uint32_t width, uint32_t height) {
 }
 
 uint32_t Driver::encodePenalty(const FrameConfig& f) {
-  return (f.p1 & SGM_PENALTY_FIELD_MASK) << SGM_PENALTY_P1_SHIFT | (f.p2 & SGM_PENALTY_FIELD_MASK) << SGM_PENALTY_P2_SHIFT;
+  return (f.p1 & SGM_PENALTY_FIELD_MASK) << SGM_PENALTY_P1_SHIFT | (f.p2 & SGM_PENALTY_FIELD_MASK) << SGM_PENALTY_P2_SHIFT |
+         (f.adCap & SGM_PENALTY_FIELD_MASK) << SGM_PENALTY_AD_CAP_SHIFT |
+         (f.adWeight & SGM_PENALTY_AD_WEIGHT_MASK) << SGM_PENALTY_AD_WEIGHT_SHIFT;
 }
 
 uint32_t Driver::encodeConfig(const FrameConfig& f) {
@@ -55,6 +57,8 @@ FrameConfig Driver::readConfig() {
   f.height = size >> SGM_SIZE_HEIGHT_SHIFT & SGM_SIZE_FIELD_MASK;
   f.p1 = penalty >> SGM_PENALTY_P1_SHIFT & SGM_PENALTY_FIELD_MASK;
   f.p2 = penalty >> SGM_PENALTY_P2_SHIFT & SGM_PENALTY_FIELD_MASK;
+  f.adCap = penalty >> SGM_PENALTY_AD_CAP_SHIFT & SGM_PENALTY_FIELD_MASK;
+  f.adWeight = penalty >> SGM_PENALTY_AD_WEIGHT_SHIFT & SGM_PENALTY_AD_WEIGHT_MASK;
   f.mode = (config & SGM_CONFIG_MODE_MASK) >> SGM_CONFIG_MODE_SHIFT;
   f.subpixel = config & SGM_CONFIG_SUBPIXEL;
   f.lrCheck = config & SGM_CONFIG_LR_ENABLE;

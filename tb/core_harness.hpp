@@ -56,6 +56,7 @@ struct FrameInput {
   // >= 0: presented on cfg_mode_i instead of the code of params.mode (3, the unused encoding).
   int modeCode = -1;
   int uniqueCode = -1;  // when >= 0, replaces cfg_unique_i (an out-of-range ratio on purpose)
+  int adWeightCode = -1;  // when >= 0, replaces cfg_ad_weight_i (an AD term that leaves the cost word)
   // The configuration is out of range: the core drops the frame whole (no output,
   // no frame_done_o); FrameOutput::errors is error_o once its last beat is in.
   bool dropped = false;
@@ -258,6 +259,8 @@ class CoreHarness {
     top_->cfg_p2_mode_i = c.p2Paper;
     top_->cfg_weights_i = c.weightsEqual;
     top_->cfg_unique_i = f.uniqueCode >= 0 ? f.uniqueCode : c.uniqueness;
+    top_->cfg_ad_weight_i = f.adWeightCode >= 0 ? f.adWeightCode : c.adWeight;
+    top_->cfg_ad_cap_i = c.adCap;
   }
 
   DisparityMap decode(size_t first, int w, int h) {

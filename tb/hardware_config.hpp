@@ -29,6 +29,7 @@ struct HardwareConfig {
   bool p2Paper = false;       // cfg_p2_mode_i: 0 knee, 1 paper (P2'/dI)
   bool weightsEqual = false;  // cfg_weights_i: 0 = 3,2,3,2, 1 = equal
   int uniqueness = 0;         // cfg_unique_i: ratio in %, 0 = off
+  int adWeight = 0, adCap = 0;  // cfg_ad_weight_i, cfg_ad_cap_i: the AD term
 };
 
 inline HardwareConfig hardwareConfig(const Params& p, int width, int height) {
@@ -38,6 +39,7 @@ inline HardwareConfig hardwareConfig(const Params& p, int width, int height) {
   c.fill = p.fill, c.snap = p.snap, c.median = p.median;
   c.p2Paper = p.p2Mode == P2Mode::kPaper, c.weightsEqual = p.weights == PathWeighting::kEqual;
   c.uniqueness = p.uniqueness;
+  c.adWeight = p.adWeight, c.adCap = p.adCap;
   return c;
 }
 

@@ -78,7 +78,12 @@ Params drawParams(Rng& rng) {
   p.p2Mode = rng.chance(0.5) ? P2Mode::kPaper : P2Mode::kKnee;
   p.weights = rng.chance(0.5) ? PathWeighting::kEqual : PathWeighting::k3232;
   p.uniqueness = rng.chance(0.5) ? 0 : rng.chance(0.1) ? 99 : rng.uniform(1, 40);
+  // The AD term: half the frames, up to the largest term the mode's cost word leaves.
   p.census = Vsgm_top_sgm_top::CENSUS_H == 9 ? CensusWindow::k9x9 : CensusWindow::k9x5;
+  p.adWeight = rng.chance(0.5) ? 0 : rng.uniform(1, kMaxAdWeight);
+  const int room = costLimit(p.census) - maxCost(p.mode, p.census);  // (W T) >> 3 <= room
+  p.adCap = p.adWeight ? rng.uniform(0, std::min(kMaxAdCap, (8 * room + 7) / p.adWeight)) : 20;
+  while (p.adWeight && maxCost(p.mode, p.census) + (p.adWeight * p.adCap >> kAdShift) > costLimit(p.census)) --p.adCap;
   return p;
 }
 
@@ -87,7 +92,7 @@ std::string paramText(const Params& p) {
   t << costModeName(p.mode) << " P1=" << p.p1 << " P2'=" << p.p2 << " sub=" << p.subpixel << " lr=" << p.lrTolerance
     << " fill=" << p.fill << " snap=" << p.snap << " median=" << p.median << " census=" << censusWindowName(p.census)
     << " p2-mode=" << p2ModeName(p.p2Mode) << " weights=" << pathWeightingName(p.weights)
-    << " uniqueness=" << p.uniqueness;
+    << " uniqueness=" << p.uniqueness << " ad=" << p.adWeight << "/" << p.adCap;
   return t.str();
 }
 

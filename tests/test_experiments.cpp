@@ -30,8 +30,8 @@ TEST(Experiments, OffByDefaultAndNotInAnyPreset) {
   q.rightPathWeight = 3;
   EXPECT_NE(q, p);
   EXPECT_EQ(sgm::presetName(q), "custom");
-  sgm::Params u = p;  // the uniqueness ratio is in the core: not an experiment
-  u.uniqueness = 15;
+  sgm::Params u = p;  // the uniqueness ratio and the AD term are in the core: not experiments
+  u.uniqueness = 15, u.adWeight = 3;
   EXPECT_FALSE(u.experimental());
   EXPECT_EQ(sgm::presetName(u), "custom");
 }
@@ -212,8 +212,17 @@ TEST(Experiments, OptionsAndRanges) {
   bad.rightPathBlock = sgm::kMaxRightPathBlock + 1;
   expectError([&] { bad.validate(); }, {"right-path block"});
   bad = sgm::Params{};
-  bad.adWeight = 64, bad.adCap = 255;  // 44 + 64 * 255 / 8 > 255
-  expectError([&] { bad.validate(); }, {"8 bits"});
+  bad.adWeight = 16;
+  expectError([&] { bad.validate(); }, {"AD term weight 16", "out of range 0..15"});
+  bad = sgm::Params{};
+  bad.adWeight = 15, bad.adCap = 45;  // rsad 44 + 15 * 45 / 8 = 128 > 127, the 9x5 cost word
+  expectError([&] { bad.validate(); }, {"exceed 127"});
+  bad.adCap = 44;  // 44 + 82 = 126: fits
+  bad.validate();
+  bad.census = sgm::CensusWindow::k9x9, bad.adCap = 255;  // 80 + 478 > 255
+  expectError([&] { bad.validate(); }, {"exceed 255"});
+  EXPECT_EQ(sgm::costLimit(sgm::CensusWindow::k9x5), 127);
+  EXPECT_EQ(sgm::costLimit(sgm::CensusWindow::k9x9), 255);
   bad = sgm::Params{};
   bad.mode = sgm::CostMode::kSad, bad.adWeight = 8;
   expectError([&] { bad.validate(); }, {"census cost mode"});

@@ -277,12 +277,13 @@ std::string goldenParamsText(const Params& p) {
                      ", P2'=" + std::to_string(p.p2) + ", sub-pixel " + onOff(p.subpixel) + ", LR check " +
                      (p.lrTolerance < 0 ? std::string("off") : "tol " + std::to_string(p.lrTolerance)) + ", fill " +
                      onOff(p.fill) + ", snap " + onOff(p.snap) + ", median " + onOff(p.median) +
-                     (p.uniqueness ? ", uniqueness " + std::to_string(p.uniqueness) : std::string());
+                     (p.uniqueness ? ", uniqueness " + std::to_string(p.uniqueness) : std::string()) +
+                     (p.adWeight ? ", AD weight " + std::to_string(p.adWeight) + " cap " + std::to_string(p.adCap)
+                                 : std::string());
   if (p.experimental())
     text += "; golden-only experiments (not in the RTL): right path " + std::to_string(p.rightPathWeight) +
             (p.rightPathBlock ? " block " + std::to_string(p.rightPathBlock) : std::string()) +
-            ", AD weight " + std::to_string(p.adWeight) + " cap " +
-            std::to_string(p.adCap) + ", sub-pixel fit " + (p.linearSubpixel ? "linear" : "parabola") + ", MGM " +
+            ", sub-pixel fit " + (p.linearSubpixel ? "linear" : "parabola") + ", MGM " +
             onOff(p.mgm);
   return text;
 }
@@ -300,11 +301,11 @@ void writeGoldenParamFields(JsonWriter& j, const Params& p) {
   j.key("snap").boolean(p.snap);
   j.key("median").boolean(p.median);
   j.key("uniqueness").integer(p.uniqueness);  // 0: off
+  j.key("ad_weight").integer(p.adWeight);     // 0: off
+  j.key("ad_cap").integer(p.adCap);
   // Golden-only experiments (docs/algorithm.md section 12), off unless set.
   j.key("right_path_weight").integer(p.rightPathWeight);
   j.key("right_path_block").integer(p.rightPathBlock);  // 0: the whole row
-  j.key("ad_weight").integer(p.adWeight);
-  j.key("ad_cap").integer(p.adCap);
   j.key("subpixel_fit").string(p.linearSubpixel ? "linear" : "parabola");
   j.key("mgm").boolean(p.mgm);
 }

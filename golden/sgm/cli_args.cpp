@@ -78,8 +78,9 @@ bool CliArgs::onOff(const std::string& name, bool fallback) const {
 const std::set<std::string>& CliArgs::pipelineOptions() {
   static const std::set<std::string> names = {"d",    "p1",   "p2",     "mode",   "subpixel", "lr",     "fill",
                                               "snap", "median", "census", "p2-mode", "weights", "preset", "uniqueness",
+                                              "ad-weight", "ad-cap",
                                               // golden-only experiments (not in the RTL)
-                                              "right-path", "right-block", "ad-weight", "ad-cap", "subpixel-fit", "mgm"};
+                                              "right-path", "right-block", "subpixel-fit", "mgm"};
   return names;
 }
 
@@ -109,7 +110,7 @@ Params CliArgs::pipelineParams(Params p) const {
   p.rightPathBlock = int(integer("right-block", p.rightPathBlock, 0, kMaxRightPathBlock));
   p.uniqueness = int(integer("uniqueness", p.uniqueness, 0, 99));
   p.adWeight = int(integer("ad-weight", p.adWeight, 0, kMaxAdWeight));
-  p.adCap = int(integer("ad-cap", p.adCap, 0, 255));
+  p.adCap = int(integer("ad-cap", p.adCap, 0, kMaxAdCap));
   if (const std::string fit = text("subpixel-fit", p.linearSubpixel ? "linear" : "parabola"); fit == "linear" || fit == "parabola")
     p.linearSubpixel = fit == "linear";
   else

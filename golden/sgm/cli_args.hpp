@@ -25,9 +25,9 @@ class CliArgs {
   double real(const std::string& name, double fallback, double min, double max) const;
   bool onOff(const std::string& name, bool fallback) const;
 
-  // Reads --d, --p1, --p2, --mode, --subpixel, --lr, --uniqueness, --fill, --snap, --median,
-  // --census, --p2-mode, --weights and --preset into params, and the golden-only experiments
-  // (not in the RTL, off by default): --right-path W, --ad-weight W, --ad-cap T,
+  // Reads --d, --p1, --p2, --mode, --subpixel, --lr, --uniqueness, --ad-weight W, --ad-cap T,
+  // --fill, --snap, --median, --census, --p2-mode, --weights and --preset into params, and the
+  // golden-only experiments (not in the RTL, off by default): --right-path W, --right-block B,
   // --subpixel-fit parabola|linear, --mgm on|off. --preset (default | paper) replaces
   // base (D excepted) before the other options apply, so they override it; --mode also
   // brings that mode's default P1 / P2' (defaultParams), which --p1 / --p2 override.

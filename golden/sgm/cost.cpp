@@ -213,7 +213,7 @@ void addAdTerm(const cv::Mat& gl, const cv::Mat& gr, int y, int x0, int x1, int 
     uint8_t* c = row + size_t(x) * nd;
     for (int d = 0; d < nd; ++d) {
       const int term = x - d < 0 ? largest : (weight * std::min(std::abs(int(left[x]) - int(right[x - d])), cap)) >> kAdShift;
-      c[d] = uint8_t(std::min(255, c[d] + term));
+      c[d] = uint8_t(c[d] + term);  // <= costLimit(census) <= 255 (Params::validate)
     }
   }
 }

@@ -19,9 +19,10 @@ int censusCost(CostMode mode, const Census& left, const Census& right);
 void censusCostRow(CostMode mode, CensusWindow census, const Census* left, const Census* right, int width,
                    int x0, int x1, int disparities, uint8_t* row);
 
-// Golden-only experiment (Params::adWeight, not in the RTL): adds
+// The AD term (Params::adWeight, section 3): adds
 // weight * min(|IL(x, y) - IR(x - d, y)|, cap) >> kAdShift to pixels x0 .. x1-1 of row y
-// of C; a match outside the right image (x - d < 0) gets the largest term.
+// of C; a match outside the right image (x - d < 0) gets the largest term. The sum
+// stays within costLimit (Params::validate).
 void addAdTerm(const cv::Mat& grayLeft, const cv::Mat& grayRight, int y, int x0, int x1, int disparities,
                int weight, int cap, uint8_t* row);
 

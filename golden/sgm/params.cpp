@@ -33,6 +33,12 @@ int maxCost(CostMode mode, CensusWindow census) {
   return m.censusBitsFactor ? m.censusBitsFactor * censusShape(census).bits : m.fixedMaxCost;
 }
 
+int costLimit(CensusWindow census) {
+  int bits = 0;
+  while ((1 << bits) <= 2 * censusShape(census).bits) ++bits;
+  return (1 << bits) - 1;
+}
+
 const char* censusWindowName(CensusWindow window) { return window == CensusWindow::k9x9 ? "9x9" : "9x5"; }
 CensusWindow parseCensusWindow(const std::string& name) {
   if (name == "9x5") return CensusWindow::k9x5;
@@ -119,13 +125,14 @@ void Params::validate() const {
     throw Error("right-path block " + std::to_string(rightPathBlock) + " out of range 0.." +
                 std::to_string(kMaxRightPathBlock));
   if (uniqueness < 0 || uniqueness > 99) throw Error("uniqueness " + std::to_string(uniqueness) + " out of range 0..99");
-  if (adWeight < 0 || adWeight > kMaxAdWeight || adCap < 0 || adCap > 255)
+  if (adWeight < 0 || adWeight > kMaxAdWeight || adCap < 0 || adCap > kMaxAdCap)
     throw Error("AD term weight " + std::to_string(adWeight) + " / cap " + std::to_string(adCap) +
-                " out of range 0.." + std::to_string(kMaxAdWeight) + " / 0..255");
+                " out of range 0.." + std::to_string(kMaxAdWeight) + " / 0.." + std::to_string(kMaxAdCap));
   if (adWeight && !isHardwareMode(mode)) throw Error("the AD term (--ad-weight) needs a census cost mode");
-  if (maxCost(mode, census) + (adWeight * adCap >> kAdShift) > 255)
-    throw Error("AD term weight " + std::to_string(adWeight) + " x cap " + std::to_string(adCap) +
-                " makes costs exceed 8 bits");
+  if (adWeight && maxCost(mode, census) + (adWeight * adCap >> kAdShift) > costLimit(census))
+    throw Error("AD term weight " + std::to_string(adWeight) + " x cap " + std::to_string(adCap) + " makes " +
+                costModeName(mode) + " costs exceed " + std::to_string(costLimit(census)) + " (the " +
+                censusWindowName(census) + " core's cost word)");
   if ((kPathWeightSum + rightPathWeight) * (255 + p2) >= 65536)
     throw Error("right-path weight " + std::to_string(rightPathWeight) + " with P2'=" + std::to_string(p2) +
                 " overflows the 16-bit S");

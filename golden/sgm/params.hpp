@@ -50,6 +50,10 @@ std::vector<CostMode> allCostModes();
 // Largest matching cost a mode can produce (also the cost of a disparity whose
 // match falls outside the right image).
 int maxCost(CostMode mode, CensusWindow census);
+// Largest cost the hardware's cost word holds: 2^b - 1 with b the bits of unified's
+// Cmax = 2 x census bits (127 for the 9x5 census, 255 for the 9x9): Cmax of the mode
+// plus the largest AD term must stay within it (Params::validate).
+int costLimit(CensusWindow census);
 
 constexpr int kMinFrameSide = 9;                  // smallest width and height (9x9 frame)
 constexpr int kSubpixelBits = 4;                  // disparities carry 1/16 px
@@ -70,7 +74,8 @@ inline const int* pathWeights(PathWeighting weighting) {
 constexpr int kMaxPenalty = 6000;
 constexpr int kMaxRightPathWeight = 8;            // golden-only fifth path (Params::rightPathWeight)
 constexpr int kMaxRightPathBlock = 4096;          // golden-only fifth path's block (Params::rightPathBlock)
-constexpr int kMaxAdWeight = 64;                  // golden-only AD term (Params::adWeight)
+constexpr int kMaxAdWeight = 15;                  // AD term weight (Params::adWeight, 4 bits in the RTL)
+constexpr int kMaxAdCap = 255;                    // AD term truncation (Params::adCap, 8 bits)
 constexpr int kAdShift = 3;                       // AD term = adWeight * min(AD, adCap) >> kAdShift                 // keeps kPathWeightSum * (Cmax + P2') < 2^16
 
 struct Params {
@@ -88,16 +93,16 @@ struct Params {
   PathWeighting weights = PathWeighting::k3232;  // path weights of S (section 5)
   int uniqueness = 0;          // uniqueness ratio U (%, section 7): invalid when some S(k), |k - d*| > 1,
                                // has S(k) (100 - U) < 100 S(d*); 0 = off
+  int adWeight = 0;            // AD term added to C (section 3): adWeight * min(|IL(x) - IR(x-d)|, adCap) >> 3; 0 = off
+  int adCap = 20;              // the AD term's truncation (gray levels)
 
   // Golden-only experiments (issue 15, docs/algorithm.md section 12): NOT in the RTL,
   // every one off by default, so Params{} and the presets stay bit-exact with the core.
   int rightPathWeight = 0;  // fifth path, 0 degrees from the right over one buffered row, weight 0..kMaxRightPathWeight
   int rightPathBlock = 0;   // the fifth path per block of this many pixels with one block of look-ahead; 0 = whole row
-  int adWeight = 0;         // AD term added to C: adWeight * min(|IL(x) - IR(x-d)|, adCap) / 8; 0 = off
-  int adCap = 20;           // the AD term's truncation (gray levels)
   bool linearSubpixel = false;  // sub-pixel by the equiangular (V) fit instead of the parabola
   bool mgm = false;             // raster-order MGM: each path averages two causal neighbours
-  bool experimental() const { return rightPathWeight || rightPathBlock || adWeight || linearSubpixel || mgm; }
+  bool experimental() const { return rightPathWeight || rightPathBlock || linearSubpixel || mgm; }
 
   bool operator==(const Params& o) const;
   bool operator!=(const Params& o) const { return !(*this == o); }

@@ -44,6 +44,7 @@ struct FrameConfig {
   bool fill = true, snap = true, median = true;
   bool p2Paper = false, weightsEqual = false;  // the paper's P2'/dI and equal path weights
   uint32_t uniqueness = 0;  // uniqueness ratio in %, 0 (off) .. SGM_CONFIG_UNIQUENESS_MAX
+  uint32_t adWeight = 0, adCap = 20;  // the AD term: C += (W min(AD, T)) >> 3, W 0 (off) .. 15
 };
 
 struct Errors {

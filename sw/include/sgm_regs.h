@@ -22,7 +22,7 @@
 /* ---- control (read-write) */
 #define SGM_REG_CTRL            0x20u
 #define SGM_REG_FRAME_SIZE      0x24u /* [15:0] width, [31:16] height of the next frames */
-#define SGM_REG_PENALTY         0x28u /* [7:0] P1, [15:8] P2' */
+#define SGM_REG_PENALTY         0x28u /* [7:0] P1, [15:8] P2', [23:16] AD cap, [27:24] AD weight */
 #define SGM_REG_CONFIG          0x2Cu /* cost mode and stages */
 
 /* ---- status (read-only, except the write-1-to-clear / clear-on-write ones) */
@@ -59,7 +59,10 @@
 #define SGM_PENALTY_P1_SHIFT    0
 #define SGM_PENALTY_P2_SHIFT    8
 #define SGM_PENALTY_FIELD_MASK  0xFFu
-#define SGM_PENALTY_MASK        0x0000FFFFu
+#define SGM_PENALTY_AD_CAP_SHIFT    16     /* 8 bits: the AD term's cap T (gray levels) */
+#define SGM_PENALTY_AD_WEIGHT_SHIFT 24     /* 4 bits: the AD term's weight W, 0 off; C += (W min(AD, T)) >> 3 */
+#define SGM_PENALTY_AD_WEIGHT_MASK  0xFu
+#define SGM_PENALTY_MASK        0x0FFFFFFFu
 
 #define SGM_CONFIG_MODE_SHIFT   0          /* 2 bits */
 #define SGM_CONFIG_MODE_MASK    (3u << 0)
@@ -95,7 +98,7 @@
 #define SGM_IRQ_MASK            0x00000003u
 
 /* ---- reset values (every other register resets to 0) */
-#define SGM_PENALTY_RESET       0x00006412u /* P1 18, P2' 100: the golden model's defaults */
+#define SGM_PENALTY_RESET       0x00146412u /* P1 18, P2' 100, AD cap 20, AD weight 0 (off): the golden model's defaults */
 #define SGM_CONFIG_RESET        0x00007131u /* rsad, sub-pixel, LR check tolerance 1, fill, snap, median */
 
 #endif /* SGM_REGS_H */

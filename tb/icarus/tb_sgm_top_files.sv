@@ -40,6 +40,8 @@ module tb_sgm_top_files #(
   logic          cfg_p2_mode = 1'b0, cfg_weights = 1'b0;
   logic [2:0]    cfg_lr_tol = '0;
   logic [6:0]    cfg_unique = '0;
+  logic [3:0]    cfg_ad_weight = '0;
+  logic [7:0]    cfg_ad_cap = '0;
   wire           busy, frame_done;
   wire  [3:0]    error, error_event;
   wire  [XW-1:0] frame_width;
@@ -72,6 +74,8 @@ module tb_sgm_top_files #(
     .cfg_p2_mode_i (cfg_p2_mode),
     .cfg_weights_i (cfg_weights),
     .cfg_unique_i  (cfg_unique),
+    .cfg_ad_weight_i(cfg_ad_weight),
+    .cfg_ad_cap_i  (cfg_ad_cap),
     .busy_o        (busy),
     .frame_done_o  (frame_done),
     .error_o       (error),
@@ -82,7 +86,7 @@ module tb_sgm_top_files #(
 
   always #5 clk = ~clk;
 
-  int cfg[MAX_FRAMES][14];
+  int cfg[MAX_FRAMES][16];
   int frames, total_in, total_out, stall, seed;
   int in_fd, out_fd;
 
@@ -102,6 +106,8 @@ module tb_sgm_top_files #(
     cfg_p2_mode  = cfg[k][11][0];
     cfg_weights  = cfg[k][12][0];
     cfg_unique   = cfg[k][13][6:0];
+    cfg_ad_weight = cfg[k][14][3:0];
+    cfg_ad_cap   = cfg[k][15][7:0];
   endtask
 
   // Reads the next input beat into s_tdata/s_tuser/s_tlast.
@@ -117,7 +123,7 @@ module tb_sgm_top_files #(
     string cfg_name, in_name, out_name;
     int cfg_fd, k, sent, received, presented, since_move, r;
     logic in_fire, out_fire;
-    int v0, v1, v2, v3, v4, v5, v6, v7, v8, v9, v10, v11, v12, v13;
+    int v0, v1, v2, v3, v4, v5, v6, v7, v8, v9, v10, v11, v12, v13, v14, v15;
     if (!$value$plusargs("cfg=%s", cfg_name) || !$value$plusargs("in=%s", in_name) ||
         !$value$plusargs("out=%s", out_name))
       $fatal(1, "tb: usage: +cfg=FILE +in=FILE +out=FILE [+stall=N] [+seed=S]");
@@ -132,12 +138,12 @@ module tb_sgm_top_files #(
     total_in = 0;
     for (k = 0; k < frames; k = k + 1) begin
       // (Icarus 11 scans into plain variables only, not array elements.)
-      r = $fscanf(cfg_fd, "%d %d %d %d %d %d %d %d %d %d %d %d %d %d\n", v0, v1, v2, v3, v4, v5, v6, v7, v8, v9, v10,
-                  v11, v12, v13);
-      if (r != 14) $fatal(1, "tb: %s: frame %0d: bad line", cfg_name, k);
+      r = $fscanf(cfg_fd, "%d %d %d %d %d %d %d %d %d %d %d %d %d %d %d %d\n", v0, v1, v2, v3, v4, v5, v6, v7, v8, v9,
+                  v10, v11, v12, v13, v14, v15);
+      if (r != 16) $fatal(1, "tb: %s: frame %0d: bad line", cfg_name, k);
       cfg[k][0] = v0; cfg[k][1] = v1; cfg[k][2] = v2; cfg[k][3] = v3; cfg[k][4] = v4; cfg[k][5] = v5;
       cfg[k][6] = v6; cfg[k][7] = v7; cfg[k][8] = v8; cfg[k][9] = v9; cfg[k][10] = v10; cfg[k][11] = v11;
-      cfg[k][12] = v12; cfg[k][13] = v13;
+      cfg[k][12] = v12; cfg[k][13] = v13; cfg[k][14] = v14; cfg[k][15] = v15;
       total_in = total_in + cfg[k][0] * cfg[k][1];
     end
     total_out = total_in;

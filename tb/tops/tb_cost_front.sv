@@ -3,8 +3,9 @@
 // sgm_census_unit (left, right) on one step stream feed sgm_cost_volume, as in
 // the core: gray pair in, the full cost volume out in raster order.
 //
-// mode_i is the frame's mode at the input slot; it is delayed by the census
-// latency so that it reaches the cost volume with the same slot.
+// mode_i and the AD term's ad_weight_i / ad_cap_i are the frame's settings at
+// the input slot; they are delayed by the census latency so that they reach the
+// cost volume with the same slot (with the census units' centre grays).
 // Outputs: the left and right census units' census/rank (left also col/row/valid,
 // latency CENSUS_LATENCY) and the cost volume (latency
 // CENSUS_LATENCY + COST_LATENCY).
@@ -18,6 +19,8 @@ module tb_cost_front #(
   input  wire              rst_ni,
   input  wire              en_i,
   input  wire  [1:0]       mode_i,
+  input  wire  [3:0]       ad_weight_i,
+  input  wire  [7:0]       ad_cap_i,
   input  wire  [7:0]       lpix_i,
   input  wire  [7:0]       rpix_i,
   input  wire  [CW-1:0]    col_i,
@@ -38,14 +41,14 @@ module tb_cost_front #(
 
   // Mirrors of sgm_census_unit::LATENCY and sgm_cost_volume::LATENCY (checked by the test).
   localparam int CENSUS_LATENCY /*verilator public*/ = 5;
-  localparam int COST_LATENCY   /*verilator public*/ = 3;
+  localparam int COST_LATENCY   /*verilator public*/ = 4;
 
   logic [7:0]    l_centre, r_centre;
   logic [31:0]   l_nbr, r_nbr;
   logic [CW-1:0] r_col;
   logic [RW-1:0] r_row;
   logic          r_valid;
-  wire           unused_right = ^{l_centre, r_centre, l_nbr, r_nbr, r_col, r_row, r_valid};
+  wire           unused_right = ^{l_nbr, r_nbr, r_col, r_row, r_valid};
 
   sgm_census_unit #(
     .MAX_WIDTH (MAX_WIDTH),
@@ -94,10 +97,15 @@ module tb_cost_front #(
   );
 
   // The frame's mode, delayed to the census outputs' slot.
-  logic [CENSUS_LATENCY*2-1:0] mode_q;
+  localparam int SETW = 2 + 4 + 8;  // {mode, AD weight, AD cap}
+  logic [CENSUS_LATENCY*SETW-1:0] set_q;
   always_ff @(posedge clk_i) begin
-    if (en_i) mode_q <= {mode_q[(CENSUS_LATENCY-1)*2-1:0], mode_i};
+    if (en_i) set_q <= {set_q[(CENSUS_LATENCY-1)*SETW-1:0], mode_i, ad_weight_i, ad_cap_i};
   end
+  wire [1:0] mode_c;
+  wire [3:0] adw_c;
+  wire [7:0] adt_c;
+  assign {mode_c, adw_c, adt_c} = set_q[(CENSUS_LATENCY-1)*SETW +: SETW];
 
   sgm_cost_volume #(
     .D  (D),
@@ -106,7 +114,11 @@ module tb_cost_front #(
     .clk_i     (clk_i),
     .rst_ni    (rst_ni),
     .en_i      (en_i),
-    .mode_i    (mode_q[(CENSUS_LATENCY-1)*2 +: 2]),
+    .mode_i    (mode_c),
+    .ad_weight_i(adw_c),
+    .ad_cap_i  (adt_c),
+    .lgray_i   (l_centre),
+    .rgray_i   (r_centre),
     .lcensus_i (lcensus_o),
     .lrank_i   (lrank_o),
     .col_i     (lcol_o),

@@ -46,6 +46,7 @@ drv::FrameConfig frameConfig(const sgm::Params& p, cv::Size size) {
   f.width = c.width, f.height = c.height, f.p1 = c.p1, f.p2 = c.p2, f.mode = c.mode, f.subpixel = c.subpixel;
   f.lrCheck = c.lrEnable, f.lrTolerance = c.lrTolerance, f.fill = c.fill, f.snap = c.snap, f.median = c.median;
   f.p2Paper = c.p2Paper, f.weightsEqual = c.weightsEqual, f.uniqueness = c.uniqueness;
+  f.adWeight = c.adWeight, f.adCap = c.adCap;
   return f;
 }
 

@@ -50,6 +50,7 @@ constexpr int kLatency = int(Rtl::CENSUS_LATENCY) + int(Rtl::COST_LATENCY);
 struct Frame {
   cv::Mat left, right;
   CostMode mode;
+  int adWeight = 0, adCap = 0;  // the AD term (weight 0: off)
 };
 
 struct Golden {
@@ -66,8 +67,15 @@ void runStream(Top& top, const std::vector<Frame>& frames, const StreamOptions& 
     ASSERT_GE(f.left.cols, 16);
     ASSERT_GE(f.left.rows, 9);
     ASSERT_LE(f.left.cols, kMaxWidth);
-    golden.push_back(
-        {sgm::censusTransform(f.left), sgm::censusTransform(f.right), sgm::computeCost(f.left, f.right, f.mode, kD)});
+    sgm::CostVolume cost = sgm::computeCost(f.left, f.right, f.mode, kD);
+    if (f.adWeight) {
+      sgm::Params p;  // the contract's range (Cmax + largest term within the cost word)
+      p.mode = f.mode, p.disparities = kD, p.adWeight = f.adWeight, p.adCap = f.adCap;
+      p.validate();
+      for (int y = 0; y < f.left.rows; ++y)
+        sgm::addAdTerm(f.left, f.right, y, 0, f.left.cols, kD, f.adWeight, f.adCap, cost.at(0, y));
+    }
+    golden.push_back({sgm::censusTransform(f.left), sgm::censusTransform(f.right), std::move(cost)});
   }
   std::vector<cv::Size> sizes;
   for (const Frame& f : frames) sizes.push_back(f.left.size());
@@ -81,6 +89,8 @@ void runStream(Top& top, const std::vector<Frame>& frames, const StreamOptions& 
         m.col_i = junk() & 0xff;
         m.row_i = junk() & 0xff;
         m.mode_i = junk() & 3;
+        m.ad_weight_i = junk() & 15;
+        m.ad_cap_i = junk() & 0xff;
       },
       [](Vtb_cost_front& m) {
         return sgm::tb::portWords(m.lcensus_o, m.rcensus_o, m.cost_o, m.lrank_o, m.rrank_o, m.lcol_o, m.lrow_o,
@@ -100,7 +110,8 @@ void runStream(Top& top, const std::vector<Frame>& frames, const StreamOptions& 
     const sgm::tb::RasterSlot& src = slots[o];
     std::ostringstream os;
     os << "frame " << src.frame << " (" << frames[src.frame].left.cols << "x" << frames[src.frame].left.rows << ", "
-       << sgm::costModeName(frames[src.frame].mode) << ") pixel (" << c.x << ", " << c.y << ") from input slot " << o
+       << sgm::costModeName(frames[src.frame].mode) << ", AD " << frames[src.frame].adWeight << "/"
+       << frames[src.frame].adCap << ") pixel (" << c.x << ", " << c.y << ") from input slot " << o
        << " (" << src.x << ", " << src.y << "), output slot " << s;
     return os.str();
   };
@@ -118,6 +129,8 @@ void runStream(Top& top, const std::vector<Frame>& frames, const StreamOptions& 
           m.width_i = fr.left.cols;
           m.height_i = fr.left.rows;
           m.mode_i = int(fr.mode);
+          m.ad_weight_i = fr.adWeight;
+          m.ad_cap_i = fr.adCap;
         },
         [&] { return "before slot " + std::to_string(s); });
     if (!ok) return;
@@ -201,7 +214,28 @@ TEST(SgmCostVolume, LatencyConstants) {
   // The wrapper mirrors sgm_census_unit / sgm_cost_volume LATENCY; the stream
   // checks below hold the RTL to them slot by slot.
   EXPECT_EQ(kCensusLatency, 5);
-  EXPECT_EQ(int(Rtl::COST_LATENCY), 3);
+  EXPECT_EQ(int(Rtl::COST_LATENCY), 4);
+}
+
+// The AD term in every mode, at the edges of its range (the largest term the
+// 9x5 cost word leaves each mode, weight 15, cap 255, cap 0), frame after frame
+// with other settings and without it.
+TEST(SgmCostVolume, AdTerm) {
+  std::mt19937 rng(4242);
+  Top top("tb_cost_front_ad");
+  const int w = std::min(kMaxWidth, 52);
+  std::vector<Frame> frames;
+  const struct { CostMode mode; int weight, cap; } settings[] = {
+      {CostMode::kRsad, 3, 20}, {CostMode::kRsad, 15, 44}, {CostMode::kRt, 8, 83}, {CostMode::kUnified, 15, 21},
+      {CostMode::kUnified, 1, 255}, {CostMode::kRsad, 7, 0},  {CostMode::kRt, 0, 99},  {CostMode::kRsad, 2, 100}};
+  for (const auto& s : settings) {
+    Frame f = randomFrame(w, 10, s.mode, rng);
+    f.adWeight = s.weight, f.adCap = s.cap;
+    frames.push_back(std::move(f));
+  }
+  Frame bright{cv::Mat(9, 20, CV_8UC1, cv::Scalar(255)), cv::Mat(9, 20, CV_8UC1, cv::Scalar(0)), CostMode::kRsad, 15, 44};
+  frames.push_back(bright);
+  ASSERT_NO_FATAL_FAILURE(runStream(top, frames, StreamOptions::seeded(42)));
 }
 
 TEST(SgmCostVolume, RandomPairsAllModes) {

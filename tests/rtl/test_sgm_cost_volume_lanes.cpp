@@ -44,10 +44,11 @@ void setCensus(QData& port, const sgm::Census& c) { port = c.bits & ((uint64_t(1
 // Streams one frame in lane order and checks every output; returns the first
 // mismatch (in output order) or "".
 std::string runFrame(Top& top, const cv::Mat& left, const cv::Mat& right, sgm::CostMode mode, std::mt19937& rng,
-                     double idle) {
+                     double idle, int adWeight = 0, int adCap = 0) {
   const int w = left.cols, h = left.rows;
   const std::vector<sgm::Census> lc = sgm::censusTransform(left), rc = sgm::censusTransform(right);
-  const sgm::CostVolume expected = sgm::computeCost(left, right, mode, kD);
+  sgm::CostVolume expected = sgm::computeCost(left, right, mode, kD);
+  for (int y = 0; adWeight && y < h; ++y) sgm::addAdTerm(left, right, y, 0, w, kD, adWeight, adCap, expected.at(0, y));
   const int leadRows = 2;
   const sgm::tb::LaneSchedule lanes(w, kLanes, kSkew, leadRows);
   const long slots = lanes.slotsToCover(h) + kLatency;
@@ -69,6 +70,10 @@ std::string runFrame(Top& top, const cv::Mat& left, const cv::Mat& right, sgm::C
     top->col_i = pos.col;
     top->valid_i = inside;
     top->mode_i = int(mode);
+    top->ad_weight_i = adWeight;
+    top->ad_cap_i = adCap;
+    top->lgray_i = inside ? left.at<uint8_t>(pos.row, pos.col) : rng() & 0xff;
+    top->rgray_i = inside ? right.at<uint8_t>(pos.row, pos.col) : rng() & 0xff;
     sgm::tb::slotAfterIdle(top, rng, idle);
     inFlight.push_back(pos);
     if (int(inFlight.size()) < kLatency) continue;
@@ -106,7 +111,8 @@ TEST(SgmCostVolumeLanes, RandomFramesAllModesBackToBack) {
   for (const auto& s : sizes) {
     const cv::Mat left = randomImage(s[0], s[1], rng), right = randomImage(s[0], s[1], rng);
     const sgm::CostMode mode = modes[k++ % 3];
-    EXPECT_EQ(runFrame(top, left, right, mode, rng, k % 2 ? 0.3 : 0.0), "");
+    // The AD term on every other frame (weights and caps within the 9x5 cost word).
+    EXPECT_EQ(runFrame(top, left, right, mode, rng, k % 2 ? 0.3 : 0.0, k % 2 ? 0 : 5 + k, k % 2 ? 0 : 30), "");
   }
 }
 

@@ -143,16 +143,27 @@ TEST(SgmTop, OutOfRangeConfigurationIsDroppedThenGoodFrame) {
       {"P2' below P1", syntheticPair(kMinWidth + 2, 10, rng, inverted)},
       {"cost mode 3", syntheticPair(kMinWidth + 4, 9, rng, hardwareDefaults())},
       {"uniqueness 100", syntheticPair(kMinWidth + 3, 9, rng, hardwareDefaults())},
-      {"uniqueness 127", syntheticPair(kMinWidth + 1, 10, rng, hardwareDefaults())}};
+      {"uniqueness 127", syntheticPair(kMinWidth + 1, 10, rng, hardwareDefaults())},
+      {"AD term beyond the cost word", syntheticPair(kMinWidth + 2, 9, rng, hardwareDefaults())}};
   std::vector<FrameInput> frames = {syntheticPair(kMinWidth, 9, rng, equal)};
   for (size_t i = 0; i < bad.size(); ++i) {
     frames.push_back(bad[i].second);
     frames.back().dropped = true;
     frames.back().modeCode = bad[i].first == "cost mode 3" ? 3 : -1;
     frames.back().uniqueCode = bad[i].first == "uniqueness 100" ? 100 : bad[i].first == "uniqueness 127" ? 127 : -1;
+    if (bad[i].first == "AD term beyond the cost word") {  // rsad 44 + (15 x 45) >> 3 = 128 > 127 (9x5; 9x9: 80 + 84)
+      frames.back().params.adCap = Vsgm_top_sgm_top::CENSUS_H == 9 ? 255 : 45;
+      frames.back().adWeightCode = 15;
+    }
     sgm::Params good = i % 2 ? unified : hardwareDefaults();
     good.uniqueness = i == 6 ? 99 : 0;  // the largest ratio in range, after the first out of range
-    frames.push_back(syntheticPair(kMinWidth + 7 - int(i), 9 + int(i % 3), rng, good));
+    if (i == 8) {  // weight 15 with the largest cap the build's cost word leaves this mode
+      good.adWeight = 15, good.adCap = 0;
+      while (sgm::maxCost(good.mode, good.census) + (15 * (good.adCap + 1) >> sgm::kAdShift) <=
+             sgm::costLimit(good.census))
+        ++good.adCap;
+    }
+    frames.push_back(syntheticPair(kMinWidth + 8 - int(i), 9 + int(i % 3), rng, good));
   }
   Harness core("sgm_top_bad_config", 13, {0.2, 0.2});
   const std::vector<sgm::tb::FrameOutput> out = core.run(frames);
@@ -216,7 +227,11 @@ TEST(SgmTop, ParameterSetsChangeFromFrameToFrame) {
   unique.uniqueness = 15, unique.lrTolerance = -1;
   sgm::Params uniqueLr = hardwareDefaults();
   uniqueLr.uniqueness = 30, uniqueLr.fill = false;
-  for (const sgm::Params& p : {unified, rt, paperP2, unique, strict, kneeEqual, uniqueLr, raw, hardwareDefaults()})
+  sgm::Params ad = hardwareDefaults();  // the AD term (candidate C's weight and cap)
+  ad.adWeight = 3, ad.adCap = 20, ad.uniqueness = 15, ad.snap = false;
+  sgm::Params adRt = hardwareDefaults();
+  adRt.mode = sgm::CostMode::kRt, adRt.adWeight = 8, adRt.adCap = 60;
+  for (const sgm::Params& p : {unified, rt, paperP2, unique, ad, strict, kneeEqual, uniqueLr, adRt, raw, hardwareDefaults()})
     frames.push_back(syntheticPair(kD + 20, 20, rng, p));
   expectBitExact(core, frames, "parameter sets");
 }
