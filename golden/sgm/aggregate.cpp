@@ -136,12 +136,20 @@ class PathState {
 void addRightPath(const uint8_t* cost, const uint8_t* grayRow, int width, int nd, int p1, const P2Table& table,
                   int weight, uint16_t* sum, int block) {
   std::vector<uint16_t> buffers(2 * size_t(nd + 2), kPathSentinel);
+  // Blocks [jB, (j+1)B) for j = 0 .. m-2 and the last block [(m-1)B, W), m =
+  // max(1, W / B): the last takes the remainder (B .. 2B-1 pixels, or the
+  // whole row when W < 2B), so that the streaming schedule never has more
+  // than two passes in flight (docs/algorithm.md section 12; a partial last
+  // block of its own would start at W - 1 too: the same values). Each block's
+  // path starts at x0 + 2B - 1 (the next block is its warm-up), the last
+  // block's at the row's end; only its values in the block count.
   const int span = block > 0 ? block : width;
-  for (int x0 = 0; x0 < width; x0 += span) {
-    // Block [x0, x1): the path starts at x0 + 2 span - 1 (the next block is its
-    // warm-up) or at the row's end, and only its values in the block count.
-    const int x1 = std::min(width, x0 + span);
-    const int start = int(std::min<int64_t>(width - 1, int64_t(x0) + 2 * int64_t(span) - 1));
+  const int blocks = std::max(1, width / span);
+  for (int j = 0; j < blocks; ++j) {
+    const int x0 = j * span;
+    const bool last = j == blocks - 1;
+    const int x1 = last ? width : x0 + span;
+    const int start = last ? width - 1 : x0 + 2 * span - 1;
     uint16_t* prev = buffers.data() + 1;
     uint16_t* cur = buffers.data() + nd + 3;
     uint16_t minPrev = 0;

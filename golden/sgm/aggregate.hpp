@@ -71,10 +71,11 @@ void aggregateRows(int width, int height, int disparities, const cv::Mat& grayLe
 
 // The golden-only fifth path over one row: Lr for r = (1, 0), from x = W-1 down to 0,
 // added to sum (W x D) with the given weight. cost is the row of C, grayRow the row of
-// the left image. block > 0: the row in blocks of that many pixels, each block's path
-// started (Lr = C) one block to its right (at x0 + 2 block - 1, or at W - 1), the next
-// block being its warm-up: a bounded look-ahead instead of the whole row (in hardware
-// a few blocks of C per row lane instead of the row). block = 0: the whole row.
+// the left image. block = B > 0: the row in blocks [jB, (j+1)B), the last block taking
+// the remainder ([(m-1)B, W), m = max(1, W / B)); each block's path is started (Lr = C)
+// one block to its right (at x0 + 2B - 1; the last block's at W - 1), the next block
+// being its warm-up: a bounded look-ahead instead of the whole row (in hardware a few
+// blocks of C per row lane instead of the row, sgm_right_path). block = 0: the whole row.
 void addRightPath(const uint8_t* cost, const uint8_t* grayRow, int width, int disparities, int p1,
                   const P2Table& p2Table, int weight, uint16_t* sum, int block = 0);
 

@@ -1,0 +1,303 @@
+`default_nettype none
+// sgm_right_path: the fifth path, 0 degrees from the right (r = (1, 0)), in
+// blocks of BLOCK = B pixels with one block of look-ahead (docs/algorithm.md
+// section 12, golden sgm::addRightPath with block B), streamed at one pixel
+// per slot: the costs of each row lane are held in a short ring of words, two
+// backward passes run the recursion of eq. (1) from right to left over them,
+// and every pixel leaves LATENCY slots after it entered with its costs, a side
+// bundle and its L5 (the fifth path's Lr vector).
+//
+// Blocks of a row of width W: [jB, (j+1)B) for j = 0 .. m-2 and the last block
+// [(m-1)B, W), m = max(1, floor(W / B)) (B .. 2B-1 pixels; the row when W <
+// 2B). Block j's pass starts (Lr = C) at column x0 + 2B - 1, the last block's
+// at W - 1, and runs down to x0; only the block's own columns are kept.
+//
+// Schedule (in lane slots, u = the slots since the lane's row r began: the
+// pixel of column x enters at u = x; rows follow each other in a lane):
+//   pass of block j < m-1: steps u = x0 + 2B .. x0 + 4B - 1, column
+//     x0 + 2B - 1 - (u - x0 - 2B) (the block's columns in the last B steps);
+//   the last block's pass: W - x0 steps from u = x0 + 2B (m >= 2) or u = W
+//     (m = 1), columns W - 1 down to x0.
+// So passes of blocks of one parity never overlap, nor do the last block's and
+// the next row's first (it ends where that starts): ring PASS = j mod 2 runs
+// the blocks of its parity (two sgm_path_ring, LANES lanes each). A pass reads
+// a column at most 4B - 1 lane slots after it entered. Passes starting at u >=
+// W are recognised from the next row's column x = u - W (at most B); a pass
+// decoded from a row outside the frame computes garbage that no valid pixel
+// reads (a row's passes read only that row's words).
+//
+// Memories (words per lane M = DLY + 1, the lane's word n mod M holds its
+// pixel of lane time n; block RAM, registered reads, one write and one read
+// port each): the costs and gray twice (one copy per pass ring), the costs and
+// the side bundle once more for the output, and the L5 of each ring. A pass's
+// L5 of column x is written at most 4B - 1 lane slots plus the ring's pipeline
+// (3 + LANES slots) after the pixel entered; the output reads it DLY lane
+// slots after, DLY = 4B + ceil(3 / LANES).
+//
+// Parameters: D disparities, CW cost width, LW path-cost width (Cmax + P2'max
+// must fit), PW penalty width, BLOCK (B, a power of two >= 2), XW column bits,
+// LANES (K >= 1 row lanes, slot K t + k belongs to lane k), SIDE_W side bundle
+// bits.
+// Inputs per slot (en_i): the pixel's costs, its left gray and column, and the
+// side bundle; width_i, p1_i constant while a frame flows (width_i changes
+// only between frames, at least one slot before the frame's first).
+// Latency: LATENCY = K DLY + 1 slots from a pixel's inputs to its cost_o /
+// side_o / l5_o. Throughput: one pixel per slot.
+module sgm_right_path #(
+  parameter int D      = 64,
+  parameter int CW     = 7,
+  parameter int LW     = 9,
+  parameter int PW     = 8,
+  parameter int BLOCK  /*verilator public*/ = 32,
+  parameter int XW     = 11,
+  parameter int LANES  /*verilator public*/ = 1,
+  parameter int SIDE_W = 1,
+  localparam int DLY   = 4 * BLOCK + (3 + LANES - 1) / LANES,
+  localparam int LATENCY /*verilator public*/ = LANES * DLY + 1
+) (
+  input  wire              clk_i,
+  input  wire              rst_ni,
+  input  wire              en_i,
+  input  wire  [XW-1:0]    width_i,
+  input  wire  [PW-1:0]    p1_i,
+  // P2 table fill (sgm_p2_lut, the table of the four forward paths).
+  input  wire              lut_start_i,
+  input  wire  [PW-1:0]    p2_i,
+  input  wire              p2_mode_i,
+  output logic             lut_ready_o,
+  // Slot input.
+  input  wire  [D*CW-1:0]  cost_i,
+  input  wire  [7:0]       gray_i,
+  input  wire  [XW-1:0]    col_i,
+  input  wire  [SIDE_W-1:0] side_i,
+  // LATENCY slots later.
+  output logic [D*CW-1:0]  cost_o,
+  output logic [SIDE_W-1:0] side_o,
+  output logic [D*LW-1:0]  l5_o
+);
+
+  localparam int K    = LANES;
+  localparam int LB   = $clog2(BLOCK);
+  localparam int M    = DLY + 1;                       // words per lane
+  localparam int AW   = $clog2(M);                     // word in a lane
+  localparam int RA   = $clog2(K * M);                 // memory address
+  localparam int LNW  = K > 1 ? $clog2(K) : 1;
+  localparam int UW   = (XW > LB + 2 ? XW : LB + 2) + 1;  // u < W + 2B
+  localparam int SCW  = LB + 1;                        // steps left, < 2B
+  localparam int CWD  = D * CW;
+
+  // ------------------------------------------------------------ per frame
+  // m, the last block's start and the decode bounds (width_i is constant for a
+  // frame and changes a slot or more before it: registered here).
+  wire  [XW-1:0] blocks_raw = width_i >> LB;
+  logic [XW-1:0] m_q;          // m - 1
+  logic [UW-1:0] w_q, reg_max_q, last_u_q;
+  logic [SCW-1:0] last_steps_q;
+  always_ff @(posedge clk_i) begin
+    m_q          <= blocks_raw == '0 ? '0 : blocks_raw - 1'b1;
+    w_q          <= UW'(width_i);
+    // Regular passes start at u = x0 + 2B <= x0_last + B (j <= m - 2).
+    reg_max_q    <= UW'((blocks_raw == '0 ? '0 : blocks_raw - 1'b1) << LB) + UW'(BLOCK);
+    // The last pass: u = x0_last + 2B (m >= 2) or W (m = 1).
+    last_u_q     <= blocks_raw <= XW'(1) ? UW'(width_i)
+                                         : UW'((blocks_raw - 1'b1) << LB) + UW'(2 * BLOCK);
+    last_steps_q <= SCW'(width_i - ((blocks_raw == '0 ? '0 : blocks_raw - 1'b1) << LB));
+  end
+
+  // ------------------------------------------------------------ slot counters
+  // lane_q: the slot's lane (slot count mod K); n_q: the lane time mod M (the
+  // word of this slot's pixel); base_q = lane_q M.
+  logic [LNW-1:0] lane_q;
+  logic [AW-1:0]  n_q;
+  logic [RA-1:0]  base_q;
+  wire            lane_wrap = lane_q == LNW'(K - 1);
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      lane_q <= '0;
+      n_q    <= '0;
+      base_q <= '0;
+    end else if (en_i) begin
+      lane_q <= lane_wrap ? '0 : lane_q + 1'b1;
+      base_q <= lane_wrap ? '0 : base_q + RA'(M);
+      if (lane_wrap) n_q <= n_q == AW'(M - 1) ? '0 : n_q + 1'b1;
+    end
+  end
+  // A word n - off of this lane (off < M).
+  function automatic logic [AW-1:0] back(input logic [AW-1:0] n, input logic [AW-1:0] off);
+    back = n >= off ? n - off : AW'(M) - off + n;
+  endfunction
+  wire [AW-1:0] n_next = n_q == AW'(M - 1) ? '0 : n_q + 1'b1;  // the word read for the output
+
+  // ------------------------------------------------------------ pass starts
+  wire [UW-1:0] ua = UW'(col_i);
+  wire [UW-1:0] ub = UW'(col_i) + w_q;
+  wire a_reg  = ua >= UW'(2 * BLOCK) && ua[LB-1:0] == '0 && ua <= reg_max_q;
+  wire b_reg  = ub >= UW'(2 * BLOCK) && ub[LB-1:0] == '0 && ub <= reg_max_q;
+  wire b_last = ub == last_u_q;
+  wire [UW-1:0] u_start = a_reg ? ua : ub;
+  wire          start_any  = a_reg || b_reg || b_last;
+  wire          start_ring = b_last ? m_q[0] : u_start[LB];  // block j = u / B - 2: parity of u / B
+  // Start word: the column before u (1 lane slot ago), or W - 1 for the last
+  // pass (x + 1 lane slots ago).
+  wire [AW-1:0] start_off  = b_last ? AW'(col_i) + 1'b1 : AW'(1);
+  wire [AW-1:0] start_word = back(n_q, start_off);
+  wire [SCW-1:0] start_left = b_last ? last_steps_q - 1'b1 : SCW'(2 * BLOCK - 1);
+
+  // ------------------------------------------------------------ block parity of the pixel
+  wire [XW-1:0] jx     = col_i >> LB;
+  wire          parity = jx > m_q ? m_q[0] : jx[0];
+
+  // ------------------------------------------------------------ output copy
+  localparam int PWD = CWD + 8;              // pass copy: {gray, costs}
+  localparam int OWD = SIDE_W + 1 + CWD;     // output copy: {side, parity, costs}
+  wire [RA-1:0] wr_addr  = base_q + RA'(n_q);
+  wire [RA-1:0] out_addr = base_q + RA'(n_next);
+  logic [OWD-1:0] out_mem [0:K*M-1];
+  logic [OWD-1:0] out_q;
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      out_mem[wr_addr] <= {side_i, parity, cost_i};
+      out_q            <= out_mem[out_addr];
+    end
+  end
+
+  // ------------------------------------------------------------ the two passes
+  logic [2*PW-1:0] p2r;
+  logic [15:0]     lut_idx;
+  sgm_p2_lut #(.PW(PW), .NPORTS(2)) u_p2_lut (
+    .clk_i   (clk_i),
+    .rst_ni  (rst_ni),
+    .start_i (lut_start_i),
+    .p1_i    (p1_i),
+    .p2_i    (p2_i),
+    .mode_i  (p2_mode_i),
+    .ready_o (lut_ready_o),
+    .en_i    (en_i),
+    .idx_i   (lut_idx),
+    .p2r_o   (p2r)
+  );
+
+  logic [D*LW-1:0] l5_q [2];
+
+  for (genvar r = 0; r < 2; r++) begin : g_pass
+    // This ring's copy of the costs and grays.
+    logic [PWD-1:0] pass_mem [0:K*M-1];
+    always_ff @(posedge clk_i) begin
+      if (en_i) pass_mem[wr_addr] <= {gray_i, cost_i};
+    end
+
+    // Per-lane state, rotating through K registers: active, steps left after
+    // the one of this slot, the word of this slot's column, whether the pass is
+    // the row's last (every step kept).
+    logic           act_q  [K];
+    logic           last_q [K];
+    logic [SCW-1:0] left_q [K];
+    logic [AW-1:0]  word_q [K];
+    wire start = start_any && start_ring == 1'(r);
+    wire step  = start || (act_q[K-1] && left_q[K-1] != '0);
+    logic           last_d;
+    logic [SCW-1:0] left_d;
+    logic [AW-1:0]  word_d;
+    always_comb begin
+      if (start) begin
+        last_d = b_last;
+        left_d = start_left;
+        word_d = start_word;
+      end else begin
+        last_d = last_q[K-1];
+        left_d = left_q[K-1] - 1'b1;
+        word_d = back(word_q[K-1], AW'(1));
+      end
+    end
+    always_ff @(posedge clk_i) begin
+      if (!rst_ni) begin
+        for (int i = 0; i < K; i++) act_q[i] <= 1'b0;
+      end else if (en_i) begin
+        act_q[0] <= step;
+        for (int i = 1; i < K; i++) act_q[i] <= act_q[i-1];
+      end
+    end
+    always_ff @(posedge clk_i) begin
+      if (en_i) begin
+        last_q[0] <= last_d;
+        left_q[0] <= left_d;
+        word_q[0] <= word_d;
+        for (int i = 1; i < K; i++) begin
+          last_q[i] <= last_q[i-1];
+          left_q[i] <= left_q[i-1];
+          word_q[i] <= word_q[i-1];
+        end
+      end
+    end
+    // Keep the step's L5 when it is one of its block's columns.
+    wire keep = step && (last_d || left_d < SCW'(BLOCK));
+
+    // Stage 1: the column's costs and gray (registered read).
+    wire [RA-1:0] rd_addr = base_q + RA'(word_d);
+    logic [PWD-1:0] rd_q;
+    logic           start1, keep1;
+    logic [RA-1:0]  addr1;
+    always_ff @(posedge clk_i) begin
+      if (en_i) begin
+        rd_q   <= pass_mem[rd_addr];
+        start1 <= start;
+        keep1  <= keep;
+        addr1  <= rd_addr;
+      end
+    end
+    wire [7:0]     gray1 = rd_q[CWD +: 8];
+    wire [CWD-1:0] cost1 = rd_q[0 +: CWD];
+    // The previous step's gray (column + 1) of the lane: K slots ago.
+    logic [7:0] gray_prev;
+    sgm_delay #(.WIDTH(8), .DEPTH(K)) u_gray_prev (
+      .clk_i (clk_i),
+      .en_i  (en_i),
+      .d_i   (gray1),
+      .q_o   (gray_prev)
+    );
+    assign lut_idx[r*8 +: 8] = gray1 > gray_prev ? gray1 - gray_prev : gray_prev - gray1;
+
+    // Stage 2: P2r from the table; the ring.
+    logic [CWD-1:0] cost2;
+    logic           start2, keep2;
+    logic [RA-1:0]  addr2;
+    always_ff @(posedge clk_i) begin
+      if (en_i) {cost2, start2, keep2, addr2} <= {cost1, start1, keep1, addr1};
+    end
+    logic [D*LW-1:0] lr;
+    logic [LW-1:0]   unused_min;
+    sgm_path_ring #(.D(D), .CW(CW), .LW(LW), .PW(PW), .LANES(K)) u_ring (
+      .clk_i   (clk_i),
+      .rst_ni  (rst_ni),
+      .en_i    (en_i),
+      .p1_i    (p1_i),
+      .cost_i  (cost2),
+      .p2r_i   (p2r[r*PW +: PW]),
+      .start_i (start2),
+      .lr_o    (lr),
+      .min_o   (unused_min)
+    );
+    // Stage 2 + K: the step's Lr, written to this ring's L5 memory at its word.
+    logic          keep3;
+    logic [RA-1:0] addr3;
+    sgm_delay #(.WIDTH(1 + RA), .DEPTH(K)) u_step_delay (
+      .clk_i (clk_i),
+      .en_i  (en_i),
+      .d_i   ({keep2, addr2}),
+      .q_o   ({keep3, addr3})
+    );
+    logic [D*LW-1:0] l5_mem [0:K*M-1];
+    always_ff @(posedge clk_i) begin
+      if (en_i) begin
+        if (keep3) l5_mem[addr3] <= lr;
+        l5_q[r] <= l5_mem[out_addr];
+      end
+    end
+  end
+
+  // ------------------------------------------------------------ output
+  assign {side_o, cost_o} = {out_q[OWD-1 -: SIDE_W], out_q[0 +: CWD]};
+  assign l5_o = out_q[CWD] ? l5_q[1] : l5_q[0];
+
+endmodule
+`default_nettype wire
