@@ -215,8 +215,8 @@ $(eval $(call rtl_test,path-engine-d64-k6,sgm_path_engine,-GD=64 -GMAX_WIDTH=512
 # frames, many blocks per row) and the D = 64 block of 32 at six lanes.
 $(eval $(call rtl_test,right-path-d16-b8,sgm_right_path,-GD=16 -GBLOCK=8 -GXW=8 -GSIDE_W=16 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,right-path-d16-b4-k2,sgm_right_path,-GD=16 -GBLOCK=4 -GXW=8 -GSIDE_W=16 -GLANES=2 -CFLAGS -DSGM_D=16))
-$(eval $(call rtl_test,right-path-d16-b16-k3,sgm_right_path,-GD=16 -GBLOCK=16 -GXW=8 -GSIDE_W=16 -GLANES=3 -CFLAGS -DSGM_D=16))
-$(eval $(call rtl_test,right-path-d64-b32-k6,sgm_right_path,-GD=64 -GBLOCK=32 -GXW=8 -GSIDE_W=16 -GLANES=6 -CFLAGS -DSGM_D=64))
+$(eval $(call rtl_test,right-path-d16-b16-k3,sgm_right_path,-GD=16 -GBLOCK=16 -GXW=8 -GSIDE_W=16 -GLANES=3 -GL5_LAG=11 -CFLAGS -DSGM_D=16))
+$(eval $(call rtl_test,right-path-d64-b32-k6,sgm_right_path,-GD=64 -GBLOCK=32 -GXW=8 -GSIDE_W=16 -GLANES=6 -GL5_LAG=7 -CFLAGS -DSGM_D=64))
 # The 0 degree loop alone at LANES = 1 (the single-lane core) and with 2, 3, 4, 6 row lanes (docs/reschedule.md);
 # 12 lanes at D = 16 put several registers at one boundary (more lanes than loop units);
 # D = 32 pads the tree's 64 leaves (D = 16 and 64 fill theirs).

@@ -26,7 +26,8 @@
 //   B' - 1 part (b) (min Lr of the previous row)
 //   B'     part (c): + C, P2r, path start (cost and P2r carried K - 1 slots)
 //   C      S = weighted sum of the four Lr (3,2,3,2, or equal when
-//          weights_eq_i), registered to s_o; Lr of 45/90/135 degrees written
+//          weights_eq_i), plus the fifth path's W5 L5 (l5w_i, from
+//          sgm_right_path, with RIGHT_PATH = 1), registered to s_o; Lr of 45/90/135 degrees written
 //          to the path memories at the pixel's column (45 degrees
 //          W45_DELAY = max(0, K - 4) slots later); each word's minimum enters
 //          sgm_min_pipe as the word is written and is written to the path's
@@ -51,8 +52,11 @@
 // Parameters: D disparities, CW cost width, LW path-cost width (Cmax + P2'max
 // must fit), PW penalty width, MAX_WIDTH, XW column bits, YW row bits, GRAY_LEAD
 // (0 or 1, see t), COL_LEAD (>= 3: how many slots col_i leads cost_i), LANES
-// (K >= 1). SW = LW + 4 holds the larger of the two weightings (10 x 2^LW).
-// Latency: LATENCY = K + 2 slots from cost_i to s_o; row_i, centre_i and nbr_i
+// (K >= 1), RIGHT_PATH (1: S adds l5w_i, W5 L5 with W5 <= 15 in L5W = LW + 4
+// bits). SW = LW + 4 + RIGHT_PATH holds the larger of the two weightings
+// (10 x 2^LW, with the fifth path (10 + 15) x 2^LW).
+// Latency: LATENCY = K + 2 slots from cost_i to s_o (l5w_i K + 1 slots after
+// the pixel's cost_i); row_i, centre_i and nbr_i
 // of a pixel are presented GRAY_LEAD slots before its cost_i (valid_i with
 // it), col_i COL_LEAD slots before.
 // Throughput: 1 pixel per slot (each lane one pixel every K slots).
@@ -64,7 +68,9 @@ module sgm_path_engine #(
   parameter int MAX_WIDTH = 1280,
   parameter int XW        = 11,
   parameter int YW        = 11,
-  localparam int SW       = LW + 4,
+  parameter int RIGHT_PATH = 0,
+  localparam int L5W      = LW + 4,
+  localparam int SW       = LW + 4 + (RIGHT_PATH != 0 ? 1 : 0),
   // 1: P2r registered behind the table (the grays lead by one slot); 0: P2r
   // straight from the table's read port into the sub-PEs (grays with the costs).
   parameter int GRAY_LEAD /*verilator public*/ = 1,
@@ -100,6 +106,8 @@ module sgm_path_engine #(
   // The left-image grays of the pixel of the next slot (GRAY_LEAD slots ahead of cost_i).
   input  wire  [7:0]          centre_i,
   input  wire  [31:0]         nbr_i,     // I(p - r): 0, 45, 90, 135 degrees, 8 bits each
+  // The fifth path's W5 L5 of the pixel, K + 1 slots after its cost_i (RIGHT_PATH = 1).
+  input  wire  [D*L5W-1:0]    l5w_i,
   // Slot output, LATENCY slots later.
   output logic [D*SW-1:0]     s_o,
   output logic [XW-1:0]       col_o,
@@ -367,9 +375,16 @@ module sgm_path_engine #(
   for (genvar d = 0; d < D; d++) begin : g_sum
     wire [LW:0]   a  = {1'b0, lr_all[(0*D+d)*LW +: LW]} + {1'b0, lr_all[(2*D+d)*LW +: LW]};
     wire [LW:0]   b  = {1'b0, lr_all[(1*D+d)*LW +: LW]} + {1'b0, lr_all[(3*D+d)*LW +: LW]};
-    wire [SW-1:0] a2 = weights_eq_i ? '0 : {2'b00, a, 1'b0};
-    wire [SW-1:0] bw = weights_eq_i ? {3'b000, b} : {2'b00, b, 1'b0};
-    assign s_c[d*SW +: SW] = a2 + {3'b000, a} + bw;
+    wire [SW-1:0] a2 = weights_eq_i ? '0 : SW'({a, 1'b0});
+    wire [SW-1:0] bw = weights_eq_i ? SW'(b) : SW'({b, 1'b0});
+    if (RIGHT_PATH != 0) begin : g_five
+      assign s_c[d*SW +: SW] = a2 + SW'(a) + bw + SW'(l5w_i[d*L5W +: L5W]);
+    end else begin : g_four
+      assign s_c[d*SW +: SW] = a2 + SW'(a) + bw;
+    end
+  end
+  if (RIGHT_PATH == 0) begin : g_no_five
+    wire unused_l5w = ^l5w_i;
   end
 
   always_ff @(posedge clk_i) begin

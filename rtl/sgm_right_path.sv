@@ -4,8 +4,9 @@
 // section 12, golden sgm::addRightPath with block B), streamed at one pixel
 // per slot: the costs of each row lane are held in a short ring of words, two
 // backward passes run the recursion of eq. (1) from right to left over them,
-// and every pixel leaves LATENCY slots after it entered with its costs, a side
-// bundle and its L5 (the fifth path's Lr vector).
+// and every pixel leaves LATENCY slots after it entered with its costs and a
+// side bundle, and L5_LAG slots after that its weighted L5 (W5 times the fifth
+// path's Lr vector, the term the path engine adds to S).
 //
 // Blocks of a row of width W: [jB, (j+1)B) for j = 0 .. m-2 and the last block
 // [(m-1)B, W), m = max(1, floor(W / B)) (B .. 2B-1 pixels; the row when W <
@@ -37,12 +38,14 @@
 // Parameters: D disparities, CW cost width, LW path-cost width (Cmax + P2'max
 // must fit), PW penalty width, BLOCK (B, a power of two >= 2), XW column bits,
 // LANES (K >= 1 row lanes, slot K t + k belongs to lane k), SIDE_W side bundle
-// bits.
+// bits, L5_LAG (2 .. 3K + 2: the slots l5w_o comes after cost_o; a pixel's L5
+// word is overwritten no earlier than 3K + 3 slots after its output slot).
+// L5W = LW + 4 bits per weighted value (W5 <= 15).
 // Inputs per slot (en_i): the pixel's costs, its left gray and column, and the
 // side bundle; width_i, p1_i constant while a frame flows (width_i changes
 // only between frames, at least one slot before the frame's first).
 // Latency: LATENCY = K DLY + 1 slots from a pixel's inputs to its cost_o /
-// side_o / l5_o. Throughput: one pixel per slot.
+// side_o, L5_LAG more to its l5w_o. Throughput: one pixel per slot.
 module sgm_right_path #(
   parameter int D      = 64,
   parameter int CW     = 7,
@@ -52,6 +55,8 @@ module sgm_right_path #(
   parameter int XW     = 11,
   parameter int LANES  /*verilator public*/ = 1,
   parameter int SIDE_W = 1,
+  parameter int L5_LAG /*verilator public*/ = 2,
+  localparam int L5W   = LW + 4,
   localparam int DLY   = 4 * BLOCK + (3 + LANES - 1) / LANES,
   localparam int LATENCY /*verilator public*/ = LANES * DLY + 1
 ) (
@@ -60,6 +65,7 @@ module sgm_right_path #(
   input  wire              en_i,
   input  wire  [XW-1:0]    width_i,
   input  wire  [PW-1:0]    p1_i,
+  input  wire  [3:0]       weight_i,  // W5 (constant while a frame flows)
   // P2 table fill (sgm_p2_lut, the table of the four forward paths).
   input  wire              lut_start_i,
   input  wire  [PW-1:0]    p2_i,
@@ -73,7 +79,8 @@ module sgm_right_path #(
   // LATENCY slots later.
   output logic [D*CW-1:0]  cost_o,
   output logic [SIDE_W-1:0] side_o,
-  output logic [D*LW-1:0]  l5_o
+  // LATENCY + L5_LAG slots later: W5 L5(d) at l5w_o[d*L5W +: L5W].
+  output logic [D*L5W-1:0] l5w_o
 );
 
   localparam int K    = LANES;
@@ -177,6 +184,15 @@ module sgm_right_path #(
     .p2r_o   (p2r)
   );
 
+  // The L5 words are read L5_LAG - 1 slots after the output copy's word (then
+  // the product, a slot).
+  logic [RA-1:0] l5_addr;
+  sgm_delay #(.WIDTH(RA), .DEPTH(L5_LAG - 1)) u_l5_addr (
+    .clk_i (clk_i),
+    .en_i  (en_i),
+    .d_i   (out_addr),
+    .q_o   (l5_addr)
+  );
   logic [D*LW-1:0] l5_q [2];
 
   for (genvar r = 0; r < 2; r++) begin : g_pass
@@ -290,14 +306,30 @@ module sgm_right_path #(
     always_ff @(posedge clk_i) begin
       if (en_i) begin
         if (keep3) l5_mem[addr3] <= lr;
-        l5_q[r] <= l5_mem[out_addr];
+        l5_q[r] <= l5_mem[l5_addr];
       end
     end
   end
 
   // ------------------------------------------------------------ output
   assign {side_o, cost_o} = {out_q[OWD-1 -: SIDE_W], out_q[0 +: CWD]};
-  assign l5_o = out_q[CWD] ? l5_q[1] : l5_q[0];
+  // The pixel's block parity picks the ring; then W5 L5 (shift and add).
+  logic l5_parity;
+  sgm_delay #(.WIDTH(1), .DEPTH(L5_LAG - 1)) u_parity (
+    .clk_i (clk_i),
+    .en_i  (en_i),
+    .d_i   (out_q[CWD]),
+    .q_o   (l5_parity)
+  );
+  wire [D*LW-1:0] l5 = l5_parity ? l5_q[1] : l5_q[0];
+  for (genvar d = 0; d < D; d++) begin : g_weight
+    wire [LW-1:0]  v = l5[d*LW +: LW];
+    wire [L5W-1:0] p = (weight_i[0] ? L5W'(v)      : '0) + (weight_i[1] ? L5W'(v) << 1 : '0) +
+                       (weight_i[2] ? L5W'(v) << 2 : '0) + (weight_i[3] ? L5W'(v) << 3 : '0);
+    always_ff @(posedge clk_i) begin
+      if (en_i) l5w_o[d*L5W +: L5W] <= p;
+    end
+  end
 
 endmodule
 `default_nettype wire

@@ -36,21 +36,22 @@ constexpr int kD = SGM_D;
 constexpr int kLanes = int(Vsgm_right_path_sgm_right_path::LANES);
 constexpr int kBlock = int(Vsgm_right_path_sgm_right_path::BLOCK);
 constexpr int kLatency = int(Vsgm_right_path_sgm_right_path::LATENCY);
-constexpr int kCostBits = 7, kPathBits = 9, kSideBits = 16;
+constexpr int kL5Lag = int(Vsgm_right_path_sgm_right_path::L5_LAG);
+constexpr int kCostBits = 7, kPathBits = 9, kWeightedBits = kPathBits + 4;
 constexpr int kDelayLaneSlots = (kLatency - 1) / kLanes;  // DLY
 
 struct Frame {
   int width = 0, height = 0;
   cv::Mat gray;                  // height x width
   std::vector<uint8_t> cost;     // height x width x D
-  int p1 = 20, p2 = 200;
+  int p1 = 20, p2 = 200, weight = 1;  // W5
   sgm::P2Mode p2Mode = sgm::P2Mode::kKnee;
-  std::vector<uint16_t> l5;      // expected, height x width x D
+  std::vector<uint16_t> l5;      // expected W5 L5, height x width x D
 };
 
-Frame randomFrame(int w, int h, int p1, int p2, sgm::P2Mode mode, std::mt19937& rng) {
+Frame randomFrame(int w, int h, int p1, int p2, sgm::P2Mode mode, int weight, std::mt19937& rng) {
   Frame f;
-  f.width = w, f.height = h, f.p1 = p1, f.p2 = p2, f.p2Mode = mode;
+  f.width = w, f.height = h, f.p1 = p1, f.p2 = p2, f.p2Mode = mode, f.weight = weight;
   f.gray = cv::Mat(h, w, CV_8UC1);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)  // runs of equal grays (dI = 0) beside random ones
@@ -60,7 +61,7 @@ Frame randomFrame(int w, int h, int p1, int p2, sgm::P2Mode mode, std::mt19937& 
   const sgm::P2Table table = sgm::makeP2Table(p1, p2, mode);
   f.l5.assign(f.cost.size(), 0);
   for (int y = 0; y < h; ++y)
-    sgm::addRightPath(f.cost.data() + size_t(y) * w * kD, f.gray.ptr<uint8_t>(y), w, kD, p1, table, 1,
+    sgm::addRightPath(f.cost.data() + size_t(y) * w * kD, f.gray.ptr<uint8_t>(y), w, kD, p1, table, weight,
                       f.l5.data() + size_t(y) * w * kD, kBlock);
   return f;
 }
@@ -83,6 +84,7 @@ class Bench {
     top_->en_i = 0;
     top_->width_i = f.width;
     top_->p1_i = f.p1;
+    top_->weight_i = f.weight;
     top_->p2_i = f.p2;
     top_->p2_mode_i = f.p2Mode == sgm::P2Mode::kPaper;
     top_->lut_start_i = 1;
@@ -119,15 +121,22 @@ class Bench {
     top_->side_i = e.side;
     sgm::tb::slotAfterIdle(top_, rng_, idle_);
     entered_.push_back(std::move(e));
-    if (entered_.size() < size_t(kLatency)) return;
-    check(entered_.front());
+    if (entered_.size() >= size_t(kLatency)) checkCosts(entered_[entered_.size() - kLatency]);
+    if (entered_.size() < size_t(kLatency + kL5Lag)) return;
+    checkL5(entered_.front());
     entered_.pop_front();
   }
 
-  void check(const Entered& e) {
+  std::string stage() const {
+    return "stage sgm_right_path (LANES=" + std::to_string(kLanes) + ", BLOCK=" + std::to_string(kBlock) +
+           "): first mismatch at ";
+  }
+
+  // The costs and the side bundle, LATENCY slots after the pixel entered.
+  void checkCosts(const Entered& e) {
     if (!mismatch_.empty()) return;
     std::ostringstream where;
-    where << "stage sgm_right_path (LANES=" << kLanes << ", BLOCK=" << kBlock << "): first mismatch at ";
+    where << stage();
     if (int(top_->side_o) != int(e.side)) {
       where << "slot of (x=" << e.x << ", y=" << e.y << ") side: expected " << e.side << ", got " << top_->side_o;
       mismatch_ = where.str();
@@ -140,14 +149,20 @@ class Bench {
         mismatch_ = where.str();
         return;
       }
-    if (e.y < 0) return;
+  }
+
+  // W5 L5, L5_LAG slots after the costs.
+  void checkL5(const Entered& e) {
+    if (!mismatch_.empty() || e.y < 0) return;
+    std::ostringstream where;
+    where << stage();
     const Frame& f = *frames_[size_t(e.frame)];
     const uint16_t* want = f.l5.data() + (size_t(e.y) * f.width + e.x) * kD;
     for (int d = 0; d < kD; ++d) {
-      const int got = int(getBits(top_->l5_o, d * kPathBits, kPathBits));
+      const int got = int(getBits(top_->l5w_o, d * kWeightedBits, kWeightedBits));
       if (got != want[d]) {
-        where << "(x=" << e.x << ", y=" << e.y << ") L5 d=" << d << ": expected " << want[d] << ", got " << got
-              << " (frame " << e.frame << ", " << f.width << "x" << f.height << ", P1=" << f.p1 << ", P2'=" << f.p2
+        where << "(x=" << e.x << ", y=" << e.y << ") W5 L5 d=" << d << ": expected " << want[d] << ", got " << got
+              << " (frame " << e.frame << ", " << f.width << "x" << f.height << ", P1=" << f.p1 << ", P2'=" << f.p2 << ", W5=" << f.weight
               << ")";
         mismatch_ = where.str();
         return;
@@ -179,7 +194,9 @@ TEST(SgmRightPath, FramesOfManyWidthsBackToBack) {
     if (w < 2 || w > 255) continue;
     const int p2 = int(rng() % 256), p1 = int(rng() % (p2 + 1));
     const auto mode = frames.size() % 2 ? sgm::P2Mode::kPaper : sgm::P2Mode::kKnee;
-    frames.push_back(randomFrame(w, 2 * kLanes + 1 + int(rng() % 3), p1, p2, mode, rng));
+    const int weights[] = {1, 4, 0, 15, 3, 8};
+    frames.push_back(randomFrame(w, 2 * kLanes + 1 + int(rng() % 3), p1, p2, mode,
+                                 weights[frames.size() % std::size(weights)], rng));
   }
   Bench bench(top, rng, 0.25);
   long pixels = 0;
@@ -199,7 +216,7 @@ TEST(SgmRightPath, PenaltyExtremes) {
   std::mt19937 rng(12);
   std::vector<Frame> frames;
   for (auto [p1, p2] : {std::pair{0, 0}, {0, 255}, {255, 255}, {20, 200}})
-    frames.push_back(randomFrame(3 * kBlock + 2, kLanes + 1, p1, p2, sgm::P2Mode::kKnee, rng));
+    frames.push_back(randomFrame(3 * kBlock + 2, kLanes + 1, p1, p2, sgm::P2Mode::kKnee, 1, rng));
   Bench bench(top, rng, 0.0);
   long pixels = 0;
   for (const Frame& f : frames) bench.run(f, 1), pixels += long(f.width) * f.height;
