@@ -158,10 +158,7 @@ TEST(SgmTop, OutOfRangeConfigurationIsDroppedThenGoodFrame) {
     sgm::Params good = i % 2 ? unified : hardwareDefaults();
     good.uniqueness = i == 6 ? 99 : 0;  // the largest ratio in range, after the first out of range
     if (i == 8) {  // weight 15 with the largest cap the build's cost word leaves this mode
-      good.adWeight = 15, good.adCap = 0;
-      while (sgm::maxCost(good.mode, good.census) + (15 * (good.adCap + 1) >> sgm::kAdShift) <=
-             sgm::costLimit(good.census))
-        ++good.adCap;
+      good.adWeight = 15, good.adCap = sgm::largestAdCap(good.mode, good.census, 15);
     }
     frames.push_back(syntheticPair(kMinWidth + 8 - int(i), 9 + int(i % 3), rng, good));
   }
