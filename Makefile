@@ -202,9 +202,14 @@ $(eval $(call rtl_test,top-d64-9x9,sgm_top,-GD=64 -GMAX_WIDTH=512 -GMAX_HEIGHT=3
 # flow builds, rtl/sgm_delay_ram.sv); every other build has them in distributed RAM.
 $(eval $(call rtl_test,top-d16-k2,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GLANES=2 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,top-d16-k3-9x9,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GLANES=3 -GCENSUS_H=9 -DSGM_DELAY_CHAIN -CFLAGS -DSGM_D=16))
-# sgm_axi configured through the driver (sw/) over an AXI4-Lite bus model.
+# The lean build: neither run-time lever that costs area (UNIQUENESS = 0, AD_TERM = 0, docs/rtl.md
+# "Build parameters"): bit-exact with the levers off, frames that ask for them dropped.
+$(eval $(call rtl_test,top-d16-lean,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GUNIQUENESS=0 -GAD_TERM=0 -CFLAGS -DSGM_D=16))
+# sgm_axi configured through the driver (sw/) over an AXI4-Lite bus model; the lean build reads
+# its FEATURES back and has the frames that ask for a missing lever dropped.
 $(eval $(call rtl_test,axi-d16,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
-$(BIN)/rtl-axi-d16: sw/sgm_driver.cpp $(wildcard sw/include/*.h*)
+$(eval $(call rtl_test,axi-d16-lean,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GUNIQUENESS=0 -GAD_TERM=0 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
+$(BIN)/rtl-axi-d16 $(BIN)/rtl-axi-d16-lean: sw/sgm_driver.cpp $(wildcard sw/include/*.h*)
 $(eval $(call rtl_test,path-engine-d16,sgm_path_engine,-GD=16 -GMAX_WIDTH=128 -GXW=8 -GYW=8 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,path-engine-d64,sgm_path_engine,-GD=64 -GMAX_WIDTH=512 -GXW=10 -GYW=10 -GGRAY_LEAD=0 -CFLAGS -DSGM_D=64 -CFLAGS -DSGM_YW=10))
 # The engine in lane order (docs/reschedule.md): K row lanes, SKEW columns apart.
@@ -229,8 +234,10 @@ $(eval $(call rtl_test,path-ring-d64-k4,sgm_path_ring,-GD=64 -GLANES=4 -CFLAGS -
 $(eval $(call rtl_test,path-ring-d64-k6,sgm_path_ring,-GD=64 -GLANES=6 -CFLAGS -DSGM_D=64))
 $(eval $(call rtl_test,wta-d16,sgm_wta,-GD=16))
 $(eval $(call rtl_test,wta-d64,sgm_wta,-GD=64))
+$(eval $(call rtl_test,wta-d16-lean,sgm_wta,-GD=16 -GUNIQUENESS=0))
 $(eval $(call rtl_test,lr-check-d16,sgm_lr_check,-GD=16 -GMAX_WIDTH=128))
 $(eval $(call rtl_test,lr-check-d64,sgm_lr_check,-GD=64 -GMAX_WIDTH=128))
+$(eval $(call rtl_test,lr-check-d16-lean,sgm_lr_check,-GD=16 -GMAX_WIDTH=128 -GUNIQUENESS=0))
 # The check with lanes (docs/reschedule.md): S and WTA sides in lane order, the read side in raster order.
 $(eval $(call rtl_test,lr-lanes-d16-k1,sgm_lr_check,-GD=16 -GMAX_WIDTH=128 -GRW=8 -GLANES=1 -GROW_BANKS=4,tests/rtl/test_sgm_lr_check_lanes.cpp))
 $(eval $(call rtl_test,lr-lanes-d16-k3,sgm_lr_check,-GD=16 -GMAX_WIDTH=128 -GRW=8 -GLANES=3 -GROW_BANKS=8,tests/rtl/test_sgm_lr_check_lanes.cpp))
@@ -244,6 +251,7 @@ $(eval $(call rtl_test,census-lanes-k6,sgm_census_unit,-GMAX_WIDTH=64 -GCW=8 -GR
 # tests/rtl/test_sgm_cost_volume.cpp drives the wrapper tb_cost_front (two census units + the volume): the later --top-module wins.
 $(eval $(call rtl_test,cost-volume-d16,sgm_cost_volume,--top-module tb_cost_front tb/tops/tb_cost_front.sv -GD=16 -GMAX_WIDTH=128 -GCW=8 -GRW=8))
 $(eval $(call rtl_test,cost-volume-d64,sgm_cost_volume,--top-module tb_cost_front tb/tops/tb_cost_front.sv -GD=64 -GMAX_WIDTH=512 -GCW=10 -GRW=9))
+$(eval $(call rtl_test,cost-volume-d16-lean,sgm_cost_volume,--top-module tb_cost_front tb/tops/tb_cost_front.sv -GD=16 -GMAX_WIDTH=128 -GCW=8 -GRW=8 -GAD_TERM=0))
 # Rows dealt to lanes from the stream controller's raster (docs/reschedule.md): LANE_LEAD = max(1, K - 1) and ROWS >= max(2, 2K - 2) rows (a power of two).
 $(eval $(call rtl_test,lane-deal-k1,sgm_lane_deal,-GLANES=1 -GLANE_LEAD=1 -GROWS=2))
 $(eval $(call rtl_test,lane-deal-k2,sgm_lane_deal,-GLANES=2 -GLANE_LEAD=1 -GROWS=2))

@@ -4,7 +4,7 @@
 // are defined once, in sw/include/sgm_regs.h, and the localparams below are
 // checked against that header by tests/rtl/test_sgm_axi.cpp.
 //
-//   identification  ID, D, MAX_WIDTH, MAX_HEIGHT, CENSUS, MIN_WIDTH, LANES (read-only)
+//   identification  ID, D, MAX_WIDTH, MAX_HEIGHT, CENSUS, MIN_WIDTH, LANES, FEATURES (read-only)
 //   control         CTRL (enable, soft reset, hold), FRAME_SIZE, PENALTY, CONFIG
 //   status          STATUS (busy), FRAMES, ERROR (sticky, W1C), ERROR_COUNT,
 //                   LAST_SIZE
@@ -23,7 +23,8 @@
 // Undefined addresses answer SLVERR (reads return 0, writes are ignored);
 // writes to read-only registers are ignored with OKAY.
 //
-// Parameters: D, MAX_WIDTH, MAX_HEIGHT, CENSUS_H, LANES as sgm_top; ADDR_W AXI address bits.
+// Parameters: D, MAX_WIDTH, MAX_HEIGHT, CENSUS_H, LANES, UNIQUENESS, AD_TERM as sgm_top
+// (FEATURES reads back the last two); ADDR_W AXI address bits.
 // Latency and throughput: those of sgm_top; register responses one cycle
 // after the request.
 module sgm_axi #(
@@ -32,6 +33,8 @@ module sgm_axi #(
   parameter int MAX_HEIGHT /*verilator public*/ = 1024,
   parameter int CENSUS_H   /*verilator public*/ = 5,
   parameter int LANES      /*verilator public*/ = 1,
+  parameter int UNIQUENESS /*verilator public*/ = 1,
+  parameter int AD_TERM    /*verilator public*/ = 1,
   parameter int ADDR_W     = 8,
   localparam int XW        = $clog2(MAX_WIDTH + 1),
   localparam int YW        = $clog2(MAX_HEIGHT + 16)
@@ -83,6 +86,7 @@ module sgm_axi #(
   localparam logic [ADDR_W-1:0] ADDR_CENSUS      /*verilator public*/ = ADDR_W'('h10);
   localparam logic [ADDR_W-1:0] ADDR_MIN_WIDTH   /*verilator public*/ = ADDR_W'('h14);
   localparam logic [ADDR_W-1:0] ADDR_LANES       /*verilator public*/ = ADDR_W'('h18);
+  localparam logic [ADDR_W-1:0] ADDR_FEATURES    /*verilator public*/ = ADDR_W'('h1C);
   localparam logic [ADDR_W-1:0] ADDR_CTRL        /*verilator public*/ = ADDR_W'('h20);
   localparam logic [ADDR_W-1:0] ADDR_FRAME_SIZE  /*verilator public*/ = ADDR_W'('h24);
   localparam logic [ADDR_W-1:0] ADDR_PENALTY     /*verilator public*/ = ADDR_W'('h28);
@@ -95,13 +99,18 @@ module sgm_axi #(
   localparam logic [ADDR_W-1:0] ADDR_IRQ_ENABLE  /*verilator public*/ = ADDR_W'('h48);
   localparam logic [ADDR_W-1:0] ADDR_IRQ_STATUS  /*verilator public*/ = ADDR_W'('h4C);
 
-  localparam logic [31:0] ID_VALUE       /*verilator public*/ = 32'h5347_4D03;  // "SGM", version 3
+  localparam logic [31:0] ID_VALUE       /*verilator public*/ = 32'h5347_4D04;  // "SGM", version 4
   localparam logic [31:0] PENALTY_RESET  /*verilator public*/ = 32'h0014_6412;  // P1 18, P2' 100, AD cap 20, AD weight 0 (off)
   localparam logic [31:0] CONFIG_RESET   /*verilator public*/ = 32'h0000_7131;  // rsad, all stages on, tol 1
   localparam logic [31:0] CTRL_MASK      = 32'h0000_0005;  // ENABLE, HOLD (SOFT_RESET reads 0)
   localparam logic [31:0] CONFIG_MASK    = 32'h7F03_7733;
   localparam logic [31:0] PENALTY_MASK   = 32'h0FFF_FFFF;
   localparam logic [31:0] IRQ_MASK       = 32'h0000_0003;
+  // FEATURES: the run-time levers of the build, one bit each (the rest reserved, 0).
+  localparam int FEATURES_UNIQUENESS_BIT /*verilator public*/ = 0;
+  localparam int FEATURES_AD_TERM_BIT    /*verilator public*/ = 1;
+  localparam logic [31:0] FEATURES_VALUE /*verilator public*/ =
+      (UNIQUENESS != 0 ? 32'd1 << FEATURES_UNIQUENESS_BIT : 32'd0) | (AD_TERM != 0 ? 32'd1 << FEATURES_AD_TERM_BIT : 32'd0);
   localparam int CENSUS_WIDTH  = 9;  // the window of sgm_census_unit: 9 x CENSUS_H
   localparam int CENSUS_HEIGHT = CENSUS_H;
   localparam int SOFT_RESET_CYCLES = 4;
@@ -151,7 +160,8 @@ module sgm_axi #(
 
   function automatic logic defined(input logic [ADDR_W-1:0] a);
     case (a)
-      ADDR_ID, ADDR_D, ADDR_MAX_WIDTH, ADDR_MAX_HEIGHT, ADDR_CENSUS, ADDR_MIN_WIDTH, ADDR_LANES, ADDR_CTRL, ADDR_FRAME_SIZE, ADDR_PENALTY,
+      ADDR_ID, ADDR_D, ADDR_MAX_WIDTH, ADDR_MAX_HEIGHT, ADDR_CENSUS, ADDR_MIN_WIDTH, ADDR_LANES, ADDR_FEATURES, ADDR_CTRL,
+      ADDR_FRAME_SIZE, ADDR_PENALTY,
       ADDR_CONFIG, ADDR_STATUS, ADDR_FRAMES, ADDR_ERROR, ADDR_ERROR_COUNT, ADDR_LAST_SIZE, ADDR_IRQ_ENABLE,
       ADDR_IRQ_STATUS: defined = 1'b1;
       default: defined = 1'b0;
@@ -242,7 +252,10 @@ module sgm_axi #(
 
   assign s_tready_o = core_tready && !hold_input;
 
-  sgm_top #(.D(D), .MAX_WIDTH(MAX_WIDTH), .MAX_HEIGHT(MAX_HEIGHT), .CENSUS_H(CENSUS_H), .LANES(LANES)) u_core (
+  sgm_top #(
+    .D(D), .MAX_WIDTH(MAX_WIDTH), .MAX_HEIGHT(MAX_HEIGHT), .CENSUS_H(CENSUS_H), .LANES(LANES), .UNIQUENESS(UNIQUENESS),
+    .AD_TERM(AD_TERM)
+  ) u_core (
     .clk_i         (clk_i),
     .rst_ni        (rst_ni && !core_reset),
     .s_tdata_i     (s_tdata_i),
@@ -325,6 +338,7 @@ module sgm_axi #(
       ADDR_CENSUS:      reg_rdata = {16'd0, 8'(CENSUS_HEIGHT), 8'(CENSUS_WIDTH)};
       ADDR_MIN_WIDTH:   reg_rdata = 32'(core_min_width);
       ADDR_LANES:       reg_rdata = 32'(LANES);
+      ADDR_FEATURES:    reg_rdata = FEATURES_VALUE;
       ADDR_CTRL:        reg_rdata = ctrl_q;
       ADDR_FRAME_SIZE:  reg_rdata = frame_size_q;
       ADDR_PENALTY:     reg_rdata = penalty_q;

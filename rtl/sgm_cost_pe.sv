@@ -11,7 +11,7 @@
 // The caller keeps Cmax + (W T) >> 3 below 2^CBITS (sgm_stream_ctrl rejects
 // other settings), so the sum never wraps.
 //
-// Parameters: none (the disparity only enters through outside_i).
+// Parameters: NB census bits, AD_TERM (the disparity only enters through outside_i).
 // Latency: 3 enabled cycles. Stage A registers the rank difference (signed),
 // the Hamming distance as its two weighted counts (sgm_popcount ones1_o + 2
 // ones2_o; the popcount with its own final adder was the 5-lane core's critical
@@ -23,9 +23,13 @@
 // absolute value or output mux. Beside them, stage A registers min(AD, T) (T when
 // outside), stage B its product with W (four shifted copies, divided by 8),
 // and stage C adds the two.
+// AD_TERM = 0 builds no AD term (no min, product or sum; the gray and AD
+// inputs are ignored, sgm_stream_ctrl drops frames that ask for it): stage C
+// then registers the census cost alone, so the latency stays 3.
 // Throughput: one cost per enabled cycle. No control registers, no reset.
 module sgm_cost_pe #(
   parameter int  NB    = 44,
+  parameter int  AD_TERM = 1,   // 1: the AD term is built; 0: not (C = the census cost)
   localparam int RKW   = $clog2(NB + 1),
   localparam int CBITS = $clog2(2 * NB + 1)
 ) (
@@ -70,13 +74,26 @@ module sgm_cost_pe #(
   end
 
   // Stage A, AD term: |gray_L - gray_R| from the two differences (the one that
-  // does not borrow), truncated at T.
-  wire [8:0] gd_lr = {1'b0, lgray_i} - {1'b0, rgray_i};
-  wire [7:0] gd_rl = rgray_i - lgray_i;
-  wire [7:0] ad    = gd_lr[8] ? gd_rl : gd_lr[7:0];
-  logic [7:0] adm_q;  // min(AD, T), T outside the image
-  always_ff @(posedge clk_i) begin
-    if (en_i) adm_q <= outside_i || ad > ad_cap_i ? ad_cap_i : ad;
+  // does not borrow), truncated at T; stage B its product with W, divided by 8
+  // (below 2^CBITS: see the header).
+  logic [CBITS-1:0] term_q;
+  if (AD_TERM != 0) begin : g_ad
+    wire [8:0] gd_lr = {1'b0, lgray_i} - {1'b0, rgray_i};
+    wire [7:0] gd_rl = rgray_i - lgray_i;
+    wire [7:0] ad    = gd_lr[8] ? gd_rl : gd_lr[7:0];
+    logic [7:0] adm_q;  // min(AD, T), T outside the image
+    always_ff @(posedge clk_i) begin
+      if (en_i) adm_q <= outside_i || ad > ad_cap_i ? ad_cap_i : ad;
+    end
+    wire [11:0] prod = (ad_weight_i[0] ? 12'(adm_q) : 12'd0) + (ad_weight_i[1] ? 12'(adm_q) << 1 : 12'd0) +
+                       (ad_weight_i[2] ? 12'(adm_q) << 2 : 12'd0) + (ad_weight_i[3] ? 12'(adm_q) << 3 : 12'd0);
+    always_ff @(posedge clk_i) begin
+      if (en_i) term_q <= prod[3 +: CBITS];
+    end
+    wire unused_prod = ^{prod[2:0], prod[11:3+CBITS]};  // the division by 8; above 2^CBITS: excluded
+  end else begin : g_no_ad
+    assign term_q = '0;
+    wire unused_ad = ^{lgray_i, rgray_i, ad_cap_i, ad_weight_i};
   end
 
   // Stage B: cost = rt_op + ham_op + rt_cin.
@@ -95,19 +112,11 @@ module sgm_cost_pe #(
   wire             rt_cin  = !out_q && use_rt && neg;
 
   logic [CBITS-1:0] cen_q;   // the census cost
-  logic [CBITS-1:0] term_q;  // (W min(AD, T)) >> 3: below 2^CBITS (see the header)
-  wire  [11:0]      prod = (ad_weight_i[0] ? 12'(adm_q) : 12'd0) + (ad_weight_i[1] ? 12'(adm_q) << 1 : 12'd0) +
-                           (ad_weight_i[2] ? 12'(adm_q) << 2 : 12'd0) + (ad_weight_i[3] ? 12'(adm_q) << 3 : 12'd0);
   always_ff @(posedge clk_i) begin
-    if (en_i) begin
-      cen_q  <= rt_op + ham_op + ham2_op + CBITS'(rt_cin);
-      term_q <= prod[3 +: CBITS];
-    end
+    if (en_i) cen_q <= rt_op + ham_op + ham2_op + CBITS'(rt_cin);
   end
 
-  wire unused_prod = ^{prod[2:0], prod[11:3+CBITS]};  // the division by 8; above 2^CBITS: excluded
-
-  // Stage C: C = census cost + AD term (no wrap: see the header).
+  // Stage C: C = census cost + AD term (no wrap: see the header; AD_TERM = 0: + 0).
   always_ff @(posedge clk_i) begin
     if (en_i) cost_o <= cen_q + term_q;
   end

@@ -18,13 +18,19 @@
 // 0, where the PE outputs Cmax.
 //
 // Structure: s1 input registers and the delay line (D taps of (NB + RKW + 8) bit
-// registers, 58 / 95: census, rank and gray, tap 0 = the slot's own right census; with K > 1 the
+// registers, 58 / 95: census, rank and gray (AD_TERM = 0: 50 / 87), tap 0 = the slot's own right census; with K > 1 the
 // K - 1 slots between two taps are one sgm_delay_ram of (D - 1) taps' width:
 // a (K - 1)-word distributed RAM at a rotating pointer), s2 .. s4
 // the three PE stages (sgm_cost_pe).
 //
+// AD_TERM = 0 builds no AD term: the PEs without it (sgm_cost_pe), the delay
+// line without the gray (NB + RKW bit taps), no weight, cap or left gray
+// registers; the AD inputs are ignored (sgm_stream_ctrl drops frames that ask
+// for the term). The latency is the same.
+//
 // Parameters: D disparities, CW column bits, NB census bits (44 for the 9x5 census,
-// 80 for the 9x9), LANES (K >= 1); RKW rank bits and CBITS cost bits follow.
+// 80 for the 9x9), LANES (K >= 1), AD_TERM (1: the AD term is built, 0: not);
+// RKW rank bits and CBITS cost bits follow.
 // Latency: LATENCY = 4 slots (1 + the PE's 3) for every parameter value:
 // cost_o, col_o, valid_o during slot t belong to the input of slot t - 4.
 // cost_o[d*CBITS +: CBITS] = C(p, d) (0 .. 2 NB). Throughput: one slot per enabled cycle.
@@ -33,6 +39,7 @@ module sgm_cost_volume #(
   parameter int  CW    = 11,
   parameter int  NB    = 44,
   parameter int  LANES /*verilator public*/ = 1,
+  parameter int  AD_TERM /*verilator public*/ = 1,
   localparam int RKW   = $clog2(NB + 1),
   localparam int CBITS = $clog2(2 * NB + 1)
 ) (
@@ -56,15 +63,14 @@ module sgm_cost_volume #(
 );
 
   localparam int LATENCY /*verilator public*/ = 4;
-  localparam int EW = NB + RKW + 8;  // delay line entry: {gray, rank, census}
+  localparam int GW = AD_TERM != 0 ? 8 : 0;  // the gray in the delay line
+  localparam int EW = NB + RKW + GW;  // delay line entry: {gray, rank, census}
 
   // ------------------------------------------------------------ s1
   logic [NB-1:0]  lcensus1_q;
   logic [RKW-1:0] lrank1_q;
   logic [CW-1:0] col1_q, col2_q, col3_q;
   logic [1:0]    mode1_q, mode2_q;
-  logic [7:0]    lgray1_q, adcap1_q;
-  logic [3:0]    adw1_q, adw2_q;
   logic          valid1_q, valid2_q, valid3_q;
   logic [EW-1:0]       tap0_q;  // tap 0
   logic [(D-1)*EW-1:0] taps_q;  // taps 1 .. D-1
@@ -76,19 +82,36 @@ module sgm_cost_volume #(
       lrank1_q   <= lrank_i;
       col1_q     <= col_i;
       mode1_q    <= mode_i;
-      lgray1_q   <= lgray_i;
-      adcap1_q   <= ad_cap_i;
-      adw1_q     <= ad_weight_i;
       col2_q     <= col1_q;
       mode2_q    <= mode1_q;
-      adw2_q     <= adw1_q;
       col3_q     <= col2_q;
       col_o      <= col3_q;
     end
   end
 
-  always_ff @(posedge clk_i) begin
-    if (en_i) tap0_q <= {rgray_i, rrank_i, rcensus_i};
+  // The AD term's operands: the left gray and the cap with stage A's slot, the
+  // weight with stage B's (AD_TERM = 0: none; the PEs ignore their AD inputs).
+  logic [7:0] lgray1_q, adcap1_q;
+  logic [3:0] adw2_q;
+  if (AD_TERM != 0) begin : g_ad
+    logic [3:0] adw1_q;
+    always_ff @(posedge clk_i) begin
+      if (en_i) begin
+        lgray1_q <= lgray_i;
+        adcap1_q <= ad_cap_i;
+        adw1_q   <= ad_weight_i;
+        adw2_q   <= adw1_q;
+      end
+    end
+    always_ff @(posedge clk_i) begin
+      if (en_i) tap0_q <= {rgray_i, rrank_i, rcensus_i};
+    end
+  end else begin : g_no_ad
+    assign {lgray1_q, adcap1_q, adw2_q} = '0;
+    always_ff @(posedge clk_i) begin
+      if (en_i) tap0_q <= {rrank_i, rcensus_i};
+    end
+    wire unused_ad = ^{lgray_i, rgray_i, ad_cap_i, ad_weight_i};
   end
 
   // Tap d of slot n + 1 = tap d - 1 of slot n - (K - 1): taps 1 .. D-1 are taps
@@ -104,13 +127,19 @@ module sgm_cost_volume #(
   // ------------------------------------------------------------ s2 .. s4: PEs
   for (genvar d = 0; d < D; d++) begin : g_pe
     wire outside;  // x - d < 0
+    wire [7:0] rgray;  // the right gray at x - d (AD_TERM = 0: none)
+    if (AD_TERM != 0) begin : g_gray
+      assign rgray = line[d*EW+NB+RKW +: GW];
+    end else begin : g_no_gray
+      assign rgray = '0;
+    end
     if (d == 0) begin : g_d0
       assign outside = 1'b0;
     end else begin : g_dn
       assign outside = {{(32-CW){1'b0}}, col1_q} < 32'(d);
     end
 
-    sgm_cost_pe #(.NB(NB)) u_pe (
+    sgm_cost_pe #(.NB(NB), .AD_TERM(AD_TERM)) u_pe (
       .clk_i     (clk_i),
       .en_i      (en_i),
       .mode_i    (mode2_q),
@@ -120,7 +149,7 @@ module sgm_cost_volume #(
       .rrank_i   (line[d*EW+NB +: RKW]),
       .outside_i (outside),
       .lgray_i   (lgray1_q),
-      .rgray_i   (line[d*EW+NB+RKW +: 8]),
+      .rgray_i   (rgray),
       .ad_cap_i  (adcap1_q),
       .ad_weight_i(adw2_q),
       .cost_o    (cost_o[d*CBITS +: CBITS])

@@ -82,7 +82,9 @@
 // (log2(D) + 4), MAX_WIDTH (largest width; width >= max(D, 16) required),
 // CW column bits (must hold width), RW row bits (must hold every virtual row
 // of a frame, flush rows included), LANES (K >= 1), ROW_BANKS (rows per
-// memory, a power of two: 2 with one lane and the S-side read position).
+// memory, a power of two: 2 with one lane and the S-side read position),
+// UNIQUENESS (1: unique_i is stored and gates valid_o; 0: the WTA builds no
+// uniqueness test, unique_i is ignored and lt_mem's word is one bit narrower).
 // Latency: one row plus LATENCY = 5 slots: left pixel (x, y) presented on the
 // WTA side is on the outputs after the enabled edge of S slot (x, y+1) plus
 // LATENCY - 1 edges, i.e. S slot (x, y) + width + LATENCY - 1 edges.
@@ -97,6 +99,7 @@ module sgm_lr_check #(
   parameter int RW        /*verilator public*/ = 11,
   parameter int LANES     /*verilator public*/ = 1,
   parameter int ROW_BANKS /*verilator public*/ = 2,
+  parameter int UNIQUENESS /*verilator public*/ = 1,
   localparam int LD       = $clog2(D),
   localparam int LATENCY  /*verilator public*/ = 5
 ) (
@@ -135,7 +138,8 @@ module sgm_lr_check #(
   localparam int BW  = $clog2(ROW_BANKS);    // bank bits (row mod ROW_BANKS)
   localparam int MW  = ROW_BANKS * MAX_WIDTH; // words per memory
   localparam int MAW = $clog2(MW);
-  localparam int LW  = LD + DW + 1;     // lt_mem word {frame pixel, unique, d, disp} has LW + 1 bits
+  localparam int UB  = UNIQUENESS != 0 ? 1 : 0;  // the unique flag in lt_mem's word
+  localparam int LW  = LD + DW + UB;    // lt_mem word {frame pixel, unique, d, disp} has LW + 1 bits (no unique: UB = 0)
 
   // Word address of column col in bank b.
   function automatic logic [MAW-1:0] mem_addr(input logic [BW-1:0] b, input logic [CW-1:0] col);
@@ -296,8 +300,15 @@ module sgm_lr_check #(
   // validity comes from that flag, never from the position alone (a slot of an
   // earlier frame still in flight may have a row inside the next frame).
   logic [LW:0] lt_mem [0:MW-1];
+  wire  [LW:0] lt_word;
+  if (UNIQUENESS != 0) begin : g_uniq_word
+    assign lt_word = {wta_valid_i, unique_i, d_i, disp_i};
+  end else begin : g_word
+    assign lt_word = {wta_valid_i, d_i, disp_i};
+    wire unused_unique = unique_i;
+  end
   always_ff @(posedge clk_i) begin
-    if (en_i) lt_mem[mem_addr(wta_row_i[BW-1:0], wta_col_i)] <= {wta_valid_i, unique_i, d_i, disp_i};
+    if (en_i) lt_mem[mem_addr(wta_row_i[BW-1:0], wta_col_i)] <= lt_word;
   end
 
   // ------------------------------------------------------------ R1
@@ -352,6 +363,12 @@ module sgm_lr_check #(
   wire          r1_ok   = r1o_col_q >= CW'(r1_d);          // x - d >= 0
   wire [CW-1:0] r1_xr   = r1o_col_q - CW'(r1_d);
   wire          r1_real = r1o_real_q && r1o_word_q[LW];  // (x, y-1) was a pixel of this frame
+  wire          r1_uniq;  // the winner passed the uniqueness test (not built: always)
+  if (UNIQUENESS != 0) begin : g_uniq_flag
+    assign r1_uniq = r1o_word_q[DW + LD];
+  end else begin : g_flag
+    assign r1_uniq = 1'b1;
+  end
 
   logic [LD-1:0] r2_dr_q;
   logic [LD-1:0] r2_d_q;
@@ -370,7 +387,7 @@ module sgm_lr_check #(
     if (en_i) begin
       r2_d_q    <= r1_d;
       r2_disp_q <= r1o_word_q[0 +: DW];
-      r2_uniq_q <= r1o_word_q[DW + LD];
+      r2_uniq_q <= r1_uniq;
       r2_ok_q   <= r1_ok;
       r2_col_q  <= r1o_col_q;
       r2_row_q  <= r1o_row_q;

@@ -14,7 +14,9 @@
 // next frame. A frame whose configuration is out of range (width outside
 // MIN_WIDTH .. MAX_WIDTH, height outside 9 .. MAX_HEIGHT, P2' below P1, cost
 // mode 3, uniqueness ratio above 99, an AD term whose largest value added to the
-// mode's Cmax leaves the cost word) is dropped whole.
+// mode's Cmax leaves the cost word) is dropped whole, and so is a frame that asks
+// for a run-time lever the build lacks (a uniqueness ratio other than 0 with
+// UNIQUENESS = 0, an AD weight other than 0 with AD_TERM = 0).
 //
 // Configuration is sampled with the tuser beat's handshake (kept per input
 // buffer entry) and applied when that frame starts; the P2 table is refilled then (lut_start_o) and the
@@ -29,7 +31,9 @@
 // Parameters: MAX_WIDTH, MIN_WIDTH (>= max(D, 16)), MAX_HEIGHT, NB census bits (the
 // cost word holds 0 .. 2^CBITS - 1, CBITS = bits of 2 NB), XW/YW column/row
 // bits (rows count on past the frame while flushing: MAX_HEIGHT + flush rows
-// must fit YW bits), PW penalty bits, DW disparity bits (DW <= 15), FIFO_DEPTH.
+// must fit YW bits), PW penalty bits, DW disparity bits (DW <= 15), FIFO_DEPTH,
+// UNIQUENESS and AD_TERM (sgm_top's: whether the build has the uniqueness test
+// and the AD term; 0 rejects frames that set them).
 // Throughput: one beat per cycle in both directions when the output is ready.
 module sgm_stream_ctrl #(
   parameter int MAX_WIDTH  = 1280,
@@ -40,7 +44,9 @@ module sgm_stream_ctrl #(
   parameter int YW         = 11,
   parameter int PW         = 8,
   parameter int DW         = 10,
-  parameter int FIFO_DEPTH = 4
+  parameter int FIFO_DEPTH = 4,
+  parameter int UNIQUENESS = 1,
+  parameter int AD_TERM    = 1
 ) (
   input  wire                 clk_i,
   input  wire                 rst_ni,
@@ -136,7 +142,7 @@ module sgm_stream_ctrl #(
   // The range check of the configuration (in range: MIN_WIDTH .. MAX_WIDTH columns,
   // 9 .. MAX_HEIGHT rows, P2' >= P1 (the golden model's contract), cost mode 0, 1
   // or 2; 3 is not a mode; uniqueness ratio 0 .. 99; Cmax of the mode (NB, or 2 NB
-  // unified) + (W T) >> 3 within the cost word) is done as the word is written and kept with it, so
+  // unified) + (W T) >> 3 within the cost word; no lever the build lacks) is done as the word is written and kept with it, so
   // that the start-of-frame decision reads one flag (its comparisons behind the
   // entry's distributed RAM were the 5-lane core's critical path at 95.8 MHz).
   // The AD term's largest value (W T) >> 3 added to the mode's Cmax stays within
@@ -146,9 +152,11 @@ module sgm_stream_ctrl #(
   wire [9:0]  ad_cmax = cfg_mode_i == 2'd2 ? 10'(2 * NB) : 10'(NB);
   wire        ad_fits = ad_cmax + 10'(ad_max[11:3]) <= 10'((1 << CBITS) - 1);
   wire        unused_ad = ^ad_max[2:0];
+  // A lever the build lacks must be off (UNIQUENESS / AD_TERM = 0).
+  wire        has_levers = (UNIQUENESS != 0 || cfg_unique_i == 7'd0) && (AD_TERM != 0 || cfg_ad_weight_i == 4'd0);
   wire cfg_ok = cfg_width_i >= XW'(MIN_WIDTH) && cfg_width_i <= XW'(MAX_WIDTH) &&
                 cfg_height_i >= YW'(9) && cfg_height_i <= YW'(MAX_HEIGHT) &&
-                cfg_p2_i >= cfg_p1_i && cfg_mode_i != 2'd3 && cfg_unique_i <= 7'd99 && ad_fits;
+                cfg_p2_i >= cfg_p1_i && cfg_mode_i != 2'd3 && cfg_unique_i <= 7'd99 && ad_fits && has_levers;
   localparam int CFGW = XW + YW + 2 * PW + 32;
   logic [CFGW-1:0] pend_q [0:1];
   always_ff @(posedge clk_i) begin

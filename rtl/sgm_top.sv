@@ -18,10 +18,16 @@
 // cost volume, the path engine (K cycles for the 0 degree loop), the WTA and
 // the LR check's S side, and the LR check's memories restore raster order for
 // the stages behind it (fill, snap, median, output), LR_LAG rows behind the
-// raster census position.
+// raster census position. UNIQUENESS and AD_TERM (1, the default, or 0) build the
+// two run-time levers that cost area, the uniqueness ratio (sgm_wta, the unique
+// flag in sgm_lr_check) and the AD term (sgm_cost_volume's PEs and the gray in its
+// delay line); with 0 the logic is not built, the latencies are the same, and a
+// frame that asks for the missing lever (cfg_unique_i != 0, cfg_ad_weight_i != 0)
+// is dropped with error_o[3] (sgm_axi's FEATURES register reports the build).
 // Frame constraints: MIN_FRAME_WIDTH (max(D, 16); with many lanes at least the
 // engine's K SKEW + 1) <= width <= MAX_WIDTH, 9 <= height <= MAX_HEIGHT
-// (frames outside are dropped and flagged in error_o[3], as are P2' < P1 and cfg_mode_i = 3).
+// (frames outside are dropped and flagged in error_o[3], as are P2' < P1, cfg_mode_i = 3
+// and a lever the build lacks).
 // Throughput: one pixel per clock while a frame streams; after its last input
 // pixel a frame needs about 6 more lines of flush (8 with the 9x9 census; K lanes add LR_LAG,
 // about 2K - 2 lines; input stalled) and, at its start, the P2 table fill (about 2 x 256 cycles).
@@ -33,6 +39,8 @@ module sgm_top #(
   parameter int MAX_HEIGHT /*verilator public*/ = 1024,
   parameter int CENSUS_H   /*verilator public*/ = 5,
   parameter int LANES      /*verilator public*/ = 1,
+  parameter int UNIQUENESS /*verilator public*/ = 1,  // the uniqueness ratio is built (0: not)
+  parameter int AD_TERM    /*verilator public*/ = 1,  // the AD term is built (0: not)
   localparam int XW        = $clog2(MAX_WIDTH + 1),
   // Lanes (docs/reschedule.md "The top's wiring at K lanes"). The engine's
   // SKEW (sgm_path_engine owns the formula; mirrored here for the deal, checked
@@ -140,7 +148,9 @@ module sgm_top #(
     .YW        (RW),
     .PW        (8),
     .DW        (DW),
-    .FIFO_DEPTH(4)
+    .FIFO_DEPTH(4),
+    .UNIQUENESS(UNIQUENESS),
+    .AD_TERM   (AD_TERM)
   ) u_ctrl (
     .clk_i         (clk_i),
     .rst_ni        (rst_ni),
@@ -337,7 +347,7 @@ module sgm_top #(
   logic [XW-1:0]      unused_col2;  // the engine takes the column COST_LATENCY slots earlier
   logic               valid2;
 
-  sgm_cost_volume #(.D(D), .CW(XW), .NB(NB), .LANES(LANES)) u_cost (
+  sgm_cost_volume #(.D(D), .CW(XW), .NB(NB), .LANES(LANES), .AD_TERM(AD_TERM)) u_cost (
     .clk_i     (clk_i),
     .rst_ni    (rst_ni),
     .en_i      (en),
@@ -411,7 +421,7 @@ module sgm_top #(
   logic [RW-1:0] row4;
   logic          valid4;
 
-  sgm_wta #(.D(D), .SW(SW), .CW(XW), .RW(RW)) u_wta (
+  sgm_wta #(.D(D), .SW(SW), .CW(XW), .RW(RW), .UNIQUENESS(UNIQUENESS)) u_wta (
     .clk_i      (clk_i),
     .rst_ni     (rst_ni),
     .en_i       (en),
@@ -444,7 +454,8 @@ module sgm_top #(
   logic [XW-1:0] col5;
   logic [RW-1:0] row5;
   sgm_lr_check #(
-    .D(D), .SW(SW), .DW(DW), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(RW), .LANES(LANES), .ROW_BANKS(LR_BANKS)
+    .D(D), .SW(SW), .DW(DW), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(RW), .LANES(LANES), .ROW_BANKS(LR_BANKS),
+    .UNIQUENESS(UNIQUENESS)
   ) u_lr (
     .clk_i       (clk_i),
     .rst_ni      (rst_ni),

@@ -45,8 +45,14 @@
 //        bits 1..0, Q3: 3..2, Q2: 5..4, Q1: 6), 100 m = 64 m + 32 m + 4 m
 //        (P: 64 m + 32 m, Q3: + 4 m), compared in Q0.
 //
+// UNIQUENESS = 0 builds no uniqueness test: the nodes carry {b, a, m, d} only
+// (no sec / exf / exl, no candidate selects), no product, no U pipeline;
+// unique_o is constant 1 and uniq_i is ignored (sgm_stream_ctrl drops frames
+// that ask for a ratio). The latency is the same.
+//
 // Parameters: D disparities (power of two, 16 .. 128), SW width of S,
-// CW column bits, RW row bits of the slot position (passed through).
+// CW column bits, RW row bits of the slot position (passed through),
+// UNIQUENESS (1: the uniqueness test is built, 0: not).
 // Latency: LATENCY = TREE_STAGES + 5 slots (D = 16: 9, 32: 10, 64: 11, 128: 12): the
 // result of the slot presented at enabled edge n is on the outputs after
 // enabled edge n + LATENCY - 1. Throughput: one pixel per slot.
@@ -56,6 +62,7 @@ module sgm_wta #(
   parameter int SW /*verilator public*/ = 13,
   parameter int CW /*verilator public*/ = 11,
   parameter int RW /*verilator public*/ = 11,
+  parameter int UNIQUENESS /*verilator public*/ = 1,
   localparam int LD          = $clog2(D),
   localparam int DW          = LD + 4,
   localparam int TREE_STAGES = LD,                    // T0, T1 (levels 1, 2), levels 3 .. LD
@@ -80,7 +87,8 @@ module sgm_wta #(
   output logic             valid_o
 );
 
-  localparam int NW = 6 * SW + LD;  // tree node {exl, exf, sec, b, a, m, d}
+  localparam int UF = UNIQUENESS != 0 ? 3 : 0;  // uniqueness fields of a node
+  localparam int NW = (3 + UF) * SW + LD;  // tree node {exl, exf, sec, b, a, m, d} ({b, a, m, d} without them)
   localparam int UW = SW + 7;       // sec (100 - U) and 100 m: below 2^(SW+7)
   localparam logic [SW-1:0] NONE = '1;  // "no cost" of sec / exf / exl (never below a cost)
   localparam int QW = SW + 5;       // dividend / shifted divisor width (N < 2^(SW+5))
@@ -92,13 +100,11 @@ module sgm_wta #(
   logic [LATENCY*PW-1:0] pos_q;
   logic [LATENCY-1:0]    valid_q;
   logic [TREE_STAGES-1:0] sub_q;
-  logic [TREE_STAGES*7-1:0] uniq_q;  // uniq_i, likewise up to stage P
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       pos_q  <= {pos_q[(LATENCY-1)*PW-1:0], row_i, col_i};
       sub_q  <= {sub_q[TREE_STAGES-2:0], subpixel_i};
-      uniq_q <= {uniq_q[(TREE_STAGES-1)*7-1:0], uniq_i};
     end
   end
 
@@ -139,7 +145,11 @@ module sgm_wta #(
         end else begin : g_b
           assign b = s_q[(i+1)*SW +: SW];
         end
-        assign node[i*NW +: NW] = {NONE, NONE, NONE, b, a, s_q[i*SW +: SW], LD'(i)};
+        if (UNIQUENESS != 0) begin : g_u
+          assign node[i*NW +: NW] = {NONE, NONE, NONE, b, a, s_q[i*SW +: SW], LD'(i)};
+        end else begin : g_nu
+          assign node[i*NW +: NW] = {b, a, s_q[i*SW +: SW], LD'(i)};
+        end
       end
     end else begin : g_cmp
       logic [(D>>l)*NW-1:0] pick;
@@ -151,7 +161,9 @@ module sgm_wta #(
         wire          up = l == 1 ? c1_q[i] : hi_m < lo_m;
         // Uniqueness fields (level 1: two leaves, no comparison needed).
         wire [SW-1:0] sec, exf, exl;
-        if (l == 1) begin : g_pair
+        if (UNIQUENESS == 0) begin : g_none
+          assign {sec, exf, exl} = '0;  // not built: the node has no such fields
+        end else if (l == 1) begin : g_pair
           assign sec = NONE;
           assign exf = hi_m;
           assign exl = lo_m;
@@ -169,7 +181,12 @@ module sgm_wta #(
           assign exf = hi_m < lo_exf ? hi_m : lo_exf;
           assign exl = hi_exl < lo_m ? hi_exl : lo_m;
         end
-        assign pick[i*NW +: NW] = {exl, exf, sec, up ? hi[0 +: 3*SW + LD] : lo[0 +: 3*SW + LD]};
+        if (UNIQUENESS != 0) begin : g_pick_u
+          assign pick[i*NW +: NW] = {exl, exf, sec, up ? hi[0 +: 3*SW + LD] : lo[0 +: 3*SW + LD]};
+        end else begin : g_pick
+          assign pick[i*NW +: NW] = up ? hi : lo;
+          wire unused_u = ^{sec, exf, exl};
+        end
       end
       if (l >= 2) begin : g_reg
         always_ff @(posedge clk_i) begin
@@ -183,8 +200,8 @@ module sgm_wta #(
 
   // ---------------------------------------------------- P: offset operands
   wire [LD-1:0] win_d;
-  wire [SW-1:0] win_a, win_m, win_b, win_sec;
-  assign {win_sec, win_b, win_a, win_m, win_d} = g_lvl[LD].node[0 +: 4*SW+LD];  // the root's exf, exl: unused
+  wire [SW-1:0] win_a, win_m, win_b;
+  assign {win_b, win_a, win_m, win_d} = g_lvl[LD].node[0 +: 3*SW+LD];  // the root's sec: below; exf, exl: unused
 
   // den = a + b - 2m >= 0 because m is the minimum: exact in SW+1 bits.
   wire [SW:0]   den    = {1'b0, win_a} + {1'b0, win_b} - {win_m, 1'b0};
@@ -207,40 +224,54 @@ module sgm_wta #(
     end
   end
 
-  // Uniqueness: sec (100 - U) >= 100 m, by shift and add beside the division.
-  // k = 100 - U; stage P adds k[1:0] sec and 96 m, Q3 k[3:2], Q2 k[5:4], Q1 k[6]
-  // and Q3 the 4 m; Q0 compares (the output register holds the flag).
-  wire [6:0]    u_k = 7'd100 - uniq_q[(TREE_STAGES-1)*7 +: 7];
+  // Uniqueness (UNIQUENESS = 0: not built, every winner passes; uniq_i ignored).
+  // sec_times: sec (k2[1] 2 + k2[0]) 2^sh, two bits of the product by shift and add.
   function automatic logic [UW-1:0] sec_times(input logic [SW-1:0] sec, input logic [1:0] k2, input int sh);
     sec_times = (k2[0] ? UW'(sec) << sh : '0) + (k2[1] ? UW'(sec) << (sh + 1) : '0);
   endfunction
-  // uP_*: after stage P, u3_* after Q3, u2_* after Q2, u1_* after Q1.
-  logic [UW-1:0] uP_acc_q, u3_acc_q, u2_acc_q, u1_acc_q;  // the product so far
-  logic [UW-1:0] uP_m_q, u3_m_q, u2_m_q, u1_m_q;          // 96 m after P, 100 m from Q3 on
-  logic [SW-1:0] uP_sec_q, u3_sec_q, u2_sec_q;            // sec, carried to Q1
-  logic [SW-1:0] uP_m4_q;                                 // m, for Q3's 4 m
-  logic [6:2]    uP_k_q;                                  // the bits of k still to add
-  logic [6:4]    u3_k_q;
-  logic          u2_k_q;
-  always_ff @(posedge clk_i) begin
-    if (en_i) begin
-      uP_acc_q <= sec_times(win_sec, u_k[1:0], 0);
-      uP_m_q   <= (UW'(win_m) << 6) + (UW'(win_m) << 5);
-      uP_m4_q  <= win_m;
-      uP_sec_q <= win_sec;
-      uP_k_q   <= u_k[6:2];
-      u3_acc_q <= uP_acc_q + sec_times(uP_sec_q, uP_k_q[3:2], 2);
-      u3_m_q   <= uP_m_q + (UW'(uP_m4_q) << 2);
-      u3_sec_q <= uP_sec_q;
-      u3_k_q   <= uP_k_q[6:4];
-      u2_acc_q <= u3_acc_q + sec_times(u3_sec_q, u3_k_q[5:4], 4);
-      u2_m_q   <= u3_m_q;
-      u2_sec_q <= u3_sec_q;
-      u2_k_q   <= u3_k_q[6];
-      u1_acc_q <= u2_acc_q + sec_times(u2_sec_q, {1'b0, u2_k_q}, 6);
-      u1_m_q   <= u2_m_q;
-      unique_o <= u1_acc_q >= u1_m_q;
+  if (UNIQUENESS != 0) begin : g_uniq
+    // uniq_i travels with the slot up to stage P.
+    logic [TREE_STAGES*7-1:0] uniq_q;
+    always_ff @(posedge clk_i) begin
+      if (en_i) uniq_q <= {uniq_q[(TREE_STAGES-1)*7-1:0], uniq_i};
     end
+    wire [SW-1:0] win_sec = g_lvl[LD].node[3*SW+LD +: SW];
+
+    // Uniqueness: sec (100 - U) >= 100 m, by shift and add beside the division.
+    // k = 100 - U; stage P adds k[1:0] sec and 96 m, Q3 k[3:2], Q2 k[5:4], Q1 k[6]
+    // and Q3 the 4 m; Q0 compares (the output register holds the flag).
+    wire [6:0]    u_k = 7'd100 - uniq_q[(TREE_STAGES-1)*7 +: 7];
+    // uP_*: after stage P, u3_* after Q3, u2_* after Q2, u1_* after Q1.
+    logic [UW-1:0] uP_acc_q, u3_acc_q, u2_acc_q, u1_acc_q;  // the product so far
+    logic [UW-1:0] uP_m_q, u3_m_q, u2_m_q, u1_m_q;          // 96 m after P, 100 m from Q3 on
+    logic [SW-1:0] uP_sec_q, u3_sec_q, u2_sec_q;            // sec, carried to Q1
+    logic [SW-1:0] uP_m4_q;                                 // m, for Q3's 4 m
+    logic [6:2]    uP_k_q;                                  // the bits of k still to add
+    logic [6:4]    u3_k_q;
+    logic          u2_k_q;
+    always_ff @(posedge clk_i) begin
+      if (en_i) begin
+        uP_acc_q <= sec_times(win_sec, u_k[1:0], 0);
+        uP_m_q   <= (UW'(win_m) << 6) + (UW'(win_m) << 5);
+        uP_m4_q  <= win_m;
+        uP_sec_q <= win_sec;
+        uP_k_q   <= u_k[6:2];
+        u3_acc_q <= uP_acc_q + sec_times(uP_sec_q, uP_k_q[3:2], 2);
+        u3_m_q   <= uP_m_q + (UW'(uP_m4_q) << 2);
+        u3_sec_q <= uP_sec_q;
+        u3_k_q   <= uP_k_q[6:4];
+        u2_acc_q <= u3_acc_q + sec_times(u3_sec_q, u3_k_q[5:4], 4);
+        u2_m_q   <= u3_m_q;
+        u2_sec_q <= u3_sec_q;
+        u2_k_q   <= u3_k_q[6];
+        u1_acc_q <= u2_acc_q + sec_times(u2_sec_q, {1'b0, u2_k_q}, 6);
+        u1_m_q   <= u2_m_q;
+        unique_o <= u1_acc_q >= u1_m_q;
+      end
+    end
+  end else begin : g_no_uniq
+    assign unique_o = 1'b1;
+    wire unused_uniq = ^uniq_i;
   end
 
   // ---------------------------------------------------- Q3 .. Q0: one quotient bit each

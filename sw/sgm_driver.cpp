@@ -25,6 +25,11 @@ bool Driver::sizeFits(const Identity& id, uint32_t width, uint32_t height) {
   return width >= id.minWidth && width <= id.maxWidth && height >= SGM_MIN_HEIGHT && height <= id.maxHeight;
 }
 
+bool Driver::featuresFit(const Identity& id, const FrameConfig& f) {
+  return (f.uniqueness == 0 || (id.features & SGM_FEATURES_UNIQUENESS)) &&
+         (f.adWeight == 0 || (id.features & SGM_FEATURES_AD_TERM));
+}
+
 bool Driver::identify(Identity* id) {
   const uint32_t value = read(SGM_REG_ID);
   if (id) {
@@ -37,6 +42,7 @@ bool Driver::identify(Identity* id) {
     id->censusHeight = census >> SGM_CENSUS_HEIGHT_SHIFT & SGM_CENSUS_FIELD_MASK;
     id->minWidth = read(SGM_REG_MIN_WIDTH);
     id->lanes = read(SGM_REG_LANES);
+    id->features = read(SGM_REG_FEATURES);
   }
   return value == SGM_ID_VALUE;
 }

@@ -16,6 +16,8 @@
 #   SYNTH_MAX_HEIGHT MAX_HEIGHT (default 1024, the RTL default)
 #   SYNTH_CENSUS_H   CENSUS_H, census window height (5, the default, or 9: the paper's 9x9)
 #   SYNTH_LANES      LANES, row lanes of the schedule (1, the default: the raster)
+#   SYNTH_UNIQUENESS UNIQUENESS, the uniqueness ratio built (1, the default) or not (0)
+#   SYNTH_AD_TERM    AD_TERM, the AD term built (1, the default) or not (0)
 #   SYNTH_OUT        output directory of this target (created by make)
 #   SYNTH_DEFINES    Verilog macros to define, space-separated (the ECP5 flow:
 #                    SGM_DELAY_CHAIN, rtl/sgm_delay_ram.sv, and SGM_ECP5_GLOBAL,
@@ -37,6 +39,8 @@ set max_width  [env_or SYNTH_MAX_WIDTH 1280]
 set max_height [env_or SYNTH_MAX_HEIGHT 1024]
 set census_h   [env_or SYNTH_CENSUS_H 5]
 set lanes      [env_or SYNTH_LANES 1]
+set uniqueness [env_or SYNTH_UNIQUENESS 1]
+set ad_term    [env_or SYNTH_AD_TERM 1]
 set out        [env_or SYNTH_OUT build/synth]
 set defines    [env_or SYNTH_DEFINES ""]
 
@@ -44,7 +48,8 @@ set defines    [env_or SYNTH_DEFINES ""]
 # elaboration needs to know (as synth_ecp5 reads it: a black box).
 if {"SGM_ECP5_GLOBAL" in $defines} { yosys read_verilog -lib +/ecp5/cells_bb.v }
 yosys read_verilog -sv {*}[lmap m $defines {string cat -D $m}] {*}[lsort [glob $rtl/*.sv]]
-yosys chparam -set D $d -set MAX_WIDTH $max_width -set MAX_HEIGHT $max_height -set CENSUS_H $census_h -set LANES $lanes sgm_top
+yosys chparam -set D $d -set MAX_WIDTH $max_width -set MAX_HEIGHT $max_height -set CENSUS_H $census_h -set LANES $lanes \
+  -set UNIQUENESS $uniqueness -set AD_TERM $ad_term sgm_top
 yosys hierarchy -check -top sgm_top
 yosys proc
 yosys tee -o $out/check.txt check

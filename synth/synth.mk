@@ -2,7 +2,7 @@
 # paper's Table III (included by the main Makefile; synth/README.md explains
 # the flow, the outputs and the figures).
 #
-#   make synth [D=64] [MAX_WIDTH=1280] [CENSUS=9x5|9x9] [LANES=1]
+#   make synth [D=64] [MAX_WIDTH=1280] [CENSUS=9x5|9x9] [LANES=1] [UNIQUENESS=1] [AD_TERM=1]
 #                                        xc7, xc6s, generic and iCE40 synthesis of
 #                                        that configuration (CENSUS=9x9: the paper's
 #                                        census window, sgm_top's CENSUS_H = 9), the
@@ -14,6 +14,13 @@
 #                                        one target (then make synth-summary)
 #   make synth-flat                      xc7 of the whole core flattened in one run
 #                                        (cross-stage optimisation, slow for D = 64)
+#   make synth-levers [D=64]             what the two build-time levers cost: sgm_wta with
+#                                        UNIQUENESS 1 and 0, sgm_cost_volume (one lane) with
+#                                        AD_TERM 1 and 0, each alone, synth_ecp5 -abc9
+#                                        -> build/synth/levers-d<D>/summary.md
+#
+# UNIQUENESS=0 / AD_TERM=0 build the core without the uniqueness ratio / the AD term
+# (sgm_top's build parameters, docs/rtl.md "Build parameters"); the default 1 builds them.
 #
 # Yosys and nextpnr run one at a time (flock on build/synth/.lock, also under
 # make -j), each under `timeout $(SYNTH_TIMEOUT)`. The results depend on rtl/*.sv and
@@ -42,7 +49,9 @@ SYNTH_DIR    := $(BUILD)/synth
 SYNTH_CENSUS ?= $(if $(CENSUS),$(CENSUS),9x5)
 SYNTH_CENSUS_H = $(if $(filter 9x9,$(SYNTH_CENSUS)),9,$(if $(filter 9x5,$(SYNTH_CENSUS)),5,$(error CENSUS=$(SYNTH_CENSUS): expected 9x5 or 9x9)))
 SYNTH_LANES  ?= $(if $(LANES),$(LANES),1)
-SYNTH_CFG     = d$(D)-w$(MAX_WIDTH)$(if $(filter 9,$(SYNTH_CENSUS_H)),-c9x9)$(if $(filter-out 1,$(SYNTH_LANES)),-k$(SYNTH_LANES))
+SYNTH_UNIQUENESS ?= $(if $(UNIQUENESS),$(UNIQUENESS),1)
+SYNTH_AD_TERM    ?= $(if $(AD_TERM),$(AD_TERM),1)
+SYNTH_CFG     = d$(D)-w$(MAX_WIDTH)$(if $(filter 9,$(SYNTH_CENSUS_H)),-c9x9)$(if $(filter-out 1,$(SYNTH_LANES)),-k$(SYNTH_LANES))$(if $(filter 0,$(SYNTH_UNIQUENESS)),-u0)$(if $(filter 0,$(SYNTH_AD_TERM)),-ad0)
 SYNTH_OUT     = $(SYNTH_DIR)/$(SYNTH_CFG)
 SYNTH_LOOP    = $(SYNTH_DIR)/ice40-loop-d$(ICE40_LOOP_D)
 SYNTH_LOCK    = $(SYNTH_DIR)/.lock
@@ -95,13 +104,13 @@ define synth_yosys
 	@echo "synth: $(1), D=$(D) MAX_WIDTH=$(MAX_WIDTH) census $(SYNTH_CENSUS) (log: $(@D)/yosys.log)"
 	@start=$$(date +%s); \
 	 commit=$$(git log -1 --format=%h -- rtl 2>/dev/null)$$(git status --porcelain -- rtl 2>/dev/null | grep -q . && echo -dirty); \
-	 SYNTH_RTL=rtl SYNTH_D=$(D) SYNTH_MAX_WIDTH=$(MAX_WIDTH) SYNTH_MAX_HEIGHT=$(SYNTH_MAX_HEIGHT) SYNTH_CENSUS_H=$(SYNTH_CENSUS_H) SYNTH_LANES=$(SYNTH_LANES) SYNTH_OUT=$(@D) $(3) \
+	 SYNTH_RTL=rtl SYNTH_D=$(D) SYNTH_MAX_WIDTH=$(MAX_WIDTH) SYNTH_MAX_HEIGHT=$(SYNTH_MAX_HEIGHT) SYNTH_CENSUS_H=$(SYNTH_CENSUS_H) SYNTH_LANES=$(SYNTH_LANES) SYNTH_UNIQUENESS=$(SYNTH_UNIQUENESS) SYNTH_AD_TERM=$(SYNTH_AD_TERM) SYNTH_OUT=$(@D) $(3) \
 	   flock $(SYNTH_LOCK) timeout $(SYNTH_TIMEOUT) yosys -q -l $(@D)/yosys.log -c $(2) > $(@D)/yosys.out 2>&1; rc=$$?; \
 	 if [ $$rc != 0 ]; then \
 	   if [ $$rc = 124 ]; then echo "synth: $(1): Yosys timed out after $(SYNTH_TIMEOUT) s (SYNTH_TIMEOUT)"; \
 	   else echo "synth: $(1): Yosys failed (exit $$rc):"; grep -E '^ERROR' $(@D)/yosys.log | tail -5; fi; exit 1; fi; \
 	 { echo "target=$(1)"; echo "d=$(D)"; echo "max_width=$(MAX_WIDTH)"; echo "max_height=$(SYNTH_MAX_HEIGHT)"; echo "census=$(SYNTH_CENSUS)"; \
-	   echo "yosys=$$(yosys -V)"; echo "rtl_commit=$$commit"; \
+	   echo "uniqueness=$(SYNTH_UNIQUENESS)"; echo "ad_term=$(SYNTH_AD_TERM)"; echo "yosys=$$(yosys -V)"; echo "rtl_commit=$$commit"; \
 	   echo "date=$$(date -u +%Y-%m-%dT%H:%M:%SZ)"; echo "seconds=$$(( $$(date +%s) - start ))"; } > $(@D)/meta.txt; \
 	 echo "synth: $(1) done in $$(( $$(date +%s) - start )) s"
 	@touch $@
@@ -143,3 +152,24 @@ $(SYNTH_LOOP)/done: synth/sgm_path_loop.sv synth/ice40_loop.tcl rtl/sgm_path_pe.
 	   echo "date=$$(date -u +%Y-%m-%dT%H:%M:%SZ)"; echo "seconds=$$(( $$(date +%s) - start ))"; } > $(@D)/meta.txt; \
 	 echo "synth: loop harness: $$(grep -o 'Max frequency.*' $(@D)/nextpnr.log | tail -1) ($$(( $$(date +%s) - start )) s)"
 	@touch $@
+
+# What the two build-time levers cost (synth/levers.tcl): each module alone at D, one lane,
+# plain synth_ecp5 -abc9, with the lever built and not; the table in summary.md (synth/README.md,
+# "The build-time levers").
+SYNTH_LEVERS_DIR = $(SYNTH_DIR)/levers-d$(D)
+.PHONY: synth-levers
+synth-levers: synth/levers.tcl $(RTL_SRC) | check-tools
+	@mkdir -p $(SYNTH_LEVERS_DIR)
+	@for top in sgm_wta sgm_cost_volume; do for lever in 1 0; do o=$(SYNTH_LEVERS_DIR)/$$top-$$lever; mkdir -p $$o; \
+	   echo "synth-levers: $$top, lever $$lever, D=$(D) (log: $$o/yosys.log)"; \
+	   SYNTH_LEVER_TOP=$$top SYNTH_LEVER=$$lever SYNTH_D=$(D) SYNTH_OUT=$$o \
+	     flock $(SYNTH_LOCK) timeout $(SYNTH_TIMEOUT) yosys -q -l $$o/yosys.log -c synth/levers.tcl > $$o/yosys.out 2>&1 || \
+	     { echo "synth-levers: Yosys failed ($$o/yosys.log)"; exit 1; }; done; done
+	@{ echo "| module (D = $(D), one lane) | lever | LUT4 | CCU2C | PFUMX | L6MUX21 | TRELLIS_FF |"; \
+	   echo "| --- | --- | --- | --- | --- | --- | --- |"; \
+	   for top in sgm_wta sgm_cost_volume; do for lever in 1 0; do f=$(SYNTH_LEVERS_DIR)/$$top-$$lever/stat.txt; \
+	     name=$$([ $$top = sgm_wta ] && echo UNIQUENESS || echo AD_TERM); \
+	     printf '| %s | %s=%s |' $$top $$name $$lever; \
+	     for c in LUT4 CCU2C PFUMX L6MUX21 TRELLIS_FF; do printf ' %s |' "$$(awk -v c=$$c '$$1 == c { n = $$2 } END { print n + 0 }' $$f)"; done; \
+	     echo; done; done; } > $(SYNTH_LEVERS_DIR)/summary.md
+	@cat $(SYNTH_LEVERS_DIR)/summary.md

@@ -81,9 +81,11 @@ Params drawParams(Rng& rng) {
   // The AD term: half the frames, up to the largest term the mode's cost word leaves.
   p.census = Vsgm_top_sgm_top::CENSUS_H == 9 ? CensusWindow::k9x9 : CensusWindow::k9x5;
   p.adWeight = rng.chance(0.5) ? 0 : rng.uniform(1, kMaxAdWeight);
-  const int room = costLimit(p.census) - maxCost(p.mode, p.census);  // (W T) >> 3 <= room
-  p.adCap = p.adWeight ? rng.uniform(0, std::min(kMaxAdCap, (8 * room + 7) / p.adWeight)) : 20;
-  while (p.adWeight && maxCost(p.mode, p.census) + (p.adWeight * p.adCap >> kAdShift) > costLimit(p.census)) --p.adCap;
+  p.adCap = p.adWeight ? rng.uniform(0, largestAdCap(p.mode, p.census, p.adWeight)) : 20;
+  // A lever the build lacks (sgm_top UNIQUENESS / AD_TERM = 0) stays off: drawn all the same,
+  // so that a case is the same in every build but for it.
+  if (!Vsgm_top_sgm_top::UNIQUENESS) p.uniqueness = 0;
+  if (!Vsgm_top_sgm_top::AD_TERM) p.adWeight = 0;
   return p;
 }
 

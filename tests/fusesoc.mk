@@ -3,7 +3,8 @@
 # directories under build/fusesoc/. Included by the main Makefile; CI runs
 # fusesoc-lint (TEST_EXTRA).
 #
-#   make fusesoc-lint    Verilator -Wall lint of sgm_axi (D=16, MAX_WIDTH=128)
+#   make fusesoc-lint    Verilator -Wall lint of sgm_axi (D=16, MAX_WIDTH=128, 9x9, 2 lanes, without
+#                        the uniqueness ratio and the AD term: the generate branches the default lint misses)
 #   make fusesoc-sim     Icarus, the file-driven testbench on make icarus's files, checked
 #   make fusesoc-synth   Yosys synth_xilinx (xc7) of sgm_axi, D=16, MAX_WIDTH=128
 

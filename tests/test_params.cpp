@@ -124,6 +124,30 @@ TEST(ParamsTest, PenaltyLimitKeepsTheWeightedSumInSixteenBits) {
     EXPECT_LT(sgm::kPathWeightSum * (sgm::maxCost(m, sgm::CensusWindow::k9x9) + sgm::kMaxPenalty), 65536) << sgm::costModeName(m);
 }
 
+// largestAdCap: hand-checked values, and for every hardware mode, census and weight it is
+// the largest cap validate() accepts (cap + 1 is refused unless already at kMaxAdCap).
+TEST(ParamsTest, LargestAdCapIsTheLargestCapValidateAccepts) {
+  using sgm::CensusWindow;
+  EXPECT_EQ(sgm::largestAdCap(CostMode::kRsad, CensusWindow::k9x5, 15), 44);     // 44 + 82 = 126 <= 127; 45: 128
+  EXPECT_EQ(sgm::largestAdCap(CostMode::kUnified, CensusWindow::k9x5, 15), 21);  // 88 + 39 = 127; 22: 88 + 41
+  EXPECT_EQ(sgm::largestAdCap(CostMode::kRt, CensusWindow::k9x5, 1), sgm::kMaxAdCap);  // 44 + 31 fits
+  EXPECT_EQ(sgm::largestAdCap(CostMode::kRt, CensusWindow::k9x9, 8), 175);       // 80 + 175 = 255
+  EXPECT_EQ(sgm::largestAdCap(CostMode::kRsad, CensusWindow::k9x5, 0), sgm::kMaxAdCap);  // off: any cap
+  EXPECT_EQ(sgm::largestAdCap(CostMode::kSad, CensusWindow::k9x5, 8), -1);        // Cmax 255 > 127
+  for (const CensusWindow census : {CensusWindow::k9x5, CensusWindow::k9x9})
+    for (const CostMode m : {CostMode::kRt, CostMode::kRsad, CostMode::kUnified})
+      for (int w = 1; w <= sgm::kMaxAdWeight; ++w) {
+        Params p;
+        p.mode = m, p.census = census, p.adWeight = w;
+        p.adCap = sgm::largestAdCap(m, census, w);
+        ASSERT_GE(p.adCap, 0);
+        EXPECT_NO_THROW(p.validate()) << sgm::costModeName(m) << " W=" << w;
+        if (p.adCap == sgm::kMaxAdCap) continue;
+        ++p.adCap;
+        EXPECT_THROW(p.validate(), sgm::Error) << sgm::costModeName(m) << " W=" << w << " T=" << p.adCap;
+      }
+}
+
 TEST(CostModes, NamesRoundTripAndUnknownThrows) {
   const std::vector<std::string> names = {"rt", "rsad", "unified", "sad", "bt", "sad+rt"};
   const auto modes = sgm::allCostModes();

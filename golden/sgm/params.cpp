@@ -1,5 +1,7 @@
 #include "sgm/params.hpp"
 
+#include <algorithm>
+
 namespace sgm {
 
 namespace {
@@ -37,6 +39,14 @@ int costLimit(CensusWindow census) {
   int bits = 0;
   while ((1 << bits) <= 2 * censusShape(census).bits) ++bits;
   return (1 << bits) - 1;
+}
+
+int largestAdCap(CostMode mode, CensusWindow census, int weight) {
+  if (weight <= 0) return kMaxAdCap;
+  const int room = costLimit(census) - maxCost(mode, census);  // (weight T) >> kAdShift <= room
+  if (room < 0) return -1;
+  // (w T) >> s <= room  <=>  w T < (room + 1) << s  <=>  T <= (((room + 1) << s) - 1) / w
+  return std::min(kMaxAdCap, (((room + 1) << kAdShift) - 1) / weight);
 }
 
 const char* censusWindowName(CensusWindow window) { return window == CensusWindow::k9x9 ? "9x9" : "9x5"; }
@@ -129,7 +139,7 @@ void Params::validate() const {
     throw Error("AD term weight " + std::to_string(adWeight) + " / cap " + std::to_string(adCap) +
                 " out of range 0.." + std::to_string(kMaxAdWeight) + " / 0.." + std::to_string(kMaxAdCap));
   if (adWeight && !isHardwareMode(mode)) throw Error("the AD term (--ad-weight) needs a census cost mode");
-  if (adWeight && maxCost(mode, census) + (adWeight * adCap >> kAdShift) > costLimit(census))
+  if (adWeight && adCap > largestAdCap(mode, census, adWeight))
     throw Error("AD term weight " + std::to_string(adWeight) + " x cap " + std::to_string(adCap) + " makes " +
                 costModeName(mode) + " costs exceed " + std::to_string(costLimit(census)) + " (the " +
                 censusWindowName(census) + " core's cost word)");

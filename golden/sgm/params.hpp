@@ -54,6 +54,11 @@ int maxCost(CostMode mode, CensusWindow census);
 // Cmax = 2 x census bits (127 for the 9x5 census, 255 for the 9x9): Cmax of the mode
 // plus the largest AD term must stay within it (Params::validate).
 int costLimit(CensusWindow census);
+// The largest AD cap T in 0 .. kMaxAdCap whose largest term (weight T) >> kAdShift added to
+// maxCost(mode, census) stays within costLimit(census) (Params::validate's rule); kMaxAdCap
+// for weight 0 (the term is off); -1 when not even T = 0 fits (a software-only mode's Cmax
+// is beyond the cost word).
+int largestAdCap(CostMode mode, CensusWindow census, int weight);
 
 constexpr int kMinFrameSide = 9;                  // smallest width and height (9x9 frame)
 constexpr int kSubpixelBits = 4;                  // disparities carry 1/16 px

@@ -31,6 +31,7 @@ struct Identity {
   uint32_t disparities = 0, maxWidth = 0, maxHeight = 0;
   uint32_t censusWidth = 0, censusHeight = 0;
   uint32_t minWidth = 0, lanes = 0;  // narrowest frame width, row lanes
+  uint32_t features = 0;  // SGM_FEATURES_* bits: the run-time levers the build has
 };
 
 // One frame's run-time configuration (the fields of FRAME_SIZE, PENALTY, CONFIG).
@@ -80,6 +81,10 @@ class Driver {
   // Whether the core of this identity takes a frame of this size (the core drops
   // any other and flags ERROR.CONFIG): minWidth <= width <= maxWidth, 9 <= height <= maxHeight.
   static bool sizeFits(const Identity& id, uint32_t width, uint32_t height);
+  // Whether the build of this identity has every lever the frame sets (the core drops a
+  // frame with uniqueness != 0 without SGM_FEATURES_UNIQUENESS, or adWeight != 0 without
+  // SGM_FEATURES_AD_TERM, and flags ERROR.CONFIG).
+  static bool featuresFit(const Identity& id, const FrameConfig& frame);
   static uint32_t encodeSize(uint32_t width, uint32_t height);
   static uint32_t encodePenalty(const FrameConfig& frame);
   static uint32_t encodeConfig(const FrameConfig& frame);

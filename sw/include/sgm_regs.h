@@ -18,6 +18,7 @@
 #define SGM_REG_CENSUS          0x10u /* census window: [7:0] width, [15:8] height */
 #define SGM_REG_MIN_WIDTH       0x14u /* narrowest frame width of the build (map version 2) */
 #define SGM_REG_LANES           0x18u /* row lanes of the build, LANES (map version 2) */
+#define SGM_REG_FEATURES        0x1Cu /* the run-time levers the build has, SGM_FEATURES_* (map version 4) */
 
 /* ---- control (read-write) */
 #define SGM_REG_CTRL            0x20u
@@ -38,7 +39,8 @@
 #define SGM_REG_IRQ_STATUS      0x4Cu /* write 1 to clear; irq_o = |(IRQ_STATUS & IRQ_ENABLE) */
 
 /* ---- values and fields */
-#define SGM_ID_VALUE            0x53474D03u /* 'S' 'G' 'M', version 3 (2 had no CONFIG.UNIQUENESS, 1 no MIN_WIDTH, LANES) */
+#define SGM_ID_VALUE            0x53474D04u /* 'S' 'G' 'M', version 4 (3 had no FEATURES, 2 no CONFIG.UNIQUENESS,
+                                               1 no MIN_WIDTH, LANES) */
 #define SGM_MIN_HEIGHT          9u /* shortest frame of every build (sgm_stream_ctrl) */
 #define SGM_ID_MAGIC_MASK       0xFFFFFF00u
 #define SGM_ID_VERSION_MASK     0x000000FFu
@@ -46,6 +48,13 @@
 #define SGM_CENSUS_WIDTH_SHIFT  0
 #define SGM_CENSUS_HEIGHT_SHIFT 8
 #define SGM_CENSUS_FIELD_MASK   0xFFu
+
+/* FEATURES: 1 = the build has the lever (sgm_top UNIQUENESS / AD_TERM); a frame that sets
+ * a lever the build lacks (CONFIG.UNIQUENESS or PENALTY.AD_WEIGHT not 0) is dropped with
+ * ERROR.CONFIG. Other bits are reserved (read 0). */
+#define SGM_FEATURES_UNIQUENESS (1u << 0) /* the uniqueness ratio (CONFIG.UNIQUENESS) */
+#define SGM_FEATURES_AD_TERM    (1u << 1) /* the AD term (PENALTY.AD_WEIGHT, AD_CAP) */
+#define SGM_FEATURES_MASK       0x00000003u
 
 #define SGM_CTRL_ENABLE         (1u << 0) /* 0: a start-of-frame beat is held back (frame boundary) */
 #define SGM_CTRL_SOFT_RESET     (1u << 1) /* write 1: reset the core (not the registers); reads 0 */
@@ -89,7 +98,8 @@
 #define SGM_ERROR_LAST_EARLY    (1u << 0) /* tlast before the last column */
 #define SGM_ERROR_LAST_MISSING  (1u << 1) /* no tlast at the last column */
 #define SGM_ERROR_START_INSIDE  (1u << 2) /* tuser inside a frame */
-#define SGM_ERROR_CONFIG        (1u << 3) /* frame size out of range: frame dropped */
+#define SGM_ERROR_CONFIG        (1u << 3) /* configuration out of range (size, P2' < P1, mode 3, uniqueness,
+                                             AD term, a lever FEATURES lacks): frame dropped */
 #define SGM_ERROR_MASK          0x0000000Fu
 #define SGM_ERROR_KINDS         4
 

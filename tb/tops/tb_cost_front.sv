@@ -8,12 +8,14 @@
 // cost volume with the same slot (with the census units' centre grays).
 // Outputs: the left and right census units' census/rank (left also col/row/valid,
 // latency CENSUS_LATENCY) and the cost volume (latency
-// CENSUS_LATENCY + COST_LATENCY).
+// CENSUS_LATENCY + COST_LATENCY). AD_TERM = 0: the volume without the AD term
+// (its weight and cap inputs ignored).
 module tb_cost_front #(
   parameter int D         /*verilator public*/ = 16,
   parameter int MAX_WIDTH /*verilator public*/ = 128,
   parameter int CW        = 8,
-  parameter int RW        = 8
+  parameter int RW        = 8,
+  parameter int AD_TERM   /*verilator public*/ = 1  // sgm_cost_volume's: 0 builds no AD term
 ) (
   input  wire              clk_i,
   input  wire              rst_ni,
@@ -108,8 +110,9 @@ module tb_cost_front #(
   assign {mode_c, adw_c, adt_c} = set_q[(CENSUS_LATENCY-1)*SETW +: SETW];
 
   sgm_cost_volume #(
-    .D  (D),
-    .CW (CW)
+    .D      (D),
+    .CW     (CW),
+    .AD_TERM(AD_TERM)
   ) u_cost (
     .clk_i     (clk_i),
     .rst_ni    (rst_ni),

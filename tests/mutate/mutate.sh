@@ -10,8 +10,8 @@
 # to a scratch copy of the tree (--tree, default build/mutate/tree; rtl/ is never
 # touched), and the verilated test binaries whose top instantiates the mutated module
 # are rebuilt and run there, cheapest first (unit fixtures, then the whole core at
-# D = 16, the D = 16 regression slice, the whole core at D = 32 and D = 64, the AXI4-Lite
-# wrapper), up to the
+# D = 16 (and its lean build), the D = 16 regression slice, the whole core at D = 32 and
+# D = 64, the AXI4-Lite wrapper and its lean build), up to the
 # first one that fails: that test kills the mutation. A mutation no test fails
 # survived. Lines marked equivalent are reported with their reason and not run. A mutant
 # that does not build (a lint warning of Verilator -Wall, a syntax error) is "invalid",
@@ -95,9 +95,9 @@ fi
 # ------------------------------------------------------------------ tests per module
 # Test binaries in the order they are tried: NAME (make target build/bin/NAME) and the
 # top it verilates (read from the Makefile's rtl_test lines; the regression from regress.mk).
-order=(rtl-p2-lut rtl-stream-ctrl rtl-hole-fill rtl-edge-snap rtl-median5x5 rtl-wta-d16 rtl-lr-check-d16 rtl-lr-lanes-d16-k3
-       rtl-census-unit rtl-census-lanes-k1 rtl-census-lanes-k2 rtl-census-lanes-k3-9x9 rtl-census-lanes-k6 rtl-cost-volume-d16 rtl-cost-lanes-d16-k3 rtl-lane-deal-k2 rtl-lane-deal-k3 rtl-path-ring-d16 rtl-path-ring-d16-k3 rtl-path-ring-d16-k12 rtl-path-ring-d32-k6 rtl-path-ring-d64-k4 rtl-path-ring-d64-k6 rtl-right-path-d16-b8 rtl-right-path-d16-b16-k3 rtl-path-engine-d16 rtl-path-engine-d16-k2 rtl-path-engine-d16-k5 rtl-path-engine-d64-k6 rtl-top-d16 rtl-top-d16-k2 rtl-top-d16-k3-9x9 sgm-regress-d16-w128 rtl-top-d32 rtl-top-d64
-       rtl-axi-d16)
+order=(rtl-p2-lut rtl-stream-ctrl rtl-hole-fill rtl-edge-snap rtl-median5x5 rtl-wta-d16 rtl-wta-d16-lean rtl-lr-check-d16 rtl-lr-check-d16-lean rtl-lr-lanes-d16-k3
+       rtl-census-unit rtl-census-lanes-k1 rtl-census-lanes-k2 rtl-census-lanes-k3-9x9 rtl-census-lanes-k6 rtl-cost-volume-d16 rtl-cost-volume-d16-lean rtl-cost-lanes-d16-k3 rtl-lane-deal-k2 rtl-lane-deal-k3 rtl-path-ring-d16 rtl-path-ring-d16-k3 rtl-path-ring-d16-k12 rtl-path-ring-d32-k6 rtl-path-ring-d64-k4 rtl-path-ring-d64-k6 rtl-right-path-d16-b8 rtl-right-path-d16-b16-k3 rtl-path-engine-d16 rtl-path-engine-d16-k2 rtl-path-engine-d16-k5 rtl-path-engine-d64-k6 rtl-top-d16 rtl-top-d16-lean rtl-top-d16-k2 rtl-top-d16-k3-9x9 sgm-regress-d16-w128 rtl-top-d32 rtl-top-d64
+       rtl-axi-d16 rtl-axi-d16-lean)
 declare -A top_of=()
 while IFS= read -r l; do
   args="${l#*call rtl_test,}"

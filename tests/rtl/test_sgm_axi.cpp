@@ -28,6 +28,16 @@ using Rtl = Vsgm_axi_sgm_axi;
 namespace drv = sgm::driver;
 
 constexpr int kD = Rtl::D;
+// The run-time levers of the build (sgm_axi UNIQUENESS, AD_TERM; axi-d16-lean builds neither),
+// as FEATURES must read them: the header's bits.
+constexpr uint32_t kFeatures = (Rtl::UNIQUENESS ? SGM_FEATURES_UNIQUENESS : 0u) | (Rtl::AD_TERM ? SGM_FEATURES_AD_TERM : 0u);
+
+// The settings with every lever the build lacks off (bit-exact frames run what the build has).
+sgm::Params withBuildLevers(sgm::Params p) {
+  if (!Rtl::UNIQUENESS) p.uniqueness = 0;
+  if (!Rtl::AD_TERM) p.adWeight = 0;
+  return p;
+}
 
 sgm::Params defaults() {
   sgm::Params p;
@@ -114,6 +124,7 @@ TEST(SgmAxi, RtlOffsetsAndResetValuesMatchTheHeader) {
       {"CENSUS", {Rtl::ADDR_CENSUS, SGM_REG_CENSUS}},
       {"MIN_WIDTH", {Rtl::ADDR_MIN_WIDTH, SGM_REG_MIN_WIDTH}},
       {"LANES", {Rtl::ADDR_LANES, SGM_REG_LANES}},
+      {"FEATURES", {Rtl::ADDR_FEATURES, SGM_REG_FEATURES}},
       {"CTRL", {Rtl::ADDR_CTRL, SGM_REG_CTRL}},
       {"FRAME_SIZE", {Rtl::ADDR_FRAME_SIZE, SGM_REG_FRAME_SIZE}},
       {"PENALTY", {Rtl::ADDR_PENALTY, SGM_REG_PENALTY}},
@@ -126,6 +137,9 @@ TEST(SgmAxi, RtlOffsetsAndResetValuesMatchTheHeader) {
       {"IRQ_ENABLE", {Rtl::ADDR_IRQ_ENABLE, SGM_REG_IRQ_ENABLE}},
       {"IRQ_STATUS", {Rtl::ADDR_IRQ_STATUS, SGM_REG_IRQ_STATUS}},
       {"ID_VALUE", {Rtl::ID_VALUE, SGM_ID_VALUE}},
+      {"FEATURES_UNIQUENESS", {1u << Rtl::FEATURES_UNIQUENESS_BIT, SGM_FEATURES_UNIQUENESS}},
+      {"FEATURES_AD_TERM", {1u << Rtl::FEATURES_AD_TERM_BIT, SGM_FEATURES_AD_TERM}},
+      {"FEATURES_VALUE", {Rtl::FEATURES_VALUE, kFeatures}},
       {"PENALTY_RESET", {Rtl::PENALTY_RESET, SGM_PENALTY_RESET}},
       {"CONFIG_RESET", {Rtl::CONFIG_RESET, SGM_CONFIG_RESET}},
   };
@@ -162,6 +176,7 @@ std::vector<RegisterSpec> registers() {
        uint32_t(kCensus.width) << SGM_CENSUS_WIDTH_SHIFT | uint32_t(kCensus.height) << SGM_CENSUS_HEIGHT_SHIFT, 0},
       {"MIN_WIDTH", SGM_REG_MIN_WIDTH, kOneLaneMinWidth, 0},
       {"LANES", SGM_REG_LANES, uint32_t(Rtl::LANES), 0},
+      {"FEATURES", SGM_REG_FEATURES, kFeatures, 0},
       {"CTRL", SGM_REG_CTRL, 0, SGM_CTRL_MASK},
       {"FRAME_SIZE", SGM_REG_FRAME_SIZE, 0, 0xFFFFFFFFu},
       {"PENALTY", SGM_REG_PENALTY, SGM_PENALTY_RESET, SGM_PENALTY_MASK},
@@ -183,6 +198,8 @@ TEST(SgmAxi, ResetValuesAndIdentification) {
   EXPECT_TRUE(c.driver.identify(&id));
   EXPECT_EQ(id.disparities, uint32_t(kD));
   EXPECT_EQ(id.censusWidth * id.censusHeight, uint32_t(kCensus.bits + 1));
+  EXPECT_EQ(id.features, kFeatures);
+  EXPECT_EQ(id.features & ~uint32_t(SGM_FEATURES_MASK), 0u) << "reserved FEATURES bits";
   EXPECT_EQ(c.model().irq_o, 0);
 }
 
@@ -213,6 +230,47 @@ TEST(SgmAxi, SizeFitsAgreesWithTheCore) {
   }
   c.driver.clearErrors();
   c.expectBitExact({scene(int(w), int(h), 22, defaults())}, "the narrowest, shortest frame");
+  EXPECT_EQ(c.driver.errors().sticky, 0u);
+}
+
+// FEATURES through the driver against what the core does: a frame that sets a lever
+// FEATURES lacks (CONFIG.UNIQUENESS, PENALTY.AD_WEIGHT) is dropped with ERROR.CONFIG
+// (Driver::featuresFit says so beforehand), one it has streams bit-exact; a frame
+// without the levers streams in every build.
+TEST(SgmAxi, FeaturesAgreeWithTheCore) {
+  AxiCore c("sgm_axi_features", 5, {0, 0});
+  drv::Identity id;
+  ASSERT_TRUE(c.driver.identify(&id));
+  ASSERT_EQ(id.features, kFeatures);
+  sgm::Params unique = defaults();
+  unique.uniqueness = 30;
+  sgm::Params ad = defaults();
+  ad.adWeight = 5, ad.adCap = 24;
+  const int w = 40, h = 11;
+  uint32_t seed = 30;
+  for (const sgm::Params& p : {unique, ad}) {
+    const drv::FrameConfig config = frameConfig(p, {w, h});
+    const bool fits = drv::Driver::featuresFit(id, config);
+    EXPECT_EQ(fits, p.uniqueness ? (kFeatures & SGM_FEATURES_UNIQUENESS) != 0 : (kFeatures & SGM_FEATURES_AD_TERM) != 0);
+    const std::string what = p.uniqueness ? "uniqueness 30" : "AD weight 5";
+    if (fits) {
+      c.expectBitExact({scene(w, h, ++seed, p)}, what + " in a build that has it");
+      EXPECT_EQ(c.driver.errors().sticky, 0u) << what;
+      continue;
+    }
+    c.driver.configure(config);
+    c.driver.enable(c.enabled = true);
+    const uint32_t before = c.driver.errors().counts[3];
+    const FrameInput f = scene(w, h, ++seed, p);
+    c.extra.push(sgm::tb::frameBeats(f.left.data, f.right.data, w, h, f.left.step, f.right.step));
+    while (!c.extra.empty()) c.steps(1);
+    c.steps(20);
+    EXPECT_EQ(c.driver.errors().counts[3], before + 1) << what << " in a build without it is dropped";
+    EXPECT_NE(c.driver.errors().sticky & SGM_ERROR_CONFIG, 0u) << what;
+    c.driver.clearErrors();
+  }
+  EXPECT_TRUE(drv::Driver::featuresFit(id, frameConfig(defaults(), {w, h})));
+  c.expectBitExact({scene(w + 2, h, 40, defaults())}, "a frame without the levers");
   EXPECT_EQ(c.driver.errors().sticky, 0u);
 }
 
@@ -261,7 +319,7 @@ TEST(SgmAxi, UndefinedAddressesAnswerSlverrAndChangeNothing) {
     EXPECT_EQ(read.data, 0u) << "read 0x" << std::hex << a;
     EXPECT_EQ(c.bus.write(a, 0xFFFFFFFFu).resp, sgm::tb::kAxilSlvErr) << "write 0x" << std::hex << a;
   }
-  EXPECT_EQ(undefined, 64 - 18);
+  EXPECT_EQ(undefined, 64 - 19);
   for (size_t k = 0; k < registers().size(); ++k)
     EXPECT_EQ(c.bus.read(registers()[k].offset).data, before[k]) << registers()[k].name;
   // Address bits [1:0] are ignored.
@@ -283,8 +341,8 @@ TEST(SgmAxi, ConfigurationWrittenMidFrameActsFromTheNextFrame) {
   sgm::Params unique = defaults();
   unique.uniqueness = 20;
   const std::vector<FrameInput> frames = {scene(40, 14, 1, defaults()), scene(36, 12, 2, unified),
-                                          scene(48, 11, 3, rt), scene(33, 15, 4, strict),
-                                          scene(38, 12, 6, unique), scene(40, 10, 5, defaults().rawSgm())};
+                                          scene(48, 11, 3, rt), scene(33, 15, 4, withBuildLevers(strict)),
+                                          scene(38, 12, 6, withBuildLevers(unique)), scene(40, 10, 5, defaults().rawSgm())};
   c.expectBitExact(frames, "mid-frame configuration");
   ASSERT_EQ(c.busyWhenConfigured.size(), frames.size());
   for (size_t k = 1; k < frames.size(); ++k)

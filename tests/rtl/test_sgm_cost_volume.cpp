@@ -46,6 +46,9 @@ constexpr int kD = int(Rtl::D);
 constexpr int kMaxWidth = int(Rtl::MAX_WIDTH);
 constexpr int kCensusLatency = int(Rtl::CENSUS_LATENCY);
 constexpr int kLatency = int(Rtl::CENSUS_LATENCY) + int(Rtl::COST_LATENCY);
+// AD_TERM = 0 (the lean build, rtl-cost-volume-d16-lean): the volume has no AD term, so
+// frames that drive a weight expect the census cost alone.
+constexpr bool kAdTerm = Rtl::AD_TERM != 0;
 
 struct Frame {
   cv::Mat left, right;
@@ -68,7 +71,7 @@ void runStream(Top& top, const std::vector<Frame>& frames, const StreamOptions& 
     ASSERT_GE(f.left.rows, 9);
     ASSERT_LE(f.left.cols, kMaxWidth);
     sgm::CostVolume cost = sgm::computeCost(f.left, f.right, f.mode, kD);
-    if (f.adWeight) {
+    if (f.adWeight && kAdTerm) {
       sgm::Params p;  // the contract's range (Cmax + largest term within the cost word)
       p.mode = f.mode, p.disparities = kD, p.adWeight = f.adWeight, p.adCap = f.adCap;
       p.validate();

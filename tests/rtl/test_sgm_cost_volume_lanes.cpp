@@ -30,6 +30,8 @@ using Rtl = Vsgm_cost_volume_sgm_cost_volume;  // public parameters of the build
 constexpr int kD = int(Rtl::D);
 constexpr int kLanes = int(Rtl::LANES);
 constexpr int kLatency = int(Rtl::LATENCY);
+// AD_TERM = 0 (a lean build): no AD term, the weight and cap driven are ignored.
+constexpr bool kAdTerm = Rtl::AD_TERM != 0;
 constexpr int kSkew = 3;  // any skew: the volume keeps no state across rows
 
 cv::Mat randomImage(int w, int h, std::mt19937& rng) {
@@ -48,7 +50,7 @@ std::string runFrame(Top& top, const cv::Mat& left, const cv::Mat& right, sgm::C
   const int w = left.cols, h = left.rows;
   const std::vector<sgm::Census> lc = sgm::censusTransform(left), rc = sgm::censusTransform(right);
   sgm::CostVolume expected = sgm::computeCost(left, right, mode, kD);
-  for (int y = 0; adWeight && y < h; ++y) sgm::addAdTerm(left, right, y, 0, w, kD, adWeight, adCap, expected.at(0, y));
+  for (int y = 0; adWeight && kAdTerm && y < h; ++y) sgm::addAdTerm(left, right, y, 0, w, kD, adWeight, adCap, expected.at(0, y));
   const int leadRows = 2;
   const sgm::tb::LaneSchedule lanes(w, kLanes, kSkew, leadRows);
   const long slots = lanes.slotsToCover(h) + kLatency;

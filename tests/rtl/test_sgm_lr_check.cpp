@@ -41,6 +41,9 @@ constexpr int kMaxWidth = int(Rtl::MAX_WIDTH);
 constexpr int kCW = int(Rtl::CW);
 constexpr int kRW = int(Rtl::RW);
 constexpr int kLatency = int(Rtl::LATENCY);
+// UNIQUENESS = 0 (a lean build): unique_i is not stored and does not gate valid_o; the
+// frames still drive the golden unique flags of their ratio and expect them ignored.
+constexpr bool kUniqueness = Rtl::UNIQUENESS != 0;
 constexpr int kMaxS = (1 << kSW) - 1;
 constexpr int kMinWidth = kD > 16 ? kD : 16;
 
@@ -68,7 +71,7 @@ sgm::Params paramsOf(const Frame& f) {
   p.disparities = kD;
   p.subpixel = f.subpixel;
   p.lrTolerance = f.tol;
-  p.uniqueness = f.uniqueness;
+  p.uniqueness = kUniqueness ? f.uniqueness : 0;
   return p;
 }
 

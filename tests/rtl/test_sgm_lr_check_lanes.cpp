@@ -39,6 +39,9 @@ constexpr int kRW = int(Rtl::RW);
 constexpr int kLanes = int(Rtl::LANES);
 constexpr int kBanks = int(Rtl::ROW_BANKS);
 constexpr int kLatency = int(Rtl::LATENCY);
+// UNIQUENESS = 0 (a lean build): unique_i is not stored and does not gate valid_o; the
+// frames still drive the golden unique flags of their ratio and expect them ignored.
+constexpr bool kUniqueness = Rtl::UNIQUENESS != 0;
 constexpr int kMaxS = (1 << kSW) - 1;
 constexpr int kMinWidth = kD > 16 ? kD : 16;
 constexpr int kSkew = 3;
@@ -65,7 +68,7 @@ class LrLanes {
     p.disparities = kD;
     p.subpixel = f.subpixel;
     p.lrTolerance = f.tol;
-    p.uniqueness = f.uniqueness;
+    p.uniqueness = kUniqueness ? f.uniqueness : 0;
     const sgm::DisparityMap want = sgm::selectDisparity(f.s, p);
     const sgm::tb::LaneSchedule lanes(w, kLanes, kSkew, kLeadRows);
     // The last slot that writes a word of row y (+1 for the registered dR port):

@@ -5,6 +5,10 @@
 // watches every output cycle; its own test is here too. The census window is the
 // build's (CENSUS_H, read from the model): a 9x5 build runs our defaults, a 9x9
 // build the paper preset; both switch the run-time P2 form and path weights.
+// The run-time levers are the build's (UNIQUENESS, AD_TERM, read from the model):
+// in a lean build (top-d16-lean: both 0) the bit-exact tests run with the lever it
+// lacks off, and LeversTheBuildLacksAreDroppedThenGoodFrame expects the frames that
+// ask for it dropped.
 #include "Vsgm_top.h"
 #include "Vsgm_top_sgm_top.h"
 #include "core_harness.hpp"
@@ -18,6 +22,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <random>
@@ -37,6 +42,19 @@ using sgm::tb::MalformedFrames;
 constexpr int kD = SGM_D;
 constexpr int kMaxWidth = Vsgm_top_sgm_top::MAX_WIDTH;  // of this build
 constexpr int kCensusH = Vsgm_top_sgm_top::CENSUS_H;    // 5 or 9
+constexpr bool kUniqueness = Vsgm_top_sgm_top::UNIQUENESS != 0;  // the build has the uniqueness ratio
+constexpr bool kAdTerm = Vsgm_top_sgm_top::AD_TERM != 0;         // the build has the AD term
+constexpr bool kLean = !kUniqueness || !kAdTerm;
+
+// The settings with every lever the build lacks off (bit-exact tests run what the build has).
+sgm::Params withBuildLevers(sgm::Params p) {
+  if (!kUniqueness) p.uniqueness = 0;
+  if (!kAdTerm) p.adWeight = 0;
+  return p;
+}
+
+// Whether the core drops a frame of these settings for a lever its build lacks.
+bool asksMissingLever(const sgm::Params& p) { return (p.uniqueness && !kUniqueness) || (p.adWeight && !kAdTerm); }
 
 // A textured left image and a right image shifted by a few pixels plus noise.
 FrameInput syntheticPair(int w, int h, std::mt19937& rng, const sgm::Params& params) {
@@ -86,7 +104,7 @@ TEST(SgmTop, FirstFramesFromZeroOrOnesPowerUpState) {
     sgm::Params unique = hardwareDefaults();
     unique.uniqueness = 20;
     const std::vector<FrameInput> frames = {syntheticPair(Vsgm_top_sgm_top::MIN_FRAME_WIDTH + 9, 12, rng, hardwareDefaults()),
-                                            syntheticPair(Vsgm_top_sgm_top::MIN_FRAME_WIDTH, 9, rng, unique)};
+                                            syntheticPair(Vsgm_top_sgm_top::MIN_FRAME_WIDTH, 9, rng, withBuildLevers(unique))};
     expectBitExact(core, frames, "power-up state " + std::to_string(state));
   }
 }
@@ -158,12 +176,9 @@ TEST(SgmTop, OutOfRangeConfigurationIsDroppedThenGoodFrame) {
     sgm::Params good = i % 2 ? unified : hardwareDefaults();
     good.uniqueness = i == 6 ? 99 : 0;  // the largest ratio in range, after the first out of range
     if (i == 8) {  // weight 15 with the largest cap the build's cost word leaves this mode
-      good.adWeight = 15, good.adCap = 0;
-      while (sgm::maxCost(good.mode, good.census) + (15 * (good.adCap + 1) >> sgm::kAdShift) <=
-             sgm::costLimit(good.census))
-        ++good.adCap;
+      good.adWeight = 15, good.adCap = sgm::largestAdCap(good.mode, good.census, 15);
     }
-    frames.push_back(syntheticPair(kMinWidth + 8 - int(i), 9 + int(i % 3), rng, good));
+    frames.push_back(syntheticPair(kMinWidth + 8 - int(i), 9 + int(i % 3), rng, withBuildLevers(good)));
   }
   Harness core("sgm_top_bad_config", 13, {0.2, 0.2});
   const std::vector<sgm::tb::FrameOutput> out = core.run(frames);
@@ -197,7 +212,7 @@ TEST(SgmTop, SettingsSweep) {
     p.subpixel = tol % 2 == 0;
     p.fill = tol % 4 != 1, p.snap = tol % 4 != 2, p.median = tol % 4 != 3;
     p.uniqueness = tol * 13 % 40;  // 0, 13, 26, 39, 12, 25, 38, 11
-    frames.push_back(syntheticPair(kMinWidth + 5 * tol + 1, 9 + tol % 3, rng, p));
+    frames.push_back(syntheticPair(kMinWidth + 5 * tol + 1, 9 + tol % 3, rng, withBuildLevers(p)));
   }
   for (const auto [p1, p2] : {std::pair{255, 255}, {1, 1}, {0, 255}, {127, 129}}) {
     sgm::Params p = hardwareDefaults();
@@ -232,8 +247,53 @@ TEST(SgmTop, ParameterSetsChangeFromFrameToFrame) {
   sgm::Params adRt = hardwareDefaults();
   adRt.mode = sgm::CostMode::kRt, adRt.adWeight = 8, adRt.adCap = 60;
   for (const sgm::Params& p : {unified, rt, paperP2, unique, ad, strict, kneeEqual, uniqueLr, adRt, raw, hardwareDefaults()})
-    frames.push_back(syntheticPair(kD + 20, 20, rng, p));
+    frames.push_back(syntheticPair(kD + 20, 20, rng, withBuildLevers(p)));
   expectBitExact(core, frames, "parameter sets");
+}
+
+// The run-time levers against the build (UNIQUENESS, AD_TERM): a frame that asks for a
+// lever the build lacks (a uniqueness ratio, an AD weight) is dropped whole with
+// error_o[3], and the next frame is bit-exact; in a build that has the lever the same
+// frame is bit-exact. An AD cap with weight 0 asks for nothing. Every build runs it: the
+// lean top-d16-lean drops, the others stream.
+TEST(SgmTop, LeversTheBuildLacksAreDroppedThenGoodFrame) {
+  std::mt19937 rng(17);
+  sgm::Params unique = hardwareDefaults(), unique1 = hardwareDefaults();
+  unique.uniqueness = 25, unique1.uniqueness = 1;  // 1: the smallest ratio that asks for the lever
+  sgm::Params ad = hardwareDefaults(), ad1 = hardwareDefaults();
+  ad.adWeight = 4, ad.adCap = 30;
+  ad1.adWeight = 1, ad1.adCap = 0;  // the smallest weight, with a term of 0 everywhere
+  sgm::Params both = hardwareDefaults();
+  both.uniqueness = 10, both.adWeight = 2, both.adCap = 12;
+  sgm::Params capOnly = hardwareDefaults();
+  capOnly.adCap = 255;  // weight 0: the term is off
+  const std::vector<std::pair<std::string, sgm::Params>> asks = {
+      {"uniqueness 25", unique},         {"uniqueness 1", unique1},
+      {"AD weight 4 cap 30", ad},        {"AD weight 1 cap 0", ad1},
+      {"uniqueness 10, AD weight 2", both}, {"AD cap 255 weight 0", capOnly}};
+  std::vector<FrameInput> frames = {syntheticPair(kMinWidth + 2, 9, rng, hardwareDefaults())};
+  std::vector<std::string> what = {"first good frame"};
+  for (const auto& [name, p] : asks) {
+    frames.push_back(syntheticPair(kMinWidth + 6, 10, rng, p));
+    frames.back().dropped = asksMissingLever(p);
+    what.push_back(name);
+    frames.push_back(syntheticPair(kMinWidth + 1, 9, rng, hardwareDefaults()));
+    what.push_back("good frame after " + name);
+  }
+  if (kLean) EXPECT_TRUE(std::any_of(frames.begin(), frames.end(), [](const FrameInput& f) { return f.dropped; }));
+  Harness core("sgm_top_levers", 17, {0.2, 0.2});
+  const std::vector<sgm::tb::FrameOutput> out = core.run(frames);
+  for (size_t k = 0; k < frames.size(); ++k) {
+    const std::string build = std::string(" (UNIQUENESS=") + (kUniqueness ? "1" : "0") + ", AD_TERM=" + (kAdTerm ? "1" : "0") + ")";
+    if (frames[k].dropped) {
+      EXPECT_EQ(out[k].errors, 8u) << what[k] << build << ": error_o of a frame asking for a lever the build lacks";
+      continue;
+    }
+    EXPECT_EQ(sgm::tb::compareMaps(sgm::runPipeline(frames[k].left, frames[k].right, frames[k].params), out[k].map,
+                                   "sgm_top output"), "")
+        << what[k] << build;
+    EXPECT_EQ(out[k].errors, 0u) << what[k] << build;
+  }
 }
 
 // Every malformed kind, in two places each, between good frames: the core
@@ -383,7 +443,9 @@ TEST(SgmTop, RealSceneUnderStalls) {
 // every parameter random, stalls, resets and malformed frames. `make regress
 // REGRESS_D=64 REGRESS_MAX_WIDTH=512 REGRESS_SEED=64` runs the same cases at length.
 TEST(SgmTop, RegressionSlice) {
-  if (kD != 64) GTEST_SKIP() << "the regression slice runs in the D = 64 build (make regress-ci runs D = 16)";
+  // The lean build runs it too: its random scenes and settings with the levers it lacks off
+  // (tb/regress_cases.hpp drawParams).
+  if (kD != 64 && !kLean) GTEST_SKIP() << "the regression slice runs in the D = 64 and the lean builds (make regress-ci runs D = 16)";
   constexpr uint64_t kMaster = 64;
   constexpr long kGoodFrames = 12;
   sgm::regress::Totals totals;
@@ -395,8 +457,11 @@ TEST(SgmTop, RegressionSlice) {
     } catch (const std::exception& e) {
       failure = e.what();
     }
-    EXPECT_EQ(failure, "") << "case " << k << " (" << c.kind << ", " << c.stallText << "); replay: make regress REGRESS_D=64 "
-                           << "REGRESS_MAX_WIDTH=512 REGRESS_SEED=" << kMaster << " REGRESS_CASE=" << k;
+    EXPECT_EQ(failure, "") << "case " << k << " (" << c.kind << ", " << c.stallText << "); replay: "
+                           << (kLean ? "case " + std::to_string(k) + " of master seed " + std::to_string(kMaster) +
+                                           " in this lean build (sgm::regress::drawCase)"
+                                     : "make regress REGRESS_D=64 REGRESS_MAX_WIDTH=512 REGRESS_SEED=" +
+                                           std::to_string(kMaster) + " REGRESS_CASE=" + std::to_string(k));
     ASSERT_LT(k, 200u) << "too few good frames";
   }
   std::cout << "[ figures  ] regression slice: " << totals.goodFrames << " good frames (" << totals.pixels
