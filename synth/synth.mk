@@ -49,6 +49,7 @@ SYNTH_DIR    := $(BUILD)/synth
 SYNTH_CENSUS ?= $(if $(CENSUS),$(CENSUS),9x5)
 SYNTH_CENSUS_H = $(if $(filter 9x9,$(SYNTH_CENSUS)),9,$(if $(filter 9x5,$(SYNTH_CENSUS)),5,$(error CENSUS=$(SYNTH_CENSUS): expected 9x5 or 9x9)))
 SYNTH_LANES  ?= $(if $(LANES),$(LANES),1)
+comma := ,
 SYNTH_UNIQUENESS ?= $(if $(UNIQUENESS),$(UNIQUENESS),1)
 SYNTH_AD_TERM    ?= $(if $(AD_TERM),$(AD_TERM),1)
 SYNTH_CFG     = d$(D)-w$(MAX_WIDTH)$(if $(filter 9,$(SYNTH_CENSUS_H)),-c9x9)$(if $(filter-out 1,$(SYNTH_LANES)),-k$(SYNTH_LANES))$(if $(filter 0,$(SYNTH_UNIQUENESS)),-u0)$(if $(filter 0,$(SYNTH_AD_TERM)),-ad0)
@@ -70,7 +71,7 @@ synth-help:
 
 synth: $(foreach t,$(SYNTH_TARGETS),$(SYNTH_OUT)/$(t)/done) $(SYNTH_LOOP)/done $(SYNTH_SUMMARY) | check-tools
 	@$(SYNTH_SUMMARY) $(SYNTH_DIR)
-	@awk '/^## D = $(D), MAX_WIDTH = $(MAX_WIDTH), census $(SYNTH_CENSUS) /{f=1} f && /^\*\*Path buffers/{exit} f' $(SYNTH_DIR)/summary.md
+	@awk '/^## D = $(D), MAX_WIDTH = $(MAX_WIDTH), census $(SYNTH_CENSUS)$(if $(filter 0,$(SYNTH_UNIQUENESS)),$(comma) UNIQUENESS = 0)$(if $(filter 0,$(SYNTH_AD_TERM)),$(comma) AD_TERM = 0) /{f=1} f && /^\*\*Path buffers/{exit} f' $(SYNTH_DIR)/summary.md
 
 synth-ci: $(SYNTH_SUMMARY) | check-tools
 	@$(MAKE) --no-print-directory D=$(SYNTH_CI_D) MAX_WIDTH=$(SYNTH_CI_MAX_WIDTH) synth-xc7

@@ -666,7 +666,10 @@ void writeMarkdown(const std::string &path, const std::vector<Target> &ts, const
         if (t.config == cfg && t.target == want) cols.push_back(&t);
     if (cols.empty()) continue;
     const Target &f = *cols[0];
-    o << "## D = " << f.d << ", MAX_WIDTH = " << f.w << ", census " << f.census << " (MAX_HEIGHT = " << f.h << ")\n\n";
+    // The build-time levers (sgm_top UNIQUENESS, AD_TERM): named when a lever is not built.
+    const std::string levers = std::string(metaGet(f.meta, "uniqueness") == "0" ? ", UNIQUENESS = 0" : "") +
+                               (metaGet(f.meta, "ad_term") == "0" ? ", AD_TERM = 0" : "");
+    o << "## D = " << f.d << ", MAX_WIDTH = " << f.w << ", census " << f.census << levers << " (MAX_HEIGHT = " << f.h << ")\n\n";
     o << "| | paper, Table III (xc6slx150) |";
     for (auto *c : cols) o << " " << c->target << " (this core, census " << c->census << ") |";
     o << "\n| --- | --- |";
@@ -840,7 +843,7 @@ int main(int argc, char **argv) {
   }
   std::vector<Target> targets;
   std::vector<Loop> loops;
-  static const std::regex cfgRe(R"(d[0-9]+-w[0-9]+(-c9x9)?(-k[0-9]+)?)");
+  static const std::regex cfgRe(R"(d[0-9]+-w[0-9]+(-c9x9)?(-k[0-9]+)?(-u0)?(-ad0)?)");
   static const std::regex loopRe(R"(ice40-loop-d[0-9]+)");
   for (auto &cfg : listDir(root)) {
     std::string p = root + "/" + cfg;
