@@ -103,29 +103,35 @@ golden: $(BIN)/sgm-golden $(BIN)/sgm-eval
 # ---------------------------------------------------------------- simulation
 # make sim [LEFT=... RIGHT=... [GT=...] [GT_SCALE=...]] [OUT=build/sim] [D=64] [MAX_WIDTH=1280]
 #          [STALL=0.0] [SEED=1] [FRAMES=1] [TRACE=1] [PRESET=default|paper] [CENSUS=9x5|9x9] [LANES=1]
+#          [RIGHT_BLOCK=0 [RIGHT_WEIGHT=]]
 # The program is sim/sgm_sim.cpp; CENSUS sets the core's census window (-GCENSUS_H),
 # PRESET=paper implies CENSUS=9x9 and runs sgm-sim --preset paper. LANES = K row lanes
-# (-GLANES, docs/reschedule.md; also taken by make synth).
+# (-GLANES, docs/reschedule.md; also taken by make synth). RIGHT_BLOCK = B builds the
+# fifth path in blocks of B (-GRIGHT_BLOCK; 0: none); RIGHT_WEIGHT = W5 runs it
+# (--right-path W5 --right-block B).
 OUT       ?= $(BUILD)/sim
 D         ?= 64
 MAX_WIDTH ?= 1280
 MAX_HEIGHT ?= 1024
 LANES     ?= 1
+RIGHT_BLOCK ?= 0
+RIGHT_WEIGHT ?=
 PRESET    ?=
 CENSUS    ?= $(if $(filter paper,$(PRESET)),9x9,9x5)
 CENSUS_H   = $(if $(filter 9x9,$(CENSUS)),9,$(if $(filter 9x5,$(CENSUS)),5,$(error CENSUS=$(CENSUS): expected 9x5 or 9x9)))
-SIM_BIN    = $(BIN)/sgm-sim-d$(D)-w$(MAX_WIDTH)$(if $(filter-out 1024,$(MAX_HEIGHT)),-h$(MAX_HEIGHT))$(if $(filter 9,$(CENSUS_H)),-c9x9)$(if $(filter-out 1,$(LANES)),-k$(LANES))$(if $(filter 1,$(TRACE)),-trace)
+SIM_BIN    = $(BIN)/sgm-sim-d$(D)-w$(MAX_WIDTH)$(if $(filter-out 1024,$(MAX_HEIGHT)),-h$(MAX_HEIGHT))$(if $(filter 9,$(CENSUS_H)),-c9x9)$(if $(filter-out 1,$(LANES)),-k$(LANES))$(if $(filter-out 0,$(RIGHT_BLOCK)),-rb$(RIGHT_BLOCK))$(if $(filter 1,$(TRACE)),-trace)
 SIM_ARGS   = --out $(OUT) --d $(D) $(if $(PRESET),--preset $(PRESET)) $(if $(filter 9,$(CENSUS_H)),--census 9x9) \
              $(if $(LEFT),--left $(LEFT)) $(if $(RIGHT),--right $(RIGHT)) \
              $(if $(GT),--gt $(GT)) $(if $(GT_SCALE),--gt-scale $(GT_SCALE)) $(if $(STALL),--stall $(STALL)) \
-             $(if $(SEED),--seed $(SEED)) $(if $(FRAMES),--frames $(FRAMES))
+             $(if $(SEED),--seed $(SEED)) $(if $(FRAMES),--frames $(FRAMES)) \
+             $(if $(RIGHT_WEIGHT),--right-path $(RIGHT_WEIGHT) --right-block $(RIGHT_BLOCK))
 SIM_VFLAGS = -O3 --x-assign fast --x-initial fast
 
 $(BIN)/sgm-sim-d%: sim/sgm_sim.cpp $(RTL_SRC) $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
 	@mkdir -p $(BIN) $(BUILD)/verilator
-	@echo "verilating sgm_top (D=$(D), MAX_WIDTH=$(MAX_WIDTH), census 9x$(CENSUS_H), LANES=$(LANES)) for $@"
+	@echo "verilating sgm_top (D=$(D), MAX_WIDTH=$(MAX_WIDTH), census 9x$(CENSUS_H), LANES=$(LANES), RIGHT_BLOCK=$(RIGHT_BLOCK)) for $@"
 	@$(VERILATOR) --cc --exe --build -j $(JOBS) -Wall $(VLT) $(SIM_VFLAGS) $(VL_TRACE) -y rtl --top-module sgm_top \
-	  -GD=$(D) -GMAX_WIDTH=$(MAX_WIDTH) -GMAX_HEIGHT=$(MAX_HEIGHT) -GCENSUS_H=$(CENSUS_H) -GLANES=$(LANES) -Mdir $(BUILD)/verilator/$(notdir $@) -o $(abspath $@) \
+	  -GD=$(D) -GMAX_WIDTH=$(MAX_WIDTH) -GMAX_HEIGHT=$(MAX_HEIGHT) -GCENSUS_H=$(CENSUS_H) -GLANES=$(LANES) -GRIGHT_BLOCK=$(RIGHT_BLOCK) -Mdir $(BUILD)/verilator/$(notdir $@) -o $(abspath $@) \
 	  rtl/sgm_top.sv $(abspath sim/sgm_sim.cpp) $(abspath $(EVAL_OBJ)) $(abspath $(GOLDEN_LIB)) \
 	  -CFLAGS "$(VL_CFLAGS) -DSGM_D=$(D) -DSGM_MAX_WIDTH=$(MAX_WIDTH) -DSGM_MAX_HEIGHT=$(MAX_HEIGHT)" -LDFLAGS "$(OPENCV_LIBS) -pthread" \
 	  > $(BUILD)/verilator-$(notdir $@).log || { tail -30 $(BUILD)/verilator-$(notdir $@).log; exit 1; }
@@ -205,11 +211,16 @@ $(eval $(call rtl_test,top-d16-k3-9x9,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGH
 # The lean build: neither run-time lever that costs area (UNIQUENESS = 0, AD_TERM = 0, docs/rtl.md
 # "Build parameters"): bit-exact with the levers off, frames that ask for them dropped.
 $(eval $(call rtl_test,top-d16-lean,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GUNIQUENESS=0 -GAD_TERM=0 -CFLAGS -DSGM_D=16))
+# The fifth path in blocks (sgm_top RIGHT_BLOCK): blocks of 8 at one lane, of 16 at two lanes
+# (its defaults run weight 4; the settings, parameter sets and regression vary it).
+$(eval $(call rtl_test,top-d16-rb8,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GRIGHT_BLOCK=8 -CFLAGS -DSGM_D=16))
+$(eval $(call rtl_test,top-d16-k2-rb16,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GLANES=2 -GRIGHT_BLOCK=16 -CFLAGS -DSGM_D=16))
 # sgm_axi configured through the driver (sw/) over an AXI4-Lite bus model; the lean build reads
 # its FEATURES back and has the frames that ask for a missing lever dropped.
 $(eval $(call rtl_test,axi-d16,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
 $(eval $(call rtl_test,axi-d16-lean,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GUNIQUENESS=0 -GAD_TERM=0 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
-$(BIN)/rtl-axi-d16 $(BIN)/rtl-axi-d16-lean: sw/sgm_driver.cpp $(wildcard sw/include/*.h*)
+$(eval $(call rtl_test,axi-d16-rb16,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GRIGHT_BLOCK=16 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
+$(BIN)/rtl-axi-d16 $(BIN)/rtl-axi-d16-lean $(BIN)/rtl-axi-d16-rb16: sw/sgm_driver.cpp $(wildcard sw/include/*.h*)
 $(eval $(call rtl_test,path-engine-d16,sgm_path_engine,-GD=16 -GMAX_WIDTH=128 -GXW=8 -GYW=8 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,path-engine-d64,sgm_path_engine,-GD=64 -GMAX_WIDTH=512 -GXW=10 -GYW=10 -GGRAY_LEAD=0 -CFLAGS -DSGM_D=64 -CFLAGS -DSGM_YW=10))
 # The engine in lane order (docs/reschedule.md): K row lanes, SKEW columns apart.

@@ -23,8 +23,8 @@
 // Undefined addresses answer SLVERR (reads return 0, writes are ignored);
 // writes to read-only registers are ignored with OKAY.
 //
-// Parameters: D, MAX_WIDTH, MAX_HEIGHT, CENSUS_H, LANES, UNIQUENESS, AD_TERM as sgm_top
-// (FEATURES reads back the last two); ADDR_W AXI address bits.
+// Parameters: D, MAX_WIDTH, MAX_HEIGHT, CENSUS_H, LANES, UNIQUENESS, AD_TERM,
+// RIGHT_BLOCK as sgm_top (FEATURES reads back the last three); ADDR_W AXI address bits.
 // Latency and throughput: those of sgm_top; register responses one cycle
 // after the request.
 module sgm_axi #(
@@ -35,6 +35,7 @@ module sgm_axi #(
   parameter int LANES      /*verilator public*/ = 1,
   parameter int UNIQUENESS /*verilator public*/ = 1,
   parameter int AD_TERM    /*verilator public*/ = 1,
+  parameter int RIGHT_BLOCK /*verilator public*/ = 0,
   parameter int ADDR_W     = 8,
   localparam int XW        = $clog2(MAX_WIDTH + 1),
   localparam int YW        = $clog2(MAX_HEIGHT + 16)
@@ -100,17 +101,20 @@ module sgm_axi #(
   localparam logic [ADDR_W-1:0] ADDR_IRQ_STATUS  /*verilator public*/ = ADDR_W'('h4C);
 
   localparam logic [31:0] ID_VALUE       /*verilator public*/ = 32'h5347_4D04;  // "SGM", version 4
-  localparam logic [31:0] PENALTY_RESET  /*verilator public*/ = 32'h0014_6412;  // P1 18, P2' 100, AD cap 20, AD weight 0 (off)
+  localparam logic [31:0] PENALTY_RESET  /*verilator public*/ = 32'h0014_6412;  // P1 18, P2' 100, AD cap 20, AD weight 0 (off), W5 0 (off)
   localparam logic [31:0] CONFIG_RESET   /*verilator public*/ = 32'h0000_7131;  // rsad, all stages on, tol 1
   localparam logic [31:0] CTRL_MASK      = 32'h0000_0005;  // ENABLE, HOLD (SOFT_RESET reads 0)
   localparam logic [31:0] CONFIG_MASK    = 32'h7F03_7733;
-  localparam logic [31:0] PENALTY_MASK   = 32'h0FFF_FFFF;
+  localparam logic [31:0] PENALTY_MASK   = 32'hFFFF_FFFF;
   localparam logic [31:0] IRQ_MASK       = 32'h0000_0003;
   // FEATURES: the run-time levers of the build, one bit each (the rest reserved, 0).
   localparam int FEATURES_UNIQUENESS_BIT /*verilator public*/ = 0;
   localparam int FEATURES_AD_TERM_BIT    /*verilator public*/ = 1;
+  localparam int FEATURES_RIGHT_PATH_BIT /*verilator public*/ = 2;
+  localparam int FEATURES_RIGHT_BLOCK_LSB /*verilator public*/ = 8;  // [11:8]: log2 of the fifth path's block
   localparam logic [31:0] FEATURES_VALUE /*verilator public*/ =
-      (UNIQUENESS != 0 ? 32'd1 << FEATURES_UNIQUENESS_BIT : 32'd0) | (AD_TERM != 0 ? 32'd1 << FEATURES_AD_TERM_BIT : 32'd0);
+      (UNIQUENESS != 0 ? 32'd1 << FEATURES_UNIQUENESS_BIT : 32'd0) | (AD_TERM != 0 ? 32'd1 << FEATURES_AD_TERM_BIT : 32'd0) |
+      (RIGHT_BLOCK != 0 ? (32'd1 << FEATURES_RIGHT_PATH_BIT) | (32'($clog2(RIGHT_BLOCK)) << FEATURES_RIGHT_BLOCK_LSB) : 32'd0);
   localparam int CENSUS_WIDTH  = 9;  // the window of sgm_census_unit: 9 x CENSUS_H
   localparam int CENSUS_HEIGHT = CENSUS_H;
   localparam int SOFT_RESET_CYCLES = 4;
@@ -221,7 +225,7 @@ module sgm_axi #(
   // rejects (error_o[3]) like any other out-of-range size.
   logic [XW-1:0] act_width;
   logic [YW-1:0] act_height;
-  logic [27:0]   act_penalty;
+  logic [31:0]   act_penalty;
   logic [30:0]   act_config;
   wire  [15:0]   shadow_width  = frame_size_q[15:0];
   wire  [15:0]   shadow_height = frame_size_q[31:16];
@@ -230,12 +234,12 @@ module sgm_axi #(
     if (!rst_ni) begin
       act_width   <= '0;
       act_height  <= '0;
-      act_penalty <= PENALTY_RESET[27:0];
+      act_penalty <= PENALTY_RESET;
       act_config  <= CONFIG_RESET[30:0];
     end else if (!hold) begin
       act_width   <= 32'(shadow_width) <= MAX_WIDTH ? shadow_width[XW-1:0] : '0;
       act_height  <= 32'(shadow_height) <= MAX_HEIGHT ? shadow_height[YW-1:0] : '0;
-      act_penalty <= penalty_q[27:0];
+      act_penalty <= penalty_q;
       act_config  <= config_q[30:0];
     end
   end
@@ -254,7 +258,7 @@ module sgm_axi #(
 
   sgm_top #(
     .D(D), .MAX_WIDTH(MAX_WIDTH), .MAX_HEIGHT(MAX_HEIGHT), .CENSUS_H(CENSUS_H), .LANES(LANES), .UNIQUENESS(UNIQUENESS),
-    .AD_TERM(AD_TERM)
+    .AD_TERM(AD_TERM), .RIGHT_BLOCK(RIGHT_BLOCK)
   ) u_core (
     .clk_i         (clk_i),
     .rst_ni        (rst_ni && !core_reset),
@@ -274,6 +278,7 @@ module sgm_axi #(
     .cfg_p2_i      (act_penalty[15:8]),
     .cfg_ad_cap_i  (act_penalty[23:16]),
     .cfg_ad_weight_i(act_penalty[27:24]),
+    .cfg_right_weight_i(act_penalty[31:28]),
     .cfg_mode_i    (act_config[1:0]),
     .cfg_subpixel_i(act_config[4]),
     .cfg_lr_en_i   (act_config[5]),

@@ -46,6 +46,9 @@
 // only between frames, at least one slot before the frame's first).
 // Latency: LATENCY = K DLY + 1 slots from a pixel's inputs to its cost_o /
 // side_o, L5_LAG more to its l5w_o. Throughput: one pixel per slot.
+// Reset: the memories keep their words, so side_o is all zeros until LATENCY
+// slots have passed since rst_ni (the side bundle's valid flags then read 0, as
+// a reset register chain's would).
 module sgm_right_path #(
   parameter int D      = 64,
   parameter int CW     = 7,
@@ -312,7 +315,22 @@ module sgm_right_path #(
   end
 
   // ------------------------------------------------------------ output
-  assign {side_o, cost_o} = {out_q[OWD-1 -: SIDE_W], out_q[0 +: CWD]};
+  // warm_q: LATENCY slots have passed since reset (the output word was written
+  // after it).
+  localparam int WW = $clog2(LATENCY + 1);
+  logic [WW-1:0] warm_cnt_q;
+  logic          warm_q;
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      warm_cnt_q <= '0;
+      warm_q     <= 1'b0;
+    end else if (en_i && !warm_q) begin
+      warm_cnt_q <= warm_cnt_q + 1'b1;
+      warm_q     <= warm_cnt_q == WW'(LATENCY - 1);
+    end
+  end
+  assign side_o = warm_q ? out_q[OWD-1 -: SIDE_W] : '0;
+  assign cost_o = out_q[0 +: CWD];
   // The pixel's block parity picks the ring; then W5 L5 (shift and add).
   logic l5_parity;
   sgm_delay #(.WIDTH(1), .DEPTH(L5_LAG - 1)) u_parity (

@@ -16,7 +16,8 @@
 // mode 3, uniqueness ratio above 99, an AD term whose largest value added to the
 // mode's Cmax leaves the cost word) is dropped whole, and so is a frame that asks
 // for a run-time lever the build lacks (a uniqueness ratio other than 0 with
-// UNIQUENESS = 0, an AD weight other than 0 with AD_TERM = 0).
+// UNIQUENESS = 0, an AD weight other than 0 with AD_TERM = 0, a fifth-path weight
+// other than 0 with RIGHT_PATH = 0) or a fifth-path weight above 8.
 //
 // Configuration is sampled with the tuser beat's handshake (kept per input
 // buffer entry) and applied when that frame starts; the P2 table is refilled then (lut_start_o) and the
@@ -32,8 +33,8 @@
 // cost word holds 0 .. 2^CBITS - 1, CBITS = bits of 2 NB), XW/YW column/row
 // bits (rows count on past the frame while flushing: MAX_HEIGHT + flush rows
 // must fit YW bits), PW penalty bits, DW disparity bits (DW <= 15), FIFO_DEPTH,
-// UNIQUENESS and AD_TERM (sgm_top's: whether the build has the uniqueness test
-// and the AD term; 0 rejects frames that set them).
+// UNIQUENESS, AD_TERM and RIGHT_PATH (sgm_top's: whether the build has the
+// uniqueness test, the AD term, the fifth path; 0 rejects frames that set them).
 // Throughput: one beat per cycle in both directions when the output is ready.
 module sgm_stream_ctrl #(
   parameter int MAX_WIDTH  = 1280,
@@ -46,7 +47,8 @@ module sgm_stream_ctrl #(
   parameter int DW         = 10,
   parameter int FIFO_DEPTH = 4,
   parameter int UNIQUENESS = 1,
-  parameter int AD_TERM    = 1
+  parameter int AD_TERM    = 1,
+  parameter int RIGHT_PATH = 0
 ) (
   input  wire                 clk_i,
   input  wire                 rst_ni,
@@ -79,6 +81,7 @@ module sgm_stream_ctrl #(
   input  wire  [6:0]          cfg_unique_i,
   input  wire  [3:0]          cfg_ad_weight_i,
   input  wire  [7:0]          cfg_ad_cap_i,
+  input  wire  [3:0]          cfg_right_weight_i,
   // The latched configuration, constant while a frame's slots flow.
   output logic [XW-1:0]       width_o,
   output logic [YW-1:0]       height_o,
@@ -96,6 +99,7 @@ module sgm_stream_ctrl #(
   output logic [6:0]          unique_o,      // uniqueness ratio in % (0 .. 99; 0 off)
   output logic [3:0]          ad_weight_o,   // AD term weight (0 off)
   output logic [7:0]          ad_cap_o,      // AD term cap
+  output logic [3:0]          right_weight_o, // fifth path weight W5 (0 off, 1 .. 8)
   output logic                lut_start_o,
   input  wire                 lut_ready_i,
   // Pipeline slots.
@@ -153,17 +157,19 @@ module sgm_stream_ctrl #(
   wire        ad_fits = ad_cmax + 10'(ad_max[11:3]) <= 10'((1 << CBITS) - 1);
   wire        unused_ad = ^ad_max[2:0];
   // A lever the build lacks must be off (UNIQUENESS / AD_TERM = 0).
-  wire        has_levers = (UNIQUENESS != 0 || cfg_unique_i == 7'd0) && (AD_TERM != 0 || cfg_ad_weight_i == 4'd0);
+  wire        has_levers = (UNIQUENESS != 0 || cfg_unique_i == 7'd0) && (AD_TERM != 0 || cfg_ad_weight_i == 4'd0) &&
+                           (RIGHT_PATH != 0 || cfg_right_weight_i == 4'd0);
   wire cfg_ok = cfg_width_i >= XW'(MIN_WIDTH) && cfg_width_i <= XW'(MAX_WIDTH) &&
                 cfg_height_i >= YW'(9) && cfg_height_i <= YW'(MAX_HEIGHT) &&
-                cfg_p2_i >= cfg_p1_i && cfg_mode_i != 2'd3 && cfg_unique_i <= 7'd99 && ad_fits && has_levers;
-  localparam int CFGW = XW + YW + 2 * PW + 32;
+                cfg_p2_i >= cfg_p1_i && cfg_mode_i != 2'd3 && cfg_unique_i <= 7'd99 && ad_fits && has_levers &&
+                cfg_right_weight_i <= 4'd8;
+  localparam int CFGW = XW + YW + 2 * PW + 36;
   logic [CFGW-1:0] pend_q [0:1];
   always_ff @(posedge clk_i) begin
     if (in_push && s_tuser_i)
       pend_q[in_wr_q] <= {cfg_ok, cfg_width_i, cfg_height_i, cfg_p1_i, cfg_p2_i, cfg_mode_i, cfg_subpixel_i,
                           cfg_lr_en_i, cfg_lr_tol_i, cfg_fill_i, cfg_snap_i, cfg_median_i, cfg_p2_mode_i,
-                          cfg_weights_i, cfg_unique_i, cfg_ad_weight_i, cfg_ad_cap_i};
+                          cfg_weights_i, cfg_unique_i, cfg_ad_weight_i, cfg_ad_cap_i, cfg_right_weight_i};
   end
   // The configuration of the head beat (meaningful when it is a tuser beat).
   logic [XW-1:0] pend_width;
@@ -175,10 +181,11 @@ module sgm_stream_ctrl #(
   logic [6:0]    pend_unique;
   logic [3:0]    pend_ad_weight;
   logic [7:0]    pend_ad_cap;
+  logic [3:0]    pend_right_weight;
   logic          pend_ok;
   assign {pend_ok, pend_width, pend_height, pend_p1, pend_p2, pend_mode, pend_subpixel, pend_lr_en,
           pend_lr_tol, pend_fill, pend_snap, pend_median, pend_p2_mode, pend_weights, pend_unique,
-          pend_ad_weight, pend_ad_cap} = pend_q[in_rd_q];
+          pend_ad_weight, pend_ad_cap, pend_right_weight} = pend_q[in_rd_q];
 
   // ---------------------------------------------------------------- output FIFO
   localparam int FAW = $clog2(FIFO_DEPTH);
@@ -284,6 +291,7 @@ module sgm_stream_ctrl #(
             unique_o    <= pend_unique;
             ad_weight_o <= pend_ad_weight;
             ad_cap_o    <= pend_ad_cap;
+            right_weight_o <= pend_right_weight;
             lut_start_o <= 1'b1;
             state_q     <= FILL;
           end

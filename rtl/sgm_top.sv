@@ -24,6 +24,11 @@
 // delay line); with 0 the logic is not built, the latencies are the same, and a
 // frame that asks for the missing lever (cfg_unique_i != 0, cfg_ad_weight_i != 0)
 // is dropped with error_o[3] (sgm_axi's FEATURES register reports the build).
+// RIGHT_BLOCK = B > 0 builds the fifth path, 0 degrees from the right, in blocks of
+// B pixels with one block of look-ahead (sgm_right_path, docs/algorithm.md section 5;
+// run-time weight cfg_right_weight_i, 0 = off): it sits between the cost volume and
+// the path engine and delays everything behind the census by its latency
+// (K (4B + ceil(3 / K)) + 1 slots); 0 (the default) leaves it out.
 // Frame constraints: MIN_FRAME_WIDTH (max(D, 16); with many lanes at least the
 // engine's K SKEW + 1) <= width <= MAX_WIDTH, 9 <= height <= MAX_HEIGHT
 // (frames outside are dropped and flagged in error_o[3], as are P2' < P1, cfg_mode_i = 3
@@ -41,6 +46,7 @@ module sgm_top #(
   parameter int LANES      /*verilator public*/ = 1,
   parameter int UNIQUENESS /*verilator public*/ = 1,  // the uniqueness ratio is built (0: not)
   parameter int AD_TERM    /*verilator public*/ = 1,  // the AD term is built (0: not)
+  parameter int RIGHT_BLOCK /*verilator public*/ = 0,  // the fifth path's block B (a power of two >= 2), 0: not built
   localparam int XW        = $clog2(MAX_WIDTH + 1),
   // Lanes (docs/reschedule.md "The top's wiring at K lanes"). The engine's
   // SKEW (sgm_path_engine owns the formula; mirrored here for the deal, checked
@@ -60,21 +66,26 @@ module sgm_top #(
   // (3 when it was derived; 4 since the AD term's stage: each slot more there
   // is a slot later for every write).
   localparam int COST_LATENCY = 4,  // sgm_cost_volume LATENCY
+  // The fifth path: RP_LATENCY bounds sgm_right_path's LATENCY (K (4B + ceil(3 / K))
+  // + 1 <= K (4B + 3) + 1) for the row counts below.
+  localparam int RIGHT_PATH = RIGHT_BLOCK != 0 ? 1 : 0,
+  localparam int RP_LATENCY = RIGHT_PATH != 0 ? LANES * (4 * RIGHT_BLOCK + 3) + 1 : 0,
   localparam int LR_WAIT    = (D + 4) * LANES + COST_LATENCY,
   localparam int LR_LAG_MAX = LANES == 1 ? 0 :
                               2 * LANES - 3 + (LR_WAIT + MIN_FRAME_WIDTH - 1) / MIN_FRAME_WIDTH,
   localparam int YW        = $clog2(MAX_HEIGHT + 16),  // height ports
   // Row positions inside the core: rows before a frame's row 0 (negative,
   // RW-bit wrap) and after its last (flush) must not alias: 16 with one lane,
-  // LR_LAG_MAX and the lanes' lead more.
-  localparam int RW        = $clog2(MAX_HEIGHT + 16 + (LANES == 1 ? 0 : 2 * LR_LAG_MAX + 2 * LANES + 4)),
+  // LR_LAG_MAX and the lanes' lead more, and the rows the fifth path's delay adds to the flush.
+  localparam int RW        = $clog2(MAX_HEIGHT + 16 + (LANES == 1 ? 0 : 2 * LR_LAG_MAX + 2 * LANES + 4) +
+                                    (RIGHT_PATH != 0 ? RP_LATENCY / MIN_FRAME_WIDTH + 2 : 0)),
   localparam int LD        = $clog2(D),
   localparam int DW        = LD + 4,
   localparam int NB        = 9 * CENSUS_H - 1,            // census bits: 44 (9x5), 80 (9x9)
   localparam int RKW       = $clog2(NB + 1),              // rank 0 .. NB
   localparam int CBITS     = $clog2(2 * NB + 1),          // matching cost: Cmax = 2 NB (unified)
   localparam int LW        = $clog2(2 * NB + 255 + 1),    // path cost: Cmax + P2'max (343 / 415 < 512)
-  localparam int SW        = LW + 4  // S = 3 L0 + 2 L45 + 3 L90 + 2 L135 < 10 x 2^LW (equal: 4 x)
+  localparam int SW        = LW + 4 + RIGHT_PATH  // S = 3 L0 + 2 L45 + 3 L90 + 2 L135 (+ W5 L5) < 10 (+ 15) x 2^LW
 ) (
   input  wire          clk_i,
   input  wire          rst_ni,
@@ -107,6 +118,7 @@ module sgm_top #(
   input  wire  [6:0]   cfg_unique_i,   // uniqueness ratio in %: 0 off, 1 .. 99 (100 .. 127: out of range, error_o[3])
   input  wire  [3:0]   cfg_ad_weight_i, // AD term weight W: 0 off, 1 .. 15
   input  wire  [7:0]   cfg_ad_cap_i,    // AD term cap T; Cmax of the mode + (W T) >> 3 >= 2^CBITS: out of range, error_o[3]
+  input  wire  [3:0]   cfg_right_weight_i, // fifth path weight W5: 0 off, 1 .. 8 (9 .. 15, or any but 0 without RIGHT_BLOCK: error_o[3])
   // Status.
   output logic         busy_o,
   output logic         frame_done_o,
@@ -134,6 +146,7 @@ module sgm_top #(
   logic [2:0]    lr_tol;
   logic [6:0]    uniq;
   logic [3:0]    ad_weight;
+  logic [3:0]    right_weight;
   logic [7:0]    ad_cap;
   logic          lut_start, lut_ready;
   logic          res_valid, res_ok;
@@ -150,7 +163,8 @@ module sgm_top #(
     .DW        (DW),
     .FIFO_DEPTH(4),
     .UNIQUENESS(UNIQUENESS),
-    .AD_TERM   (AD_TERM)
+    .AD_TERM   (AD_TERM),
+    .RIGHT_PATH(RIGHT_PATH)
   ) u_ctrl (
     .clk_i         (clk_i),
     .rst_ni        (rst_ni),
@@ -180,6 +194,7 @@ module sgm_top #(
     .cfg_unique_i  (cfg_unique_i),
     .cfg_ad_weight_i(cfg_ad_weight_i),
     .cfg_ad_cap_i  (cfg_ad_cap_i),
+    .cfg_right_weight_i(cfg_right_weight_i),
     .width_o       (width),
     .height_o      (height),
     .p1_o          (p1),
@@ -196,6 +211,7 @@ module sgm_top #(
     .unique_o      (uniq),
     .ad_weight_o   (ad_weight),
     .ad_cap_o      (ad_cap),
+    .right_weight_o(right_weight),
     .lut_start_o   (lut_start),
     .lut_ready_i   (lut_ready),
     .en_o          (en_ctrl),
@@ -239,9 +255,11 @@ module sgm_top #(
   logic [RW-1:0] cen_row;
   logic          cen_active;
   // The LR check's read position: the path engine's output position (col3,
-  // row3) with one lane, with K lanes the raster census position LR_LAG rows back.
-  logic [XW-1:0]  col3, rd_col;
-  logic [RW-1:0]  row3, rd_row;
+  // row3) with one lane, with K lanes the raster census position LR_LAG rows back
+  // (rdt_*: sgm_lane_timing's, delayed with the census side when the fifth path
+  // is built).
+  logic [XW-1:0]  col3, rd_col, rdt_col, rdt_col_e;
+  logic [RW-1:0]  row3, rd_row, rdt_row, rdt_row_e;
 
   if (LANES == 1) begin : g_raster
     assign {cen_pix_r, cen_pix_l} = {pix_r, pix_l};
@@ -251,6 +269,9 @@ module sgm_top #(
     wire unused_sof = sof0;  // only the lanes restart at it
     assign rd_col     = col3;
     assign rd_row     = row3;
+    assign rdt_col    = '0;  // no lane timing
+    assign rdt_row    = '0;
+    wire unused_rdt = ^{rdt_col_e, rdt_row_e};
   end else begin : g_lanes
     localparam int LANE_LEAD = LANES - 1;
     localparam int DEAL_ROWS = 1 << $clog2(2 * LANES - 2);
@@ -266,9 +287,11 @@ module sgm_top #(
       .col_i     (col0),
       .row_i     (row0),
       .sof_i     (sof0),
-      .rd_col_o  (rd_col),
-      .rd_row_o  (rd_row)
+      .rd_col_o  (rdt_col),
+      .rd_row_o  (rdt_row)
     );
+    assign rd_col = rdt_col_e;
+    assign rd_row = rdt_row_e;
     sgm_lane_deal #(
       .WIDTH(16), .LANES(LANES), .SKEW(SKEW), .LANE_LEAD(LANE_LEAD), .ROWS(DEAL_ROWS),
       .MAX_WIDTH(MAX_WIDTH), .XW(XW), .YW(RW)
@@ -344,7 +367,7 @@ module sgm_top #(
 
   // ------------------------------------------------------------ costs
   logic [D*CBITS-1:0] cost;
-  logic [XW-1:0]      unused_col2;  // the engine takes the column COST_LATENCY slots earlier
+  logic [XW-1:0]      col2;  // the engine takes the column COST_LATENCY slots earlier; the fifth path this one
   logic               valid2;
 
   sgm_cost_volume #(.D(D), .CW(XW), .NB(NB), .LANES(LANES), .AD_TERM(AD_TERM)) u_cost (
@@ -363,9 +386,70 @@ module sgm_top #(
     .rrank_i   (lane_rank_r),
     .valid_i   (lane_valid),
     .cost_o    (cost),
-    .col_o     (unused_col2),
+    .col_o     (col2),
     .valid_o   (valid2)
   );
+
+  // ------------------------------------------------------------ fifth path
+  // With RIGHT_BLOCK > 0, sgm_right_path takes the costs and gives them back
+  // RP_LATENCY slots later with the fifth path's W5 L5 LANES + 1 slots behind
+  // them (the engine's S stage). Everything the stages behind it take from the
+  // census side (the census position, row and grays of the engine, the edge
+  // snap's gray writes, the LR check's read position) rides in its side bundle,
+  // delayed alike: the schedule behind the census is today's, RP_LATENCY slots
+  // later (the LR check's and the snap's row counts unchanged).
+  localparam int L5W = LW + 4;
+  logic [D*CBITS-1:0] cost_e;      // the engine's costs
+  logic               valid2_e;
+  logic [XW-1:0]      lane_col_e;  // census-side signals, delayed with the costs
+  logic [RW-1:0]      lane_row_e;
+  logic [7:0]         lane_centre_e;
+  logic [31:0]        lane_nbr_e;
+  logic               lane_valid_e;
+  logic [D*L5W-1:0]   l5w;
+  logic               lut_ready_paths, lut_ready_right;
+  assign lut_ready = lut_ready_paths && lut_ready_right;
+
+  if (RIGHT_PATH != 0) begin : g_right
+    logic [7:0] gray2;  // the left gray beside its costs
+    sgm_delay #(.WIDTH(8), .DEPTH(COST_LATENCY)) u_gray2 (
+      .clk_i (clk_i),
+      .en_i  (en),
+      .d_i   (lane_centre),
+      .q_o   (gray2)
+    );
+    localparam int SIDE_W = 2 * XW + 2 * RW + 8 + 32 + 2;
+    sgm_right_path #(
+      .D(D), .CW(CBITS), .LW(LW), .PW(8), .BLOCK(RIGHT_BLOCK), .XW(XW), .LANES(LANES), .SIDE_W(SIDE_W),
+      .L5_LAG(LANES + 1)
+    ) u_right (
+      .clk_i       (clk_i),
+      .rst_ni      (rst_ni),
+      .en_i        (en),
+      .width_i     (width),
+      .p1_i        (p1),
+      .weight_i    (right_weight),
+      .lut_start_i (lut_start),
+      .p2_i        (p2),
+      .p2_mode_i   (p2_mode),
+      .lut_ready_o (lut_ready_right),
+      .cost_i      (cost),
+      .gray_i      (gray2),
+      .col_i       (col2),
+      .side_i      ({lane_col, lane_row, lane_centre, lane_nbr, lane_valid, valid2, rdt_col, rdt_row}),
+      .cost_o      (cost_e),
+      .side_o      ({lane_col_e, lane_row_e, lane_centre_e, lane_nbr_e, lane_valid_e, valid2_e, rdt_col_e, rdt_row_e}),
+      .l5w_o       (l5w)
+    );
+  end else begin : g_four
+    assign lut_ready_right = 1'b1;
+    assign {cost_e, valid2_e} = {cost, valid2};
+    assign {lane_col_e, lane_row_e, lane_centre_e, lane_nbr_e, lane_valid_e} =
+           {lane_col, lane_row, lane_centre, lane_nbr, lane_valid};
+    assign {rdt_col_e, rdt_row_e} = {rdt_col, rdt_row};
+    assign l5w = '0;
+    wire unused_right = ^{right_weight, col2};
+  end
 
   // The path engine also needs the row and the left grays of the pixel,
   // GRAY_LEAD slot ahead of the costs (its P2 lookup then runs in the slot
@@ -377,7 +461,7 @@ module sgm_top #(
   sgm_delay #(.WIDTH(RW + 8 + 32), .DEPTH(COST_LATENCY - GRAY_LEAD)) u_align_cost (
     .clk_i (clk_i),
     .en_i  (en),
-    .d_i   ({lane_row, lane_centre, lane_nbr}),
+    .d_i   ({lane_row_e, lane_centre_e, lane_nbr_e}),
     .q_o   ({row2, centre2, nbr2})
   );
 
@@ -389,7 +473,7 @@ module sgm_top #(
   // census unit's column (COST_LATENCY slots ahead) goes straight in.
   sgm_path_engine #(
     .D(D), .CW(CBITS), .LW(LW), .PW(8), .MAX_WIDTH(MAX_WIDTH), .XW(XW), .YW(RW), .GRAY_LEAD(GRAY_LEAD),
-    .COL_LEAD(COST_LATENCY), .LANES(LANES)
+    .COL_LEAD(COST_LATENCY), .LANES(LANES), .RIGHT_PATH(RIGHT_PATH)
   ) u_paths (
     .clk_i       (clk_i),
     .rst_ni      (rst_ni),
@@ -400,13 +484,14 @@ module sgm_top #(
     .lut_start_i (lut_start),
     .p2_i        (p2),
     .p2_mode_i   (p2_mode),
-    .lut_ready_o (lut_ready),
-    .cost_i      (cost),
-    .col_i       (lane_col),
+    .lut_ready_o (lut_ready_paths),
+    .cost_i      (cost_e),
+    .col_i       (lane_col_e),
     .row_i       (row2),
-    .valid_i     (valid2),
+    .valid_i     (valid2_e),
     .centre_i    (centre2),
     .nbr_i       (nbr2),
+    .l5w_i       (l5w),
     .s_o         (sum),
     .col_o       (col3),
     .row_o       (row3),
@@ -527,10 +612,10 @@ module sgm_top #(
     .snap_en_i   (snap_en),
     .width_i     (width),
     .height_i    (height),
-    .gray_we_i   (lane_valid),
-    .gray_col_i  (lane_col),
-    .gray_row_i  (lane_row),
-    .gray_i      (lane_centre),
+    .gray_we_i   (lane_valid_e),
+    .gray_col_i  (lane_col_e),
+    .gray_row_i  (lane_row_e),
+    .gray_i      (lane_centre_e),
     .disp_i      (fill_disp),
     .valid_i     (fill_ok),
     .in_valid_i  (fill_valid),

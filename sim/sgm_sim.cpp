@@ -75,7 +75,13 @@ int main(int argc, char** argv) {
     if (params.p2 > 255) throw Error("P2'=" + std::to_string(params.p2) + " exceeds the core's 8-bit input");
     if (params.lrTolerance > 7) throw Error("LR tolerance " + std::to_string(params.lrTolerance) + " exceeds the core's 3-bit input");
     if (params.experimental())
-      throw Error("--right-path, --right-block, --subpixel-fit linear and --mgm are golden-only experiments, not in the core");
+      throw Error("--right-path without --right-block, --subpixel-fit linear and --mgm are golden-only experiments, not in the core");
+    constexpr int kRightBlock = Vsgm_top_sgm_top::RIGHT_BLOCK;  // this build's fifth path (0: none)
+    if (params.rightPathWeight && params.rightPathBlock != kRightBlock)
+      throw Error(kRightBlock ? "this simulator's fifth path runs in blocks of " + std::to_string(kRightBlock) +
+                                    " (--right-block " + std::to_string(kRightBlock) + ")"
+                              : std::string("this simulator is built without the fifth path (make sim RIGHT_BLOCK=B "
+                                            "builds one)"));
     const std::string out = args.text("out", "build/sim");
     checkOutputDirectory(out);  // before the simulation; created only to write the results
     const double stall = args.real("stall", 0.0, 0.0, 0.95);

@@ -10,7 +10,8 @@ uint32_t Driver::encodeSize(uint32_t width, uint32_t height) {
 uint32_t Driver::encodePenalty(const FrameConfig& f) {
   return (f.p1 & SGM_PENALTY_FIELD_MASK) << SGM_PENALTY_P1_SHIFT | (f.p2 & SGM_PENALTY_FIELD_MASK) << SGM_PENALTY_P2_SHIFT |
          (f.adCap & SGM_PENALTY_FIELD_MASK) << SGM_PENALTY_AD_CAP_SHIFT |
-         (f.adWeight & SGM_PENALTY_AD_WEIGHT_MASK) << SGM_PENALTY_AD_WEIGHT_SHIFT;
+         (f.adWeight & SGM_PENALTY_AD_WEIGHT_MASK) << SGM_PENALTY_AD_WEIGHT_SHIFT |
+         (f.rightWeight & SGM_PENALTY_RIGHT_WEIGHT_MASK) << SGM_PENALTY_RIGHT_WEIGHT_SHIFT;
 }
 
 uint32_t Driver::encodeConfig(const FrameConfig& f) {
@@ -27,7 +28,13 @@ bool Driver::sizeFits(const Identity& id, uint32_t width, uint32_t height) {
 
 bool Driver::featuresFit(const Identity& id, const FrameConfig& f) {
   return (f.uniqueness == 0 || (id.features & SGM_FEATURES_UNIQUENESS)) &&
-         (f.adWeight == 0 || (id.features & SGM_FEATURES_AD_TERM));
+         (f.adWeight == 0 || (id.features & SGM_FEATURES_AD_TERM)) &&
+         (f.rightWeight == 0 || (id.features & SGM_FEATURES_RIGHT_PATH));
+}
+
+uint32_t Driver::rightBlock(const Identity& id) {
+  if (!(id.features & SGM_FEATURES_RIGHT_PATH)) return 0;
+  return 1u << (id.features >> SGM_FEATURES_RIGHT_BLOCK_SHIFT & SGM_FEATURES_RIGHT_BLOCK_MASK);
 }
 
 bool Driver::identify(Identity* id) {
@@ -65,6 +72,7 @@ FrameConfig Driver::readConfig() {
   f.p2 = penalty >> SGM_PENALTY_P2_SHIFT & SGM_PENALTY_FIELD_MASK;
   f.adCap = penalty >> SGM_PENALTY_AD_CAP_SHIFT & SGM_PENALTY_FIELD_MASK;
   f.adWeight = penalty >> SGM_PENALTY_AD_WEIGHT_SHIFT & SGM_PENALTY_AD_WEIGHT_MASK;
+  f.rightWeight = penalty >> SGM_PENALTY_RIGHT_WEIGHT_SHIFT & SGM_PENALTY_RIGHT_WEIGHT_MASK;
   f.mode = (config & SGM_CONFIG_MODE_MASK) >> SGM_CONFIG_MODE_SHIFT;
   f.subpixel = config & SGM_CONFIG_SUBPIXEL;
   f.lrCheck = config & SGM_CONFIG_LR_ENABLE;

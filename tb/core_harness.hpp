@@ -57,6 +57,7 @@ struct FrameInput {
   int modeCode = -1;
   int uniqueCode = -1;  // when >= 0, replaces cfg_unique_i (an out-of-range ratio on purpose)
   int adWeightCode = -1;  // when >= 0, replaces cfg_ad_weight_i (an AD term that leaves the cost word)
+  int rightWeightCode = -1;  // when >= 0, replaces cfg_right_weight_i (a fifth-path weight out of range)
   // The configuration is out of range: the core drops the frame whole (no output,
   // no frame_done_o); FrameOutput::errors is error_o once its last beat is in.
   bool dropped = false;
@@ -261,6 +262,7 @@ class CoreHarness {
     top_->cfg_unique_i = f.uniqueCode >= 0 ? f.uniqueCode : c.uniqueness;
     top_->cfg_ad_weight_i = f.adWeightCode >= 0 ? f.adWeightCode : c.adWeight;
     top_->cfg_ad_cap_i = c.adCap;
+    top_->cfg_right_weight_i = f.rightWeightCode >= 0 ? f.rightWeightCode : c.rightWeight;
   }
 
   DisparityMap decode(size_t first, int w, int h) {

@@ -30,6 +30,7 @@ struct HardwareConfig {
   bool weightsEqual = false;  // cfg_weights_i: 0 = 3,2,3,2, 1 = equal
   int uniqueness = 0;         // cfg_unique_i: ratio in %, 0 = off
   int adWeight = 0, adCap = 0;  // cfg_ad_weight_i, cfg_ad_cap_i: the AD term
+  int rightWeight = 0;          // cfg_right_weight_i: the fifth path's W5 (its block is the build's RIGHT_BLOCK)
 };
 
 inline HardwareConfig hardwareConfig(const Params& p, int width, int height) {
@@ -40,6 +41,7 @@ inline HardwareConfig hardwareConfig(const Params& p, int width, int height) {
   c.p2Paper = p.p2Mode == P2Mode::kPaper, c.weightsEqual = p.weights == PathWeighting::kEqual;
   c.uniqueness = p.uniqueness;
   c.adWeight = p.adWeight, c.adCap = p.adCap;
+  c.rightWeight = p.rightPathWeight;
   return c;
 }
 

@@ -82,10 +82,14 @@ Params drawParams(Rng& rng) {
   p.census = Vsgm_top_sgm_top::CENSUS_H == 9 ? CensusWindow::k9x9 : CensusWindow::k9x5;
   p.adWeight = rng.chance(0.5) ? 0 : rng.uniform(1, kMaxAdWeight);
   p.adCap = p.adWeight ? rng.uniform(0, largestAdCap(p.mode, p.census, p.adWeight)) : 20;
-  // A lever the build lacks (sgm_top UNIQUENESS / AD_TERM = 0) stays off: drawn all the same,
-  // so that a case is the same in every build but for it.
+  // The fifth path: half the frames, any weight, in the build's blocks.
+  p.rightPathWeight = rng.chance(0.5) ? 0 : rng.uniform(1, kMaxRightPathWeight);
+  p.rightPathBlock = Vsgm_top_sgm_top::RIGHT_BLOCK;
+  // A lever the build lacks (sgm_top UNIQUENESS / AD_TERM = 0, RIGHT_BLOCK = 0) stays off:
+  // drawn all the same, so that a case is the same in every build but for it.
   if (!Vsgm_top_sgm_top::UNIQUENESS) p.uniqueness = 0;
   if (!Vsgm_top_sgm_top::AD_TERM) p.adWeight = 0;
+  if (!Vsgm_top_sgm_top::RIGHT_BLOCK) p.rightPathWeight = 0;
   return p;
 }
 
@@ -94,7 +98,8 @@ std::string paramText(const Params& p) {
   t << costModeName(p.mode) << " P1=" << p.p1 << " P2'=" << p.p2 << " sub=" << p.subpixel << " lr=" << p.lrTolerance
     << " fill=" << p.fill << " snap=" << p.snap << " median=" << p.median << " census=" << censusWindowName(p.census)
     << " p2-mode=" << p2ModeName(p.p2Mode) << " weights=" << pathWeightingName(p.weights)
-    << " uniqueness=" << p.uniqueness << " ad=" << p.adWeight << "/" << p.adCap;
+    << " uniqueness=" << p.uniqueness << " ad=" << p.adWeight << "/" << p.adCap << " right=" << p.rightPathWeight << "/"
+    << p.rightPathBlock;
   return t.str();
 }
 

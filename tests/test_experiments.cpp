@@ -30,6 +30,9 @@ TEST(Experiments, OffByDefaultAndNotInAnyPreset) {
   q.rightPathWeight = 3;
   EXPECT_NE(q, p);
   EXPECT_EQ(sgm::presetName(q), "custom");
+  EXPECT_TRUE(q.experimental());  // the fifth path over the whole row: golden-only
+  q.rightPathBlock = 64;           // in blocks it is in the core (sgm_top RIGHT_BLOCK)
+  EXPECT_FALSE(q.experimental());
   sgm::Params u = p;  // the uniqueness ratio and the AD term are in the core: not experiments
   u.uniqueness = 15, u.adWeight = 3;
   EXPECT_FALSE(u.experimental());

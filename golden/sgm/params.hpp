@@ -77,8 +77,8 @@ inline const int* pathWeights(PathWeighting weighting) {
   return weighting == PathWeighting::kEqual ? kPathWeightsEqual : kPathWeights;
 }
 constexpr int kMaxPenalty = 6000;
-constexpr int kMaxRightPathWeight = 8;            // golden-only fifth path (Params::rightPathWeight)
-constexpr int kMaxRightPathBlock = 4096;          // golden-only fifth path's block (Params::rightPathBlock)
+constexpr int kMaxRightPathWeight = 8;            // fifth path's weight (Params::rightPathWeight; the core's 4-bit field, 9 .. 15 out of range)
+constexpr int kMaxRightPathBlock = 4096;          // fifth path's block (Params::rightPathBlock; the core: sgm_top RIGHT_BLOCK)
 constexpr int kMaxAdWeight = 15;                  // AD term weight (Params::adWeight, 4 bits in the RTL)
 constexpr int kMaxAdCap = 255;                    // AD term truncation (Params::adCap, 8 bits)
 constexpr int kAdShift = 3;                       // AD term = adWeight * min(AD, adCap) >> kAdShift                 // keeps kPathWeightSum * (Cmax + P2') < 2^16
@@ -101,13 +101,18 @@ struct Params {
   int adWeight = 0;            // AD term added to C (section 3): adWeight * min(|IL(x) - IR(x-d)|, adCap) >> 3; 0 = off
   int adCap = 20;              // the AD term's truncation (gray levels)
 
+  // The fifth path, 0 degrees from the right (docs/algorithm.md section 12), off by
+  // default: in blocks it is in the core (sgm_top RIGHT_BLOCK = rightPathBlock, run-time
+  // weight), over the whole row (rightPathBlock = 0) golden-only.
+  int rightPathWeight = 0;  // its weight in S, 0..kMaxRightPathWeight; 0 = off
+  int rightPathBlock = 0;   // per block of this many pixels with one block of look-ahead; 0 = whole row
   // Golden-only experiments (issue 15, docs/algorithm.md section 12): NOT in the RTL,
   // every one off by default, so Params{} and the presets stay bit-exact with the core.
-  int rightPathWeight = 0;  // fifth path, 0 degrees from the right over one buffered row, weight 0..kMaxRightPathWeight
-  int rightPathBlock = 0;   // the fifth path per block of this many pixels with one block of look-ahead; 0 = whole row
   bool linearSubpixel = false;  // sub-pixel by the equiangular (V) fit instead of the parabola
   bool mgm = false;             // raster-order MGM: each path averages two causal neighbours
-  bool experimental() const { return rightPathWeight || rightPathBlock || linearSubpixel || mgm; }
+  // Golden-only options: the fifth path over the whole row (in blocks it is in the
+  // core, sgm_top RIGHT_BLOCK), the equiangular sub-pixel fit, MGM.
+  bool experimental() const { return (rightPathWeight && !rightPathBlock) || linearSubpixel || mgm; }
 
   bool operator==(const Params& o) const;
   bool operator!=(const Params& o) const { return !(*this == o); }

@@ -46,6 +46,7 @@ struct FrameConfig {
   bool p2Paper = false, weightsEqual = false;  // the paper's P2'/dI and equal path weights
   uint32_t uniqueness = 0;  // uniqueness ratio in %, 0 (off) .. SGM_CONFIG_UNIQUENESS_MAX
   uint32_t adWeight = 0, adCap = 20;  // the AD term: C += (W min(AD, T)) >> 3, W 0 (off) .. 15
+  uint32_t rightWeight = 0;  // the fifth path's W5: 0 (off) .. 8, in blocks of the build's (FEATURES)
 };
 
 struct Errors {
@@ -82,9 +83,12 @@ class Driver {
   // any other and flags ERROR.CONFIG): minWidth <= width <= maxWidth, 9 <= height <= maxHeight.
   static bool sizeFits(const Identity& id, uint32_t width, uint32_t height);
   // Whether the build of this identity has every lever the frame sets (the core drops a
-  // frame with uniqueness != 0 without SGM_FEATURES_UNIQUENESS, or adWeight != 0 without
-  // SGM_FEATURES_AD_TERM, and flags ERROR.CONFIG).
+  // frame with uniqueness != 0 without SGM_FEATURES_UNIQUENESS, adWeight != 0 without
+  // SGM_FEATURES_AD_TERM, or rightWeight != 0 without SGM_FEATURES_RIGHT_PATH, and flags
+  // ERROR.CONFIG).
   static bool featuresFit(const Identity& id, const FrameConfig& frame);
+  // The fifth path's block B of the build (0: the build has no fifth path).
+  static uint32_t rightBlock(const Identity& id);
   static uint32_t encodeSize(uint32_t width, uint32_t height);
   static uint32_t encodePenalty(const FrameConfig& frame);
   static uint32_t encodeConfig(const FrameConfig& frame);

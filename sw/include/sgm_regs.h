@@ -49,12 +49,15 @@
 #define SGM_CENSUS_HEIGHT_SHIFT 8
 #define SGM_CENSUS_FIELD_MASK   0xFFu
 
-/* FEATURES: 1 = the build has the lever (sgm_top UNIQUENESS / AD_TERM); a frame that sets
- * a lever the build lacks (CONFIG.UNIQUENESS or PENALTY.AD_WEIGHT not 0) is dropped with
- * ERROR.CONFIG. Other bits are reserved (read 0). */
+/* FEATURES: 1 = the build has the lever (sgm_top UNIQUENESS / AD_TERM / RIGHT_BLOCK); a
+ * frame that sets a lever the build lacks (CONFIG.UNIQUENESS, PENALTY.AD_WEIGHT or
+ * PENALTY.RIGHT_WEIGHT not 0) is dropped with ERROR.CONFIG. Other bits are reserved (read 0). */
 #define SGM_FEATURES_UNIQUENESS (1u << 0) /* the uniqueness ratio (CONFIG.UNIQUENESS) */
 #define SGM_FEATURES_AD_TERM    (1u << 1) /* the AD term (PENALTY.AD_WEIGHT, AD_CAP) */
-#define SGM_FEATURES_MASK       0x00000003u
+#define SGM_FEATURES_RIGHT_PATH (1u << 2) /* the fifth path in blocks (PENALTY.RIGHT_WEIGHT) */
+#define SGM_FEATURES_RIGHT_BLOCK_SHIFT 8  /* 4 bits: log2 of the fifth path's block B (0 without it) */
+#define SGM_FEATURES_RIGHT_BLOCK_MASK  0xFu
+#define SGM_FEATURES_MASK       0x00000F07u
 
 #define SGM_CTRL_ENABLE         (1u << 0) /* 0: a start-of-frame beat is held back (frame boundary) */
 #define SGM_CTRL_SOFT_RESET     (1u << 1) /* write 1: reset the core (not the registers); reads 0 */
@@ -71,7 +74,9 @@
 #define SGM_PENALTY_AD_CAP_SHIFT    16     /* 8 bits: the AD term's cap T (gray levels) */
 #define SGM_PENALTY_AD_WEIGHT_SHIFT 24     /* 4 bits: the AD term's weight W, 0 off; C += (W min(AD, T)) >> 3 */
 #define SGM_PENALTY_AD_WEIGHT_MASK  0xFu
-#define SGM_PENALTY_MASK        0x0FFFFFFFu
+#define SGM_PENALTY_RIGHT_WEIGHT_SHIFT 28  /* 4 bits: the fifth path's weight W5, 0 off, 1 .. 8; S += W5 L5 */
+#define SGM_PENALTY_RIGHT_WEIGHT_MASK  0xFu
+#define SGM_PENALTY_MASK        0xFFFFFFFFu
 
 #define SGM_CONFIG_MODE_SHIFT   0          /* 2 bits */
 #define SGM_CONFIG_MODE_MASK    (3u << 0)

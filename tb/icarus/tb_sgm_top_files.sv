@@ -76,6 +76,7 @@ module tb_sgm_top_files #(
     .cfg_unique_i  (cfg_unique),
     .cfg_ad_weight_i(cfg_ad_weight),
     .cfg_ad_cap_i  (cfg_ad_cap),
+    .cfg_right_weight_i(4'd0),  // the default build has no fifth path (RIGHT_BLOCK = 0)
     .busy_o        (busy),
     .frame_done_o  (frame_done),
     .error_o       (error),

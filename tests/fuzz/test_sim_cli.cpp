@@ -100,7 +100,7 @@ TEST_F(SgmSimCli, ParametersTheBuildOrTheCoreCannotTake) {
       {{"--p2-mode", "steep"}, "unknown P2 mode 'steep'"},
       {{"--weights", "1111"}, "unknown path weights '1111'"},
       {{"--right-path", "3"}, "golden-only experiments, not in the core"},
-      {{"--right-block", "32"}, "golden-only experiments, not in the core"},
+      {{"--right-path", "3", "--right-block", "32"}, "this simulator is built without the fifth path"},
       {{"--uniqueness", "100"}, "--uniqueness=100 out of range"},
       {{"--ad-weight", "16"}, "--ad-weight=16 out of range"},
       {{"--ad-weight", "15", "--ad-cap", "45"}, "makes rsad costs exceed 127"},

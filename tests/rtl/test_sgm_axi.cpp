@@ -30,12 +30,16 @@ namespace drv = sgm::driver;
 constexpr int kD = Rtl::D;
 // The run-time levers of the build (sgm_axi UNIQUENESS, AD_TERM; axi-d16-lean builds neither),
 // as FEATURES must read them: the header's bits.
-constexpr uint32_t kFeatures = (Rtl::UNIQUENESS ? SGM_FEATURES_UNIQUENESS : 0u) | (Rtl::AD_TERM ? SGM_FEATURES_AD_TERM : 0u);
+constexpr uint32_t log2Of(uint32_t v) { return v > 1 ? 1 + log2Of(v / 2) : 0; }
+constexpr uint32_t kFeatures =
+    (Rtl::UNIQUENESS ? SGM_FEATURES_UNIQUENESS : 0u) | (Rtl::AD_TERM ? SGM_FEATURES_AD_TERM : 0u) |
+    (Rtl::RIGHT_BLOCK ? SGM_FEATURES_RIGHT_PATH | log2Of(Rtl::RIGHT_BLOCK) << SGM_FEATURES_RIGHT_BLOCK_SHIFT : 0u);
 
 // The settings with every lever the build lacks off (bit-exact frames run what the build has).
 sgm::Params withBuildLevers(sgm::Params p) {
   if (!Rtl::UNIQUENESS) p.uniqueness = 0;
   if (!Rtl::AD_TERM) p.adWeight = 0;
+  if (!Rtl::RIGHT_BLOCK) p.rightPathWeight = 0;
   return p;
 }
 
@@ -56,7 +60,7 @@ drv::FrameConfig frameConfig(const sgm::Params& p, cv::Size size) {
   f.width = c.width, f.height = c.height, f.p1 = c.p1, f.p2 = c.p2, f.mode = c.mode, f.subpixel = c.subpixel;
   f.lrCheck = c.lrEnable, f.lrTolerance = c.lrTolerance, f.fill = c.fill, f.snap = c.snap, f.median = c.median;
   f.p2Paper = c.p2Paper, f.weightsEqual = c.weightsEqual, f.uniqueness = c.uniqueness;
-  f.adWeight = c.adWeight, f.adCap = c.adCap;
+  f.adWeight = c.adWeight, f.adCap = c.adCap, f.rightWeight = c.rightWeight;
   return f;
 }
 
@@ -139,6 +143,8 @@ TEST(SgmAxi, RtlOffsetsAndResetValuesMatchTheHeader) {
       {"ID_VALUE", {Rtl::ID_VALUE, SGM_ID_VALUE}},
       {"FEATURES_UNIQUENESS", {1u << Rtl::FEATURES_UNIQUENESS_BIT, SGM_FEATURES_UNIQUENESS}},
       {"FEATURES_AD_TERM", {1u << Rtl::FEATURES_AD_TERM_BIT, SGM_FEATURES_AD_TERM}},
+      {"FEATURES_RIGHT_PATH", {1u << Rtl::FEATURES_RIGHT_PATH_BIT, SGM_FEATURES_RIGHT_PATH}},
+      {"FEATURES_RIGHT_BLOCK", {uint32_t(Rtl::FEATURES_RIGHT_BLOCK_LSB), SGM_FEATURES_RIGHT_BLOCK_SHIFT}},
       {"FEATURES_VALUE", {Rtl::FEATURES_VALUE, kFeatures}},
       {"PENALTY_RESET", {Rtl::PENALTY_RESET, SGM_PENALTY_RESET}},
       {"CONFIG_RESET", {Rtl::CONFIG_RESET, SGM_CONFIG_RESET}},
@@ -246,13 +252,17 @@ TEST(SgmAxi, FeaturesAgreeWithTheCore) {
   unique.uniqueness = 30;
   sgm::Params ad = defaults();
   ad.adWeight = 5, ad.adCap = 24;
+  sgm::Params right = defaults();  // the fifth path in the build's blocks (any block when it has none)
+  right.rightPathWeight = 4, right.rightPathBlock = Rtl::RIGHT_BLOCK ? Rtl::RIGHT_BLOCK : 16, right.p1 = 24, right.p2 = 200;
+  EXPECT_EQ(drv::Driver::rightBlock(id), uint32_t(Rtl::RIGHT_BLOCK));
   const int w = 40, h = 11;
   uint32_t seed = 30;
-  for (const sgm::Params& p : {unique, ad}) {
+  for (const sgm::Params& p : {unique, ad, right}) {
     const drv::FrameConfig config = frameConfig(p, {w, h});
     const bool fits = drv::Driver::featuresFit(id, config);
-    EXPECT_EQ(fits, p.uniqueness ? (kFeatures & SGM_FEATURES_UNIQUENESS) != 0 : (kFeatures & SGM_FEATURES_AD_TERM) != 0);
-    const std::string what = p.uniqueness ? "uniqueness 30" : "AD weight 5";
+    const uint32_t lever = p.uniqueness ? SGM_FEATURES_UNIQUENESS : p.adWeight ? SGM_FEATURES_AD_TERM : SGM_FEATURES_RIGHT_PATH;
+    EXPECT_EQ(fits, (kFeatures & lever) != 0);
+    const std::string what = p.uniqueness ? "uniqueness 30" : p.adWeight ? "AD weight 5" : "fifth path weight 4";
     if (fits) {
       c.expectBitExact({scene(w, h, ++seed, p)}, what + " in a build that has it");
       EXPECT_EQ(c.driver.errors().sticky, 0u) << what;

@@ -8,7 +8,8 @@
 // The run-time levers are the build's (UNIQUENESS, AD_TERM, read from the model):
 // in a lean build (top-d16-lean: both 0) the bit-exact tests run with the lever it
 // lacks off, and LeversTheBuildLacksAreDroppedThenGoodFrame expects the frames that
-// ask for it dropped.
+// ask for it dropped. A build with the fifth path (RIGHT_BLOCK = B) runs it in its
+// defaults (weight 4, blocks of B) and in the settings and parameter sets.
 #include "Vsgm_top.h"
 #include "Vsgm_top_sgm_top.h"
 #include "core_harness.hpp"
@@ -44,17 +45,23 @@ constexpr int kMaxWidth = Vsgm_top_sgm_top::MAX_WIDTH;  // of this build
 constexpr int kCensusH = Vsgm_top_sgm_top::CENSUS_H;    // 5 or 9
 constexpr bool kUniqueness = Vsgm_top_sgm_top::UNIQUENESS != 0;  // the build has the uniqueness ratio
 constexpr bool kAdTerm = Vsgm_top_sgm_top::AD_TERM != 0;         // the build has the AD term
+constexpr int kRightBlock = Vsgm_top_sgm_top::RIGHT_BLOCK;       // the fifth path's block (0: not built)
 constexpr bool kLean = !kUniqueness || !kAdTerm;
 
-// The settings with every lever the build lacks off (bit-exact tests run what the build has).
+// The settings with every lever the build lacks off (bit-exact tests run what the build
+// has); the fifth path in the build's blocks.
 sgm::Params withBuildLevers(sgm::Params p) {
   if (!kUniqueness) p.uniqueness = 0;
   if (!kAdTerm) p.adWeight = 0;
+  if (!kRightBlock) p.rightPathWeight = 0;
+  p.rightPathBlock = p.rightPathWeight ? kRightBlock : 0;
   return p;
 }
 
 // Whether the core drops a frame of these settings for a lever its build lacks.
-bool asksMissingLever(const sgm::Params& p) { return (p.uniqueness && !kUniqueness) || (p.adWeight && !kAdTerm); }
+bool asksMissingLever(const sgm::Params& p) {
+  return (p.uniqueness && !kUniqueness) || (p.adWeight && !kAdTerm) || (p.rightPathWeight && !kRightBlock);
+}
 
 // A textured left image and a right image shifted by a few pixels plus noise.
 FrameInput syntheticPair(int w, int h, std::mt19937& rng, const sgm::Params& params) {
@@ -73,10 +80,12 @@ FrameInput syntheticPair(int w, int h, std::mt19937& rng, const sgm::Params& par
   return FrameInput{left, right, params};
 }
 
-// Our defaults in a 9x5 build, the paper preset in a 9x9 build.
+// Our defaults in a 9x5 build, the paper preset in a 9x9 build; with the fifth path
+// built, weight 4 in its blocks.
 sgm::Params hardwareDefaults() {
   sgm::Params p = sgm::presetParams(kCensusH == 9 ? "paper" : "default");
   p.disparities = kD;
+  if (kRightBlock) p.rightPathWeight = 4, p.rightPathBlock = kRightBlock;
   return p;
 }
 
@@ -162,23 +171,26 @@ TEST(SgmTop, OutOfRangeConfigurationIsDroppedThenGoodFrame) {
       {"cost mode 3", syntheticPair(kMinWidth + 4, 9, rng, hardwareDefaults())},
       {"uniqueness 100", syntheticPair(kMinWidth + 3, 9, rng, hardwareDefaults())},
       {"uniqueness 127", syntheticPair(kMinWidth + 1, 10, rng, hardwareDefaults())},
-      {"AD term beyond the cost word", syntheticPair(kMinWidth + 2, 9, rng, hardwareDefaults())}};
+      {"AD term beyond the cost word", syntheticPair(kMinWidth + 2, 9, rng, hardwareDefaults())},
+      {"fifth-path weight 9", syntheticPair(kMinWidth + 1, 9, rng, hardwareDefaults())}};
   std::vector<FrameInput> frames = {syntheticPair(kMinWidth, 9, rng, equal)};
   for (size_t i = 0; i < bad.size(); ++i) {
     frames.push_back(bad[i].second);
     frames.back().dropped = true;
     frames.back().modeCode = bad[i].first == "cost mode 3" ? 3 : -1;
     frames.back().uniqueCode = bad[i].first == "uniqueness 100" ? 100 : bad[i].first == "uniqueness 127" ? 127 : -1;
+    frames.back().rightWeightCode = bad[i].first == "fifth-path weight 9" ? 9 : -1;
     if (bad[i].first == "AD term beyond the cost word") {  // rsad 44 + (15 x 45) >> 3 = 128 > 127 (9x5; 9x9: 80 + 84)
       frames.back().params.adCap = Vsgm_top_sgm_top::CENSUS_H == 9 ? 255 : 45;
       frames.back().adWeightCode = 15;
     }
     sgm::Params good = i % 2 ? unified : hardwareDefaults();
     good.uniqueness = i == 6 ? 99 : 0;  // the largest ratio in range, after the first out of range
+    if (i == 9) good.rightPathWeight = sgm::kMaxRightPathWeight;  // the largest weight, after one above it
     if (i == 8) {  // weight 15 with the largest cap the build's cost word leaves this mode
       good.adWeight = 15, good.adCap = sgm::largestAdCap(good.mode, good.census, 15);
     }
-    frames.push_back(syntheticPair(kMinWidth + 8 - int(i), 9 + int(i % 3), rng, withBuildLevers(good)));
+    frames.push_back(syntheticPair(kMinWidth + 9 - int(i), 9 + int(i % 3), rng, withBuildLevers(good)));
   }
   Harness core("sgm_top_bad_config", 13, {0.2, 0.2});
   const std::vector<sgm::tb::FrameOutput> out = core.run(frames);
@@ -212,6 +224,7 @@ TEST(SgmTop, SettingsSweep) {
     p.subpixel = tol % 2 == 0;
     p.fill = tol % 4 != 1, p.snap = tol % 4 != 2, p.median = tol % 4 != 3;
     p.uniqueness = tol * 13 % 40;  // 0, 13, 26, 39, 12, 25, 38, 11
+    p.rightPathWeight = (tol * 5 + 1) % 9;  // 1, 6, 2, 7, 3, 8, 4, 0 (with the fifth path built)
     frames.push_back(syntheticPair(kMinWidth + 5 * tol + 1, 9 + tol % 3, rng, withBuildLevers(p)));
   }
   for (const auto [p1, p2] : {std::pair{255, 255}, {1, 1}, {0, 255}, {127, 129}}) {
@@ -246,7 +259,13 @@ TEST(SgmTop, ParameterSetsChangeFromFrameToFrame) {
   ad.adWeight = 3, ad.adCap = 20, ad.uniqueness = 15, ad.snap = false;
   sgm::Params adRt = hardwareDefaults();
   adRt.mode = sgm::CostMode::kRt, adRt.adWeight = 8, adRt.adCap = 60;
-  for (const sgm::Params& p : {unified, rt, paperP2, unique, ad, strict, kneeEqual, uniqueLr, adRt, raw, hardwareDefaults()})
+  sgm::Params candidate = hardwareDefaults();  // issue 15's candidate C (with the fifth path built)
+  candidate.rightPathWeight = 4, candidate.p1 = 24, candidate.p2 = 200, candidate.adWeight = 3;
+  candidate.uniqueness = 15, candidate.snap = false;
+  sgm::Params rightEqual = hardwareDefaults();  // the fifth path beside equal weights, the paper's P2
+  rightEqual.rightPathWeight = 1, rightEqual.weights = sgm::PathWeighting::kEqual, rightEqual.p2Mode = sgm::P2Mode::kPaper;
+  for (const sgm::Params& p : {unified, rt, paperP2, unique, ad, strict, kneeEqual, uniqueLr, adRt, raw, candidate,
+                               rightEqual, hardwareDefaults()})
     frames.push_back(syntheticPair(kD + 20, 20, rng, withBuildLevers(p)));
   expectBitExact(core, frames, "parameter sets");
 }
@@ -267,10 +286,13 @@ TEST(SgmTop, LeversTheBuildLacksAreDroppedThenGoodFrame) {
   both.uniqueness = 10, both.adWeight = 2, both.adCap = 12;
   sgm::Params capOnly = hardwareDefaults();
   capOnly.adCap = 255;  // weight 0: the term is off
+  sgm::Params right = hardwareDefaults();  // the fifth path, in the build's blocks when it has them
+  right.rightPathWeight = 4, right.rightPathBlock = kRightBlock ? kRightBlock : 16;
   const std::vector<std::pair<std::string, sgm::Params>> asks = {
       {"uniqueness 25", unique},         {"uniqueness 1", unique1},
       {"AD weight 4 cap 30", ad},        {"AD weight 1 cap 0", ad1},
-      {"uniqueness 10, AD weight 2", both}, {"AD cap 255 weight 0", capOnly}};
+      {"uniqueness 10, AD weight 2", both}, {"AD cap 255 weight 0", capOnly},
+      {"fifth path weight 4", right}};
   std::vector<FrameInput> frames = {syntheticPair(kMinWidth + 2, 9, rng, hardwareDefaults())};
   std::vector<std::string> what = {"first good frame"};
   for (const auto& [name, p] : asks) {
@@ -284,7 +306,8 @@ TEST(SgmTop, LeversTheBuildLacksAreDroppedThenGoodFrame) {
   Harness core("sgm_top_levers", 17, {0.2, 0.2});
   const std::vector<sgm::tb::FrameOutput> out = core.run(frames);
   for (size_t k = 0; k < frames.size(); ++k) {
-    const std::string build = std::string(" (UNIQUENESS=") + (kUniqueness ? "1" : "0") + ", AD_TERM=" + (kAdTerm ? "1" : "0") + ")";
+    const std::string build = std::string(" (UNIQUENESS=") + (kUniqueness ? "1" : "0") + ", AD_TERM=" + (kAdTerm ? "1" : "0") +
+                              ", RIGHT_BLOCK=" + std::to_string(kRightBlock) + ")";
     if (frames[k].dropped) {
       EXPECT_EQ(out[k].errors, 8u) << what[k] << build << ": error_o of a frame asking for a lever the build lacks";
       continue;
