@@ -467,8 +467,10 @@ TEST(SgmTop, RealSceneUnderStalls) {
 // REGRESS_D=64 REGRESS_MAX_WIDTH=512 REGRESS_SEED=64` runs the same cases at length.
 TEST(SgmTop, RegressionSlice) {
   // The lean build runs it too: its random scenes and settings with the levers it lacks off
-  // (tb/regress_cases.hpp drawParams).
-  if (kD != 64 && !kLean) GTEST_SKIP() << "the regression slice runs in the D = 64 and the lean builds (make regress-ci runs D = 16)";
+  // (tb/regress_cases.hpp drawParams); and the fifth-path builds, with random weights.
+  const bool other = kLean || kRightBlock;  // a build the D = 16 regression does not cover
+  if (kD != 64 && !other)
+    GTEST_SKIP() << "the regression slice runs in the D = 64, the lean and the fifth-path builds (make regress-ci runs D = 16)";
   constexpr uint64_t kMaster = 64;
   constexpr long kGoodFrames = 12;
   sgm::regress::Totals totals;
@@ -481,8 +483,8 @@ TEST(SgmTop, RegressionSlice) {
       failure = e.what();
     }
     EXPECT_EQ(failure, "") << "case " << k << " (" << c.kind << ", " << c.stallText << "); replay: "
-                           << (kLean ? "case " + std::to_string(k) + " of master seed " + std::to_string(kMaster) +
-                                           " in this lean build (sgm::regress::drawCase)"
+                           << (other ? "case " + std::to_string(k) + " of master seed " + std::to_string(kMaster) +
+                                           " in this build (sgm::regress::drawCase)"
                                      : "make regress REGRESS_D=64 REGRESS_MAX_WIDTH=512 REGRESS_SEED=" +
                                            std::to_string(kMaster) + " REGRESS_CASE=" + std::to_string(k));
     ASSERT_LT(k, 200u) << "too few good frames";
