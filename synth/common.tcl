@@ -18,6 +18,7 @@
 #   SYNTH_LANES      LANES, row lanes of the schedule (1, the default: the raster)
 #   SYNTH_UNIQUENESS UNIQUENESS, the uniqueness ratio built (1, the default) or not (0)
 #   SYNTH_AD_TERM    AD_TERM, the AD term built (1, the default) or not (0)
+#   SYNTH_RIGHT_BLOCK RIGHT_BLOCK, the fifth path's block (0, the default: not built)
 #   SYNTH_OUT        output directory of this target (created by make)
 #   SYNTH_DEFINES    Verilog macros to define, space-separated (the ECP5 flow:
 #                    SGM_DELAY_CHAIN, rtl/sgm_delay_ram.sv, and SGM_ECP5_GLOBAL,
@@ -41,6 +42,7 @@ set census_h   [env_or SYNTH_CENSUS_H 5]
 set lanes      [env_or SYNTH_LANES 1]
 set uniqueness [env_or SYNTH_UNIQUENESS 1]
 set ad_term    [env_or SYNTH_AD_TERM 1]
+set right_block [env_or SYNTH_RIGHT_BLOCK 0]
 set out        [env_or SYNTH_OUT build/synth]
 set defines    [env_or SYNTH_DEFINES ""]
 
@@ -49,7 +51,7 @@ set defines    [env_or SYNTH_DEFINES ""]
 if {"SGM_ECP5_GLOBAL" in $defines} { yosys read_verilog -lib +/ecp5/cells_bb.v }
 yosys read_verilog -sv {*}[lmap m $defines {string cat -D $m}] {*}[lsort [glob $rtl/*.sv]]
 yosys chparam -set D $d -set MAX_WIDTH $max_width -set MAX_HEIGHT $max_height -set CENSUS_H $census_h -set LANES $lanes \
-  -set UNIQUENESS $uniqueness -set AD_TERM $ad_term sgm_top
+  -set UNIQUENESS $uniqueness -set AD_TERM $ad_term -set RIGHT_BLOCK $right_block sgm_top
 yosys hierarchy -check -top sgm_top
 yosys proc
 yosys tee -o $out/check.txt check

@@ -11,7 +11,8 @@
 #                       design routes and nextpnr reports an fmax (in `make test`)
 #   make pnr-one        one run: PNR_D, PNR_MAX_WIDTH, PNR_DEVICE, PNR_PACKAGE, PNR_SPEED
 #                       (every target takes PNR_LANES, the core's LANES, default 6, and
-#                       PNR_UNIQUENESS / PNR_AD_TERM, the core's UNIQUENESS / AD_TERM, default 1)
+#                       PNR_UNIQUENESS / PNR_AD_TERM, the core's UNIQUENESS / AD_TERM, default 1,
+#                       and PNR_RIGHT_BLOCK, the core's RIGHT_BLOCK, default 0)
 #   make pnr-summary    rebuild summary.{json,md} from what build/pnr holds
 #
 # Yosys and nextpnr run one at a time (flock on build/pnr/.lock, also under
@@ -30,6 +31,7 @@ PNR_MAX_HEIGHT   ?= 1024
 PNR_LANES        ?= 6
 PNR_UNIQUENESS   ?= 1
 PNR_AD_TERM      ?= 1
+PNR_RIGHT_BLOCK  ?= 0
 PNR_DEVICE       ?= 85k
 PNR_PACKAGE      ?= CABGA381
 PNR_SPEEDS       ?= 8 6
@@ -106,7 +108,7 @@ PNR_BENCH_REPORT     := $(BUILD)/bench/report.json
 TEST_EXTRA += ecp5-cmp-check pnr-ci
 
 PNR_DIR     := $(BUILD)/pnr
-PNR_CFG      = $(PNR_DIR)/d$(PNR_D)-w$(PNR_MAX_WIDTH)$(if $(filter-out 1,$(PNR_LANES)),-k$(PNR_LANES))$(if $(filter 0,$(PNR_UNIQUENESS)),-u0)$(if $(filter 0,$(PNR_AD_TERM)),-ad0)
+PNR_CFG      = $(PNR_DIR)/d$(PNR_D)-w$(PNR_MAX_WIDTH)$(if $(filter-out 1,$(PNR_LANES)),-k$(PNR_LANES))$(if $(filter 0,$(PNR_UNIQUENESS)),-u0)$(if $(filter 0,$(PNR_AD_TERM)),-ad0)$(if $(filter-out 0,$(PNR_RIGHT_BLOCK)),-rb$(PNR_RIGHT_BLOCK))
 PNR_DEVNAME  = LFE5U-$(subst k,F,$(PNR_DEVICE))
 PNR_RUN      = $(PNR_CFG)/lfe5u-$(subst k,f,$(PNR_DEVICE))-$(PNR_SPEED)
 PNR_LOCK     = $(PNR_DIR)/.lock
@@ -170,7 +172,7 @@ $(PNR_CFG)/synth/done: $(PNR_DEPS) | pnr-tools
 	@echo "pnr: synth_ecp5, D=$(PNR_D) MAX_WIDTH=$(PNR_MAX_WIDTH) LANES=$(PNR_LANES) (log: $(@D)/yosys.log)"
 	@start=$$(date +%s); \
 	 SYNTH_RTL=rtl SYNTH_D=$(PNR_D) SYNTH_MAX_WIDTH=$(PNR_MAX_WIDTH) SYNTH_MAX_HEIGHT=$(PNR_MAX_HEIGHT) SYNTH_LANES=$(PNR_LANES) SYNTH_OUT=$(@D) \
-	   SYNTH_UNIQUENESS=$(PNR_UNIQUENESS) SYNTH_AD_TERM=$(PNR_AD_TERM) SYNTH_ECP5_FLAGS="$(PNR_SYNTH_FLAGS)" SYNTH_DEFINES="$(PNR_DEFINES)" SYNTH_ECP5_CMP_LUT=$(PNR_CMP_LUT) \
+	   SYNTH_UNIQUENESS=$(PNR_UNIQUENESS) SYNTH_AD_TERM=$(PNR_AD_TERM) SYNTH_RIGHT_BLOCK=$(PNR_RIGHT_BLOCK) SYNTH_ECP5_FLAGS="$(PNR_SYNTH_FLAGS)" SYNTH_DEFINES="$(PNR_DEFINES)" SYNTH_ECP5_CMP_LUT=$(PNR_CMP_LUT) \
 	   flock $(PNR_LOCK) timeout $(PNR_TIMEOUT) nice -n $(PNR_NICE) yosys -q -l $(@D)/yosys.log -c synth/ecp5.tcl \
 	   > $(@D)/yosys.out 2>&1; rc=$$?; \
 	 if [ $$rc != 0 ]; then echo "pnr: Yosys failed (exit $$rc):"; grep -E '^ERROR' $(@D)/yosys.log | tail -5; exit 1; fi; \

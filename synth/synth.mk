@@ -2,7 +2,7 @@
 # paper's Table III (included by the main Makefile; synth/README.md explains
 # the flow, the outputs and the figures).
 #
-#   make synth [D=64] [MAX_WIDTH=1280] [CENSUS=9x5|9x9] [LANES=1] [UNIQUENESS=1] [AD_TERM=1]
+#   make synth [D=64] [MAX_WIDTH=1280] [CENSUS=9x5|9x9] [LANES=1] [UNIQUENESS=1] [AD_TERM=1] [RIGHT_BLOCK=0]
 #                                        xc7, xc6s, generic and iCE40 synthesis of
 #                                        that configuration (CENSUS=9x9: the paper's
 #                                        census window, sgm_top's CENSUS_H = 9), the
@@ -52,7 +52,8 @@ SYNTH_LANES  ?= $(if $(LANES),$(LANES),1)
 comma := ,
 SYNTH_UNIQUENESS ?= $(if $(UNIQUENESS),$(UNIQUENESS),1)
 SYNTH_AD_TERM    ?= $(if $(AD_TERM),$(AD_TERM),1)
-SYNTH_CFG     = d$(D)-w$(MAX_WIDTH)$(if $(filter 9,$(SYNTH_CENSUS_H)),-c9x9)$(if $(filter-out 1,$(SYNTH_LANES)),-k$(SYNTH_LANES))$(if $(filter 0,$(SYNTH_UNIQUENESS)),-u0)$(if $(filter 0,$(SYNTH_AD_TERM)),-ad0)
+SYNTH_RIGHT_BLOCK ?= $(if $(RIGHT_BLOCK),$(RIGHT_BLOCK),0)
+SYNTH_CFG     = d$(D)-w$(MAX_WIDTH)$(if $(filter 9,$(SYNTH_CENSUS_H)),-c9x9)$(if $(filter-out 1,$(SYNTH_LANES)),-k$(SYNTH_LANES))$(if $(filter 0,$(SYNTH_UNIQUENESS)),-u0)$(if $(filter 0,$(SYNTH_AD_TERM)),-ad0)$(if $(filter-out 0,$(SYNTH_RIGHT_BLOCK)),-rb$(SYNTH_RIGHT_BLOCK))
 SYNTH_OUT     = $(SYNTH_DIR)/$(SYNTH_CFG)
 SYNTH_LOOP    = $(SYNTH_DIR)/ice40-loop-d$(ICE40_LOOP_D)
 SYNTH_LOCK    = $(SYNTH_DIR)/.lock
@@ -105,13 +106,13 @@ define synth_yosys
 	@echo "synth: $(1), D=$(D) MAX_WIDTH=$(MAX_WIDTH) census $(SYNTH_CENSUS) (log: $(@D)/yosys.log)"
 	@start=$$(date +%s); \
 	 commit=$$(git log -1 --format=%h -- rtl 2>/dev/null)$$(git status --porcelain -- rtl 2>/dev/null | grep -q . && echo -dirty); \
-	 SYNTH_RTL=rtl SYNTH_D=$(D) SYNTH_MAX_WIDTH=$(MAX_WIDTH) SYNTH_MAX_HEIGHT=$(SYNTH_MAX_HEIGHT) SYNTH_CENSUS_H=$(SYNTH_CENSUS_H) SYNTH_LANES=$(SYNTH_LANES) SYNTH_UNIQUENESS=$(SYNTH_UNIQUENESS) SYNTH_AD_TERM=$(SYNTH_AD_TERM) SYNTH_OUT=$(@D) $(3) \
+	 SYNTH_RTL=rtl SYNTH_D=$(D) SYNTH_MAX_WIDTH=$(MAX_WIDTH) SYNTH_MAX_HEIGHT=$(SYNTH_MAX_HEIGHT) SYNTH_CENSUS_H=$(SYNTH_CENSUS_H) SYNTH_LANES=$(SYNTH_LANES) SYNTH_UNIQUENESS=$(SYNTH_UNIQUENESS) SYNTH_AD_TERM=$(SYNTH_AD_TERM) SYNTH_RIGHT_BLOCK=$(SYNTH_RIGHT_BLOCK) SYNTH_OUT=$(@D) $(3) \
 	   flock $(SYNTH_LOCK) timeout $(SYNTH_TIMEOUT) yosys -q -l $(@D)/yosys.log -c $(2) > $(@D)/yosys.out 2>&1; rc=$$?; \
 	 if [ $$rc != 0 ]; then \
 	   if [ $$rc = 124 ]; then echo "synth: $(1): Yosys timed out after $(SYNTH_TIMEOUT) s (SYNTH_TIMEOUT)"; \
 	   else echo "synth: $(1): Yosys failed (exit $$rc):"; grep -E '^ERROR' $(@D)/yosys.log | tail -5; fi; exit 1; fi; \
 	 { echo "target=$(1)"; echo "d=$(D)"; echo "max_width=$(MAX_WIDTH)"; echo "max_height=$(SYNTH_MAX_HEIGHT)"; echo "census=$(SYNTH_CENSUS)"; \
-	   echo "uniqueness=$(SYNTH_UNIQUENESS)"; echo "ad_term=$(SYNTH_AD_TERM)"; echo "yosys=$$(yosys -V)"; echo "rtl_commit=$$commit"; \
+	   echo "uniqueness=$(SYNTH_UNIQUENESS)"; echo "ad_term=$(SYNTH_AD_TERM)"; echo "right_block=$(SYNTH_RIGHT_BLOCK)"; echo "yosys=$$(yosys -V)"; echo "rtl_commit=$$commit"; \
 	   echo "date=$$(date -u +%Y-%m-%dT%H:%M:%SZ)"; echo "seconds=$$(( $$(date +%s) - start ))"; } > $(@D)/meta.txt; \
 	 echo "synth: $(1) done in $$(( $$(date +%s) - start )) s"
 	@touch $@
