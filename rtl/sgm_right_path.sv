@@ -69,10 +69,13 @@ module sgm_right_path #(
   input  wire  [XW-1:0]    width_i,
   input  wire  [PW-1:0]    p1_i,
   input  wire  [3:0]       weight_i,  // W5 (constant while a frame flows)
-  // P2 table fill (sgm_p2_lut, the table of the four forward paths).
+  // P2 table fill (sgm_p2_lut, the table of the four forward paths); lut_ready_o
+  // is this table's ready and lut_ready_i (the other tables filled with it: the
+  // top stays wiring only, the hierarchical synthesis flows need that).
   input  wire              lut_start_i,
   input  wire  [PW-1:0]    p2_i,
   input  wire              p2_mode_i,
+  input  wire              lut_ready_i,
   output logic             lut_ready_o,
   // Slot input.
   input  wire  [D*CW-1:0]  cost_i,
@@ -174,6 +177,8 @@ module sgm_right_path #(
   // ------------------------------------------------------------ the two passes
   logic [2*PW-1:0] p2r;
   logic [15:0]     lut_idx;
+  logic            lut_ready_own;
+  assign lut_ready_o = lut_ready_own && lut_ready_i;
   sgm_p2_lut #(.PW(PW), .NPORTS(2)) u_p2_lut (
     .clk_i   (clk_i),
     .rst_ni  (rst_ni),
@@ -181,7 +186,7 @@ module sgm_right_path #(
     .p1_i    (p1_i),
     .p2_i    (p2_i),
     .mode_i  (p2_mode_i),
-    .ready_o (lut_ready_o),
+    .ready_o (lut_ready_own),
     .en_i    (en_i),
     .idx_i   (lut_idx),
     .p2r_o   (p2r)

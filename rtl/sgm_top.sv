@@ -407,8 +407,7 @@ module sgm_top #(
   logic [31:0]        lane_nbr_e;
   logic               lane_valid_e;
   logic [D*L5W-1:0]   l5w;
-  logic               lut_ready_paths, lut_ready_right;
-  assign lut_ready = lut_ready_paths && lut_ready_right;
+  logic               lut_ready_paths;
 
   if (RIGHT_PATH != 0) begin : g_right
     logic [7:0] gray2;  // the left gray beside its costs
@@ -432,7 +431,8 @@ module sgm_top #(
       .lut_start_i (lut_start),
       .p2_i        (p2),
       .p2_mode_i   (p2_mode),
-      .lut_ready_o (lut_ready_right),
+      .lut_ready_i (lut_ready_paths),
+      .lut_ready_o (lut_ready),
       .cost_i      (cost),
       .gray_i      (gray2),
       .col_i       (col2),
@@ -442,7 +442,7 @@ module sgm_top #(
       .l5w_o       (l5w)
     );
   end else begin : g_four
-    assign lut_ready_right = 1'b1;
+    assign lut_ready = lut_ready_paths;
     assign {cost_e, valid2_e} = {cost, valid2};
     assign {lane_col_e, lane_row_e, lane_centre_e, lane_nbr_e, lane_valid_e} =
            {lane_col, lane_row, lane_centre, lane_nbr, lane_valid};

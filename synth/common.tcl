@@ -81,11 +81,17 @@ proc stage_name {mod} {
 }
 
 # Run BODY once per stage with the variables mod (module name) and name (its
-# sgm_<name>) set and only that stage (and what it instantiates) loaded. The
-# seconds each stage took go to $out/<name>.seconds.
+# sgm_<name>, with _2, _3, .. for a second, third parametrisation of one module:
+# RIGHT_BLOCK puts a second sgm_delay beside the top's) set and only that stage
+# (and what it instantiates) loaded. The seconds each stage took go to
+# $out/<name>.seconds.
 proc foreach_stage {body} {
+  set used {}
   foreach mod [stage_modules] {
     set name [stage_name $mod]
+    set base $name
+    for {set n 2} {$name in $used} {incr n} { set name "${base}_$n" }
+    lappend used $name
     set t0 [clock milliseconds]
     yosys design -load elab
     yosys hierarchy -top $mod

@@ -418,10 +418,13 @@ bool loadTarget(const std::string &root, const std::string &config, const std::s
   // synth/xilinx_flat.tcl: the whole core as one "stage" sgm_top.
   auto inst = isFile(t.dir + "/sgm_top.stat.txt") ? std::map<std::string, long>{{"sgm_top", 1}}
                                                   : parseInstances(t.dir + "/hierarchy.txt");
+  std::set<std::string> used;  // a second parametrisation of a module: name_2 (synth/common.tcl foreach_stage)
   for (auto &kv : inst) {
     Stage s;
     s.module = kv.first;
     s.name = baseName(kv.first);
+    for (int n = 2; used.count(s.name); ++n) s.name = baseName(kv.first) + "_" + std::to_string(n);
+    used.insert(s.name);
     s.instances = kv.second;
     std::string p = t.dir + "/" + s.name;
     s.counts = parseStat(t.tech, p + ".stat.txt");

@@ -87,10 +87,17 @@ class Bench {
     top_->weight_i = f.weight;
     top_->p2_i = f.p2;
     top_->p2_mode_i = f.p2Mode == sgm::P2Mode::kPaper;
+    top_->lut_ready_i = 1;
     top_->lut_start_i = 1;
     top_.tick();
     top_->lut_start_i = 0;
     for (int i = 0; i < 600 && !top_->lut_ready_o; ++i) top_.tick();
+    ASSERT_TRUE(top_->lut_ready_o);
+    top_->lut_ready_i = 0;  // the other tables' ready gates this one's
+    top_.tick();
+    EXPECT_FALSE(top_->lut_ready_o) << "lut_ready_o with lut_ready_i low";
+    top_->lut_ready_i = 1;
+    top_.tick();
     ASSERT_TRUE(top_->lut_ready_o);
     const int w = f.width;
     const int laneRows = (f.height + kLanes - 1) / kLanes;
