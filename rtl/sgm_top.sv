@@ -271,7 +271,7 @@ module sgm_top #(
     assign rd_row     = row3;
     assign rdt_col    = '0;  // no lane timing
     assign rdt_row    = '0;
-    wire unused_rdt = ^{rdt_col_e, rdt_row_e};
+    wire [XW+RW-1:0] unused_rdt = {rdt_col_e, rdt_row_e};  // wiring only (no logic in the top)
   end else begin : g_lanes
     localparam int LANE_LEAD = LANES - 1;
     localparam int DEAL_ROWS = 1 << $clog2(2 * LANES - 2);
@@ -448,7 +448,7 @@ module sgm_top #(
            {lane_col, lane_row, lane_centre, lane_nbr, lane_valid};
     assign {rdt_col_e, rdt_row_e} = {rdt_col, rdt_row};
     assign l5w = '0;
-    wire unused_right = ^{right_weight, col2};
+    wire [XW+3:0] unused_right = {right_weight, col2};  // wiring only (no logic in the top)
   end
 
   // The path engine also needs the row and the left grays of the pixel,
