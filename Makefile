@@ -288,7 +288,7 @@ lint: | check-tools
 	done; echo "lint: $(words $(RTL_MODULES)) modules clean"
 	@# sgm_top is wiring only: the hierarchical synthesis flows (synth/common.tcl) synthesise
 	@# its stage modules and keep none of the top's own logic (nextpnr then meets raw cells).
-	@for g in "" "-set RIGHT_BLOCK 8" "-set LANES 2" "-set LANES 2 -set RIGHT_BLOCK 8"; do \
+	@mkdir -p $(BUILD); for g in "" "-set RIGHT_BLOCK 8" "-set LANES 2" "-set LANES 2 -set RIGHT_BLOCK 8"; do \
 	  yosys -q -p "read_verilog -sv $(RTL_SRC); chparam -set D 16 -set MAX_WIDTH 128 -set MAX_HEIGHT 64 $$g sgm_top; \
 	    hierarchy -top sgm_top; proc; tee -q -o $(BUILD)/lint-top-cells.txt select -list sgm_top/t:\$$* sgm_top/t:\$$paramod* %d" \
 	    > /dev/null 2>&1 || { echo "lint: yosys could not elaborate sgm_top ($$g)"; exit 1; }; \
