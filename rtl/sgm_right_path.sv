@@ -14,15 +14,17 @@
 // at W - 1, and runs down to x0; only the block's own columns are kept.
 //
 // Schedule (in lane slots, u = the slots since the lane's row r began: the
-// pixel of column x enters at u = x; rows follow each other in a lane):
-//   pass of block j < m-1: steps u = x0 + 2B .. x0 + 4B - 1, column
-//     x0 + 2B - 1 - (u - x0 - 2B) (the block's columns in the last B steps);
-//   the last block's pass: W - x0 steps from u = x0 + 2B (m >= 2) or u = W
+// pixel of column x enters at u = x; rows follow each other in a lane): a pass
+// is decided at the slot of its start u and runs from the lane's next slot (the
+// decision is registered, K slots):
+//   pass of block j < m-1: steps u = x0 + 2B + 1 .. x0 + 4B, column
+//     x0 + 2B - 1 - (u - x0 - 2B - 1) (the block's columns in the last B steps);
+//   the last block's pass: W - x0 steps from u = x0 + 2B + 1 (m >= 2) or u = W + 1
 //     (m = 1), columns W - 1 down to x0.
 // So passes of blocks of one parity never overlap, nor do the last block's and
 // the next row's first (it ends where that starts): ring PASS = j mod 2 runs
 // the blocks of its parity (two sgm_path_ring, LANES lanes each). A pass reads
-// a column at most 4B - 1 lane slots after it entered. Passes starting at u >=
+// a column at most 4B lane slots after it entered. Passes starting at u >=
 // W are recognised from the next row's column x = u - W (at most B); a pass
 // decoded from a row outside the frame computes garbage that no valid pixel
 // reads (a row's passes read only that row's words).
@@ -31,9 +33,13 @@
 // pixel of lane time n; block RAM, registered reads, one write and one read
 // port each): the costs and gray twice (one copy per pass ring), the costs and
 // the side bundle once more for the output, and the L5 of each ring. A pass's
-// L5 of column x is written at most 4B - 1 lane slots plus the ring's pipeline
-// (3 + LANES slots) after the pixel entered; the output reads it DLY lane
-// slots after, DLY = 4B + ceil(3 / LANES).
+// L5 of column x is written at most 4B lane slots plus the ring's pipeline
+// (2 + LANES slots) after the pixel entered, readable a slot later; the output
+// reads the pixel's costs DLY lane slots after it entered and its L5 L5_LAG - 1
+// >= 1 slots after that: K DLY + 1 >= 4B K + 3 + K, DLY = 4B + 1 + ceil(2 /
+// LANES) (no slot to spare at one lane, L5_LAG = 2: mutation rp-delay). A pass keeps the memory address
+// of its column (not the lane's word), so that the read address is a register
+// or its decrement.
 //
 // Parameters: D disparities, CW cost width, LW path-cost width (Cmax + P2'max
 // must fit), PW penalty width, BLOCK (B, a power of two >= 2), XW column bits,
@@ -60,7 +66,7 @@ module sgm_right_path #(
   parameter int SIDE_W = 1,
   parameter int L5_LAG /*verilator public*/ = 2,
   localparam int L5W   = LW + 4,
-  localparam int DLY   = 4 * BLOCK + (3 + LANES - 1) / LANES,
+  localparam int DLY   = 4 * BLOCK + 1 + (2 + LANES - 1) / LANES,
   localparam int LATENCY /*verilator public*/ = LANES * DLY + 1
 ) (
   input  wire              clk_i,
@@ -119,19 +125,22 @@ module sgm_right_path #(
 
   // ------------------------------------------------------------ slot counters
   // lane_q: the slot's lane (slot count mod K); n_q: the lane time mod M (the
-  // word of this slot's pixel); base_q = lane_q M.
+  // word of this slot's pixel); base_q = lane_q M, top_q = base_q + M - 1 (the
+  // lane's first and last address).
   logic [LNW-1:0] lane_q;
   logic [AW-1:0]  n_q;
-  logic [RA-1:0]  base_q;
+  logic [RA-1:0]  base_q, top_q;
   wire            lane_wrap = lane_q == LNW'(K - 1);
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       lane_q <= '0;
       n_q    <= '0;
       base_q <= '0;
+      top_q  <= RA'(M - 1);
     end else if (en_i) begin
       lane_q <= lane_wrap ? '0 : lane_q + 1'b1;
       base_q <= lane_wrap ? '0 : base_q + RA'(M);
+      top_q  <= lane_wrap ? RA'(M - 1) : top_q + RA'(M);
       if (lane_wrap) n_q <= n_q == AW'(M - 1) ? '0 : n_q + 1'b1;
     end
   end
@@ -155,6 +164,17 @@ module sgm_right_path #(
   wire [AW-1:0] start_off  = b_last ? AW'(col_i) + 1'b1 : AW'(1);
   wire [AW-1:0] start_word = back(n_q, start_off);
   wire [SCW-1:0] start_left = b_last ? last_steps_q - 1'b1 : SCW'(2 * BLOCK - 1);
+  // The decision, K slots later (the lane's next slot, where the pass runs its
+  // first step; the start column's word is the same).
+  logic          dec_any, dec_ring, dec_last;
+  logic [SCW-1:0] dec_left;
+  logic [RA-1:0] dec_addr;
+  sgm_delay #(.WIDTH(3 + SCW + RA), .DEPTH(K)) u_decision (
+    .clk_i (clk_i),
+    .en_i  (en_i),
+    .d_i   ({start_any, start_ring, b_last, start_left, base_q + RA'(start_word)}),
+    .q_o   ({dec_any, dec_ring, dec_last, dec_left, dec_addr})
+  );
 
   // ------------------------------------------------------------ block parity of the pixel
   wire [XW-1:0] jx     = col_i >> LB;
@@ -216,21 +236,21 @@ module sgm_right_path #(
     logic           act_q  [K];
     logic           last_q [K];
     logic [SCW-1:0] left_q [K];
-    logic [AW-1:0]  word_q [K];
-    wire start = start_any && start_ring == 1'(r);
+    logic [RA-1:0]  addr_q [K];
+    wire start = dec_any && dec_ring == 1'(r);
     wire step  = start || (act_q[K-1] && left_q[K-1] != '0);
     logic           last_d;
     logic [SCW-1:0] left_d;
-    logic [AW-1:0]  word_d;
+    logic [RA-1:0]  addr_d;
     always_comb begin
       if (start) begin
-        last_d = b_last;
-        left_d = start_left;
-        word_d = start_word;
+        last_d = dec_last;
+        left_d = dec_left;
+        addr_d = dec_addr;
       end else begin
         last_d = last_q[K-1];
         left_d = left_q[K-1] - 1'b1;
-        word_d = back(word_q[K-1], AW'(1));
+        addr_d = addr_q[K-1] == base_q ? top_q : addr_q[K-1] - 1'b1;  // the lane's previous word
       end
     end
     always_ff @(posedge clk_i) begin
@@ -245,11 +265,11 @@ module sgm_right_path #(
       if (en_i) begin
         last_q[0] <= last_d;
         left_q[0] <= left_d;
-        word_q[0] <= word_d;
+        addr_q[0] <= addr_d;
         for (int i = 1; i < K; i++) begin
           last_q[i] <= last_q[i-1];
           left_q[i] <= left_q[i-1];
-          word_q[i] <= word_q[i-1];
+          addr_q[i] <= addr_q[i-1];
         end
       end
     end
@@ -257,7 +277,7 @@ module sgm_right_path #(
     wire keep = step && (last_d || left_d < SCW'(BLOCK));
 
     // Stage 1: the column's costs and gray (registered read).
-    wire [RA-1:0] rd_addr = base_q + RA'(word_d);
+    wire [RA-1:0] rd_addr = addr_d;
     logic [PWD-1:0] rd_q;
     logic           start1, keep1;
     logic [RA-1:0]  addr1;
