@@ -34,9 +34,9 @@
 // port each): the costs and gray twice (one copy per pass ring), the costs and
 // the side bundle once more for the output, and the L5 of each ring. A pass's
 // L5 of column x is written at most 4B lane slots plus the ring's pipeline
-// (2 + LANES slots) after the pixel entered, readable a slot later; the output
+// (3 + LANES slots) after the pixel entered, readable a slot later; the output
 // reads the pixel's costs DLY lane slots after it entered and its L5 L5_LAG - 1
-// >= 1 slots after that: K DLY + 1 >= 4B K + 3 + K, DLY = 4B + 1 + ceil(2 /
+// >= 1 slots after that: K DLY + 1 >= 4B K + 4 + K, DLY = 4B + 1 + ceil(3 /
 // LANES) (no slot to spare at one lane, L5_LAG = 2: mutation rp-delay). A pass keeps the memory address
 // of its column (not the lane's word), so that the read address is a register
 // or its decrement.
@@ -66,7 +66,7 @@ module sgm_right_path #(
   parameter int SIDE_W = 1,
   parameter int L5_LAG /*verilator public*/ = 2,
   localparam int L5W   = LW + 4,
-  localparam int DLY   = 4 * BLOCK + 1 + (2 + LANES - 1) / LANES,
+  localparam int DLY   = 4 * BLOCK + 1 + (3 + LANES - 1) / LANES,
   localparam int LATENCY /*verilator public*/ = LANES * DLY + 1
 ) (
   input  wire              clk_i,
@@ -276,21 +276,27 @@ module sgm_right_path #(
     // Keep the step's L5 when it is one of its block's columns.
     wire keep = step && (last_d || left_d < SCW'(BLOCK));
 
-    // Stage 1: the column's costs and gray (registered read).
+    // Stage 1: the column's costs and gray (registered read), registered once
+    // more (the block RAM's clock-to-out and its depth multiplexer stay out of
+    // the |dI| and the table lookup behind it).
     wire [RA-1:0] rd_addr = addr_d;
-    logic [PWD-1:0] rd_q;
-    logic           start1, keep1;
-    logic [RA-1:0]  addr1;
+    logic [PWD-1:0] rd_q, rd_r;
+    logic           start0, keep0, start1, keep1;
+    logic [RA-1:0]  addr0, addr1;
     always_ff @(posedge clk_i) begin
       if (en_i) begin
         rd_q   <= pass_mem[rd_addr];
-        start1 <= start;
-        keep1  <= keep;
-        addr1  <= rd_addr;
+        start0 <= start;
+        keep0  <= keep;
+        addr0  <= rd_addr;
+        rd_r   <= rd_q;
+        start1 <= start0;
+        keep1  <= keep0;
+        addr1  <= addr0;
       end
     end
-    wire [7:0]     gray1 = rd_q[CWD +: 8];
-    wire [CWD-1:0] cost1 = rd_q[0 +: CWD];
+    wire [7:0]     gray1 = rd_r[CWD +: 8];
+    wire [CWD-1:0] cost1 = rd_r[0 +: CWD];
     // The previous step's gray (column + 1) of the lane: K slots ago.
     logic [7:0] gray_prev;
     sgm_delay #(.WIDTH(8), .DEPTH(K)) u_gray_prev (
