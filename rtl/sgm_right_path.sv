@@ -35,9 +35,11 @@
 // the side bundle once more for the output, and the L5 of each ring. A pass's
 // L5 of column x is written at most 4B lane slots plus the ring's pipeline
 // (3 + LANES slots) after the pixel entered, readable a slot later; the output
-// reads the pixel's costs DLY lane slots after it entered and its L5 L5_LAG - 1
-// >= 1 slots after that: K DLY + 1 >= 4B K + 4 + K, DLY = 4B + 1 + ceil(3 /
-// LANES) (no slot to spare at one lane, L5_LAG = 2: mutation rp-delay). A pass keeps the memory address
+// reads the pixel's costs DLY lane slots after it entered and its L5 L5_LAG - 3
+// slots after that (a slot before it at L5_LAG = 2; three slots of registers,
+// select and product follow): K DLY + L5_LAG - 3 >= 4B K + 4 + K, DLY = 4B + 1
+// + ceil(5 / LANES) (no slot to spare at one lane, L5_LAG = 2: mutation
+// rp-delay). A pass keeps the memory address
 // of its column (not the lane's word), so that the read address is a register
 // or its decrement.
 //
@@ -66,7 +68,7 @@ module sgm_right_path #(
   parameter int SIDE_W = 1,
   parameter int L5_LAG /*verilator public*/ = 2,
   localparam int L5W   = LW + 4,
-  localparam int DLY   = 4 * BLOCK + 1 + (3 + LANES - 1) / LANES,
+  localparam int DLY   = 4 * BLOCK + 1 + (5 + LANES - 1) / LANES,
   localparam int LATENCY /*verilator public*/ = LANES * DLY + 1
 ) (
   input  wire              clk_i,
@@ -212,15 +214,29 @@ module sgm_right_path #(
     .p2r_o   (p2r)
   );
 
-  // The L5 words are read L5_LAG - 1 slots after the output copy's word (then
-  // the product, a slot).
-  logic [RA-1:0] l5_addr;
-  sgm_delay #(.WIDTH(RA), .DEPTH(L5_LAG - 1)) u_l5_addr (
-    .clk_i (clk_i),
-    .en_i  (en_i),
-    .d_i   (out_addr),
-    .q_o   (l5_addr)
-  );
+  // The L5 words are read L5_LAG - 3 slots after the output copy's word (then a
+  // register behind the block RAM, the ring select with the first half of the
+  // W5 product, and its sum: three slots). The read address runs its own
+  // counters, OFF slots behind the write address (the output copy's read is
+  // K DLY slots behind it), so that L5_LAG = 2 reads a slot before it.
+  localparam int OFF   = K * DLY + L5_LAG - 3;
+  localparam int T0    = (4 * K * M - OFF) % (K * M);  // the slot count OFF before 0, mod K M
+  logic [LNW-1:0] l5_lane_q;
+  logic [AW-1:0]  l5_n_q;
+  logic [RA-1:0]  l5_base_q;
+  wire            l5_lane_wrap = l5_lane_q == LNW'(K - 1);
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      l5_lane_q <= LNW'(T0 % K);
+      l5_n_q    <= AW'(T0 / K);
+      l5_base_q <= RA'((T0 % K) * M);
+    end else if (en_i) begin
+      l5_lane_q <= l5_lane_wrap ? '0 : l5_lane_q + 1'b1;
+      l5_base_q <= l5_lane_wrap ? '0 : l5_base_q + RA'(M);
+      if (l5_lane_wrap) l5_n_q <= l5_n_q == AW'(M - 1) ? '0 : l5_n_q + 1'b1;
+    end
+  end
+  wire [RA-1:0] l5_addr = l5_base_q + RA'(l5_n_q);
   logic [D*LW-1:0] l5_q [2];
 
   for (genvar r = 0; r < 2; r++) begin : g_pass
@@ -362,21 +378,38 @@ module sgm_right_path #(
   end
   assign side_o = warm_q ? out_q[OWD-1 -: SIDE_W] : '0;
   assign cost_o = out_q[0 +: CWD];
-  // The pixel's block parity picks the ring; then W5 L5 (shift and add).
+  // The L5 words registered once more behind the block RAM (its clock-to-out
+  // stays out of the select and the product); the pixel's block parity picks
+  // the ring and the product's two halves are formed (v (w0 + 2 w1) and
+  // 4 v (w2 + 2 w3), an adder each), then their sum.
+  logic [D*LW-1:0] l5_r [2];
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      l5_r[0] <= l5_q[0];
+      l5_r[1] <= l5_q[1];
+    end
+  end
   logic l5_parity;
-  sgm_delay #(.WIDTH(1), .DEPTH(L5_LAG - 1)) u_parity (
-    .clk_i (clk_i),
-    .en_i  (en_i),
-    .d_i   (out_q[CWD]),
-    .q_o   (l5_parity)
-  );
-  wire [D*LW-1:0] l5 = l5_parity ? l5_q[1] : l5_q[0];
+  if (L5_LAG > 2) begin : g_parity_delay
+    sgm_delay #(.WIDTH(1), .DEPTH(L5_LAG - 2)) u_parity (
+      .clk_i (clk_i),
+      .en_i  (en_i),
+      .d_i   (out_q[CWD]),
+      .q_o   (l5_parity)
+    );
+  end else begin : g_parity_now
+    assign l5_parity = out_q[CWD];
+  end
+  wire [D*LW-1:0] l5 = l5_parity ? l5_r[1] : l5_r[0];
   for (genvar d = 0; d < D; d++) begin : g_weight
     wire [LW-1:0]  v = l5[d*LW +: LW];
-    wire [L5W-1:0] p = (weight_i[0] ? L5W'(v)      : '0) + (weight_i[1] ? L5W'(v) << 1 : '0) +
-                       (weight_i[2] ? L5W'(v) << 2 : '0) + (weight_i[3] ? L5W'(v) << 3 : '0);
+    logic [L5W-1:0] lo_q, hi_q;
     always_ff @(posedge clk_i) begin
-      if (en_i) l5w_o[d*L5W +: L5W] <= p;
+      if (en_i) begin
+        lo_q <= (weight_i[0] ? L5W'(v)      : '0) + (weight_i[1] ? L5W'(v) << 1 : '0);
+        hi_q <= (weight_i[2] ? L5W'(v) << 2 : '0) + (weight_i[3] ? L5W'(v) << 3 : '0);
+        l5w_o[d*L5W +: L5W] <= lo_q + hi_q;
+      end
     end
   end
 

@@ -28,7 +28,7 @@
 // B pixels with one block of look-ahead (sgm_right_path, docs/algorithm.md section 5;
 // run-time weight cfg_right_weight_i, 0 = off): it sits between the cost volume and
 // the path engine and delays everything behind the census by its latency
-// (K (4B + 1 + ceil(3 / K)) + 1 slots); 0 (the default) leaves it out.
+// (K (4B + 1 + ceil(5 / K)) + 1 slots); 0 (the default) leaves it out.
 // Frame constraints: MIN_FRAME_WIDTH (max(D, 16); with many lanes at least the
 // engine's K SKEW + 1) <= width <= MAX_WIDTH, 9 <= height <= MAX_HEIGHT
 // (frames outside are dropped and flagged in error_o[3], as are P2' < P1, cfg_mode_i = 3
@@ -67,9 +67,9 @@ module sgm_top #(
   // is a slot later for every write).
   localparam int COST_LATENCY = 4,  // sgm_cost_volume LATENCY
   // The fifth path: RP_LATENCY bounds sgm_right_path's LATENCY (K (4B + 1 +
-  // ceil(3 / K)) + 1 <= K (4B + 4) + 1) for the row counts below.
+  // ceil(5 / K)) + 1 <= K (4B + 6) + 1) for the row counts below.
   localparam int RIGHT_PATH = RIGHT_BLOCK != 0 ? 1 : 0,
-  localparam int RP_LATENCY = RIGHT_PATH != 0 ? LANES * (4 * RIGHT_BLOCK + 4) + 1 : 0,
+  localparam int RP_LATENCY = RIGHT_PATH != 0 ? LANES * (4 * RIGHT_BLOCK + 6) + 1 : 0,
   localparam int LR_WAIT    = (D + 4) * LANES + COST_LATENCY,
   localparam int LR_LAG_MAX = LANES == 1 ? 0 :
                               2 * LANES - 3 + (LR_WAIT + MIN_FRAME_WIDTH - 1) / MIN_FRAME_WIDTH,
