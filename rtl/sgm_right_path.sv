@@ -35,11 +35,11 @@
 // the side bundle once more for the output, and the L5 of each ring. A pass's
 // L5 of column x is written at most 4B lane slots plus the ring's pipeline
 // (3 + LANES slots) after the pixel entered, readable a slot later; the output
-// reads the pixel's costs DLY lane slots after it entered and its L5 L5_LAG - 3
-// slots after that (a slot before it at L5_LAG = 2; three slots of registers,
-// select and product follow): K DLY + L5_LAG - 3 >= 4B K + 4 + K, DLY = 4B + 1
-// + ceil(5 / LANES) (no slot to spare at one lane, L5_LAG = 2: mutation
-// rp-delay). A pass keeps the memory address
+// reads the pixel's costs K DLY - 1 slots after it entered (two registers
+// follow) and its L5 L5_LAG - 2 slots after that (then four registers: the
+// read, one more, the select with half the product, the sum): K DLY + L5_LAG
+// - 3 >= 4B K + 4 + K, DLY = 4B + 1 + ceil(5 / LANES) (no slot to spare at one
+// lane, L5_LAG = 2: mutation rp-delay). A pass keeps the memory address
 // of its column (not the lane's word), so that the read address is a register
 // or its decrement.
 //
@@ -150,7 +150,6 @@ module sgm_right_path #(
   function automatic logic [AW-1:0] back(input logic [AW-1:0] n, input logic [AW-1:0] off);
     back = n >= off ? n - off : AW'(M) - off + n;
   endfunction
-  wire [AW-1:0] n_next = n_q == AW'(M - 1) ? '0 : n_q + 1'b1;  // the word read for the output
 
   // ------------------------------------------------------------ pass starts
   wire [UW-1:0] ua = UW'(col_i);
@@ -182,11 +181,41 @@ module sgm_right_path #(
   wire [XW-1:0] jx     = col_i >> LB;
   wire          parity = jx > m_q ? m_q[0] : jx[0];
 
+  // ------------------------------------------------------------ read addresses
+  // The output copy and the L5 words are read from counters of their own that
+  // run RD_OFF slots behind the write address (the address of slot t is that of
+  // slot t - RD_OFF): the output copy K DLY - 1 slots after the pixel's write
+  // (then its block RAM's read register and one more: LATENCY = K DLY + 1), the
+  // L5 words L5_LAG - 2 slots after that (then the read register, one more,
+  // the ring select with the two halves of the W5 product, and their sum).
+  logic [RA-1:0] rd_addr_q [2];
+  for (genvar i = 0; i < 2; i++) begin : g_rd_addr
+    localparam int RD_OFF = i == 0 ? K * DLY - 1 : K * DLY + L5_LAG - 3;
+    localparam int T0     = (4 * K * M - RD_OFF) % (K * M);  // the slot count RD_OFF before 0, mod K M
+    logic [LNW-1:0] lane_rq;
+    logic [AW-1:0]  n_rq;
+    logic [RA-1:0]  base_rq;
+    wire            wrap = lane_rq == LNW'(K - 1);
+    always_ff @(posedge clk_i) begin
+      if (!rst_ni) begin
+        lane_rq <= LNW'(T0 % K);
+        n_rq    <= AW'(T0 / K);
+        base_rq <= RA'((T0 % K) * M);
+      end else if (en_i) begin
+        lane_rq <= wrap ? '0 : lane_rq + 1'b1;
+        base_rq <= wrap ? '0 : base_rq + RA'(M);
+        if (wrap) n_rq <= n_rq == AW'(M - 1) ? '0 : n_rq + 1'b1;
+      end
+    end
+    assign rd_addr_q[i] = base_rq + RA'(n_rq);
+  end
+  wire [RA-1:0] out_addr = rd_addr_q[0];
+  wire [RA-1:0] l5_addr  = rd_addr_q[1];
+
   // ------------------------------------------------------------ output copy
   localparam int PWD = CWD + 8;              // pass copy: {gray, costs}
   localparam int OWD = SIDE_W + 1 + CWD;     // output copy: {side, parity, costs}
   wire [RA-1:0] wr_addr  = base_q + RA'(n_q);
-  wire [RA-1:0] out_addr = base_q + RA'(n_next);
   logic [OWD-1:0] out_mem [0:K*M-1];
   logic [OWD-1:0] out_q;
   always_ff @(posedge clk_i) begin
@@ -214,29 +243,6 @@ module sgm_right_path #(
     .p2r_o   (p2r)
   );
 
-  // The L5 words are read L5_LAG - 3 slots after the output copy's word (then a
-  // register behind the block RAM, the ring select with the first half of the
-  // W5 product, and its sum: three slots). The read address runs its own
-  // counters, OFF slots behind the write address (the output copy's read is
-  // K DLY slots behind it), so that L5_LAG = 2 reads a slot before it.
-  localparam int OFF   = K * DLY + L5_LAG - 3;
-  localparam int T0    = (4 * K * M - OFF) % (K * M);  // the slot count OFF before 0, mod K M
-  logic [LNW-1:0] l5_lane_q;
-  logic [AW-1:0]  l5_n_q;
-  logic [RA-1:0]  l5_base_q;
-  wire            l5_lane_wrap = l5_lane_q == LNW'(K - 1);
-  always_ff @(posedge clk_i) begin
-    if (!rst_ni) begin
-      l5_lane_q <= LNW'(T0 % K);
-      l5_n_q    <= AW'(T0 / K);
-      l5_base_q <= RA'((T0 % K) * M);
-    end else if (en_i) begin
-      l5_lane_q <= l5_lane_wrap ? '0 : l5_lane_q + 1'b1;
-      l5_base_q <= l5_lane_wrap ? '0 : l5_base_q + RA'(M);
-      if (l5_lane_wrap) l5_n_q <= l5_n_q == AW'(M - 1) ? '0 : l5_n_q + 1'b1;
-    end
-  end
-  wire [RA-1:0] l5_addr = l5_base_q + RA'(l5_n_q);
   logic [D*LW-1:0] l5_q [2];
 
   for (genvar r = 0; r < 2; r++) begin : g_pass
@@ -362,8 +368,10 @@ module sgm_right_path #(
   end
 
   // ------------------------------------------------------------ output
-  // warm_q: LATENCY slots have passed since reset (the output word was written
-  // after it).
+  // The output copy registered once more (the block RAM's clock-to-out stays
+  // out of the stages behind). warm_q: LATENCY - 1 slots have passed since
+  // reset, so that side_o is zeros for LATENCY slots (the output word was
+  // written after the reset).
   localparam int WW = $clog2(LATENCY + 1);
   logic [WW-1:0] warm_cnt_q;
   logic          warm_q;
@@ -373,11 +381,20 @@ module sgm_right_path #(
       warm_q     <= 1'b0;
     end else if (en_i && !warm_q) begin
       warm_cnt_q <= warm_cnt_q + 1'b1;
-      warm_q     <= warm_cnt_q == WW'(LATENCY - 1);
+      warm_q     <= warm_cnt_q == WW'(LATENCY - 2);
     end
   end
-  assign side_o = warm_q ? out_q[OWD-1 -: SIDE_W] : '0;
-  assign cost_o = out_q[0 +: CWD];
+  logic [SIDE_W-1:0] side_r;
+  logic [CWD-1:0]    cost_r;
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) side_r <= '0;
+    else if (en_i) side_r <= warm_q ? out_q[OWD-1 -: SIDE_W] : '0;
+  end
+  always_ff @(posedge clk_i) begin
+    if (en_i) cost_r <= out_q[0 +: CWD];
+  end
+  assign side_o = side_r;
+  assign cost_o = cost_r;
   // The L5 words registered once more behind the block RAM (its clock-to-out
   // stays out of the select and the product); the pixel's block parity picks
   // the ring and the product's two halves are formed (v (w0 + 2 w1) and
@@ -390,16 +407,12 @@ module sgm_right_path #(
     end
   end
   logic l5_parity;
-  if (L5_LAG > 2) begin : g_parity_delay
-    sgm_delay #(.WIDTH(1), .DEPTH(L5_LAG - 2)) u_parity (
-      .clk_i (clk_i),
-      .en_i  (en_i),
-      .d_i   (out_q[CWD]),
-      .q_o   (l5_parity)
-    );
-  end else begin : g_parity_now
-    assign l5_parity = out_q[CWD];
-  end
+  sgm_delay #(.WIDTH(1), .DEPTH(L5_LAG - 1)) u_parity (
+    .clk_i (clk_i),
+    .en_i  (en_i),
+    .d_i   (out_q[CWD]),
+    .q_o   (l5_parity)
+  );
   wire [D*LW-1:0] l5 = l5_parity ? l5_r[1] : l5_r[0];
   for (genvar d = 0; d < D; d++) begin : g_weight
     wire [LW-1:0]  v = l5[d*LW +: LW];

@@ -18,6 +18,9 @@
 #                                        UNIQUENESS 1 and 0, sgm_cost_volume (one lane) with
 #                                        AD_TERM 1 and 0, each alone, synth_ecp5 -abc9
 #                                        -> build/synth/levers-d<D>/summary.md
+#   make synth-right-path [D=64]         what the fifth path costs: sgm_right_path alone,
+#                                        SYNTH_RIGHT_PATH="64x1 32x6" (block x lanes)
+#                                        -> build/synth/right-path-d<D>/summary.md
 #
 # UNIQUENESS=0 / AD_TERM=0 build the core without the uniqueness ratio / the AD term
 # (sgm_top's build parameters, docs/rtl.md "Build parameters"); the default 1 builds them.
@@ -175,3 +178,24 @@ synth-levers: synth/levers.tcl $(RTL_SRC) | check-tools
 	     for c in LUT4 CCU2C PFUMX L6MUX21 TRELLIS_FF; do printf ' %s |' "$$(awk -v c=$$c '$$1 == c { n = $$2 } END { print n + 0 }' $$f)"; done; \
 	     echo; done; done; } > $(SYNTH_LEVERS_DIR)/summary.md
 	@cat $(SYNTH_LEVERS_DIR)/summary.md
+
+# What the fifth path costs (synth/levers.tcl): sgm_right_path alone at D, plain synth_ecp5
+# -abc9, for each block x lanes of SYNTH_RIGHT_PATH; the table in summary.md (synth/README.md,
+# "The fifth path").
+SYNTH_RIGHT_PATH ?= 64x1 32x6
+SYNTH_RP_DIR = $(SYNTH_DIR)/right-path-d$(D)
+.PHONY: synth-right-path
+synth-right-path: synth/levers.tcl $(RTL_SRC) | check-tools
+	@mkdir -p $(SYNTH_RP_DIR)
+	@for c in $(SYNTH_RIGHT_PATH); do b=$${c%x*}; k=$${c#*x}; o=$(SYNTH_RP_DIR)/b$$b-k$$k; mkdir -p $$o; \
+	   echo "synth-right-path: B=$$b, LANES=$$k, D=$(D) (log: $$o/yosys.log)"; \
+	   SYNTH_LEVER_TOP=sgm_right_path SYNTH_LEVER=$$b SYNTH_LANES=$$k SYNTH_D=$(D) SYNTH_OUT=$$o \
+	     flock $(SYNTH_LOCK) timeout $(SYNTH_TIMEOUT) yosys -q -l $$o/yosys.log -c synth/levers.tcl > $$o/yosys.out 2>&1 || \
+	     { echo "synth-right-path: Yosys failed ($$o/yosys.log)"; exit 1; }; done
+	@{ echo "| sgm_right_path (D = $(D)) | LUT4 | CCU2C | PFUMX | L6MUX21 | TRELLIS_FF | DP16KD | DPR16X4 |"; \
+	   echo "| --- | --- | --- | --- | --- | --- | --- | --- |"; \
+	   for c in $(SYNTH_RIGHT_PATH); do b=$${c%x*}; k=$${c#*x}; f=$(SYNTH_RP_DIR)/b$$b-k$$k/stat.txt; \
+	     printf '| B = %s, %s lane(s) |' $$b $$k; \
+	     for cell in LUT4 CCU2C PFUMX L6MUX21 TRELLIS_FF DP16KD DPR16X4; do printf ' %s |' "$$(awk -v c=$$cell '$$1 == c { n = $$2 } END { print n + 0 }' $$f)"; done; \
+	     echo; done; } > $(SYNTH_RP_DIR)/summary.md
+	@cat $(SYNTH_RP_DIR)/summary.md

@@ -83,6 +83,15 @@ TEST(CliArgs, ModeBringsItsDefaultPenaltiesUnlessOverridden) {
   const sgm::Params b = parse({"--mode", "bt", "--p2", "5000"}).pipelineParams();
   EXPECT_EQ(b.p1, sgm::defaultParams(sgm::CostMode::kBt).p1);
   EXPECT_EQ(b.p2, 5000);
+  // A mode without a census switches a base AD term off; --ad-weight is then checked.
+  sgm::Params withAd;
+  withAd.adWeight = 3;
+  for (sgm::CostMode m : sgm::allCostModes()) {
+    const sgm::Params p = parse({"--mode", sgm::costModeName(m)}).pipelineParams(withAd);
+    EXPECT_EQ(p.adWeight, sgm::isHardwareMode(m) ? 3 : 0) << sgm::costModeName(m);
+    EXPECT_NO_THROW(p.validate()) << sgm::costModeName(m);
+  }
+  EXPECT_THROW(parse({"--mode", "sad", "--ad-weight", "3"}).pipelineParams().validate(), sgm::Error);
   // Without --mode the base parameters are kept.
   const sgm::Params c = parse({"--d", "16"}).pipelineParams();
   EXPECT_EQ(c.p1, sgm::Params{}.p1);

@@ -219,6 +219,12 @@ TEST(Presets, PaperIsThePapersSystem) {
   EXPECT_FALSE(p.fill);
   EXPECT_FALSE(p.snap);
   EXPECT_LE(p.p2, 255);  // fits the RTL's 8-bit P2'
+  // None of the levers the paper lacks, whatever the defaults take.
+  EXPECT_EQ(p.uniqueness, 0);
+  EXPECT_EQ(p.adWeight, 0);
+  EXPECT_EQ(p.rightPathWeight, 0);
+  EXPECT_EQ(p.rightPathBlock, 0);
+  EXPECT_FALSE(p.experimental());
   EXPECT_EQ(sgm::presetParams("default"), Params{});
   EXPECT_EQ(Params{}.census, CensusWindow::k9x5);
   EXPECT_EQ(Params{}.p2Mode, P2Mode::kKnee);

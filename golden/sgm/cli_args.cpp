@@ -93,6 +93,7 @@ Params CliArgs::pipelineParams(Params p) const {
   if (has("mode")) {  // a mode brings its own measured penalties; --p1/--p2 override them
     const Params modeDefaults = defaultParams(parseCostMode(text("mode", "")));
     p.mode = modeDefaults.mode, p.p1 = modeDefaults.p1, p.p2 = modeDefaults.p2;
+    if (!isHardwareMode(p.mode)) p.adWeight = 0;  // the AD term needs a census mode (--ad-weight after it is checked)
   }
   p.disparities = int(integer("d", p.disparities, kMinDisparities, kMaxDisparities));
   p.p1 = int(integer("p1", p.p1, 0, kMaxPenalty));

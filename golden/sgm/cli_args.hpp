@@ -30,7 +30,8 @@ class CliArgs {
   // golden-only experiments (not in the RTL, off by default): --right-path W, --right-block B,
   // --subpixel-fit parabola|linear, --mgm on|off. --preset (default | paper) replaces
   // base (D excepted) before the other options apply, so they override it; --mode also
-  // brings that mode's default P1 / P2' (defaultParams), which --p1 / --p2 override.
+  // brings that mode's default P1 / P2' (defaultParams), which --p1 / --p2 override,
+  // and a mode without a census switches the AD term off.
   static const std::set<std::string>& pipelineOptions();
   Params pipelineParams(Params base = Params{}) const;
 

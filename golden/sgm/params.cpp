@@ -93,6 +93,10 @@ Params presetParams(const std::string& name) {
     p.p1 = 100, p.p2 = 255;
     p.fill = false;
     p.snap = false;
+    // None of the levers the paper does not have, whatever the defaults (issue 15).
+    p.uniqueness = 0;
+    p.adWeight = 0;
+    p.rightPathWeight = 0, p.rightPathBlock = 0;
     return p;
   }
   throw Error("unknown preset '" + name + "' (expected default or paper)");
@@ -154,6 +158,14 @@ void Params::validate() const {
 Params defaultParams(CostMode mode) {
   Params p;
   p.mode = mode;
+  if (mode != CostMode::kRsad) {
+    // The other modes' penalties below were measured with these levers (issue 15
+    // tuned the pool's only for rsad); the AD term is for census modes only.
+    p.uniqueness = 0;
+    p.adWeight = 0;
+    p.rightPathWeight = 0, p.rightPathBlock = 0;
+    p.snap = true;
+  }
   switch (mode) {
     // Measured on cones, teddy, sawtooth, venus: docs/algorithm.md, section 11.
     case CostMode::kRt: p.p1 = 28, p.p2 = 130; break;
