@@ -41,7 +41,8 @@
 // - 3 >= 4B K + 4 + K, DLY = 4B + 1 + ceil(5 / LANES) (no slot to spare at one
 // lane, L5_LAG = 2: mutation rp-delay). A pass keeps the memory address
 // of its column (not the lane's word), so that the read address is a register
-// or its decrement.
+// or its decrement; its start address is a register too (the lane's previous
+// write address, or the one of its row's column W - 1, kept per lane).
 //
 // Parameters: D disparities, CW cost width, LW path-cost width (Cmax + P2'max
 // must fit), PW penalty width, BLOCK (B, a power of two >= 2), XW column bits,
@@ -112,16 +113,19 @@ module sgm_right_path #(
   // frame and changes a slot or more before it: registered here).
   wire  [XW-1:0] blocks_raw = width_i >> LB;
   logic [XW-1:0] m_q;          // m - 1
-  logic [UW-1:0] w_q, reg_max_q, last_u_q;
+  logic [UW-1:0] w_q, reg_max_q, last_col_q;
+  logic [XW-1:0] wm1_q;        // W - 1
   logic [SCW-1:0] last_steps_q;
   always_ff @(posedge clk_i) begin
     m_q          <= blocks_raw == '0 ? '0 : blocks_raw - 1'b1;
     w_q          <= UW'(width_i);
+    wm1_q        <= width_i - 1'b1;
     // Regular passes start at u = x0 + 2B <= x0_last + B (j <= m - 2).
     reg_max_q    <= UW'((blocks_raw == '0 ? '0 : blocks_raw - 1'b1) << LB) + UW'(BLOCK);
-    // The last pass: u = x0_last + 2B (m >= 2) or W (m = 1).
-    last_u_q     <= blocks_raw <= XW'(1) ? UW'(width_i)
-                                         : UW'((blocks_raw - 1'b1) << LB) + UW'(2 * BLOCK);
+    // The last pass: u = x0_last + 2B (m >= 2) or W (m = 1), i.e. the next row's column
+    // u - W = (m + 1) B - W (m >= 2) or 0 (m = 1).
+    last_col_q   <= blocks_raw <= XW'(1) ? '0
+                                         : UW'((blocks_raw + 1'b1) << LB) - UW'(width_i);
     last_steps_q <= SCW'(width_i - ((blocks_raw == '0 ? '0 : blocks_raw - 1'b1) << LB));
   end
 
@@ -131,39 +135,50 @@ module sgm_right_path #(
   // lane's first and last address).
   logic [LNW-1:0] lane_q;
   logic [AW-1:0]  n_q;
-  logic [RA-1:0]  base_q, top_q;
+  logic [RA-1:0]  base_q, top_q, wr_addr_q;  // wr_addr_q = base_q + n_q, the slot's write address
   wire            lane_wrap = lane_q == LNW'(K - 1);
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
-      lane_q <= '0;
-      n_q    <= '0;
-      base_q <= '0;
-      top_q  <= RA'(M - 1);
+      lane_q    <= '0;
+      n_q       <= '0;
+      base_q    <= '0;
+      top_q     <= RA'(M - 1);
+      wr_addr_q <= '0;
     end else if (en_i) begin
-      lane_q <= lane_wrap ? '0 : lane_q + 1'b1;
-      base_q <= lane_wrap ? '0 : base_q + RA'(M);
-      top_q  <= lane_wrap ? RA'(M - 1) : top_q + RA'(M);
+      lane_q    <= lane_wrap ? '0 : lane_q + 1'b1;
+      base_q    <= lane_wrap ? '0 : base_q + RA'(M);
+      top_q     <= lane_wrap ? RA'(M - 1) : top_q + RA'(M);
+      wr_addr_q <= lane_wrap ? (n_q == AW'(M - 1) ? '0 : RA'(n_q) + 1'b1) : wr_addr_q + RA'(M);
       if (lane_wrap) n_q <= n_q == AW'(M - 1) ? '0 : n_q + 1'b1;
     end
   end
-  // A word n - off of this lane (off < M).
-  function automatic logic [AW-1:0] back(input logic [AW-1:0] n, input logic [AW-1:0] off);
-    back = n >= off ? n - off : AW'(M) - off + n;
-  endfunction
 
   // ------------------------------------------------------------ pass starts
   wire [UW-1:0] ua = UW'(col_i);
   wire [UW-1:0] ub = UW'(col_i) + w_q;
   wire a_reg  = ua >= UW'(2 * BLOCK) && ua[LB-1:0] == '0 && ua <= reg_max_q;
   wire b_reg  = ub >= UW'(2 * BLOCK) && ub[LB-1:0] == '0 && ub <= reg_max_q;
-  wire b_last = ub == last_u_q;
+  wire b_last = ua == last_col_q;
   wire [UW-1:0] u_start = a_reg ? ua : ub;
   wire          start_any  = a_reg || b_reg || b_last;
   wire          start_ring = b_last ? m_q[0] : u_start[LB];  // block j = u / B - 2: parity of u / B
-  // Start word: the column before u (1 lane slot ago), or W - 1 for the last
-  // pass (x + 1 lane slots ago).
-  wire [AW-1:0] start_off  = b_last ? AW'(col_i) + 1'b1 : AW'(1);
-  wire [AW-1:0] start_word = back(n_q, start_off);
+  // Start address: the column before u (the lane's previous word: its write
+  // address K slots ago), or, for the last pass, that of column W - 1 of the
+  // lane's previous row (kept per lane when it is written; the next row's
+  // column u - W < W - 1).
+  logic [RA-1:0] prev_addr, row_end_q [K];
+  sgm_delay #(.WIDTH(RA), .DEPTH(K)) u_prev_addr (
+    .clk_i (clk_i),
+    .en_i  (en_i),
+    .d_i   (wr_addr_q),
+    .q_o   (prev_addr)
+  );
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      row_end_q[0] <= col_i == wm1_q ? wr_addr_q : row_end_q[K-1];
+      for (int i = 1; i < K; i++) row_end_q[i] <= row_end_q[i-1];
+    end
+  end
   wire [SCW-1:0] start_left = b_last ? last_steps_q - 1'b1 : SCW'(2 * BLOCK - 1);
   // The decision, K slots later (the lane's next slot, where the pass runs its
   // first step; the start column's word is the same).
@@ -173,7 +188,7 @@ module sgm_right_path #(
   sgm_delay #(.WIDTH(3 + SCW + RA), .DEPTH(K)) u_decision (
     .clk_i (clk_i),
     .en_i  (en_i),
-    .d_i   ({start_any, start_ring, b_last, start_left, base_q + RA'(start_word)}),
+    .d_i   ({start_any, start_ring, b_last, start_left, b_last ? row_end_q[K-1] : prev_addr}),
     .q_o   ({dec_any, dec_ring, dec_last, dec_left, dec_addr})
   );
 
@@ -215,12 +230,11 @@ module sgm_right_path #(
   // ------------------------------------------------------------ output copy
   localparam int PWD = CWD + 8;              // pass copy: {gray, costs}
   localparam int OWD = SIDE_W + 1 + CWD;     // output copy: {side, parity, costs}
-  wire [RA-1:0] wr_addr  = base_q + RA'(n_q);
   logic [OWD-1:0] out_mem [0:K*M-1];
   logic [OWD-1:0] out_q;
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      out_mem[wr_addr] <= {side_i, parity, cost_i};
+      out_mem[wr_addr_q] <= {side_i, parity, cost_i};
       out_q            <= out_mem[out_addr];
     end
   end
@@ -249,7 +263,7 @@ module sgm_right_path #(
     // This ring's copy of the costs and grays.
     logic [PWD-1:0] pass_mem [0:K*M-1];
     always_ff @(posedge clk_i) begin
-      if (en_i) pass_mem[wr_addr] <= {gray_i, cost_i};
+      if (en_i) pass_mem[wr_addr_q] <= {gray_i, cost_i};
     end
 
     // Per-lane state, rotating through K registers: active, steps left after
