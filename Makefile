@@ -102,24 +102,26 @@ golden: $(BIN)/sgm-golden $(BIN)/sgm-eval
 
 # ---------------------------------------------------------------- simulation
 # make sim [LEFT=... RIGHT=... [GT=...] [GT_SCALE=...]] [OUT=build/sim] [D=64] [MAX_WIDTH=1280]
-#          [STALL=0.0] [SEED=1] [FRAMES=1] [TRACE=1] [PRESET=default|paper] [CENSUS=9x5|9x9] [LANES=1]
-#          [RIGHT_BLOCK=0 [RIGHT_WEIGHT=]]
+#          [STALL=0.0] [SEED=1] [FRAMES=1] [TRACE=1] [PRESET=default|four-path|paper] [CENSUS=9x5|9x9] [LANES=1]
+#          [RIGHT_BLOCK=64 [RIGHT_WEIGHT=]]
 # The program is sim/sgm_sim.cpp; CENSUS sets the core's census window (-GCENSUS_H),
 # PRESET=paper implies CENSUS=9x9 and runs sgm-sim --preset paper. LANES = K row lanes
 # (-GLANES, docs/reschedule.md; also taken by make synth). RIGHT_BLOCK = B builds the
-# fifth path in blocks of B (-GRIGHT_BLOCK; 0: none); RIGHT_WEIGHT = W5 runs it
-# (--right-path W5 --right-block B).
+# fifth path in blocks of B (-GRIGHT_BLOCK; 0: none; default 64, 0 with PRESET=paper or
+# four-path; the binary is named -rbB when B is not 64); the build runs its defaults
+# (sgm::buildDefaults: with the fifth path ours in its blocks, without it the four-path
+# preset); RIGHT_WEIGHT = W5 sets the weight (--right-path W5 --right-block B).
 OUT       ?= $(BUILD)/sim
 D         ?= 64
 MAX_WIDTH ?= 1280
 MAX_HEIGHT ?= 1024
 LANES     ?= 1
-RIGHT_BLOCK ?= 0
+RIGHT_BLOCK ?= $(if $(filter paper four-path,$(PRESET)),0,64)
 RIGHT_WEIGHT ?=
 PRESET    ?=
 CENSUS    ?= $(if $(filter paper,$(PRESET)),9x9,9x5)
 CENSUS_H   = $(if $(filter 9x9,$(CENSUS)),9,$(if $(filter 9x5,$(CENSUS)),5,$(error CENSUS=$(CENSUS): expected 9x5 or 9x9)))
-SIM_BIN    = $(BIN)/sgm-sim-d$(D)-w$(MAX_WIDTH)$(if $(filter-out 1024,$(MAX_HEIGHT)),-h$(MAX_HEIGHT))$(if $(filter 9,$(CENSUS_H)),-c9x9)$(if $(filter-out 1,$(LANES)),-k$(LANES))$(if $(filter-out 0,$(RIGHT_BLOCK)),-rb$(RIGHT_BLOCK))$(if $(filter 1,$(TRACE)),-trace)
+SIM_BIN    = $(BIN)/sgm-sim-d$(D)-w$(MAX_WIDTH)$(if $(filter-out 1024,$(MAX_HEIGHT)),-h$(MAX_HEIGHT))$(if $(filter 9,$(CENSUS_H)),-c9x9)$(if $(filter-out 1,$(LANES)),-k$(LANES))$(if $(filter-out 64,$(RIGHT_BLOCK)),-rb$(RIGHT_BLOCK))$(if $(filter 1,$(TRACE)),-trace)
 SIM_ARGS   = --out $(OUT) --d $(D) $(if $(PRESET),--preset $(PRESET)) $(if $(filter 9,$(CENSUS_H)),--census 9x9) \
              $(if $(LEFT),--left $(LEFT)) $(if $(RIGHT),--right $(RIGHT)) \
              $(if $(GT),--gt $(GT)) $(if $(GT_SCALE),--gt-scale $(GT_SCALE)) $(if $(STALL),--stall $(STALL)) \
@@ -197,20 +199,20 @@ $(eval $(call rtl_test,median5x5-d64,sgm_median5x5,-GDW=10 -GMAX_WIDTH=512))
 # 383 rows) so that the whole-core test sends frames of MAX_WIDTH x MAX_HEIGHT quickly.
 $(eval $(call rtl_test,top-d16,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,top-d64,sgm_top,-GD=64 -GMAX_WIDTH=512 -GMAX_HEIGHT=384 -CFLAGS -DSGM_D=64))
-$(eval $(call rtl_test,top-d32,sgm_top,-GD=32 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -CFLAGS -DSGM_D=32))
+$(eval $(call rtl_test,top-d32,sgm_top,-GD=32 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GRIGHT_BLOCK=0 -CFLAGS -DSGM_D=32))
 $(eval $(call rtl_test,top-d128,sgm_top,-GD=128 -GMAX_WIDTH=256 -GMAX_HEIGHT=64 -CFLAGS -DSGM_D=128))
 # The paper's 9x9 census window (CENSUS_H = 9): synthetic and malformed frames at D = 16,
 # Aloe in the paper preset at D = 64.
-$(eval $(call rtl_test,top-d16-9x9,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GCENSUS_H=9 -CFLAGS -DSGM_D=16))
-$(eval $(call rtl_test,top-d64-9x9,sgm_top,-GD=64 -GMAX_WIDTH=512 -GMAX_HEIGHT=384 -GCENSUS_H=9 -CFLAGS -DSGM_D=64))
+$(eval $(call rtl_test,top-d16-9x9,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GCENSUS_H=9 -GRIGHT_BLOCK=0 -CFLAGS -DSGM_D=16))
+$(eval $(call rtl_test,top-d64-9x9,sgm_top,-GD=64 -GMAX_WIDTH=512 -GMAX_HEIGHT=384 -GCENSUS_H=9 -GRIGHT_BLOCK=0 -CFLAGS -DSGM_D=64))
 # K row lanes (docs/reschedule.md): the whole core at 2 lanes (9x5) and 3 lanes (9x9). The
 # 3-lane build has its rotating delays as register chains (SGM_DELAY_CHAIN, the form the ECP5
 # flow builds, rtl/sgm_delay_ram.sv); every other build has them in distributed RAM.
-$(eval $(call rtl_test,top-d16-k2,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GLANES=2 -CFLAGS -DSGM_D=16))
-$(eval $(call rtl_test,top-d16-k3-9x9,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GLANES=3 -GCENSUS_H=9 -DSGM_DELAY_CHAIN -CFLAGS -DSGM_D=16))
+$(eval $(call rtl_test,top-d16-k2,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GLANES=2 -GRIGHT_BLOCK=0 -CFLAGS -DSGM_D=16))
+$(eval $(call rtl_test,top-d16-k3-9x9,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GLANES=3 -GCENSUS_H=9 -GRIGHT_BLOCK=0 -DSGM_DELAY_CHAIN -CFLAGS -DSGM_D=16))
 # The lean build: neither run-time lever that costs area (UNIQUENESS = 0, AD_TERM = 0, docs/rtl.md
 # "Build parameters"): bit-exact with the levers off, frames that ask for them dropped.
-$(eval $(call rtl_test,top-d16-lean,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GUNIQUENESS=0 -GAD_TERM=0 -CFLAGS -DSGM_D=16))
+$(eval $(call rtl_test,top-d16-lean,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GUNIQUENESS=0 -GAD_TERM=0 -GRIGHT_BLOCK=0 -CFLAGS -DSGM_D=16))
 # The fifth path in blocks (sgm_top RIGHT_BLOCK): blocks of 8 at one lane, of 16 at two lanes
 # (its defaults run weight 4; the settings, parameter sets and regression vary it).
 $(eval $(call rtl_test,top-d16-rb8,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GRIGHT_BLOCK=8 -CFLAGS -DSGM_D=16))
@@ -218,7 +220,7 @@ $(eval $(call rtl_test,top-d16-k2-rb16,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIG
 # sgm_axi configured through the driver (sw/) over an AXI4-Lite bus model; the lean build reads
 # its FEATURES back and has the frames that ask for a missing lever dropped.
 $(eval $(call rtl_test,axi-d16,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
-$(eval $(call rtl_test,axi-d16-lean,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GUNIQUENESS=0 -GAD_TERM=0 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
+$(eval $(call rtl_test,axi-d16-lean,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GUNIQUENESS=0 -GAD_TERM=0 -GRIGHT_BLOCK=0 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
 $(eval $(call rtl_test,axi-d16-rb16,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GRIGHT_BLOCK=16 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
 $(BIN)/rtl-axi-d16 $(BIN)/rtl-axi-d16-lean $(BIN)/rtl-axi-d16-rb16: sw/sgm_driver.cpp $(wildcard sw/include/*.h*)
 $(eval $(call rtl_test,path-engine-d16,sgm_path_engine,-GD=16 -GMAX_WIDTH=128 -GXW=8 -GYW=8 -CFLAGS -DSGM_D=16))

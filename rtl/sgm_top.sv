@@ -28,7 +28,7 @@
 // B pixels with one block of look-ahead (sgm_right_path, docs/algorithm.md section 5;
 // run-time weight cfg_right_weight_i, 0 = off): it sits between the cost volume and
 // the path engine and delays everything behind the census by its latency
-// (K (4B + 1 + ceil(5 / K)) + 1 slots); 0 (the default) leaves it out.
+// (K (4B + 1 + ceil(5 / K)) + 1 slots); 0 leaves it out (the default: 64).
 // Frame constraints: MIN_FRAME_WIDTH (max(D, 16); with many lanes at least the
 // engine's K SKEW + 1) <= width <= MAX_WIDTH, 9 <= height <= MAX_HEIGHT
 // (frames outside are dropped and flagged in error_o[3], as are P2' < P1, cfg_mode_i = 3
@@ -46,7 +46,7 @@ module sgm_top #(
   parameter int LANES      /*verilator public*/ = 1,
   parameter int UNIQUENESS /*verilator public*/ = 1,  // the uniqueness ratio is built (0: not)
   parameter int AD_TERM    /*verilator public*/ = 1,  // the AD term is built (0: not)
-  parameter int RIGHT_BLOCK /*verilator public*/ = 0,  // the fifth path's block B (a power of two >= 2), 0: not built
+  parameter int RIGHT_BLOCK /*verilator public*/ = 64,  // the fifth path's block B (a power of two >= 2), 0: not built
   localparam int XW        = $clog2(MAX_WIDTH + 1),
   // Lanes (docs/reschedule.md "The top's wiring at K lanes"). The engine's
   // SKEW (sgm_path_engine owns the formula; mirrored here for the deal, checked

@@ -2,7 +2,7 @@
 # Measures golden-model option sets on the scene pool and on the four Table I scenes,
 # one line per option set (docs/accuracy-pool.md):
 #   options | Middlebury A | B | all | KITTI A | B | all | worst change vs today | cones teddy venus sawtooth
-# Usage: scripts/pool-sweep.sh POOL DATA 'OPTIONS' ['OPTIONS' ...]   ('' = today's defaults)
+# Usage: scripts/pool-sweep.sh POOL DATA 'OPTIONS' ['OPTIONS' ...]   ('' = the defaults; "today" = the four-path preset, the defaults before issue 15)
 # Needs build/bin/sgm-eval (make golden). Golden model only (--opencv off).
 set -euo pipefail
 [ $# -ge 3 ] || { echo "usage: $0 POOL DATA 'OPTIONS' ['OPTIONS' ...]" >&2; exit 2; }
@@ -22,7 +22,7 @@ for options in "$@"; do
   "$eval_bin" pool --pool "$data" --out "$tmp/t1" --opencv off --d 64 $options > /dev/null
   worst=$(awk '/^worst change vs today:/ { printf "%s %+.2f", $5, $6 }' "$tmp/pool.txt")
   scene() { awk -F'|' -v s="$1" '{ gsub(/ /, "", $2) } $2 == s { gsub(/ /, "", $6); print $6 }' "$tmp/t1/pool.md"; }
-  printf '| `%s` | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n' "${options:-(today)}" \
+  printf '| `%s` | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n' "${options:-(defaults)}" \
     "$(mean 'middlebury A' "$tmp/pool.txt")" "$(mean 'middlebury B' "$tmp/pool.txt")" "$(mean middlebury "$tmp/pool.txt")" \
     "$(mean 'kitti A' "$tmp/pool.txt")" "$(mean 'kitti B' "$tmp/pool.txt")" "$(mean kitti "$tmp/pool.txt")" \
     "${worst:--}" "$(scene cones)" "$(scene teddy)" "$(scene venus)" "$(scene sawtooth)"

@@ -35,7 +35,7 @@ namespace {
 
 const char* kUsage =
     "usage: sgm-sim [--left L --right R [--gt G] [--gt-scale S]] [--out DIR] [--stall P] [--seed N]\n"
-    "               [--frames N] [--preset default|paper] [pipeline options]\n"
+    "               [--frames N] [--preset default|four-path|paper] [pipeline options]\n"
     "Pipeline options as sgm-golden's (--d --p1 --p2 --mode --subpixel --lr --fill --snap\n"
     "--median --census --p2-mode --weights; not the golden-only experiments); options after\n"
     "--preset override it. The census window must be the build's (make sim CENSUS=9x9 or\n"
@@ -59,13 +59,14 @@ int main(int argc, char** argv) {
     }
     if (!args.positional().empty()) throw Error("unexpected argument '" + args.positional()[0] + "' (see --help)");
     if (args.has("left") != args.has("right")) throw Error("give both --left and --right, or neither");
-    Params base;
-    base.disparities = SGM_D;
-    const Params params = args.pipelineParams(base);
+    constexpr int kRightBlock = Vsgm_top_sgm_top::RIGHT_BLOCK;  // this build's fifth path (0: none)
+    constexpr int kCensusH = Vsgm_top_sgm_top::CENSUS_H;        // this build's census window
+    BuildLevers build;
+    build.rightBlock = kRightBlock, build.census9x9 = kCensusH == 9;
+    const Params params = args.pipelineParams(buildDefaults(build, SGM_D));  // the build's defaults, then the options
     if (params.disparities != SGM_D)
       throw Error("this simulator is built for D=" + std::to_string(SGM_D) + " (make sim D=" +
                   std::to_string(params.disparities) + " builds another)");
-    constexpr int kCensusH = Vsgm_top_sgm_top::CENSUS_H;  // this build's census window
     const CensusWindow built = kCensusH == 9 ? CensusWindow::k9x9 : CensusWindow::k9x5;
     if (params.census != built)
       throw Error(std::string("this simulator is built for the ") + censusWindowName(built) + " census, not " +
@@ -76,7 +77,6 @@ int main(int argc, char** argv) {
     if (params.lrTolerance > 7) throw Error("LR tolerance " + std::to_string(params.lrTolerance) + " exceeds the core's 3-bit input");
     if (params.experimental())
       throw Error("--right-path without --right-block, --subpixel-fit linear and --mgm are golden-only experiments, not in the core");
-    constexpr int kRightBlock = Vsgm_top_sgm_top::RIGHT_BLOCK;  // this build's fifth path (0: none)
     if (params.rightPathWeight && params.rightPathBlock != kRightBlock)
       throw Error(kRightBlock ? "this simulator's fifth path runs in blocks of " + std::to_string(kRightBlock) +
                                     " (--right-block " + std::to_string(kRightBlock) + ")"

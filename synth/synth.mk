@@ -2,7 +2,7 @@
 # paper's Table III (included by the main Makefile; synth/README.md explains
 # the flow, the outputs and the figures).
 #
-#   make synth [D=64] [MAX_WIDTH=1280] [CENSUS=9x5|9x9] [LANES=1] [UNIQUENESS=1] [AD_TERM=1] [RIGHT_BLOCK=0]
+#   make synth [D=64] [MAX_WIDTH=1280] [CENSUS=9x5|9x9] [LANES=1] [UNIQUENESS=1] [AD_TERM=1] [RIGHT_BLOCK=64]
 #                                        xc7, xc6s, generic and iCE40 synthesis of
 #                                        that configuration (CENSUS=9x9: the paper's
 #                                        census window, sgm_top's CENSUS_H = 9), the
@@ -55,7 +55,7 @@ SYNTH_LANES  ?= $(if $(LANES),$(LANES),1)
 comma := ,
 SYNTH_UNIQUENESS ?= $(if $(UNIQUENESS),$(UNIQUENESS),1)
 SYNTH_AD_TERM    ?= $(if $(AD_TERM),$(AD_TERM),1)
-SYNTH_RIGHT_BLOCK ?= $(if $(RIGHT_BLOCK),$(RIGHT_BLOCK),0)
+SYNTH_RIGHT_BLOCK ?= $(if $(RIGHT_BLOCK),$(RIGHT_BLOCK),64)
 SYNTH_CFG     = d$(D)-w$(MAX_WIDTH)$(if $(filter 9,$(SYNTH_CENSUS_H)),-c9x9)$(if $(filter-out 1,$(SYNTH_LANES)),-k$(SYNTH_LANES))$(if $(filter 0,$(SYNTH_UNIQUENESS)),-u0)$(if $(filter 0,$(SYNTH_AD_TERM)),-ad0)$(if $(filter-out 0,$(SYNTH_RIGHT_BLOCK)),-rb$(SYNTH_RIGHT_BLOCK))
 SYNTH_OUT     = $(SYNTH_DIR)/$(SYNTH_CFG)
 SYNTH_LOOP    = $(SYNTH_DIR)/ice40-loop-d$(ICE40_LOOP_D)
@@ -75,12 +75,12 @@ synth-help:
 
 synth: $(foreach t,$(SYNTH_TARGETS),$(SYNTH_OUT)/$(t)/done) $(SYNTH_LOOP)/done $(SYNTH_SUMMARY) | check-tools
 	@$(SYNTH_SUMMARY) $(SYNTH_DIR)
-	@awk '/^## D = $(D), MAX_WIDTH = $(MAX_WIDTH), census $(SYNTH_CENSUS)$(if $(filter 0,$(SYNTH_UNIQUENESS)),$(comma) UNIQUENESS = 0)$(if $(filter 0,$(SYNTH_AD_TERM)),$(comma) AD_TERM = 0) /{f=1} f && /^\*\*Path buffers/{exit} f' $(SYNTH_DIR)/summary.md
+	@awk '/^## D = $(D), MAX_WIDTH = $(MAX_WIDTH), census $(SYNTH_CENSUS)$(if $(filter 0,$(SYNTH_UNIQUENESS)),$(comma) UNIQUENESS = 0)$(if $(filter 0,$(SYNTH_AD_TERM)),$(comma) AD_TERM = 0)$(if $(filter-out 0,$(SYNTH_RIGHT_BLOCK)),$(comma) RIGHT_BLOCK = $(SYNTH_RIGHT_BLOCK)) /{f=1} f && /^\*\*Path buffers/{exit} f' $(SYNTH_DIR)/summary.md
 
 synth-ci: $(SYNTH_SUMMARY) | check-tools
 	@$(MAKE) --no-print-directory D=$(SYNTH_CI_D) MAX_WIDTH=$(SYNTH_CI_MAX_WIDTH) synth-xc7
 	@$(MAKE) --no-print-directory synth-ice40-loop
-	@$(SYNTH_SUMMARY) $(SYNTH_DIR) --check d$(SYNTH_CI_D)-w$(SYNTH_CI_MAX_WIDTH)/xc7 --check ice40-loop-d$(ICE40_LOOP_D)
+	@$(SYNTH_SUMMARY) $(SYNTH_DIR) --check d$(SYNTH_CI_D)-w$(SYNTH_CI_MAX_WIDTH)$(if $(filter-out 0,$(SYNTH_RIGHT_BLOCK)),-rb$(SYNTH_RIGHT_BLOCK))/xc7 --check ice40-loop-d$(ICE40_LOOP_D)
 	@test -s $(SYNTH_DIR)/summary.json && test -s $(SYNTH_DIR)/summary.md || \
 	  { echo "synth-ci: FAIL: $(SYNTH_DIR)/summary.json or summary.md missing or empty"; exit 1; }
 	@echo "synth-ci: OK ($(SYNTH_DIR)/summary.json, $(SYNTH_DIR)/summary.md)"

@@ -669,9 +669,12 @@ void writeMarkdown(const std::string &path, const std::vector<Target> &ts, const
         if (t.config == cfg && t.target == want) cols.push_back(&t);
     if (cols.empty()) continue;
     const Target &f = *cols[0];
-    // The build-time levers (sgm_top UNIQUENESS, AD_TERM): named when a lever is not built.
+    // The build-time levers (sgm_top UNIQUENESS, AD_TERM): named when a lever is not built;
+    // the fifth path's block (RIGHT_BLOCK) when it is.
+    const std::string rightBlock = metaGet(f.meta, "right_block");
     const std::string levers = std::string(metaGet(f.meta, "uniqueness") == "0" ? ", UNIQUENESS = 0" : "") +
-                               (metaGet(f.meta, "ad_term") == "0" ? ", AD_TERM = 0" : "");
+                               (metaGet(f.meta, "ad_term") == "0" ? ", AD_TERM = 0" : "") +
+                               (!rightBlock.empty() && rightBlock != "0" ? ", RIGHT_BLOCK = " + rightBlock : "");
     o << "## D = " << f.d << ", MAX_WIDTH = " << f.w << ", census " << f.census << levers << " (MAX_HEIGHT = " << f.h << ")\n\n";
     o << "| | paper, Table III (xc6slx150) |";
     for (auto *c : cols) o << " " << c->target << " (this core, census " << c->census << ") |";

@@ -28,13 +28,14 @@ inline std::string conesMissing() {
 
 inline cv::Mat conesGray(const std::string& side) { return sgm::readGray(conesDir() + "/" + side + ".png"); }
 
-// runPipelineStages on cones with default parameters and d disparities; call
+// runPipelineStages on cones with the four-path preset and d disparities; call
 // only when conesMissing() is empty.
 inline const sgm::PipelineStages& conesStages(int d) {
   static std::map<int, sgm::PipelineStages> cache;
   auto it = cache.find(d);
   if (it == cache.end()) {
-    sgm::Params params;
+    // The four-path preset: the stage fixtures' widths (S of four paths) are built for it.
+    sgm::Params params = sgm::presetParams("four-path");
     params.disparities = d;
     it = cache.emplace(d, sgm::runPipelineStages(conesGray("left"), conesGray("right"), params)).first;
   }

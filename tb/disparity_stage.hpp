@@ -309,7 +309,7 @@ class DisparityStageTest : public ::testing::Test {
     }
   }
 
-  // The stage's input map of the golden pipeline on cones (default parameters,
+  // The stage's input map of the golden pipeline on cones (four-path preset,
   // d disparities), in MAX_WIDTH tiles when wider.
   static void runCones(int d) {
     if (d * 16 > kMaxDisp + 1) {

@@ -10,6 +10,8 @@ VVP          ?= vvp
 ICARUS_DIR   := $(BUILD)/icarus
 ICARUS_STALL ?= 64
 ICARUS_SEED  ?= 1
+# sgm_top RIGHT_BLOCK of the Icarus build (its default); the frames' defaults follow it.
+ICARUS_RIGHT_BLOCK := 64
 
 .PHONY: icarus
 TEST_EXTRA += icarus
@@ -18,12 +20,14 @@ $(BIN)/sgm-icarus-frames: $(OBJ)/tests/icarus/icarus_frames.o $(EVAL_OBJ) $(GOLD
 	@mkdir -p $(dir $@)
 	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDLIBS)
 
-$(OBJ)/tests/icarus/icarus_frames.o: override CXXFLAGS += -Itb
+$(OBJ)/tests/icarus/icarus_frames.o: override CXXFLAGS += -Itb -DICARUS_RIGHT_BLOCK=$(ICARUS_RIGHT_BLOCK)
+$(OBJ)/tests/icarus/icarus_frames.o: tests/icarus.mk
 
-$(ICARUS_DIR)/tb_sgm_top_files.vvp: tb/icarus/tb_sgm_top_files.sv $(RTL_SRC) | check-tools
+$(ICARUS_DIR)/tb_sgm_top_files.vvp: tb/icarus/tb_sgm_top_files.sv $(RTL_SRC) tests/icarus.mk | check-tools
 	@mkdir -p $(dir $@)
 	$(IVERILOG) -g2012 -Wall -Wno-timescale -Wno-sensitivity-entire-array -o $@ -s tb_sgm_top_files \
 	  -Ptb_sgm_top_files.D=16 -Ptb_sgm_top_files.MAX_WIDTH=128 -Ptb_sgm_top_files.MAX_HEIGHT=64 \
+	  -Ptb_sgm_top_files.RIGHT_BLOCK=$(ICARUS_RIGHT_BLOCK) \
 	  tb/icarus/tb_sgm_top_files.sv $(RTL_SRC) 2> $(ICARUS_DIR)/iverilog.log || { cat $(ICARUS_DIR)/iverilog.log; exit 1; }
 
 icarus: $(BIN)/sgm-icarus-frames $(ICARUS_DIR)/tb_sgm_top_files.vvp

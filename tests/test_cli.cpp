@@ -80,7 +80,8 @@ TEST(CliArgs, ModeBringsItsDefaultPenaltiesUnlessOverridden) {
   const sgm::Params a = parse({"--p1", "3", "--mode", "bt"}).pipelineParams();
   EXPECT_EQ(a.p1, 3);
   EXPECT_EQ(a.p2, sgm::defaultParams(sgm::CostMode::kBt).p2);
-  const sgm::Params b = parse({"--mode", "bt", "--p2", "5000"}).pipelineParams();
+  // (P2' 5000 on the four-path preset: with the fifth path S would leave 16 bits.)
+  const sgm::Params b = parse({"--mode", "bt", "--p2", "5000"}).pipelineParams(sgm::presetParams("four-path"));
   EXPECT_EQ(b.p1, sgm::defaultParams(sgm::CostMode::kBt).p1);
   EXPECT_EQ(b.p2, 5000);
   // A mode without a census switches a base AD term off; --ad-weight is then checked.

@@ -23,9 +23,8 @@ using sgm::CostVolume;
 using sgm::PathVolume;
 
 TEST(Experiments, OffByDefaultAndNotInAnyPreset) {
-  const sgm::Params p;
-  EXPECT_FALSE(p.experimental());
-  EXPECT_FALSE(sgm::presetParams("paper").experimental());
+  for (const std::string& name : sgm::presetNames()) EXPECT_FALSE(sgm::presetParams(name).experimental()) << name;
+  const sgm::Params p = sgm::presetParams("four-path");  // no fifth path
   sgm::Params q = p;
   q.rightPathWeight = 3;
   EXPECT_NE(q, p);

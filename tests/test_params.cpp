@@ -34,7 +34,7 @@ TEST(ParamsValidate, DisparityRange) {
 }
 
 TEST(ParamsValidate, Penalties) {
-  Params p;
+  Params p = sgm::presetParams("four-path");  // the whole P2' range (no fifth path in S)
   p.p1 = 10;
   p.p2 = 10;
   EXPECT_NO_THROW(p.validate());  // P2' = P1 is allowed
@@ -65,8 +65,10 @@ TEST(ParamsValidate, LrTolerance) {
 TEST(ParamsTest, RawSgmTurnsEveryPostStageOff) {
   Params p = sgm::defaultParams(CostMode::kRt);
   p.disparities = 32;
+  p.uniqueness = 15;
   const Params raw = p.rawSgm();
   EXPECT_FALSE(raw.subpixel);
+  EXPECT_EQ(raw.uniqueness, 0);
   EXPECT_LT(raw.lrTolerance, 0);
   EXPECT_FALSE(raw.fill);
   EXPECT_FALSE(raw.snap);
@@ -101,7 +103,7 @@ TEST(ParamsTest, DefaultParamsKeepsTheModeAndPostProcessing) {
   EXPECT_TRUE(base.subpixel);
   EXPECT_EQ(base.lrTolerance, 1);
   EXPECT_TRUE(base.fill);
-  EXPECT_TRUE(base.snap);
+  EXPECT_FALSE(base.snap);  // issue 15: off in the pool's pick (docs/accuracy-pool.md)
   EXPECT_TRUE(base.median);
   EXPECT_TRUE(sgm::isHardwareMode(base.mode)) << "Params{} is the hardware default";
   // ... with the measured penalties of its own mode.
@@ -110,12 +112,24 @@ TEST(ParamsTest, DefaultParamsKeepsTheModeAndPostProcessing) {
 }
 
 TEST(ParamsTest, DocumentedPenaltyDefaults) {
-  // docs/algorithm.md, "Defaults": rsad (the hardware default) P1 18, P2' 100.
+  // docs/algorithm.md, "Defaults": rsad (the hardware default) P1 24, P2' 200 with the
+  // fifth path (weight 4, blocks of 64), AD term 3 / 20, uniqueness 15; the four-path
+  // preset keeps the former P1 18, P2' 100.
   EXPECT_EQ(Params{}.mode, CostMode::kRsad);
-  EXPECT_EQ(Params{}.p1, 18);
-  EXPECT_EQ(Params{}.p2, 100);
-  EXPECT_EQ(sgm::defaultParams(CostMode::kRsad).p1, 18);
-  EXPECT_EQ(sgm::defaultParams(CostMode::kRsad).p2, 100);
+  EXPECT_EQ(Params{}.p1, 24);
+  EXPECT_EQ(Params{}.p2, 200);
+  EXPECT_EQ(Params{}.rightPathWeight, 4);
+  EXPECT_EQ(Params{}.rightPathBlock, 64);
+  EXPECT_EQ(Params{}.adWeight, 3);
+  EXPECT_EQ(Params{}.adCap, 20);
+  EXPECT_EQ(Params{}.uniqueness, 15);
+  EXPECT_EQ(sgm::defaultParams(CostMode::kRsad), Params{});
+  const Params four = sgm::presetParams("four-path");
+  EXPECT_EQ(four.p1, 18);
+  EXPECT_EQ(four.p2, 100);
+  EXPECT_TRUE(four.snap);
+  EXPECT_EQ(four.rightPathWeight + four.adWeight + four.uniqueness, 0);
+  EXPECT_EQ(sgm::presetName(four), "four-path");
 }
 
 TEST(ParamsTest, PenaltyLimitKeepsTheWeightedSumInSixteenBits) {

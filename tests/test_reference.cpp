@@ -305,7 +305,7 @@ class ReferenceModel : public testing::TestWithParam<Case> {};
 
 TEST_P(ReferenceModel, GoldenMatchesTheNaiveContract) {
   const Case c = GetParam();
-  sgm::Params p;
+  sgm::Params p = sgm::presetParams("four-path");  // the naive contract: four paths, no AD term or uniqueness
   p.mode = c.mode;
   p.disparities = c.d;
   p.p1 = c.p1;

@@ -37,7 +37,7 @@ struct PoolRow {
   char half = 'A';
   int disparities = 0;
   ErrorFigures ours;
-  std::optional<ErrorFigures> today;   // Params{} at the same D, when ours are not the defaults
+  std::optional<ErrorFigures> today;   // the four-path preset (the defaults before issue 15) at the same D, when ours are not it
   std::optional<ErrorFigures> opencv;  // StereoSGBM MODE_SGBM at D rounded up to 16
 };
 
@@ -64,7 +64,7 @@ std::map<std::string, char> poolHalves(const std::string& root);
 
 struct PoolReport {
   PoolOptions options;
-  bool comparesToday = false;  // params are not today's defaults: `today` is filled
+  bool comparesToday = false;  // params are not the four-path preset: `today` is filled
   std::vector<PoolRow> rows;   // sorted by set, then scene
   std::vector<PoolMean> sets;  // one per set, sorted
   std::vector<PoolMean> groups;  // "middlebury", "kitti" (those present)
@@ -79,7 +79,7 @@ void summarize(PoolReport& report);
 
 using PoolHook = std::function<void(const PoolRow&, const Scene&, const cv::Mat& disparity)>;
 
-// Runs the golden model (and OpenCV, and today's defaults when params differ
+// Runs the golden model (and OpenCV, and the four-path preset, "today", when params differ
 // from them) on every scene, evaluates each and summarizes.
 PoolReport computePool(const std::vector<Scene>& scenes, const PoolOptions& options, const PoolHook& hook = {});
 

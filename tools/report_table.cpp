@@ -188,13 +188,15 @@ std::string notesMarkdown(const TableReport& r) {
       "- **Table I on the paper's window** (rows `paper-*`): the paper's 9x9 census, `P2r = max(P1, P2' / dI)` and "
       "the plain sum of the four paths (equal weights), in the Table I configuration below, with P1 / P2' swept per "
       "cost on that window. These are the rows to compare with the paper's figures.\n"
-      "- **Table I configuration, our window** (rows `sad` .. `unified`): the golden model with `defaultParams(mode)` "
-      "(9x5 census, P2 knee, weights 3,2,3,2) but "
+      "- **Table I configuration, our window** (rows `sad` .. `unified`): the golden model with `defaultParams(mode)`, "
+      "for `rsad` the `four-path` preset (9x5 census, P2 knee, weights 3,2,3,2, four paths: the cost is what differs) but "
       "the left-right check, hole filling and edge snapping off (`lrTolerance = -1`, `fill = false`, `snap = false`); sub-pixel refinement and "
       "the 5x5 median stay as in `defaultParams` (on). The paper's figure is in parentheses.\n"
-      "- **Full pipeline** (rows `full-*`): `defaultParams(mode)` as is (LR check, hole filling, edge snapping, sub-pixel, "
-      "median) for each cost mode the hardware implements; `" + r.hardwareDefault +
-      "` is the hardware default (`Params{}.mode`); `full-paper` is the `paper` preset (9x9, `unified`, P2' / dI, "
+      "- **Full pipeline** (rows `full-*`): `defaultParams(mode)` as is (LR check, hole filling, sub-pixel, median; "
+      "for `rsad` the defaults: the fifth path, the AD term, uniqueness 15, no snapping; the other modes with edge "
+      "snapping, four paths) for each cost mode the hardware implements; `" + r.hardwareDefault +
+      "` is the hardware default (`Params{}.mode`); `full-four-path` is the `four-path` preset (the defaults before "
+      "issue 15); `full-paper` is the `paper` preset (9x9, `unified`, P2' / dI, "
       "equal weights, LR check, sub-pixel, median, no filling, no snapping).\n"
       "- **OpenCV** rows: `cv::StereoSGBM` (settings of OpenCV's stereo_match sample) on the colour images, "
       "same process, " + std::to_string(opencvDisparities(r.disparities)) + " disparities.\n"
@@ -325,7 +327,9 @@ const std::vector<std::string>& paperScenes() {
 }
 
 Params table1Params(CostMode mode, int disparities) {
-  Params p = defaultParams(mode);
+  // The mode's four-path configuration: Table I compares the costs on four paths (rsad's
+  // defaults add the fifth path, the AD term and the uniqueness ratio: its four-path preset).
+  Params p = mode == Params{}.mode ? presetParams("four-path") : defaultParams(mode);
   p.disparities = disparities;
   p.lrTolerance = -1;
   p.fill = false;
@@ -374,6 +378,10 @@ std::vector<Method> tableMethods(int disparities) {
     m.hardwareDefault = mode == Params{}.mode;
     methods.push_back(m);
   }
+  Params four = presetParams("four-path");
+  four.disparities = disparities;
+  methods.push_back(goldenMethod("full-four-path", "Full pipeline, four-path preset (the defaults before issue 15)",
+                                 MethodKind::kFull, four));
   Params paper = presetParams("paper");
   paper.disparities = disparities;
   methods.push_back(goldenMethod("full-paper", "Full pipeline, paper preset (9x9, RSAD+RT)", MethodKind::kFull, paper));

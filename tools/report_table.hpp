@@ -32,8 +32,9 @@ struct Method {
 // The scenes of the paper's Table I, in its column order.
 const std::vector<std::string>& paperScenes();
 
-// "Table I configuration": defaultParams(mode) with the LR check and hole
-// filling off; sub-pixel refinement and the median stay as in defaultParams.
+// "Table I configuration": the mode's four-path configuration (defaultParams(mode),
+// for rsad the four-path preset) with the LR check, hole filling and snapping off;
+// sub-pixel refinement and the median stay on.
 Params table1Params(CostMode mode, int disparities);
 
 // Table I on the paper's window: presetParams("paper") (9x9, P2' / dI, equal

@@ -17,7 +17,7 @@ const char* kUsage =
     "                  [--mode rt|rsad|unified|sad|bt|sad+rt] [--subpixel on|off]\n"
     "                  [--lr TOL|off] [--fill on|off] [--snap on|off] [--median on|off]\n"
     "                  [--census 9x5|9x9] [--p2-mode knee|paper] [--weights 3232|equal]\n"
-    "                  [--preset default|paper]  (options after a preset override it)\n"
+    "                  [--preset default|four-path|paper]  (options after a preset override it)\n"
     "golden-only experiments, NOT in the RTL (off by default; docs/algorithm.md section 12):\n"
     "                  [--right-path W] fifth path from the right over one buffered row, weight W (0..8)\n"
     "                  [--right-block B] the fifth path per block of B px with one block of look-ahead (0: the row)\n"

@@ -28,7 +28,7 @@ class CliArgs {
   // Reads --d, --p1, --p2, --mode, --subpixel, --lr, --uniqueness, --ad-weight W, --ad-cap T,
   // --fill, --snap, --median, --census, --p2-mode, --weights and --preset into params, and the
   // golden-only experiments (not in the RTL, off by default): --right-path W, --right-block B,
-  // --subpixel-fit parabola|linear, --mgm on|off. --preset (default | paper) replaces
+  // --subpixel-fit parabola|linear, --mgm on|off. --preset (default | four-path | paper) replaces
   // base (D excepted) before the other options apply, so they override it; --mode also
   // brings that mode's default P1 / P2' (defaultParams), which --p1 / --p2 override,
   // and a mode without a census switches the AD term off.

@@ -81,8 +81,22 @@ bool Params::operator==(const Params& o) const {
          mgm == o.mgm;
 }
 
+const std::vector<std::string>& presetNames() {
+  static const std::vector<std::string> names = {"default", "four-path", "paper"};
+  return names;
+}
+
 Params presetParams(const std::string& name) {
   if (name == "default") return Params{};
+  if (name == "four-path") {  // the defaults before issue 15 (measured in docs/accuracy-pool.md, "today")
+    Params p;
+    p.p1 = 18, p.p2 = 100;
+    p.snap = true;
+    p.uniqueness = 0;
+    p.adWeight = 0;
+    p.rightPathWeight = 0, p.rightPathBlock = 0;
+    return p;
+  }
   if (name == "paper") {
     Params p;
     p.census = CensusWindow::k9x9;
@@ -99,16 +113,25 @@ Params presetParams(const std::string& name) {
     p.rightPathWeight = 0, p.rightPathBlock = 0;
     return p;
   }
-  throw Error("unknown preset '" + name + "' (expected default or paper)");
+  throw Error("unknown preset '" + name + "' (expected default, four-path or paper)");
 }
 
 std::string presetName(const Params& params) {
-  for (const char* name : {"default", "paper"}) {
+  for (const std::string& name : presetNames()) {
     Params preset = presetParams(name);
     preset.disparities = params.disparities;  // a preset fixes the algorithm, not the build's D
     if (params == preset) return name;
   }
   return "custom";
+}
+
+Params buildDefaults(const BuildLevers& build, int disparities) {
+  Params p = presetParams(build.census9x9 ? "paper"
+                          : build.rightBlock && build.uniqueness && build.adTerm ? "default"
+                                                                                 : "four-path");
+  if (p.rightPathWeight) p.rightPathBlock = build.rightBlock;
+  p.disparities = disparities;
+  return p;
 }
 
 CostMode parseCostMode(const std::string& name) {
@@ -156,16 +179,11 @@ void Params::validate() const {
 }
 
 Params defaultParams(CostMode mode) {
-  Params p;
+  if (mode == Params{}.mode) return Params{};
+  // The other modes' penalties were measured with the four-path configuration (issue 15
+  // re-tuned the pool's levers for rsad only; the AD term is for census modes).
+  Params p = presetParams("four-path");
   p.mode = mode;
-  if (mode != CostMode::kRsad) {
-    // The other modes' penalties below were measured with these levers (issue 15
-    // tuned the pool's only for rsad); the AD term is for census modes only.
-    p.uniqueness = 0;
-    p.adWeight = 0;
-    p.rightPathWeight = 0, p.rightPathBlock = 0;
-    p.snap = true;
-  }
   switch (mode) {
     // Measured on cones, teddy, sawtooth, venus: docs/algorithm.md, section 11.
     case CostMode::kRt: p.p1 = 28, p.p2 = 130; break;
@@ -181,6 +199,7 @@ Params defaultParams(CostMode mode) {
 Params Params::rawSgm() const {
   Params raw = *this;
   raw.subpixel = false;
+  raw.uniqueness = 0;
   raw.lrTolerance = -1;
   raw.fill = false;
   raw.snap = false;

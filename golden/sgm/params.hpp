@@ -83,29 +83,33 @@ constexpr int kMaxAdWeight = 15;                  // AD term weight (Params::adW
 constexpr int kMaxAdCap = 255;                    // AD term truncation (Params::adCap, 8 bits)
 constexpr int kAdShift = 3;                       // AD term = adWeight * min(AD, adCap) >> kAdShift                 // keeps kPathWeightSum * (Cmax + P2') < 2^16
 
+// The defaults (issue 15, docs/accuracy-pool.md: chosen on half A of the scene pool,
+// reported on half B): the four paths with a fifth from the right in blocks of 64,
+// the AD term, the uniqueness ratio, no edge snapping. The preset "four-path" is the
+// former defaults, for builds without these levers (sgm_top RIGHT_BLOCK = 0, ...).
 struct Params {
   int disparities = 64;        // D: candidates 0 .. D-1
-  int p1 = 18;                 // small-change penalty
-  int p2 = 100;                // P2' of the adaptive P2r = max(P1, 4 P2' / (|dI| + 4))
+  int p1 = 24;                 // small-change penalty
+  int p2 = 200;                // P2' of the adaptive P2r = max(P1, 4 P2' / (|dI| + 4))
   CostMode mode = CostMode::kRsad;  // the hardware default (measured best)
   bool subpixel = true;        // quadratic refinement to 1/16 px
   int lrTolerance = 1;         // left-right check tolerance in px; < 0 disables it
   bool fill = true;            // fill invalid pixels along the row from the background side
-  bool snap = true;            // move disparity drops onto the nearby intensity edge
+  bool snap = false;           // move disparity drops onto the nearby intensity edge
   bool median = true;          // 5x5 median over valid pixels
   CensusWindow census = CensusWindow::k9x5;    // census window (section 2)
   P2Mode p2Mode = P2Mode::kKnee;               // P2 adaptation (section 4)
   PathWeighting weights = PathWeighting::k3232;  // path weights of S (section 5)
-  int uniqueness = 0;          // uniqueness ratio U (%, section 7): invalid when some S(k), |k - d*| > 1,
+  int uniqueness = 15;         // uniqueness ratio U (%, section 7): invalid when some S(k), |k - d*| > 1,
                                // has S(k) (100 - U) < 100 S(d*); 0 = off
-  int adWeight = 0;            // AD term added to C (section 3): adWeight * min(|IL(x) - IR(x-d)|, adCap) >> 3; 0 = off
+  int adWeight = 3;            // AD term added to C (section 3): adWeight * min(|IL(x) - IR(x-d)|, adCap) >> 3; 0 = off
   int adCap = 20;              // the AD term's truncation (gray levels)
 
-  // The fifth path, 0 degrees from the right (docs/algorithm.md section 12), off by
-  // default: in blocks it is in the core (sgm_top RIGHT_BLOCK = rightPathBlock, run-time
-  // weight), over the whole row (rightPathBlock = 0) golden-only.
-  int rightPathWeight = 0;  // its weight in S, 0..kMaxRightPathWeight; 0 = off
-  int rightPathBlock = 0;   // per block of this many pixels with one block of look-ahead; 0 = whole row
+  // The fifth path, 0 degrees from the right (docs/algorithm.md section 5): in blocks it
+  // is in the core (sgm_top RIGHT_BLOCK = rightPathBlock, run-time weight), over the
+  // whole row (rightPathBlock = 0) golden-only.
+  int rightPathWeight = 4;  // its weight in S, 0..kMaxRightPathWeight; 0 = off
+  int rightPathBlock = 64;  // per block of this many pixels with one block of look-ahead; 0 = whole row
   // Golden-only experiments (issue 15, docs/algorithm.md section 12): NOT in the RTL,
   // every one off by default, so Params{} and the presets stay bit-exact with the core.
   bool linearSubpixel = false;  // sub-pixel by the equiangular (V) fit instead of the parabola
@@ -119,7 +123,8 @@ struct Params {
 
   // Throws Error naming the first parameter that is out of range.
   void validate() const;
-  // Parameters with every post-processing stage off (raw SGM + WTA).
+  // Parameters with every post-processing stage off (raw SGM + WTA: no uniqueness ratio,
+  // LR check, sub-pixel, fill, snap or median; the cost and the paths as they are).
   Params rawSgm() const;
 };
 
@@ -127,12 +132,27 @@ struct Params {
 // docs/algorithm.md, "Defaults"), everything else as in Params{}.
 Params defaultParams(CostMode mode);
 
-// Named configurations, the same in every tool (--preset): "default" (Params{}) and
+// Named configurations, the same in every tool (--preset): "default" (Params{}),
+// "four-path" (the defaults before issue 15: no fifth path, AD term or uniqueness
+// ratio, P1 18, P2' 100, edge snapping; what a build without those levers runs) and
 // "paper", the paper's system: 9x9 census, unified cost, P2' / dI, equal weights, LR
 // check, sub-pixel, 5x5 median, no filling, no snapping (docs/algorithm.md, section 11).
 Params presetParams(const std::string& name);   // throws Error on unknown names
-// "default" or "paper" when params equal that preset, "custom" otherwise.
+const std::vector<std::string>& presetNames();
+// The preset's name when params equal it (D aside), "custom" otherwise.
 std::string presetName(const Params& params);
+
+// What a core build has of the levers the defaults use (sgm_top RIGHT_BLOCK, UNIQUENESS,
+// AD_TERM) and its census window (CENSUS_H).
+struct BuildLevers {
+  int rightBlock = 0;  // the fifth path's block, 0: not built
+  bool uniqueness = true, adTerm = true;
+  bool census9x9 = false;
+};
+// The configuration such a build runs by default (its reset values): "default" with the
+// build's block when it has all three levers, "four-path" otherwise, "paper" on the 9x9
+// window; D as given.
+Params buildDefaults(const BuildLevers& build, int disparities);
 
 // The disparity counts the RTL is built and tested for; the golden model
 // accepts any D in [kMinDisparities, kMaxDisparities].

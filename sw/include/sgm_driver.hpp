@@ -37,16 +37,25 @@ struct Identity {
 // One frame's run-time configuration (the fields of FRAME_SIZE, PENALTY, CONFIG).
 struct FrameConfig {
   uint32_t width = 0, height = 0;
-  uint32_t p1 = 18, p2 = 100;
+  // Defaults: the golden model's (SGM_PENALTY_RESET / SGM_CONFIG_RESET); a build without
+  // the fifth path, the uniqueness ratio or the AD term (FEATURES) resets to fourPath().
+  uint32_t p1 = 24, p2 = 200;
   uint32_t mode = SGM_MODE_RSAD;
   bool subpixel = true;
   bool lrCheck = true;
   uint32_t lrTolerance = 1;
-  bool fill = true, snap = true, median = true;
+  bool fill = true, snap = false, median = true;
   bool p2Paper = false, weightsEqual = false;  // the paper's P2'/dI and equal path weights
-  uint32_t uniqueness = 0;  // uniqueness ratio in %, 0 (off) .. SGM_CONFIG_UNIQUENESS_MAX
-  uint32_t adWeight = 0, adCap = 20;  // the AD term: C += (W min(AD, T)) >> 3, W 0 (off) .. 15
-  uint32_t rightWeight = 0;  // the fifth path's W5: 0 (off) .. 8, in blocks of the build's (FEATURES)
+  uint32_t uniqueness = 15;  // uniqueness ratio in %, 0 (off) .. SGM_CONFIG_UNIQUENESS_MAX
+  uint32_t adWeight = 3, adCap = 20;  // the AD term: C += (W min(AD, T)) >> 3, W 0 (off) .. 15
+  uint32_t rightWeight = 4;  // the fifth path's W5: 0 (off) .. 8, in blocks of the build's (FEATURES)
+
+  // The four-path defaults (golden preset "four-path"), for builds without those levers.
+  static FrameConfig fourPath() {
+    FrameConfig f;
+    f.p1 = 18, f.p2 = 100, f.snap = true, f.uniqueness = 0, f.adWeight = 0, f.rightWeight = 0;
+    return f;
+  }
 };
 
 struct Errors {

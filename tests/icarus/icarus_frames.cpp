@@ -25,6 +25,9 @@
 namespace {
 
 constexpr int kD = 16;  // the Icarus build (make icarus: -Ptb_sgm_top_files.D=16)
+#ifndef ICARUS_RIGHT_BLOCK
+#error "ICARUS_RIGHT_BLOCK: the Icarus build's fifth-path block (tests/icarus.mk)"
+#endif
 
 struct Frame {
   int width, height;
@@ -34,8 +37,9 @@ struct Frame {
 // Two frames back to back with different parameter sets (the second one
 // checks that the configuration is taken at its start of frame).
 std::vector<Frame> frames() {
-  sgm::Params defaults;
-  defaults.disparities = kD;
+  sgm::BuildLevers build;  // the Icarus build: all levers, the fifth path in blocks of ICARUS_RIGHT_BLOCK
+  build.rightBlock = ICARUS_RIGHT_BLOCK;
+  const sgm::Params defaults = sgm::buildDefaults(build, kD);
   sgm::Params other = defaults;
   other.mode = sgm::CostMode::kUnified, other.p1 = 40, other.p2 = 200, other.median = false, other.lrTolerance = 0;
   other.p2Mode = sgm::P2Mode::kPaper, other.weights = sgm::PathWeighting::kEqual;  // the paper's run-time options

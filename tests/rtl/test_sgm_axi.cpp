@@ -43,11 +43,16 @@ sgm::Params withBuildLevers(sgm::Params p) {
   return p;
 }
 
+// The build's defaults (sgm::buildDefaults), which its registers reset to.
+constexpr bool kFullDefaults = Rtl::RIGHT_BLOCK && Rtl::UNIQUENESS && Rtl::AD_TERM;
 sgm::Params defaults() {
-  sgm::Params p;
-  p.disparities = kD;
-  return p;
+  sgm::BuildLevers build;
+  build.rightBlock = Rtl::RIGHT_BLOCK, build.uniqueness = Rtl::UNIQUENESS, build.adTerm = Rtl::AD_TERM;
+  build.census9x9 = Rtl::CENSUS_H == 9;
+  return sgm::buildDefaults(build, kD);
 }
+constexpr uint32_t kPenaltyReset = kFullDefaults ? SGM_PENALTY_RESET : SGM_PENALTY_RESET_FOUR_PATH;
+constexpr uint32_t kConfigReset = kFullDefaults ? SGM_CONFIG_RESET : SGM_CONFIG_RESET_FOUR_PATH;
 
 FrameInput scene(int w, int h, uint32_t seed, const sgm::Params& p) {
   const sgm::synth::SyntheticScene s = sgm::synth::makeSyntheticScene(w, h, kD, seed);
@@ -146,14 +151,26 @@ TEST(SgmAxi, RtlOffsetsAndResetValuesMatchTheHeader) {
       {"FEATURES_RIGHT_PATH", {1u << Rtl::FEATURES_RIGHT_PATH_BIT, SGM_FEATURES_RIGHT_PATH}},
       {"FEATURES_RIGHT_BLOCK", {uint32_t(Rtl::FEATURES_RIGHT_BLOCK_LSB), SGM_FEATURES_RIGHT_BLOCK_SHIFT}},
       {"FEATURES_VALUE", {Rtl::FEATURES_VALUE, kFeatures}},
-      {"PENALTY_RESET", {Rtl::PENALTY_RESET, SGM_PENALTY_RESET}},
-      {"CONFIG_RESET", {Rtl::CONFIG_RESET, SGM_CONFIG_RESET}},
+      {"PENALTY_RESET", {Rtl::PENALTY_RESET, kPenaltyReset}},
+      {"CONFIG_RESET", {Rtl::CONFIG_RESET, kConfigReset}},
   };
   for (const auto& [name, values] : pairs) EXPECT_EQ(values.first, values.second) << name << ": RTL vs sgm_regs.h";
-  // The reset configuration is the golden model's default parameter set.
+  // The reset configuration is the golden model's defaults for the build, both forms
+  // (the header's two pairs) the golden model's "default" and "four-path" presets.
   const drv::FrameConfig golden = frameConfig(defaults(), {0, 0});
-  EXPECT_EQ(drv::Driver::encodePenalty(golden), uint32_t(SGM_PENALTY_RESET));
-  EXPECT_EQ(drv::Driver::encodeConfig(golden), uint32_t(SGM_CONFIG_RESET));
+  EXPECT_EQ(drv::Driver::encodePenalty(golden), kPenaltyReset);
+  EXPECT_EQ(drv::Driver::encodeConfig(golden), kConfigReset);
+  const drv::FrameConfig ours = frameConfig(sgm::presetParams("default"), {0, 0});
+  const drv::FrameConfig four = frameConfig(sgm::presetParams("four-path"), {0, 0});
+  EXPECT_EQ(drv::Driver::encodePenalty(ours), uint32_t(SGM_PENALTY_RESET));
+  EXPECT_EQ(drv::Driver::encodeConfig(ours), uint32_t(SGM_CONFIG_RESET));
+  EXPECT_EQ(drv::Driver::encodePenalty(four), uint32_t(SGM_PENALTY_RESET_FOUR_PATH));
+  EXPECT_EQ(drv::Driver::encodeConfig(four), uint32_t(SGM_CONFIG_RESET_FOUR_PATH));
+  // The driver's FrameConfig{} is the golden model's defaults too.
+  EXPECT_EQ(drv::Driver::encodePenalty(drv::FrameConfig{}), uint32_t(SGM_PENALTY_RESET));
+  EXPECT_EQ(drv::Driver::encodeConfig(drv::FrameConfig{}), uint32_t(SGM_CONFIG_RESET));
+  EXPECT_EQ(drv::Driver::encodePenalty(drv::FrameConfig::fourPath()), uint32_t(SGM_PENALTY_RESET_FOUR_PATH));
+  EXPECT_EQ(drv::Driver::encodeConfig(drv::FrameConfig::fourPath()), uint32_t(SGM_CONFIG_RESET_FOUR_PATH));
 }
 
 // Offset, reset value and the bits that read back (0: read-only).
@@ -185,8 +202,8 @@ std::vector<RegisterSpec> registers() {
       {"FEATURES", SGM_REG_FEATURES, kFeatures, 0},
       {"CTRL", SGM_REG_CTRL, 0, SGM_CTRL_MASK},
       {"FRAME_SIZE", SGM_REG_FRAME_SIZE, 0, 0xFFFFFFFFu},
-      {"PENALTY", SGM_REG_PENALTY, SGM_PENALTY_RESET, SGM_PENALTY_MASK},
-      {"CONFIG", SGM_REG_CONFIG, SGM_CONFIG_RESET, SGM_CONFIG_MASK},
+      {"PENALTY", SGM_REG_PENALTY, kPenaltyReset, SGM_PENALTY_MASK},
+      {"CONFIG", SGM_REG_CONFIG, kConfigReset, SGM_CONFIG_MASK},
       {"STATUS", SGM_REG_STATUS, 0, 0},
       {"FRAMES", SGM_REG_FRAMES, 0, 0},
       {"ERROR", SGM_REG_ERROR, 0, 0},              // W1C: its own test

@@ -369,14 +369,14 @@ sgm::PathVolume crop(const sgm::PathVolume& v, int x0, int y0, int w, int h) {
 
 // The aggregated cones volume of this build's D, cut into MAX_WIDTH-wide
 // tiles (left border, middle, right border), through the check with tolerance
-// 1, 0 and off; the full-frame golden selection (default parameters) must
+// 1, 0 and off; the full-frame golden selection (four-path preset) must
 // also agree with selectDisparity on the whole volume.
 TEST(SgmLrCheck, Cones) {
   if (const std::string why = sgm::tb::conesMissing(); !why.empty()) GTEST_SKIP() << why;
   const sgm::PipelineStages& st = sgm::tb::conesStages(kD);
   const sgm::PathVolume& s = st.aggregated;
   {
-    sgm::Params p;
+    sgm::Params p = sgm::presetParams("four-path");  // conesStages' parameters
     p.disparities = kD;
     const sgm::DisparityMap whole = sgm::selectDisparity(s, p);
     ASSERT_EQ(cv::countNonZero(whole.disp != st.selected.disp), 0) << "golden selection stage disagreement";

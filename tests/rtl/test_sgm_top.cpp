@@ -4,12 +4,12 @@
 // frame, real scenes in the D = 64 build. The stream checker of the harness
 // watches every output cycle; its own test is here too. The census window is the
 // build's (CENSUS_H, read from the model): a 9x5 build runs our defaults, a 9x9
-// build the paper preset; both switch the run-time P2 form and path weights.
+// build the paper preset (sgm::buildDefaults); both switch the run-time P2 form and path weights.
 // The run-time levers are the build's (UNIQUENESS, AD_TERM, read from the model):
 // in a lean build (top-d16-lean: both 0) the bit-exact tests run with the lever it
 // lacks off, and LeversTheBuildLacksAreDroppedThenGoodFrame expects the frames that
-// ask for it dropped. A build with the fifth path (RIGHT_BLOCK = B) runs it in its
-// defaults (weight 4, blocks of B) and in the settings and parameter sets.
+// ask for it dropped. A build with the fifth path (RIGHT_BLOCK = B) and both levers runs
+// our defaults in blocks of B, a build without any of them the four-path preset.
 #include "Vsgm_top.h"
 #include "Vsgm_top_sgm_top.h"
 #include "core_harness.hpp"
@@ -80,13 +80,14 @@ FrameInput syntheticPair(int w, int h, std::mt19937& rng, const sgm::Params& par
   return FrameInput{left, right, params};
 }
 
-// Our defaults in a 9x5 build, the paper preset in a 9x9 build; with the fifth path
-// built, weight 4 in its blocks.
+// The build's defaults (sgm::buildDefaults): ours in a build with every lever they use
+// (the fifth path in the build's blocks), the four-path preset in one without, the paper
+// preset in a 9x9 build.
 sgm::Params hardwareDefaults() {
-  sgm::Params p = sgm::presetParams(kCensusH == 9 ? "paper" : "default");
-  p.disparities = kD;
-  if (kRightBlock) p.rightPathWeight = 4, p.rightPathBlock = kRightBlock;
-  return p;
+  sgm::BuildLevers build;
+  build.rightBlock = kRightBlock, build.uniqueness = kUniqueness, build.adTerm = kAdTerm;
+  build.census9x9 = kCensusH == 9;
+  return sgm::buildDefaults(build, kD);
 }
 
 // Every frame but those in `cut` (reset in their middle) equals the golden model.
@@ -285,7 +286,7 @@ TEST(SgmTop, LeversTheBuildLacksAreDroppedThenGoodFrame) {
   sgm::Params both = hardwareDefaults();
   both.uniqueness = 10, both.adWeight = 2, both.adCap = 12;
   sgm::Params capOnly = hardwareDefaults();
-  capOnly.adCap = 255;  // weight 0: the term is off
+  capOnly.adWeight = 0, capOnly.adCap = 255;  // weight 0: the term is off
   sgm::Params right = hardwareDefaults();  // the fifth path, in the build's blocks when it has them
   right.rightPathWeight = 4, right.rightPathBlock = kRightBlock ? kRightBlock : 16;
   const std::vector<std::pair<std::string, sgm::Params>> asks = {
