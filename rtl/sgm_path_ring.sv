@@ -141,14 +141,14 @@ module sgm_path_ring #(
     if (NR == 0) begin : g_wire
       assign lvl_out[l] = lvl_in[l];
     end else begin : g_regs
-      logic [VW-1:0] chain_q [NR];
+      logic [NR*VW-1:0] chain_q;  // packed (Icarus: a continuous assignment from an unpacked array word)
       always_ff @(posedge clk_i) begin
         if (en_i) begin
-          chain_q[0] <= lvl_in[l];
-          for (int i = 1; i < NR; i++) chain_q[i] <= chain_q[i-1];
+          chain_q[0 +: VW] <= lvl_in[l];
+          for (int i = 1; i < NR; i++) chain_q[i*VW +: VW] <= chain_q[(i-1)*VW +: VW];
         end
       end
-      assign lvl_out[l] = chain_q[NR-1];
+      assign lvl_out[l] = chain_q[(NR-1)*VW +: VW];
     end
     if (l < LEVELS) begin : g_nodes
       localparam int N = P / (ARITY ** (l + 1));  // nodes of level l + 1

@@ -166,19 +166,20 @@ module sgm_right_path #(
   // address K slots ago), or, for the last pass, that of column W - 1 of the
   // lane's previous row (kept per lane when it is written; the next row's
   // column u - W < W - 1).
-  logic [RA-1:0] prev_addr, row_end_q [K];
+  logic [RA-1:0] prev_addr, row_end;
   sgm_delay #(.WIDTH(RA), .DEPTH(K)) u_prev_addr (
     .clk_i (clk_i),
     .en_i  (en_i),
     .d_i   (wr_addr_q),
     .q_o   (prev_addr)
   );
-  always_ff @(posedge clk_i) begin
-    if (en_i) begin
-      row_end_q[0] <= col_i == wm1_q ? wr_addr_q : row_end_q[K-1];
-      for (int i = 1; i < K; i++) row_end_q[i] <= row_end_q[i-1];
-    end
-  end
+  // Per lane (a K-slot ring: the lane's own value comes back each K slots).
+  sgm_delay #(.WIDTH(RA), .DEPTH(K)) u_row_end (
+    .clk_i (clk_i),
+    .en_i  (en_i),
+    .d_i   (col_i == wm1_q ? wr_addr_q : row_end),
+    .q_o   (row_end)
+  );
   wire [SCW-1:0] start_left = b_last ? last_steps_q - 1'b1 : SCW'(2 * BLOCK - 1);
   // The decision, K slots later (the lane's next slot, where the pass runs its
   // first step; the start column's word is the same).
@@ -188,7 +189,7 @@ module sgm_right_path #(
   sgm_delay #(.WIDTH(3 + SCW + RA), .DEPTH(K)) u_decision (
     .clk_i (clk_i),
     .en_i  (en_i),
-    .d_i   ({start_any, start_ring, b_last, start_left, b_last ? row_end_q[K-1] : prev_addr}),
+    .d_i   ({start_any, start_ring, b_last, start_left, b_last ? row_end : prev_addr}),
     .q_o   ({dec_any, dec_ring, dec_last, dec_left, dec_addr})
   );
 
@@ -203,7 +204,7 @@ module sgm_right_path #(
   // (then its block RAM's read register and one more: LATENCY = K DLY + 1), the
   // L5 words L5_LAG - 2 slots after that (then the read register, one more,
   // the ring select with the two halves of the W5 product, and their sum).
-  logic [RA-1:0] rd_addr_q [2];
+  logic [2*RA-1:0] cnt_addr;  // {L5, output copy}
   for (genvar i = 0; i < 2; i++) begin : g_rd_addr
     localparam int RD_OFF = i == 0 ? K * DLY - 1 : K * DLY + L5_LAG - 3;
     localparam int T0     = (4 * K * M - RD_OFF) % (K * M);  // the slot count RD_OFF before 0, mod K M
@@ -222,10 +223,10 @@ module sgm_right_path #(
         if (wrap) n_rq <= n_rq == AW'(M - 1) ? '0 : n_rq + 1'b1;
       end
     end
-    assign rd_addr_q[i] = base_rq + RA'(n_rq);
+    assign cnt_addr[i*RA +: RA] = base_rq + RA'(n_rq);
   end
-  wire [RA-1:0] out_addr = rd_addr_q[0];
-  wire [RA-1:0] l5_addr  = rd_addr_q[1];
+  wire [RA-1:0] out_addr = cnt_addr[0 +: RA];
+  wire [RA-1:0] l5_addr  = cnt_addr[RA +: RA];
 
   // ------------------------------------------------------------ output copy
   localparam int PWD = CWD + 8;              // pass copy: {gray, costs}
@@ -257,7 +258,7 @@ module sgm_right_path #(
     .p2r_o   (p2r)
   );
 
-  logic [D*LW-1:0] l5_q [2];
+  logic [2*D*LW-1:0] l5_q;  // ring r at [r*D*LW +: D*LW] (packed: Icarus)
 
   for (genvar r = 0; r < 2; r++) begin : g_pass
     // This ring's copy of the costs and grays.
@@ -269,12 +270,15 @@ module sgm_right_path #(
     // Per-lane state, rotating through K registers: active, steps left after
     // the one of this slot, the word of this slot's column, whether the pass is
     // the row's last (every step kept).
-    logic           act_q  [K];
-    logic           last_q [K];
-    logic [SCW-1:0] left_q [K];
-    logic [RA-1:0]  addr_q [K];
+    // Per-lane state, K slots back (the lane's previous step): active, steps
+    // left after that step, its memory address, whether the pass is the row's
+    // last (every step kept). Packed and in sgm_delay (Icarus).
+    logic [K-1:0]   act_q;
+    logic           last_k;
+    logic [SCW-1:0] left_k;
+    logic [RA-1:0]  addr_k;
     wire start = dec_any && dec_ring == 1'(r);
-    wire step  = start || (act_q[K-1] && left_q[K-1] != '0);
+    wire step  = start || (act_q[K-1] && left_k != '0);
     logic           last_d;
     logic [SCW-1:0] left_d;
     logic [RA-1:0]  addr_d;
@@ -284,31 +288,25 @@ module sgm_right_path #(
         left_d = dec_left;
         addr_d = dec_addr;
       end else begin
-        last_d = last_q[K-1];
-        left_d = left_q[K-1] - 1'b1;
-        addr_d = addr_q[K-1] == base_q ? top_q : addr_q[K-1] - 1'b1;  // the lane's previous word
+        last_d = last_k;
+        left_d = left_k - 1'b1;
+        addr_d = addr_k == base_q ? top_q : addr_k - 1'b1;  // the lane's previous word
       end
     end
     always_ff @(posedge clk_i) begin
       if (!rst_ni) begin
-        for (int i = 0; i < K; i++) act_q[i] <= 1'b0;
+        act_q <= '0;
       end else if (en_i) begin
         act_q[0] <= step;
         for (int i = 1; i < K; i++) act_q[i] <= act_q[i-1];
       end
     end
-    always_ff @(posedge clk_i) begin
-      if (en_i) begin
-        last_q[0] <= last_d;
-        left_q[0] <= left_d;
-        addr_q[0] <= addr_d;
-        for (int i = 1; i < K; i++) begin
-          last_q[i] <= last_q[i-1];
-          left_q[i] <= left_q[i-1];
-          addr_q[i] <= addr_q[i-1];
-        end
-      end
-    end
+    sgm_delay #(.WIDTH(1 + SCW + RA), .DEPTH(K)) u_lane_state (
+      .clk_i (clk_i),
+      .en_i  (en_i),
+      .d_i   ({last_d, left_d, addr_d}),
+      .q_o   ({last_k, left_k, addr_k})
+    );
     // Keep the step's L5 when it is one of its block's columns.
     wire keep = step && (last_d || left_d < SCW'(BLOCK));
 
@@ -376,7 +374,7 @@ module sgm_right_path #(
     always_ff @(posedge clk_i) begin
       if (en_i) begin
         if (keep3) l5_mem[addr3] <= lr;
-        l5_q[r] <= l5_mem[l5_addr];
+        l5_q[r*D*LW +: D*LW] <= l5_mem[l5_addr];
       end
     end
   end
@@ -413,12 +411,9 @@ module sgm_right_path #(
   // stays out of the select and the product); the pixel's block parity picks
   // the ring and the product's two halves are formed (v (w0 + 2 w1) and
   // 4 v (w2 + 2 w3), an adder each), then their sum.
-  logic [D*LW-1:0] l5_r [2];
+  logic [2*D*LW-1:0] l5_r;
   always_ff @(posedge clk_i) begin
-    if (en_i) begin
-      l5_r[0] <= l5_q[0];
-      l5_r[1] <= l5_q[1];
-    end
+    if (en_i) l5_r <= l5_q;
   end
   logic l5_parity;
   sgm_delay #(.WIDTH(1), .DEPTH(L5_LAG - 1)) u_parity (
@@ -427,7 +422,7 @@ module sgm_right_path #(
     .d_i   (out_q[CWD]),
     .q_o   (l5_parity)
   );
-  wire [D*LW-1:0] l5 = l5_parity ? l5_r[1] : l5_r[0];
+  wire [D*LW-1:0] l5 = l5_parity ? l5_r[D*LW +: D*LW] : l5_r[0 +: D*LW];
   for (genvar d = 0; d < D; d++) begin : g_weight
     wire [LW-1:0]  v = l5[d*LW +: LW];
     logic [L5W-1:0] lo_q, hi_q;

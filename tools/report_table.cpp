@@ -281,7 +281,10 @@ std::string goldenParamsText(const Params& p) {
                      onOff(p.fill) + ", snap " + onOff(p.snap) + ", median " + onOff(p.median) +
                      (p.uniqueness ? ", uniqueness " + std::to_string(p.uniqueness) : std::string()) +
                      (p.adWeight ? ", AD weight " + std::to_string(p.adWeight) + " cap " + std::to_string(p.adCap)
-                                 : std::string());
+                                 : std::string()) +
+                     (p.rightPathWeight && p.rightPathBlock ? ", fifth path " + std::to_string(p.rightPathWeight) +
+                                                                  " in blocks of " + std::to_string(p.rightPathBlock)
+                                                            : std::string());
   if (p.experimental())
     text += "; golden-only experiments (not in the RTL): right path " + std::to_string(p.rightPathWeight) +
             (p.rightPathBlock ? " block " + std::to_string(p.rightPathBlock) : std::string()) +
