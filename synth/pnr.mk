@@ -12,7 +12,10 @@
 #   make pnr-one        one run: PNR_D, PNR_MAX_WIDTH, PNR_DEVICE, PNR_PACKAGE, PNR_SPEED
 #                       (every target takes PNR_LANES, the core's LANES, default 6, and
 #                       PNR_UNIQUENESS / PNR_AD_TERM, the core's UNIQUENESS / AD_TERM, default 1,
-#                       and PNR_RIGHT_BLOCK, the core's RIGHT_BLOCK, default 0)
+#                       and PNR_RIGHT_BLOCK, the core's RIGHT_BLOCK, default 0: the P&R
+#                       builds are four-path cores unless asked, because the fifth path does
+#                       not fit beside the D = 64 six-lane core on the LFE5U-85F; sgm_top's
+#                       own default is 64, docs/accuracy-pool.md "Clock (decision)")
 #   make pnr-summary    rebuild summary.{json,md} from what build/pnr holds
 #
 # Yosys and nextpnr run one at a time (flock on build/pnr/.lock, also under
