@@ -267,9 +267,6 @@ module sgm_right_path #(
       if (en_i) pass_mem[wr_addr_q] <= {gray_i, cost_i};
     end
 
-    // Per-lane state, rotating through K registers: active, steps left after
-    // the one of this slot, the word of this slot's column, whether the pass is
-    // the row's last (every step kept).
     // Per-lane state, K slots back (the lane's previous step): active, steps
     // left after that step, its memory address, whether the pass is the row's
     // last (every step kept). Packed and in sgm_delay (Icarus).

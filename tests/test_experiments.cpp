@@ -32,6 +32,12 @@ TEST(Experiments, OffByDefaultAndNotInAnyPreset) {
   EXPECT_TRUE(q.experimental());  // the fifth path over the whole row: golden-only
   q.rightPathBlock = 64;           // in blocks it is in the core (sgm_top RIGHT_BLOCK)
   EXPECT_FALSE(q.experimental());
+  sgm::Params g = p;  // the gated median and per-path P1: golden-only
+  g.medianGate = 32;
+  EXPECT_TRUE(g.experimental());
+  g = p;
+  g.p1PathPercent[2] = 200;
+  EXPECT_TRUE(g.experimental());
   sgm::Params u = p;  // the uniqueness ratio and the AD term are in the core: not experiments
   u.uniqueness = 15, u.adWeight = 3;
   EXPECT_FALSE(u.experimental());
@@ -194,6 +200,54 @@ TEST(Experiments, StreamingPipelineEqualsStagesAndChangesTheResult) {
   EXPECT_GT(cv::countNonZero(blocks.disp != streamed.disp) + cv::countNonZero(blocks.valid != streamed.valid), 0);
 }
 
+// The gated median: a window pixel counts only within `gate` gray levels of the centre.
+TEST(MedianGate, HandWindowAndWideGateIsThePlainMedian) {
+  const int w = 9, h = 9;
+  sgm::DisparityMap in{cv::Mat(h, w, CV_16UC1, cv::Scalar(16)), cv::Mat(h, w, CV_8UC1, cv::Scalar(1))};
+  cv::Mat gray(h, w, CV_8UC1, cv::Scalar(100));
+  // Centre (4, 4) on a bright 2 x 3 patch (disparity 48) inside a dark field (16): the plain
+  // median sees 6 of 25 at 48 and gives 16; gated at 10 it sees the patch only.
+  for (int y = 3; y <= 4; ++y)
+    for (int x = 3; x <= 5; ++x) in.disp.at<uint16_t>(y, x) = 48, gray.at<uint8_t>(y, x) = 200;
+  EXPECT_EQ(sgm::median5x5(in).disp.at<uint16_t>(4, 4), 16);
+  EXPECT_EQ(sgm::median5x5(in, gray, 255).disp.at<uint16_t>(4, 4), 16);  // 255: every pixel counts
+  EXPECT_EQ(sgm::median5x5(in, gray, 10).disp.at<uint16_t>(4, 4), 48);
+  EXPECT_EQ(sgm::median5x5(in, gray, 100).disp.at<uint16_t>(4, 4), 16);  // |200 - 100| = 100 counts
+  EXPECT_EQ(sgm::median5x5(in, gray, 99).disp.at<uint16_t>(4, 4), 48);   // ... and 99 does not
+  EXPECT_EQ(sgm::median5x5(in, gray, 10).disp.at<uint16_t>(1, 1), 16);   // the dark field: unchanged
+  // A wide gate is the plain median on a random map.
+  std::mt19937 rng(3);
+  sgm::DisparityMap r{cv::Mat(23, 41, CV_16UC1), cv::Mat(23, 41, CV_8UC1)};
+  cv::Mat rg(23, 41, CV_8UC1);
+  for (int y = 0; y < r.disp.rows; ++y)
+    for (int x = 0; x < r.disp.cols; ++x)
+      r.disp.at<uint16_t>(y, x) = uint16_t(rng() % 1024), r.valid.at<uint8_t>(y, x) = uint8_t(rng() % 4 != 0),
+      rg.at<uint8_t>(y, x) = uint8_t(rng() % 256);
+  EXPECT_EQ(cv::countNonZero(sgm::median5x5(r).disp != sgm::median5x5(r, rg, 255).disp), 0);
+  EXPECT_GT(cv::countNonZero(sgm::median5x5(r).disp != sgm::median5x5(r, rg, 20).disp), 0);
+}
+
+// Per-path P1: 100 % everywhere is the plain aggregation; a path's own P1 changes only that path.
+TEST(P1PerPath, HundredIsPlainAndOnePathScalesItsOwnP1) {
+  std::mt19937 rng(11);
+  const int w = 26, h = 6, nd = 9, p1 = 10, p2 = 90;
+  CostVolume c(w, h, nd);
+  for (auto& v : c.data) v = uint8_t(rng() % 45);
+  cv::Mat gray(h, w, CV_8UC1);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) gray.at<uint8_t>(y, x) = uint8_t(rng() % 256);
+  const int hundred[5] = {100, 100, 100, 100, 100}, vertical[5] = {100, 100, 250, 100, 100};
+  const auto sum = [&](const int* percent) {
+    return sgm::aggregateCost(c, gray, p1, p2, sgm::P2Mode::kKnee, sgm::PathWeighting::k3232, 0, false, 0, percent);
+  };
+  const PathVolume plain = sgm::aggregateCost(c, gray, p1, p2), same = sum(hundred), scaled = sum(vertical);
+  EXPECT_EQ(plain.data, same.data);
+  // S with the vertical path at P1 25 = S - 3 L(90 deg, P1 10) + 3 L(90 deg, P1 25).
+  const PathVolume l10 = sgm::pathCost(c, gray, 2, p1, p2), l25 = sgm::pathCost(c, gray, 2, 25, p2);
+  for (size_t i = 0; i < plain.data.size(); ++i)
+    ASSERT_EQ(scaled.data[i], plain.data[i] - 3 * l10.data[i] + 3 * l25.data[i]) << "i " << i;
+}
+
 TEST(Experiments, OptionsAndRanges) {
   std::vector<std::string> args = {"prog", "--right-path", "3", "--right-block", "48", "--uniqueness", "10", "--ad-weight", "8", "--ad-cap", "16",
                                    "--subpixel-fit", "linear"};
@@ -207,7 +261,25 @@ TEST(Experiments, OptionsAndRanges) {
   EXPECT_EQ(p.adCap, 16);
   EXPECT_TRUE(p.linearSubpixel);
   EXPECT_FALSE(p.mgm);
+  std::vector<std::string> args2 = {"prog", "--median-gate", "40", "--p1-paths", "200,100,150,50,100"};
+  std::vector<char*> argv2;
+  for (std::string& a : args2) argv2.push_back(a.data());
+  const sgm::Params q = sgm::CliArgs(int(argv2.size()), argv2.data(), sgm::CliArgs::pipelineOptions()).pipelineParams();
+  EXPECT_EQ(q.medianGate, 40);
+  EXPECT_EQ(q.p1PathPercent, (std::array<int, 5>{200, 100, 150, 50, 100}));
+  EXPECT_EQ(q.pathP1(0), 48);
+  EXPECT_EQ(q.pathP1(3), 12);
+  for (const char* list : {"200,100,150,50", "200,100,150,50,100,1", "200,,150,50,100", "20,100,100,100,100", "x"}) {
+    std::vector<std::string> a = {"prog", "--p1-paths", list};
+    std::vector<char*> v;
+    for (std::string& s : a) v.push_back(s.data());
+    const sgm::CliArgs cli(int(v.size()), v.data(), sgm::CliArgs::pipelineOptions());
+    expectError([&] { cli.pipelineParams(); }, {"--p1-paths expects five percentages"});
+  }
   sgm::Params bad;
+  bad.p2 = 50, bad.p1PathPercent[4] = 300;  // P1 24 * 3 = 72 > P2' 50
+  expectError([&] { bad.validate(); }, {"P1 of path 4"});
+  bad = sgm::Params{};
   bad.rightPathWeight = sgm::kMaxRightPathWeight + 1;
   expectError([&] { bad.validate(); }, {"right-path"});
   bad = sgm::Params{};

@@ -289,7 +289,10 @@ std::string goldenParamsText(const Params& p) {
     text += "; golden-only experiments (not in the RTL): right path " + std::to_string(p.rightPathWeight) +
             (p.rightPathBlock ? " block " + std::to_string(p.rightPathBlock) : std::string()) +
             ", sub-pixel fit " + (p.linearSubpixel ? "linear" : "parabola") + ", MGM " +
-            onOff(p.mgm);
+            onOff(p.mgm) + ", median gate " + std::to_string(p.medianGate) + ", P1 per path " +
+            std::to_string(p.p1PathPercent[0]) + "," + std::to_string(p.p1PathPercent[1]) + "," +
+            std::to_string(p.p1PathPercent[2]) + "," + std::to_string(p.p1PathPercent[3]) + "," +
+            std::to_string(p.p1PathPercent[4]) + " %";
   return text;
 }
 
@@ -308,11 +311,15 @@ void writeGoldenParamFields(JsonWriter& j, const Params& p) {
   j.key("uniqueness").integer(p.uniqueness);  // 0: off
   j.key("ad_weight").integer(p.adWeight);     // 0: off
   j.key("ad_cap").integer(p.adCap);
+  j.key("right_path_weight").integer(p.rightPathWeight);  // 0: off
+  j.key("right_path_block").integer(p.rightPathBlock);    // 0: the whole row (golden-only)
   // Golden-only experiments (docs/algorithm.md section 12), off unless set.
-  j.key("right_path_weight").integer(p.rightPathWeight);
-  j.key("right_path_block").integer(p.rightPathBlock);  // 0: the whole row
   j.key("subpixel_fit").string(p.linearSubpixel ? "linear" : "parabola");
   j.key("mgm").boolean(p.mgm);
+  j.key("median_gate").integer(p.medianGate);  // 0: off
+  j.key("p1_path_percent").beginArray();
+  for (const int percent : p.p1PathPercent) j.integer(percent);
+  j.endArray();
 }
 
 const char* methodKindName(MethodKind kind) {

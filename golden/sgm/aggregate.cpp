@@ -178,11 +178,18 @@ void waitUntil(const std::atomic<int>& counter, int value) {
 
 void aggregateRows(int width, int height, int nd, const cv::Mat& gray, int p1, int p2, P2Mode p2Mode,
                    PathWeighting weights, const CostRowFn& costRow, const SumRowFn& sink, int rightPathWeight,
-                   bool mgm, int rightPathBlock) {
-  const P2Table table = makeP2Table(p1, p2, p2Mode);
+                   bool mgm, int rightPathBlock, const int* p1PathPercent) {
   const int* w = pathWeights(weights);
+  // Each path's P1 and P2 table (the golden-only per-path P1; one P1 for all in the core).
+  int pathP1[kPathCount + 1];
+  std::vector<P2Table> tables;
+  tables.reserve(kPathCount + 1);  // the paths keep references: no reallocation
+  for (int i = 0; i <= kPathCount; ++i) {
+    pathP1[i] = p1PathPercent ? p1 * p1PathPercent[i] / 100 : p1;
+    tables.push_back(makeP2Table(pathP1[i], p2, p2Mode));
+  }
   std::vector<PathState> paths;
-  for (int i = 0; i < kPathCount; ++i) paths.emplace_back(width, nd, gray, i, p1, table, mgm);
+  for (int i = 0; i < kPathCount; ++i) paths.emplace_back(width, nd, gray, i, pathP1[i], tables[size_t(i)], mgm);
   // Two workers split every row at column `split`: the left worker computes
   // C and all four paths of columns 0 .. split-1, the right worker those of
   // split .. W-1 and then hands the whole row of S on. The left worker runs
@@ -227,8 +234,8 @@ void aggregateRows(int width, int height, int nd, const cv::Mat& gray, int p1, i
                        else
                          rightStarted.store(y + 1, std::memory_order_release);
                        if (rightPathWeight)  // the whole row of C is in its slot now
-                         addRightPath(costRing.data() + rowSize * (y % kSlots), gray.ptr<uint8_t>(y), width, nd, p1,
-                                      table, rightPathWeight, sumRing.data() + rowSize * (y % kSlots), rightPathBlock);
+                         addRightPath(costRing.data() + rowSize * (y % kSlots), gray.ptr<uint8_t>(y), width, nd,
+                                      pathP1[kPathCount], tables[kPathCount], rightPathWeight, sumRing.data() + rowSize * (y % kSlots), rightPathBlock);
                        sink(1, y, sumRing.data() + rowSize * (y % kSlots));
                        rightRows.store(y + 1, std::memory_order_release);
                      }
@@ -245,7 +252,8 @@ PathVolume pathCost(const CostVolume& cost, const cv::Mat& grayLeft, int pathInd
 }
 
 PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1, int p2, P2Mode p2Mode,
-                         PathWeighting weights, int rightPathWeight, bool mgm, int rightPathBlock) {
+                         PathWeighting weights, int rightPathWeight, bool mgm, int rightPathBlock,
+                         const int* p1PathPercent) {
   PathVolume sum(cost.width, cost.height, cost.depth);
   const size_t rowSize = size_t(cost.width) * cost.depth;
   aggregateRows(
@@ -254,7 +262,7 @@ PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1
         std::copy(cost.at(x0, y), cost.at(x0, y) + size_t(x1 - x0) * cost.depth, row + size_t(x0) * cost.depth);
       },
       [&](int, int y, const uint16_t* row) { std::copy_n(row, rowSize, sum.at(0, y)); }, rightPathWeight, mgm,
-      rightPathBlock);
+      rightPathBlock, p1PathPercent);
   return sum;
 }
 

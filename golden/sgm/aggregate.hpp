@@ -48,14 +48,17 @@ PathVolume pathCost(const CostVolume& cost, const cv::Mat& grayLeft, int pathInd
                     P2Mode p2Mode = P2Mode::kKnee);
 
 // S(p, d) = sum over the four paths of w[r] Lr(p, d) (3, 2, 3, 2 or equal), for the whole volume.
-// rightPathWeight > 0 (golden-only experiment, not in the RTL) adds a fifth path,
-// 0 degrees from the right (p - r = (x + 1, y)), computed over each completed row of
-// C (one buffered row in hardware), weighted by rightPathWeight. mgm (golden-only)
-// replaces each path's recursion by the raster-order MGM one (kMgmPerpendicular).
-// rightPathBlock > 0 computes the fifth path per block of that many pixels (addRightPath).
+// rightPathWeight > 0 adds a fifth path, 0 degrees from the right (p - r = (x + 1, y)),
+// computed over each completed row of C, weighted by rightPathWeight; rightPathBlock > 0
+// computes it per block of that many pixels (addRightPath; the core's form, sgm_top
+// RIGHT_BLOCK), 0 over the whole row (golden-only). mgm (golden-only) replaces each
+// path's recursion by the raster-order MGM one (kMgmPerpendicular). p1PathPercent
+// (golden-only; nullptr = 100 each): P1 of each path (0, 45, 90, 135 degrees, the fifth)
+// in percent of p1, each path's P2r from its own P1.
 PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1, int p2,
                          P2Mode p2Mode = P2Mode::kKnee, PathWeighting weights = PathWeighting::k3232,
-                         int rightPathWeight = 0, bool mgm = false, int rightPathBlock = 0);
+                         int rightPathWeight = 0, bool mgm = false, int rightPathBlock = 0,
+                         const int* p1PathPercent = nullptr);
 
 // The streaming form used by the pipeline: rows in order, never more than a
 // few rows of C and S in memory, the work of each row split over two workers.
@@ -67,9 +70,10 @@ using CostRowFn = std::function<void(int y, int x0, int x1, uint8_t* row)>;
 using SumRowFn = std::function<void(int worker, int y, const uint16_t* row)>;
 void aggregateRows(int width, int height, int disparities, const cv::Mat& grayLeft, int p1, int p2,
                    P2Mode p2Mode, PathWeighting weights, const CostRowFn& costRow, const SumRowFn& sink,
-                   int rightPathWeight = 0, bool mgm = false, int rightPathBlock = 0);
+                   int rightPathWeight = 0, bool mgm = false, int rightPathBlock = 0,
+                   const int* p1PathPercent = nullptr);
 
-// The golden-only fifth path over one row: Lr for r = (1, 0), from x = W-1 down to 0,
+// The fifth path over one row: Lr for r = (1, 0), from x = W-1 down to 0,
 // added to sum (W x D) with the given weight. cost is the row of C, grayRow the row of
 // the left image. block = B > 0: the row in blocks [jB, (j+1)B), the last block taking
 // the remainder ([(m-1)B, W), m = max(1, W / B)); each block's path is started (Lr = C)

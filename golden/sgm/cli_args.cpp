@@ -78,9 +78,9 @@ bool CliArgs::onOff(const std::string& name, bool fallback) const {
 const std::set<std::string>& CliArgs::pipelineOptions() {
   static const std::set<std::string> names = {"d",    "p1",   "p2",     "mode",   "subpixel", "lr",     "fill",
                                               "snap", "median", "census", "p2-mode", "weights", "preset", "uniqueness",
-                                              "ad-weight", "ad-cap",
+                                              "ad-weight", "ad-cap", "right-path", "right-block",
                                               // golden-only experiments (not in the RTL)
-                                              "right-path", "right-block", "subpixel-fit", "mgm"};
+                                              "subpixel-fit", "mgm", "median-gate", "p1-paths"};
   return names;
 }
 
@@ -110,6 +110,7 @@ Params CliArgs::pipelineParams(Params p) const {
   p.rightPathWeight = int(integer("right-path", p.rightPathWeight, 0, kMaxRightPathWeight));
   p.rightPathBlock = int(integer("right-block", p.rightPathBlock, 0, kMaxRightPathBlock));
   p.uniqueness = int(integer("uniqueness", p.uniqueness, 0, 99));
+  p.medianGate = int(integer("median-gate", p.medianGate, 0, 255));
   p.adWeight = int(integer("ad-weight", p.adWeight, 0, kMaxAdWeight));
   p.adCap = int(integer("ad-cap", p.adCap, 0, kMaxAdCap));
   if (const std::string fit = text("subpixel-fit", p.linearSubpixel ? "linear" : "parabola"); fit == "linear" || fit == "parabola")
@@ -117,6 +118,23 @@ Params CliArgs::pipelineParams(Params p) const {
   else
     throw Error("option --subpixel-fit expects parabola or linear, got '" + fit + "'");
   p.mgm = onOff("mgm", p.mgm);
+  if (has("p1-paths")) {  // five percentages: 0, 45, 90, 135 degrees, the fifth path
+    const std::string list = text("p1-paths", "");
+    std::array<int, kPathCount + 1> percent{};
+    size_t at = 0;
+    for (size_t i = 0; i < percent.size(); ++i) {
+      const size_t comma = i + 1 < percent.size() ? list.find(',', at) : list.size();
+      const std::string item = comma == std::string::npos ? std::string() : list.substr(at, comma - at);
+      char* end = nullptr;
+      const long v = std::strtol(item.c_str(), &end, 10);
+      if (item.empty() || *end != '\0' || v < kMinP1PathPercent || v > kMaxP1PathPercent)
+        throw Error("option --p1-paths expects five percentages " + std::to_string(kMinP1PathPercent) + ".." +
+                    std::to_string(kMaxP1PathPercent) + " (0, 45, 90, 135 degrees, the fifth path), got '" + list + "'");
+      percent[i] = int(v);
+      at = comma + 1;
+    }
+    p.p1PathPercent = percent;
+  }
   p.validate();
   return p;
 }

@@ -169,7 +169,7 @@ std::vector<std::pair<int, int>> medianSortingNetwork() {
 
 }  // namespace
 
-DisparityMap median5x5(const DisparityMap& in) {
+DisparityMap median5x5(const DisparityMap& in, const cv::Mat& gray, int gate) {
   const int w = in.disp.cols, h = in.disp.rows, r = kMedianRadius;
   // 16 pixels are sorted at once: lane l of window[k] is window entry k of pixel x0 + l.
   typedef uint16_t Lanes __attribute__((vector_size(32)));
@@ -182,15 +182,25 @@ DisparityMap median5x5(const DisparityMap& in) {
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
       if (in.valid.at<uint8_t>(y, x)) padded[size_t(y + r) * pw + x + r] = in.disp.at<uint16_t>(y, x);
+  std::vector<uint16_t> paddedGray(gate ? padded.size() : 0, 0);
+  for (int y = 0; gate && y < h; ++y)
+    for (int x = 0; x < w; ++x) paddedGray[size_t(y + r) * pw + x + r] = gray.at<uint8_t>(y, x);
   DisparityMap out{in.disp.clone(), in.valid.clone()};
   parallelFor(h, [&](int y0, int y1) {
     Lanes window[kMedianWindow];
     for (int y = y0; y < std::min(y1, h - r); ++y)  // the last r rows pass through (section 9)
       for (int x0 = 0; x0 < w; x0 += kLanes) {
-        Lanes count = {};
+        Lanes count = {}, centre;
+        if (gate) std::memcpy(&centre, paddedGray.data() + size_t(y + r) * pw + x0 + r, sizeof(Lanes));
         for (int k = 0; k < kMedianWindow; ++k) {
           const int dy = k / (2 * r + 1), dx = k % (2 * r + 1);  // window offset + r
           std::memcpy(&window[k], padded.data() + size_t(y + dy) * pw + x0 + dx, sizeof(Lanes));
+          if (gate) {
+            Lanes g;
+            std::memcpy(&g, paddedGray.data() + size_t(y + dy) * pw + x0 + dx, sizeof(Lanes));
+            const Lanes diff = g > centre ? g - centre : centre - g;
+            window[k] = diff > uint16_t(gate) ? kAbsent : window[k];
+          }
           count -= window[k] != kAbsent;  // a true lane compares as -1
         }
         for (const auto& [i, j] : network) {

@@ -64,6 +64,6 @@ DisparityMap snapEdges(const DisparityMap& in, const cv::Mat& grayLeft);
 // 5x5 median over the valid pixels of the window (window clipped to the image);
 // an invalid centre stays invalid. Lower median of an even count. The last
 // kMedianRadius rows (window clipped by the bottom edge) pass through.
-DisparityMap median5x5(const DisparityMap& in);
+DisparityMap median5x5(const DisparityMap& in, const cv::Mat& gray = cv::Mat(), int gate = 0);
 
 }  // namespace sgm

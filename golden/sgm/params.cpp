@@ -78,7 +78,7 @@ bool Params::operator==(const Params& o) const {
          census == o.census && p2Mode == o.p2Mode && weights == o.weights && rightPathWeight == o.rightPathWeight &&
          rightPathBlock == o.rightPathBlock &&
          uniqueness == o.uniqueness && adWeight == o.adWeight && adCap == o.adCap && linearSubpixel == o.linearSubpixel &&
-         mgm == o.mgm;
+         mgm == o.mgm && medianGate == o.medianGate && p1PathPercent == o.p1PathPercent;
 }
 
 const std::vector<std::string>& presetNames() {
@@ -161,6 +161,12 @@ void Params::validate() const {
   if (rightPathBlock < 0 || rightPathBlock > kMaxRightPathBlock)
     throw Error("right-path block " + std::to_string(rightPathBlock) + " out of range 0.." +
                 std::to_string(kMaxRightPathBlock));
+  for (int path = 0; path <= kPathCount; ++path)
+    if (p1PathPercent[size_t(path)] < kMinP1PathPercent || p1PathPercent[size_t(path)] > kMaxP1PathPercent || pathP1(path) > p2)
+      throw Error("P1 of path " + std::to_string(path) + " (" + std::to_string(p1PathPercent[size_t(path)]) + " % of P1=" +
+                  std::to_string(p1) + ") out of range " + std::to_string(kMinP1PathPercent) + ".." +
+                  std::to_string(kMaxP1PathPercent) + " % and 0..P2'=" + std::to_string(p2));
+  if (medianGate < 0 || medianGate > 255) throw Error("median gate " + std::to_string(medianGate) + " out of range 0..255");
   if (uniqueness < 0 || uniqueness > 99) throw Error("uniqueness " + std::to_string(uniqueness) + " out of range 0..99");
   if (adWeight < 0 || adWeight > kMaxAdWeight || adCap < 0 || adCap > kMaxAdCap)
     throw Error("AD term weight " + std::to_string(adWeight) + " / cap " + std::to_string(adCap) +

@@ -2,6 +2,7 @@
 // docs/algorithm.md is the prose version of everything in this header.
 #pragma once
 
+#include <array>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -80,6 +81,7 @@ constexpr int kMaxPenalty = 6000;
 constexpr int kMaxRightPathWeight = 8;            // fifth path's weight (Params::rightPathWeight; the core's 4-bit field, 9 .. 15 out of range)
 constexpr int kMaxRightPathBlock = 4096;          // fifth path's block (Params::rightPathBlock; the core: sgm_top RIGHT_BLOCK)
 constexpr int kMaxAdWeight = 15;                  // AD term weight (Params::adWeight, 4 bits in the RTL)
+constexpr int kMinP1PathPercent = 25, kMaxP1PathPercent = 400;  // golden-only per-path P1 (Params::p1PathPercent)
 constexpr int kMaxAdCap = 255;                    // AD term truncation (Params::adCap, 8 bits)
 constexpr int kAdShift = 3;                       // AD term = adWeight * min(AD, adCap) >> kAdShift                 // keeps kPathWeightSum * (Cmax + P2') < 2^16
 
@@ -114,9 +116,14 @@ struct Params {
   // every one off by default, so Params{} and the presets stay bit-exact with the core.
   bool linearSubpixel = false;  // sub-pixel by the equiangular (V) fit instead of the parabola
   bool mgm = false;             // raster-order MGM: each path averages two causal neighbours
+  int medianGate = 0;           // the median takes only window pixels within this gray distance of the centre; 0 = off
+  // P1 per path in percent of p1 (0, 45, 90, 135 degrees, the fifth path); each path's P2r = max(its P1, ...).
+  std::array<int, kPathCount + 1> p1PathPercent = {100, 100, 100, 100, 100};
+  int pathP1(int path) const { return p1 * p1PathPercent[size_t(path)] / 100; }
   // Golden-only options: the fifth path over the whole row (in blocks it is in the
-  // core, sgm_top RIGHT_BLOCK), the equiangular sub-pixel fit, MGM.
-  bool experimental() const { return (rightPathWeight && !rightPathBlock) || linearSubpixel || mgm; }
+  // core, sgm_top RIGHT_BLOCK), the equiangular sub-pixel fit, MGM, the gated median,
+  // per-path P1.
+  bool experimental() const { return (rightPathWeight && !rightPathBlock) || linearSubpixel || mgm || medianGate || p1PathPercent != Params{}.p1PathPercent; }
 
   bool operator==(const Params& o) const;
   bool operator!=(const Params& o) const { return !(*this == o); }
