@@ -9,8 +9,12 @@
 #   3. runs every variant on Cones for the simulation speed, BENCH_REPEATS
 #      interleaved rounds (one run of each variant per round), so that the
 #      report gives each variant's median and spread;
-#   4. sgm-bench report: OpenCV (MODE_SGBM, MODE_HH, MODE_SGBM_3WAY), golden vs
-#      OpenCV timing, and build/bench/report.{md,json}, accuracy.png.
+#   4. with the scene pool (POOL, tools/pool.mk): the verilated core at D = 128
+#      (`make eval-pool-rtl`, MAX_WIDTH = 1280) on BENCH_POOL_SCENES, one Middlebury
+#      and one KITTI pair (1242 px wide) by default, every pixel checked;
+#   5. sgm-bench report: OpenCV (MODE_SGBM, MODE_HH, MODE_SGBM_3WAY), golden vs
+#      OpenCV timing, the pool summary (BENCH_POOL=1: `make eval-pool`'s means, golden
+#      model and OpenCV on every pool scene), and build/bench/report.{md,json}, accuracy.png.
 #
 # Builds take a few minutes per variant (D = 64); the runs about two minutes.
 # Timing figures are only meaningful on an otherwise idle machine.
@@ -29,10 +33,12 @@ BENCH_SIM        = $(BIN)/sgm-sim-d$(D)-w$(BENCH_MAX_WIDTH)$(if $(filter-out 102
 BENCH_SCENES    ?= cones teddy sawtooth venus
 BENCH_ALOE      ?= 1
 BENCH_FRAMES    ?= 450x375 640x480 1280x720 1920x1080
+BENCH_POOL      ?= 1
+BENCH_POOL_SCENES ?= $(POOL_RTL_SCENES)
 # `make bench-ci`: the smoke slice CI runs (one scene, one frame size, one build
 # shared with `make sim-ci`, one round).
 BENCH_CI_VARS   := BENCH_SCENES=cones BENCH_ALOE=0 BENCH_FRAMES=450x375 BENCH_VARIANTS=fast BENCH_REPEATS=1 \
-                   BENCH_MAX_WIDTH=512 BENCH_MAX_HEIGHT=1024 D=64
+                   BENCH_MAX_WIDTH=512 BENCH_MAX_HEIGHT=1024 D=64 BENCH_POOL=0 BENCH_POOL_SCENES=
 TEST_EXTRA      += bench-ci
 BENCH_TOOL      := $(BIN)/sgm-bench
 ALOE_DIR        := /usr/share/doc/opencv-doc/examples/data
@@ -42,6 +48,7 @@ ALOE_DIR        := /usr/share/doc/opencv-doc/examples/data
 bench-help:
 	@echo "make bench [DATA=dir] [D=64] [BENCH_MAX_WIDTH=1920] [BENCH_VARIANTS='fast threads2 checked'] [BENCH_REPEATS=3]"
 	@echo "           [BENCH_SCENES='cones teddy sawtooth venus'] [BENCH_ALOE=1] [BENCH_FRAMES='450x375 640x480 1280x720 1920x1080']"
+	@echo "           [POOL=dir] [BENCH_POOL=1] [BENCH_POOL_SCENES='$(POOL_RTL_SCENES)']"
 	@echo "make bench-ci   the CI smoke: $(BENCH_CI_VARS)"
 
 $(BENCH_TOOL): bench/sgm_bench.cpp $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
@@ -78,6 +85,10 @@ bench: $(BENCH_TOOL) $(foreach v,$(BENCH_VARIANTS),$(call BENCH_SIM,$(v))) | che
 	   $$sim --left $(BENCH_DIR)/formats/images/$${f}_left.png --right $(BENCH_DIR)/formats/images/$${f}_right.png \
 	     --out $(BENCH_DIR)/formats/$$f > $(BENCH_DIR)/formats/$$f.log || { cat $(BENCH_DIR)/formats/$$f.log; exit 1; }; \
 	 done
+	@set -e; if [ -n "$(strip $(BENCH_POOL_SCENES))" ] && [ -d "$(POOL)" ]; then \
+	   $(MAKE) --no-print-directory eval-pool-rtl POOL="$(POOL)" POOL_RTL_SCENES="$(BENCH_POOL_SCENES)" \
+	     POOL_RTL_OUT=$(abspath $(BENCH_DIR))/pool-rtl; \
+	 else echo "bench: the core on pool scenes skipped (POOL=$(POOL) not a directory, or BENCH_POOL_SCENES empty)"; fi
 	@set -e; src="$(DATA)/cones"; [ -f "$$src/left.png" ] && args="--left $$src/left.png --right $$src/right.png" || args=""; \
 	 for r in $$(seq 1 $(BENCH_REPEATS)); do for vb in $(foreach v,$(BENCH_VARIANTS),$(v)=$(call BENCH_SIM,$(v))); do \
 	   v=$${vb%%=*}; echo "bench: simulation speed, $$v build, cones, round $$r of $(BENCH_REPEATS)"; \
@@ -85,7 +96,10 @@ bench: $(BENCH_TOOL) $(foreach v,$(BENCH_VARIANTS),$(call BENCH_SIM,$(v))) | che
 	   $${vb#*=} $$args --out $$run > $$run.log || { cat $$run.log; exit 1; }; \
 	 done; done
 	@$(foreach v,$(BENCH_VARIANTS),echo '$(strip $(BENCH_FLAGS_$(v)))' > $(BENCH_DIR)/simspeed/$(v)/flags.txt;)
-	@$(BENCH_TOOL) report --data "$(DATA)" --bench $(BENCH_DIR) --repeats $(BENCH_REPEATS)
+	@pool=""; if [ "$(BENCH_POOL)" = 1 ]; then \
+	   if [ -d "$(POOL)" ]; then pool="--pool $(POOL)"; else echo "bench: the pool summary skipped: POOL=$(POOL) is not a directory"; fi; \
+	 fi; \
+	 $(BENCH_TOOL) report --data "$(DATA)" --bench $(BENCH_DIR) --repeats $(BENCH_REPEATS) $$pool
 
 bench-ci:
 	@$(MAKE) --no-print-directory $(BENCH_CI_VARS) bench

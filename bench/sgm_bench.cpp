@@ -6,11 +6,15 @@
 // simulator's reports, and writes build/bench/report.{md,json} and the charts.
 //
 //   sgm-bench formats --source IMAGE --out DIR   writes DIR/<format>_{left,right}.png
-//   sgm-bench report  --data DIR --bench DIR [--repeats N]
+//   sgm-bench report  --data DIR --bench DIR [--repeats N] [--pool DIR]
+// With --pool, the report adds the scene pool: the golden model (= the core, bit-exact)
+// and OpenCV on every pool scene at its ndisp (the `make eval-pool` summary), and the
+// core's own runs on pool scenes that bench.mk made (BENCH_DIR/pool-rtl/<scene>/).
 #include "eval_lib.hpp"
 #include "report_bench.hpp"
 #include "report_chart.hpp"
 #include "report_json.hpp"
+#include "report_pool.hpp"
 #include "report_table.hpp"
 
 #include "sgm/cli_args.hpp"
@@ -27,6 +31,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -39,7 +44,7 @@ namespace {
 
 const char* kUsage =
     "usage: sgm-bench formats --source IMAGE --out DIR\n"
-    "       sgm-bench report --data DIR --bench DIR [--repeats N]\n";
+    "       sgm-bench report --data DIR --bench DIR [--repeats N] [--pool DIR]\n";
 
 // The paper's Table II formats plus 1080p30; paperMhz is the paper's clock
 // (it runs at 9 cycles per pixel), 0 where the paper has no column.
@@ -168,6 +173,8 @@ struct BenchData {
   std::vector<SimVariant> simVariants;                                       // by name (cones)
   std::map<std::string, SimReport> formats;                                  // WxH -> report
   int d = 64, maxWidth = 0;
+  std::optional<PoolReport> pool;                                            // --pool: the golden model on the pool
+  std::map<std::string, SimReport> poolRtl;                                  // pool scene -> sgm-sim report
 };
 
 ErrorFigures rtlFigures(const SimReport& r) {
@@ -180,8 +187,25 @@ ErrorFigures rtlFigures(const SimReport& r) {
   return f;
 }
 
-BenchData measure(const std::string& data, const std::string& bench, int repeats) {
+// The scene pool: the golden model and OpenCV on every scene (each at its ndisp), and the
+// core's reports of the pool scenes bench.mk simulated (BENCH_DIR/pool-rtl/<scene>/).
+void measurePool(const std::string& pool, const std::string& bench, BenchData& b) {
+  std::vector<Scene> scenes;
+  for (const std::string& dir : listScenes(pool)) scenes.push_back(loadScene(dir));
+  if (scenes.empty()) throw Error("no scenes (left.png, right.png, gt.png) under --pool '" + pool + "'");
+  PoolOptions options;  // the hardware defaults, D per scene
+  options.halves = poolHalves(pool);
+  std::fprintf(stderr, "sgm-bench: the scene pool (%zu scenes): golden model, four-path preset, OpenCV\n", scenes.size());
+  b.pool = computePool(scenes, options);
+  const std::string rtl = bench + "/pool-rtl";
+  if (fs::is_directory(rtl))
+    for (const auto& entry : fs::directory_iterator(rtl))
+      if (entry.is_directory()) b.poolRtl.emplace(entry.path().filename().string(), readSimReport(entry.path().string()));
+}
+
+BenchData measure(const std::string& data, const std::string& bench, int repeats, const std::string& pool) {
   BenchData b;
+  if (!pool.empty()) measurePool(pool, bench, b);
   // The scenes the core ran on in this bench run (BENCH_SCENES, and Aloe unless BENCH_ALOE=0).
   const auto simulated = [&](const std::string& name) { return fs::exists(bench + "/rtl/" + name + "/report.json"); };
   for (const std::string& name : paperScenes()) {
@@ -231,6 +255,53 @@ BenchData measure(const std::string& data, const std::string& bench, int repeats
 double clockMhz(const SimReport& frame, int fps) { return frame.number("cycles") * fps / 1e6; }
 
 std::string optional(const std::optional<double>& v) { return v ? fmt(*v) : "-"; }
+
+const PoolRow* poolRow(const PoolReport& report, const std::string& scene) {
+  for (const PoolRow& row : report.rows)
+    if (row.scene == scene) return &row;
+  return nullptr;
+}
+
+// The pool's means (as `make eval-pool`) and the core's runs on pool scenes.
+std::string poolSection(const BenchData& b) {
+  const PoolReport& p = *b.pool;
+  std::ostringstream md;
+  md << "\n## Scene pool (`make eval-pool`: golden model = the core, each scene at its `ndisp`)\n\n"
+     << "Middlebury: bad-1.0 over the non-occluded pixels; KITTI: D1 (error > 3 px and > 5 %); invalid = error. "
+        "`four-path`: the preset of the core without the fifth path, the AD term and the uniqueness ratio "
+        "(docs/accuracy-pool.md). OpenCV StereoSGBM strict (invalid = error) and on its valid pixels only, "
+        "with its density.\n\n"
+     << "| means | scenes | ours | four-path | OpenCV strict | OpenCV valid only | OpenCV density |\n"
+        "|---|---:|---:|---:|---:|---:|---:|\n";
+  std::vector<PoolMean> means = p.groups;
+  means.insert(means.end(), p.halves.begin(), p.halves.end());
+  means.insert(means.end(), p.sets.begin(), p.sets.end());
+  for (const PoolMean& m : means)
+    md << "| " << m.name << " | " << m.scenes << " | **" << fmt(m.ours) << "** | " << optional(m.today) << " | "
+       << optional(m.opencvStrict) << " | " << optional(m.opencvValid) << " | " << optional(m.opencvDensity) << " |\n";
+  if (p.worstRegression)
+    md << "\nWorst change against the four-path preset: " << p.worstScene << " " << (*p.worstRegression >= 0 ? "+" : "")
+       << fmt(*p.worstRegression) << " points. Per scene: build/eval/pool.md (`make eval-pool`).\n";
+  md << "\n### The core on pool scenes (`BENCH_POOL_SCENES`, D = 128 build)\n\n";
+  if (b.poolRtl.empty()) {
+    md << "Not simulated in this run (BENCH_POOL_SCENES empty or POOL absent).\n";
+    return md.str();
+  }
+  md << "| scene | size | D | bit-exact | cycles/pixel | figure (golden = RTL) |\n|---|---|---:|---|---:|---:|\n";
+  for (const auto& [scene, r] : b.poolRtl) {
+    const PoolRow* row = poolRow(p, scene);
+    md << "| " << scene << " | " << r.at("width") << "x" << r.at("height") << " | " << r.at("disparities") << " | "
+       << (r.flag("bit_exact") ? "yes" : "NO (" + r.at("mismatches") + " px, first " + r.at("first_mismatch") + ")")
+       << " | " << fmt(r.number("cycles_per_pixel"), 4) << " | ";
+    if (row && std::to_string(row->disparities) == r.at("disparities"))
+      md << fmt(strictFigure(row->set, row->ours)) << (isKittiSet(row->set) ? " (D1)" : " (bad-1.0)");
+    else
+      md << "- (the pool runs it at D = " << (row ? std::to_string(row->disparities) : std::string("?")) << ")";
+    md << " |\n";
+  }
+  md << "\nsgm-sim compared every output pixel of these frames with the golden model in the same run.\n";
+  return md.str();
+}
 
 std::string markdown(const BenchData& b) {
   std::ostringstream md;
@@ -311,6 +382,7 @@ std::string markdown(const BenchData& b) {
   md << "\nCycles per frame are from the first input to the last output beat of one frame, including the flush "
         "and the P2 table fill; back-to-back frames need the same.\n";
 
+  if (b.pool) md << poolSection(b);
   md << "\n## Pictures\n\n![error per scene](accuracy.png)\n\n";
   for (const std::string& s : b.scenes)
     md << "**" << s << "**: left | ground truth | RTL | error map (green correct, red wrong, blue invalid)\n\n"
@@ -395,6 +467,47 @@ std::string json(const BenchData& b) {
     j.endObject();
   }
   j.endArray();
+  j.key("pool");
+  if (!b.pool) {
+    j.null();
+  } else {
+    j.beginObject();
+    j.key("means").beginArray();  // groups, halves, sets: as pool.json's
+    std::vector<PoolMean> means = b.pool->groups;
+    means.insert(means.end(), b.pool->halves.begin(), b.pool->halves.end());
+    means.insert(means.end(), b.pool->sets.begin(), b.pool->sets.end());
+    const auto maybe = [&j](const std::optional<double>& v) { v ? j.real(*v) : j.null(); };
+    for (const PoolMean& m : means) {
+      j.beginObject();
+      j.key("name").string(m.name);
+      j.key("scenes").integer(m.scenes);
+      j.key("ours").real(m.ours);
+      j.key("four_path");
+      maybe(m.today);
+      j.key("opencv_strict");
+      maybe(m.opencvStrict);
+      j.key("opencv_valid");
+      maybe(m.opencvValid);
+      j.key("opencv_density");
+      maybe(m.opencvDensity);
+      j.endObject();
+    }
+    j.endArray();
+    j.key("rtl").beginArray();
+    for (const auto& [scene, r] : b.poolRtl) {
+      j.beginObject();
+      j.key("scene").string(scene);
+      j.key("width").integer(std::stol(r.at("width")));
+      j.key("height").integer(std::stol(r.at("height")));
+      j.key("disparities").integer(std::stol(r.at("disparities")));
+      j.key("bit_exact").boolean(r.flag("bit_exact"));
+      j.key("mismatches").integer(std::stol(r.at("mismatches")));
+      j.key("cycles_per_pixel").real(r.number("cycles_per_pixel"));
+      j.endObject();
+    }
+    j.endArray();
+    j.endObject();
+  }
   j.key("formats").beginArray();
   for (const VideoFormat& f : kFormats) {
     if (!b.formats.count(frameName(f.width, f.height))) continue;  // not in BENCH_FRAMES
@@ -447,7 +560,9 @@ int commandReport(const CliArgs& args) {
   const std::string bench = args.text("bench", "");
   if (data.empty() || bench.empty()) throw Error("report needs --data DIR and --bench DIR");
   const int repeats = int(args.integer("repeats", 3, 1, 100));
-  const BenchData b = measure(data, bench, repeats);
+  const std::string pool = args.text("pool", "");
+  if (!pool.empty() && !fs::is_directory(pool)) throw Error("--pool '" + pool + "' is not a directory");
+  const BenchData b = measure(data, bench, repeats, pool);
   const std::string md = markdown(b), js = json(b);
   writePngs({{bench + "/accuracy.png", accuracyChart(b)}});
   writeTextFile(bench + "/report.json", js);
@@ -457,6 +572,7 @@ int commandReport(const CliArgs& args) {
   bool allExact = true;
   for (const auto& [scene, r] : b.rtl) allExact = allExact && r.flag("bit_exact");
   for (const auto& [name, r] : b.formats) allExact = allExact && r.flag("bit_exact");
+  for (const auto& [name, r] : b.poolRtl) allExact = allExact && r.flag("bit_exact");
   if (!allExact) std::fprintf(stderr, "sgm-bench: error: the RTL output differs from the golden model (see report.md)\n");
   return allExact ? 0 : 1;
 }
@@ -471,7 +587,7 @@ int main(int argc, char** argv) {
     }
     const std::string command = argv[1];
     if (command == "formats") return commandFormats(CliArgs(argc - 1, argv + 1, {"source", "out"}));
-    if (command == "report") return commandReport(CliArgs(argc - 1, argv + 1, {"data", "bench", "repeats"}));
+    if (command == "report") return commandReport(CliArgs(argc - 1, argv + 1, {"data", "bench", "repeats", "pool"}));
     throw Error("unknown command '" + command + "' (formats, report)");
   } catch (const std::exception& e) {
     std::fprintf(stderr, "sgm-bench: error: %s\n", e.what());

@@ -136,7 +136,15 @@ module sgm_cost_volume #(
     if (d == 0) begin : g_d0
       assign outside = 1'b0;
     end else begin : g_dn
-      assign outside = {{(32-CW){1'b0}}, col1_q} < 32'(d);
+      // Decided on col_i and registered beside col1_q: each PE's flag is one
+      // register, not a comparison of col1_q shared with its neighbours (the
+      // D comparisons, merged by synthesis into one chain across the PEs, were
+      // the five-lane core's critical path on the LFE5U-85F).
+      logic outside_q;
+      always_ff @(posedge clk_i) begin
+        if (en_i) outside_q <= {{(32-CW){1'b0}}, col_i} < 32'(d);
+      end
+      assign outside = outside_q;
     end
 
     sgm_cost_pe #(.NB(NB), .AD_TERM(AD_TERM)) u_pe (

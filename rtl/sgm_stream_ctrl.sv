@@ -26,8 +26,10 @@
 // The slot (en_o, pixels, position) is decided one cycle ahead and comes from
 // registers: en_o drives every register of the pipeline, so it must not be
 // the end of a logic path. The output FIFO's room is counted for the cycle of
-// the decided slot, without that cycle's pop (under back-pressure the FIFO
-// holds one entry less, never one too many).
+// the decided slot as if this cycle pushed and did not pop (under back-pressure
+// the FIFO holds one entry less, never one too many): the room then comes from
+// count_q alone, not from en_o (the pipeline's enable, spread over the whole
+// device) through the push.
 //
 // Parameters: MAX_WIDTH, MIN_WIDTH (>= max(D, 16)), MAX_HEIGHT, NB census bits (the
 // cost word holds 0 .. 2^CBITS - 1, CBITS = bits of 2 NB), XW/YW column/row
@@ -194,9 +196,10 @@ module sgm_stream_ctrl #(
   logic [FAW-1:0] rd_q, wr_q;
   wire pop  = m_tvalid_o && m_tready_i;
   wire push;
-  // Room in the cycle of the slot decided now: this cycle's push may still
-  // come, this cycle's pop is not counted.
-  wire room = count_q + (FAW+1)'(push) < (FAW+1)'(FIFO_DEPTH);
+  // Room in the cycle of the slot decided now: this cycle's push is counted as
+  // if it came (push = en_o && res_valid_i: en_o kept out of the slot's logic),
+  // this cycle's pop is not counted.
+  wire room = count_q < (FAW+1)'(FIFO_DEPTH - 1);
 
   // ---------------------------------------------------------------- slots
   logic [XW-1:0] x_q;          // position of the next slot

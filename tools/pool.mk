@@ -28,6 +28,7 @@ TEST_EXTRA += eval-pool-ci
 # mismatch. Heavy: one whole-core Verilator build at D = 128 (not part of `make test`).
 POOL_RTL_SCENES ?= aloe kitti2015_000045
 POOL_RTL_SIM    := $(BIN)/sgm-sim-d128-w1280
+POOL_RTL_OUT    ?= $(BUILD)/eval-pool-rtl
 
 .PHONY: eval-pool-rtl
 eval-pool-rtl:
@@ -36,6 +37,6 @@ eval-pool-rtl:
 	   for s in $(POOL_RTL_SCENES); do \
 	     echo "eval-pool-rtl: the core on $$s (D = 128)"; \
 	     $(POOL_RTL_SIM) --left "$(POOL)/$$s/left.png" --right "$(POOL)/$$s/right.png" --gt "$(POOL)/$$s/gt.png" \
-	       --d 128 --out $(BUILD)/eval-pool-rtl/$$s || exit 1; \
+	       --d 128 --out $(POOL_RTL_OUT)/$$s || exit 1; \
 	   done; \
 	 else echo "eval-pool-rtl: skipped: POOL=$(POOL) is not a directory (README, 'Data')"; fi
