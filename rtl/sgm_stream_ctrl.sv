@@ -226,7 +226,13 @@ module sgm_stream_ctrl #(
     out_last_row_q <= out_y_q == hm1_q;
   end
 
-  wire first_px = x_q == '0 && y_q == '0;
+  // first_q: x_q == 0 && y_q == 0, kept as a flag (set in IDLE, cleared by the
+  // frame's first slot: the position never returns to (0, 0) within a frame),
+  // so that the slot decision is a function of registers only (the 5-lane
+  // core's critical path on the LFE5U-85F ran from y_q through this comparison
+  // into the slot's clock enables).
+  logic first_q;
+  wire first_px = first_q;
   wire last_px  = last_col_q && last_row_q;
 
   // RUN takes the head beat as the next slot, except a tuser beat inside the
@@ -344,12 +350,14 @@ module sgm_stream_ctrl #(
     if (state_q == IDLE) begin
       x_q       <= '0;
       y_q       <= '0;
+      first_q   <= 1'b1;
       last_col_q  <= 1'b0;
       out_x_q   <= '0;
       out_y_q   <= '0;
       out_eol_q <= 1'b0;
     end else begin
       if (slot) begin
+        first_q <= 1'b0;
         if (last_col_q) begin
           x_q      <= '0;
           y_q      <= y_q + 1'b1;
