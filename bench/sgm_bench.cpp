@@ -256,6 +256,14 @@ double clockMhz(const SimReport& frame, int fps) { return frame.number("cycles")
 
 std::string optional(const std::optional<double>& v) { return v ? fmt(*v) : "-"; }
 
+// The pool's means in report order: groups, halves, sets.
+std::vector<PoolMean> allMeans(const PoolReport& p) {
+  std::vector<PoolMean> means = p.groups;
+  means.insert(means.end(), p.halves.begin(), p.halves.end());
+  means.insert(means.end(), p.sets.begin(), p.sets.end());
+  return means;
+}
+
 const PoolRow* poolRow(const PoolReport& report, const std::string& scene) {
   for (const PoolRow& row : report.rows)
     if (row.scene == scene) return &row;
@@ -273,10 +281,7 @@ std::string poolSection(const BenchData& b) {
         "with its density.\n\n"
      << "| means | scenes | ours | four-path | OpenCV strict | OpenCV valid only | OpenCV density |\n"
         "|---|---:|---:|---:|---:|---:|---:|\n";
-  std::vector<PoolMean> means = p.groups;
-  means.insert(means.end(), p.halves.begin(), p.halves.end());
-  means.insert(means.end(), p.sets.begin(), p.sets.end());
-  for (const PoolMean& m : means)
+  for (const PoolMean& m : allMeans(p))
     md << "| " << m.name << " | " << m.scenes << " | **" << fmt(m.ours) << "** | " << optional(m.today) << " | "
        << optional(m.opencvStrict) << " | " << optional(m.opencvValid) << " | " << optional(m.opencvDensity) << " |\n";
   if (p.worstRegression)
@@ -473,11 +478,8 @@ std::string json(const BenchData& b) {
   } else {
     j.beginObject();
     j.key("means").beginArray();  // groups, halves, sets: as pool.json's
-    std::vector<PoolMean> means = b.pool->groups;
-    means.insert(means.end(), b.pool->halves.begin(), b.pool->halves.end());
-    means.insert(means.end(), b.pool->sets.begin(), b.pool->sets.end());
     const auto maybe = [&j](const std::optional<double>& v) { v ? j.real(*v) : j.null(); };
-    for (const PoolMean& m : means) {
+    for (const PoolMean& m : allMeans(*b.pool)) {
       j.beginObject();
       j.key("name").string(m.name);
       j.key("scenes").integer(m.scenes);

@@ -22,6 +22,17 @@ namespace {
 using sgm::CostVolume;
 using sgm::PathVolume;
 
+// A random W x H x D cost volume (0 .. 44) and gray image, from one seed.
+std::pair<CostVolume, cv::Mat> randomCostAndGray(unsigned seed, int w, int h, int nd) {
+  std::mt19937 rng(seed);
+  CostVolume c(w, h, nd);
+  for (auto& v : c.data) v = uint8_t(rng() % 45);
+  cv::Mat gray(h, w, CV_8UC1);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) gray.at<uint8_t>(y, x) = uint8_t(rng() % 256);
+  return {c, gray};
+}
+
 TEST(Experiments, OffByDefaultAndNotInAnyPreset) {
   for (const std::string& name : sgm::presetNames()) EXPECT_FALSE(sgm::presetParams(name).experimental()) << name;
   const sgm::Params p = sgm::presetParams("four-path");  // no fifth path
@@ -94,13 +105,10 @@ TEST(RightPath, BlocksAreTheRowCutOneBlockAhead) {
 }
 
 TEST(RightPath, AggregateAddsItToTheFourPaths) {
-  std::mt19937 rng(9);
   const int w = 30, h = 7, nd = 10, p1 = 8, p2 = 90;
-  CostVolume c(w, h, nd);
-  for (auto& v : c.data) v = uint8_t(rng() % 45);
-  cv::Mat gray(h, w, CV_8UC1);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) gray.at<uint8_t>(y, x) = uint8_t(rng() % 256);
+  const std::pair<CostVolume, cv::Mat> scene = randomCostAndGray(9, w, h, nd);
+  const CostVolume& c = scene.first;
+  const cv::Mat& gray = scene.second;
   const PathVolume four = sgm::aggregateCost(c, gray, p1, p2);
   const PathVolume five = sgm::aggregateCost(c, gray, p1, p2, sgm::P2Mode::kKnee, sgm::PathWeighting::k3232, 3);
   const sgm::P2Table table = sgm::makeP2Table(p1, p2);
@@ -229,13 +237,10 @@ TEST(MedianGate, HandWindowAndWideGateIsThePlainMedian) {
 
 // Per-path P1: 100 % everywhere is the plain aggregation; a path's own P1 changes only that path.
 TEST(P1PerPath, HundredIsPlainAndOnePathScalesItsOwnP1) {
-  std::mt19937 rng(11);
   const int w = 26, h = 6, nd = 9, p1 = 10, p2 = 90;
-  CostVolume c(w, h, nd);
-  for (auto& v : c.data) v = uint8_t(rng() % 45);
-  cv::Mat gray(h, w, CV_8UC1);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) gray.at<uint8_t>(y, x) = uint8_t(rng() % 256);
+  const std::pair<CostVolume, cv::Mat> scene = randomCostAndGray(11, w, h, nd);
+  const CostVolume& c = scene.first;
+  const cv::Mat& gray = scene.second;
   const int hundred[5] = {100, 100, 100, 100, 100}, vertical[5] = {100, 100, 250, 100, 100};
   const auto sum = [&](const int* percent) {
     return sgm::aggregateCost(c, gray, p1, p2, sgm::P2Mode::kKnee, sgm::PathWeighting::k3232, 0, false, 0, percent);
