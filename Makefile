@@ -170,7 +170,10 @@ VL_TRACE    = $(if $(filter 1,$(TRACE)),--trace-fst)
 
 # $(call rtl_test,NAME,TOP,VERILATOR-OPTIONS[,TEST]): build/bin/rtl-NAME runs TEST (default
 # tests/rtl/test_TOP.cpp) against the verilated TOP (an rtl/ module or a tb/tops/ wrapper)
-# built with the options (parameters as -GNAME=VALUE).
+# built with the options (parameters as -GNAME=VALUE). Verilator's own make runs -j $(JOBS)
+# outside this make's job server (MAKEFLAGS cleared), so `make test` builds two fixtures at once,
+# each with its own jobs: the single-threaded Verilator and link steps of one overlap the
+# compilation of the other.
 define rtl_test
 RTL_TEST_BINS += $(BIN)/rtl-$(1)
 FIXTURE_TOP_$(1) := $(2)
@@ -179,7 +182,7 @@ FIXTURE_TEST_$(1) := $(if $(4),$(4),tests/rtl/test_$(2).cpp)
 $(BIN)/rtl-$(1): $(if $(4),$(4),tests/rtl/test_$(2).cpp) $(RTL_SRC) $(RTL_TOPS) $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
 	@mkdir -p $(BIN) $(BUILD)/verilator
 	@echo "verilating $(2) for $$@ (log: $(BUILD)/verilator-$(1).log)"
-	@s=$$$$(date +%s); $(VERILATOR) --cc --exe --build -j $(JOBS) -Wall $(VLT) --x-assign unique --x-initial unique $(VL_TRACE) \
+	@s=$$$$(date +%s); MAKEFLAGS= $(VERILATOR) --cc --exe --build -j $(JOBS) -Wall $(VLT) --x-assign unique --x-initial unique $(VL_TRACE) \
 	  -y rtl -y tb/tops --top-module $(2) $(3) -Mdir $(BUILD)/verilator/$(1) -o $(abspath $(BIN))/rtl-$(1) \
 	  $(wildcard rtl/$(2).sv tb/tops/$(2).sv) $(abspath $(if $(4),$(4),tests/rtl/test_$(2).cpp)) $(abspath $(EVAL_OBJ)) $(abspath $(GOLDEN_LIB)) \
 	  -CFLAGS "$(VL_CFLAGS)" -LDFLAGS "$(VL_LDFLAGS)" > $(BUILD)/verilator-$(1).log || \
@@ -312,10 +315,16 @@ unit-test: $(BIN)/unit-tests golden
 -include tests/regress.mk tests/fuzz.mk tests/coverage.mk bench/bench.mk tests/mutate/mutate.mk
 -include tests/icarus.mk tests/fusesoc.mk
 
-# One closing line over every GoogleTest binary of this run.
-test: lint unit-test rtl-tests
-	@for t in $(TEST_EXTRA); do s=$$(date +%s); $(MAKE) --no-print-directory $$t || exit 1; \
-	  echo "time: $$t $$(( $$(date +%s) - s )) s"; done
+# `make test`: lint and every binary of the GoogleTest suites built $(JOBS) at a time, the suites
+# run one after another, then TEST_EXTRA in two streams (scripts/test-extra.sh): the targets of
+# TEST_BESIDE (single-threaded yosys and nextpnr runs that share no build products with the
+# rest) beside the others. One closing line over every GoogleTest binary of this run.
+TEST_BESIDE := synth-ci ecp5-cmp-check pnr-ci
+test:
+	@$(MAKE) --no-print-directory -j$(JOBS) -Otarget lint $(BIN)/unit-tests golden $(RTL_TEST_BINS)
+	@$(MAKE) --no-print-directory unit-test rtl-tests
+	@scripts/test-extra.sh "$(MAKE)" $(BUILD)/test-logs "$(filter $(TEST_BESIDE),$(TEST_EXTRA))" \
+	  "$(filter-out $(TEST_BESIDE),$(TEST_EXTRA))"
 	@scripts/test-summary.sh $(RESULTS)
 
 clean:
