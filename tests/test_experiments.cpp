@@ -1,4 +1,5 @@
 // Golden-only experiments of issue 15 (docs/algorithm.md section 12, not in the RTL):
+// the gated median, per-path P1, the gated edge snap, MGM and the others below;
 // the fifth path from the right, the AD term; their defaults leave the pipeline
 // unchanged, and the streaming pipeline equals the staged one. Also the uniqueness
 // ratio's golden rule (section 7, in the RTL since issue 15's first lever).
@@ -48,6 +49,9 @@ TEST(Experiments, OffByDefaultAndNotInAnyPreset) {
   EXPECT_TRUE(g.experimental());
   g = p;
   g.p1PathPercent[2] = 200;
+  EXPECT_TRUE(g.experimental());
+  g = p;  // the gated edge snap: golden-only
+  g.snapEdge = 96;
   EXPECT_TRUE(g.experimental());
   sgm::Params u = p;  // the uniqueness ratio and the AD term are in the core: not experiments
   u.uniqueness = 15, u.adWeight = 3;
@@ -253,6 +257,38 @@ TEST(P1PerPath, HundredIsPlainAndOnePathScalesItsOwnP1) {
     ASSERT_EQ(scaled.data[i], plain.data[i] - 3 * l10.data[i] + 3 * l25.data[i]) << "i " << i;
 }
 
+// The gated edge snap: a drop snaps only when its strongest intensity step reaches the gate;
+// gate 0 is the plain snap (docs/algorithm.md section 8b).
+TEST(SnapEdge, GateLeavesWeakEdgesAndZeroIsThePlainSnap) {
+  const int w = 8;
+  sgm::DisparityMap in{cv::Mat(2, w, CV_16UC1), cv::Mat(2, w, CV_8UC1, cv::Scalar(1))};
+  cv::Mat gray(2, w, CV_8UC1);
+  const int d[w] = {640, 640, 640, 640, 640, 640, 160, 160};  // a drop between x = 5 and 6
+  const int steps[2][w] = {{10, 10, 10, 90, 90, 90, 90, 90},   // strongest step 80 at k = 3
+                           {10, 10, 10, 10, 10, 10, 10, 10}};  // no step: the edge stays at k = 6
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < w; ++x) in.disp.at<uint16_t>(y, x) = uint16_t(d[x]), gray.at<uint8_t>(y, x) = uint8_t(steps[y][x]);
+  const auto row0 = [](const sgm::DisparityMap& m) {
+    std::vector<int> v;
+    for (int x = 0; x < m.disp.cols; ++x) v.push_back(m.disp.at<uint16_t>(0, x));
+    return v;
+  };
+  const std::vector<int> snapped = {640, 640, 640, 160, 160, 160, 160, 160}, kept(d, d + w);
+  EXPECT_EQ(row0(sgm::snapEdges(in, gray, 80)), snapped);  // step 80 reaches a gate of 80
+  EXPECT_EQ(row0(sgm::snapEdges(in, gray, 81)), kept);     // ... not one of 81
+  EXPECT_EQ(row0(sgm::snapEdges(in, gray, 0)), snapped);
+  // Gate 0 is the plain snap on a random map; a high gate leaves some drops alone.
+  std::mt19937 rng(5);
+  sgm::DisparityMap r{cv::Mat(17, 45, CV_16UC1), cv::Mat(17, 45, CV_8UC1)};
+  cv::Mat rg(17, 45, CV_8UC1);
+  for (int y = 0; y < r.disp.rows; ++y)
+    for (int x = 0; x < r.disp.cols; ++x)
+      r.disp.at<uint16_t>(y, x) = uint16_t(rng() % 1024), r.valid.at<uint8_t>(y, x) = uint8_t(rng() % 4 != 0),
+      rg.at<uint8_t>(y, x) = uint8_t(rng() % 256);
+  EXPECT_EQ(cv::countNonZero(sgm::snapEdges(r, rg).disp != sgm::snapEdges(r, rg, 0).disp), 0);
+  EXPECT_GT(cv::countNonZero(sgm::snapEdges(r, rg).disp != sgm::snapEdges(r, rg, 200).disp), 0);
+}
+
 TEST(Experiments, OptionsAndRanges) {
   std::vector<std::string> args = {"prog", "--right-path", "3", "--right-block", "48", "--uniqueness", "10", "--ad-weight", "8", "--ad-cap", "16",
                                    "--subpixel-fit", "linear"};
@@ -266,11 +302,12 @@ TEST(Experiments, OptionsAndRanges) {
   EXPECT_EQ(p.adCap, 16);
   EXPECT_TRUE(p.linearSubpixel);
   EXPECT_FALSE(p.mgm);
-  std::vector<std::string> args2 = {"prog", "--median-gate", "40", "--p1-paths", "200,100,150,50,100"};
+  std::vector<std::string> args2 = {"prog", "--median-gate", "40", "--p1-paths", "200,100,150,50,100", "--snap-edge", "96"};
   std::vector<char*> argv2;
   for (std::string& a : args2) argv2.push_back(a.data());
   const sgm::Params q = sgm::CliArgs(int(argv2.size()), argv2.data(), sgm::CliArgs::pipelineOptions()).pipelineParams();
   EXPECT_EQ(q.medianGate, 40);
+  EXPECT_EQ(q.snapEdge, 96);
   EXPECT_EQ(q.p1PathPercent, (std::array<int, 5>{200, 100, 150, 50, 100}));
   EXPECT_EQ(q.pathP1(0), 48);
   EXPECT_EQ(q.pathP1(3), 12);
@@ -290,6 +327,9 @@ TEST(Experiments, OptionsAndRanges) {
   bad = sgm::Params{};
   bad.rightPathBlock = sgm::kMaxRightPathBlock + 1;
   expectError([&] { bad.validate(); }, {"right-path block"});
+  bad = sgm::Params{};
+  bad.snapEdge = 256;
+  expectError([&] { bad.validate(); }, {"snap edge 256"});
   bad = sgm::Params{};
   bad.adWeight = 16;
   expectError([&] { bad.validate(); }, {"AD term weight 16", "out of range 0..15"});

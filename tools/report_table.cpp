@@ -292,7 +292,7 @@ std::string goldenParamsText(const Params& p) {
             onOff(p.mgm) + ", median gate " + std::to_string(p.medianGate) + ", P1 per path " +
             std::to_string(p.p1PathPercent[0]) + "," + std::to_string(p.p1PathPercent[1]) + "," +
             std::to_string(p.p1PathPercent[2]) + "," + std::to_string(p.p1PathPercent[3]) + "," +
-            std::to_string(p.p1PathPercent[4]) + " %";
+            std::to_string(p.p1PathPercent[4]) + " %, snap edge " + std::to_string(p.snapEdge);
   return text;
 }
 
@@ -320,6 +320,7 @@ void writeGoldenParamFields(JsonWriter& j, const Params& p) {
   j.key("p1_path_percent").beginArray();
   for (const int percent : p.p1PathPercent) j.integer(percent);
   j.endArray();
+  j.key("snap_edge").integer(p.snapEdge);  // 0: off (every drop snaps)
 }
 
 const char* methodKindName(MethodKind kind) {

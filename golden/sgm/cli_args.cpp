@@ -80,7 +80,7 @@ const std::set<std::string>& CliArgs::pipelineOptions() {
                                               "snap", "median", "census", "p2-mode", "weights", "preset", "uniqueness",
                                               "ad-weight", "ad-cap", "right-path", "right-block",
                                               // golden-only experiments (not in the RTL)
-                                              "subpixel-fit", "mgm", "median-gate", "p1-paths"};
+                                              "subpixel-fit", "mgm", "median-gate", "p1-paths", "snap-edge"};
   return names;
 }
 
@@ -111,6 +111,7 @@ Params CliArgs::pipelineParams(Params p) const {
   p.rightPathBlock = int(integer("right-block", p.rightPathBlock, 0, kMaxRightPathBlock));
   p.uniqueness = int(integer("uniqueness", p.uniqueness, 0, 99));
   p.medianGate = int(integer("median-gate", p.medianGate, 0, 255));
+  p.snapEdge = int(integer("snap-edge", p.snapEdge, 0, 255));
   p.adWeight = int(integer("ad-weight", p.adWeight, 0, kMaxAdWeight));
   p.adCap = int(integer("ad-cap", p.adCap, 0, kMaxAdCap));
   if (const std::string fit = text("subpixel-fit", p.linearSubpixel ? "linear" : "parabola"); fit == "linear" || fit == "parabola")

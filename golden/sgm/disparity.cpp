@@ -126,7 +126,7 @@ DisparityMap fillHoles(const DisparityMap& in) {
   return out;
 }
 
-DisparityMap snapEdges(const DisparityMap& in, const cv::Mat& grayLeft) {
+DisparityMap snapEdges(const DisparityMap& in, const cv::Mat& grayLeft, int minStep) {
   const int w = in.disp.cols, h = in.disp.rows, r = kSnapReach;
   DisparityMap out{in.disp.clone(), in.valid.clone()};
   for (int y = 0; y < h; ++y) {
@@ -141,6 +141,7 @@ DisparityMap snapEdges(const DisparityMap& in, const cv::Mat& grayLeft) {
       int edge = e + 1;  // the strongest step in k = e+1-R .. e+1, ties to the largest k
       for (int k = e; k >= std::max(1, e + 1 - r); --k)
         if (step(k) > step(edge)) edge = k;
+      if (step(edge) < minStep) continue;
       for (int x = edge; x <= e; ++x)
         if (v[x]) o[x] = d[e + 1];
     }

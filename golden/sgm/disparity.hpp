@@ -59,7 +59,9 @@ DisparityMap fillHoles(const DisparityMap& in);
 // left to the strongest step |I(k) - I(k-1)| of the left gray image among
 // k = e+1-kSnapReach .. e+1 (ties to the largest k): the valid pixels k .. e
 // take the disparity of e+1. A pixel under several drops takes the nearest.
-DisparityMap snapEdges(const DisparityMap& in, const cv::Mat& grayLeft);
+// minStep > 0 (golden-only experiment, Params::snapEdge): a drop whose strongest step is
+// below minStep is left alone.
+DisparityMap snapEdges(const DisparityMap& in, const cv::Mat& grayLeft, int minStep = 0);
 
 // 5x5 median over the valid pixels of the window (window clipped to the image);
 // an invalid centre stays invalid. Lower median of an even count. The last

@@ -78,7 +78,7 @@ bool Params::operator==(const Params& o) const {
          census == o.census && p2Mode == o.p2Mode && weights == o.weights && rightPathWeight == o.rightPathWeight &&
          rightPathBlock == o.rightPathBlock &&
          uniqueness == o.uniqueness && adWeight == o.adWeight && adCap == o.adCap && linearSubpixel == o.linearSubpixel &&
-         mgm == o.mgm && medianGate == o.medianGate && p1PathPercent == o.p1PathPercent;
+         mgm == o.mgm && medianGate == o.medianGate && p1PathPercent == o.p1PathPercent && snapEdge == o.snapEdge;
 }
 
 const std::vector<std::string>& presetNames() {
@@ -167,6 +167,7 @@ void Params::validate() const {
                   std::to_string(p1) + ") out of range " + std::to_string(kMinP1PathPercent) + ".." +
                   std::to_string(kMaxP1PathPercent) + " % and 0..P2'=" + std::to_string(p2));
   if (medianGate < 0 || medianGate > 255) throw Error("median gate " + std::to_string(medianGate) + " out of range 0..255");
+  if (snapEdge < 0 || snapEdge > 255) throw Error("snap edge " + std::to_string(snapEdge) + " out of range 0..255");
   if (uniqueness < 0 || uniqueness > 99) throw Error("uniqueness " + std::to_string(uniqueness) + " out of range 0..99");
   if (adWeight < 0 || adWeight > kMaxAdWeight || adCap < 0 || adCap > kMaxAdCap)
     throw Error("AD term weight " + std::to_string(adWeight) + " / cap " + std::to_string(adCap) +

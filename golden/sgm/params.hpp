@@ -117,13 +117,17 @@ struct Params {
   bool linearSubpixel = false;  // sub-pixel by the equiangular (V) fit instead of the parabola
   bool mgm = false;             // raster-order MGM: each path averages two causal neighbours
   int medianGate = 0;           // the median takes only window pixels within this gray distance of the centre; 0 = off
+  int snapEdge = 0;             // edge snapping acts only when its strongest step |I(k) - I(k-1)| >= this; 0 = always
   // P1 per path in percent of p1 (0, 45, 90, 135 degrees, the fifth path); each path's P2r = max(its P1, ...).
   std::array<int, kPathCount + 1> p1PathPercent = {100, 100, 100, 100, 100};
   int pathP1(int path) const { return p1 * p1PathPercent[size_t(path)] / 100; }
   // Golden-only options: the fifth path over the whole row (in blocks it is in the
   // core, sgm_top RIGHT_BLOCK), the equiangular sub-pixel fit, MGM, the gated median,
-  // per-path P1.
-  bool experimental() const { return (rightPathWeight && !rightPathBlock) || linearSubpixel || mgm || medianGate || p1PathPercent != Params{}.p1PathPercent; }
+  // per-path P1, the gated edge snap.
+  bool experimental() const {
+    return (rightPathWeight && !rightPathBlock) || linearSubpixel || mgm || medianGate ||
+           p1PathPercent != Params{}.p1PathPercent || snapEdge;
+  }
 
   bool operator==(const Params& o) const;
   bool operator!=(const Params& o) const { return !(*this == o); }

@@ -29,7 +29,7 @@ PipelineStages runPipelineStages(const cv::Mat& gl, const cv::Mat& gr, const Par
                                 params.mgm, params.rightPathBlock, params.p1PathPercent.data());
   st.selected = selectDisparity(st.aggregated, params);
   st.filled = params.fill ? fillHoles(st.selected) : st.selected;
-  st.snapped = params.snap ? snapEdges(st.filled, gl) : st.filled;
+  st.snapped = params.snap ? snapEdges(st.filled, gl, params.snapEdge) : st.filled;
   st.result = params.median ? median5x5(st.snapped, gl, params.medianGate) : st.snapped;
   return st;
 }
@@ -61,7 +61,7 @@ DisparityMap runPipeline(const cv::Mat& gl, const cv::Mat& gr, const Params& par
     selectors[worker].select(sum, selected.disp.ptr<uint16_t>(y), selected.valid.ptr<uint8_t>(y));
   }, params.rightPathWeight, params.mgm, params.rightPathBlock, params.p1PathPercent.data());
   const DisparityMap filled = params.fill ? fillHoles(selected) : selected;
-  const DisparityMap snapped = params.snap ? snapEdges(filled, gl) : filled;
+  const DisparityMap snapped = params.snap ? snapEdges(filled, gl, params.snapEdge) : filled;
   return params.median ? median5x5(snapped, gl, params.medianGate) : snapped;
 }
 

@@ -109,6 +109,8 @@ TEST_F(SgmSimCli, ParametersTheBuildOrTheCoreCannotTake) {
       {{"--median-gate", "32"}, "golden-only experiments, not in the core"},
       {{"--p1-paths", "200,100,200,100,100"}, "golden-only experiments, not in the core"},
       {{"--p1-paths", "200,100"}, "--p1-paths expects five percentages"},
+      {{"--snap", "on", "--snap-edge", "96"}, "golden-only experiments, not in the core"},
+      {{"--snap-edge", "256"}, "--snap-edge=256 out of range"},
       {{"--frames", "0"}, "--frames=0 out of range"},
       {{"--frames", "1e9"}, "--frames expects an integer"},
       {{"--stall", "1"}, "--stall=1 out of range"},
