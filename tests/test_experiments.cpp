@@ -34,6 +34,18 @@ std::pair<CostVolume, cv::Mat> randomCostAndGray(unsigned seed, int w, int h, in
   return {c, gray};
 }
 
+// A random W x H disparity map (0 .. 1023 in 1/16 px, a quarter invalid) and gray image, from one seed.
+std::pair<sgm::DisparityMap, cv::Mat> randomMapAndGray(unsigned seed, int w, int h) {
+  std::mt19937 rng(seed);
+  sgm::DisparityMap m{cv::Mat(h, w, CV_16UC1), cv::Mat(h, w, CV_8UC1)};
+  cv::Mat gray(h, w, CV_8UC1);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      m.disp.at<uint16_t>(y, x) = uint16_t(rng() % 1024), m.valid.at<uint8_t>(y, x) = uint8_t(rng() % 4 != 0),
+      gray.at<uint8_t>(y, x) = uint8_t(rng() % 256);
+  return {m, gray};
+}
+
 TEST(Experiments, OffByDefaultAndNotInAnyPreset) {
   for (const std::string& name : sgm::presetNames()) EXPECT_FALSE(sgm::presetParams(name).experimental()) << name;
   const sgm::Params p = sgm::presetParams("four-path");  // no fifth path
@@ -228,13 +240,7 @@ TEST(MedianGate, HandWindowAndWideGateIsThePlainMedian) {
   EXPECT_EQ(sgm::median5x5(in, gray, 99).disp.at<uint16_t>(4, 4), 48);   // ... and 99 does not
   EXPECT_EQ(sgm::median5x5(in, gray, 10).disp.at<uint16_t>(1, 1), 16);   // the dark field: unchanged
   // A wide gate is the plain median on a random map.
-  std::mt19937 rng(3);
-  sgm::DisparityMap r{cv::Mat(23, 41, CV_16UC1), cv::Mat(23, 41, CV_8UC1)};
-  cv::Mat rg(23, 41, CV_8UC1);
-  for (int y = 0; y < r.disp.rows; ++y)
-    for (int x = 0; x < r.disp.cols; ++x)
-      r.disp.at<uint16_t>(y, x) = uint16_t(rng() % 1024), r.valid.at<uint8_t>(y, x) = uint8_t(rng() % 4 != 0),
-      rg.at<uint8_t>(y, x) = uint8_t(rng() % 256);
+  const auto [r, rg] = randomMapAndGray(3, 41, 23);
   EXPECT_EQ(cv::countNonZero(sgm::median5x5(r).disp != sgm::median5x5(r, rg, 255).disp), 0);
   EXPECT_GT(cv::countNonZero(sgm::median5x5(r).disp != sgm::median5x5(r, rg, 20).disp), 0);
 }
@@ -278,13 +284,7 @@ TEST(SnapEdge, GateLeavesWeakEdgesAndZeroIsThePlainSnap) {
   EXPECT_EQ(row0(sgm::snapEdges(in, gray, 81)), kept);     // ... not one of 81
   EXPECT_EQ(row0(sgm::snapEdges(in, gray, 0)), snapped);
   // Gate 0 is the plain snap on a random map; a high gate leaves some drops alone.
-  std::mt19937 rng(5);
-  sgm::DisparityMap r{cv::Mat(17, 45, CV_16UC1), cv::Mat(17, 45, CV_8UC1)};
-  cv::Mat rg(17, 45, CV_8UC1);
-  for (int y = 0; y < r.disp.rows; ++y)
-    for (int x = 0; x < r.disp.cols; ++x)
-      r.disp.at<uint16_t>(y, x) = uint16_t(rng() % 1024), r.valid.at<uint8_t>(y, x) = uint8_t(rng() % 4 != 0),
-      rg.at<uint8_t>(y, x) = uint8_t(rng() % 256);
+  const auto [r, rg] = randomMapAndGray(5, 45, 17);
   EXPECT_EQ(cv::countNonZero(sgm::snapEdges(r, rg).disp != sgm::snapEdges(r, rg, 0).disp), 0);
   EXPECT_GT(cv::countNonZero(sgm::snapEdges(r, rg).disp != sgm::snapEdges(r, rg, 200).disp), 0);
 }
