@@ -268,11 +268,14 @@ module sgm_census_unit #(
   // in one slot was the 5-lane core's critical path at 6b1d454 (9.4 ns on ECP5).
   logic [RKW-1:0] ones1, ones1_4q;
   logic [RKW-2:0] ones2, ones2_4q;
+  logic [6*(((NB + 2) / 3 + 5) / 6)-1:0] rank_groups;  // sgm_popcount's group counts: not used here
   sgm_popcount #(.N(NB)) u_rank (
-    .bits_i  (census3_q),
-    .ones1_o (ones1),
-    .ones2_o (ones2)
+    .bits_i   (census3_q),
+    .ones1_o  (ones1),
+    .ones2_o  (ones2),
+    .groups_o (rank_groups)
   );
+  wire unused_groups = ^rank_groups;
 
   logic [NB-1:0] census4_q;
   logic [7:0]    centre4_q;

@@ -13,19 +13,20 @@
 //
 // Parameters: NB census bits, AD_TERM (the disparity only enters through outside_i).
 // Latency: 3 enabled cycles. Stage A registers the rank difference (signed),
-// the Hamming distance as its two weighted counts (sgm_popcount ones1_o + 2
-// ones2_o; the popcount with its own final adder was the 5-lane core's critical
-// path at 10.1 ns on ECP5) and the out-of-image flag of the slot; stage B
-// selects by mode_i, which belongs to stage B's slot (the slot entered one
-// enabled cycle earlier), and is one three-operand sum: the
-// mode and the out-of-image case select its operands, and |rank difference| =
-// (diff xor sign) + sign takes its +sign as the carry in, so no separate
-// absolute value or output mux. Beside them, stage A registers min(AD, T) (T when
-// outside), stage B its product with W (four shifted copies, divided by 8),
-// and stage C adds the two.
+// the Hamming distance as the popcount's group counts (sgm_popcount groups_o:
+// the xor, the full adders and the 6:3 counters are the whole stage; with the
+// group sums behind them it was the LFE5U-85F five-lane core's critical path,
+// 7.7 to 8.7 ns) and the out-of-image flag of the slot. Stage B selects by
+// mode_i, which belongs to stage B's slot (the slot entered one enabled cycle
+// earlier), and registers the three operands of the cost: the Hamming distance
+// (the group sums), the rank term (diff xor sign; its + sign is the carry in
+// of stage C) and the carry, each already selected by the mode and the
+// out-of-image case (Cmax). Beside them, stage A registers min(AD, T) (T when
+// outside), stage B its product with W (four shifted copies, divided by 8), and
+// stage C adds the four: C = ham + rt + carry + term, one three-operand sum.
 // AD_TERM = 0 builds no AD term (no min, product or sum; the gray and AD
 // inputs are ignored, sgm_stream_ctrl drops frames that ask for it): stage C
-// then registers the census cost alone, so the latency stays 3.
+// then adds the census cost alone, so the latency stays 3.
 // Throughput: one cost per enabled cycle. No control registers, no reset.
 module sgm_cost_pe #(
   parameter int  NB    = 44,
@@ -48,27 +49,29 @@ module sgm_cost_pe #(
   output logic [CBITS-1:0]  cost_o
 );
 
-  // The Hamming distance as its two weighted counts (hamming = ham1 + 2 ham2):
-  // stage A registers them, stage B adds them into the cost.
-  logic [RKW-1:0] ham1;
-  logic [RKW-2:0] ham2;
+  // The Hamming distance as the popcount's group counts (hamming = the weight-1
+  // groups + 2 the weight-2 groups): stage A registers them, stage B sums them.
+  localparam int G = ((NB + 2) / 3 + 5) / 6;  // groups per weight (sgm_popcount's G)
+  logic [RKW-1:0] ham_ones1;  // the popcount's own sums: not used here
+  logic [RKW-2:0] ham_ones2;
+  logic [6*G-1:0] ham_groups;
   sgm_popcount #(.N(NB)) u_hamming (
-    .bits_i  (lcensus_i ^ rcensus_i),
-    .ones1_o (ham1),
-    .ones2_o (ham2)
+    .bits_i   (lcensus_i ^ rcensus_i),
+    .ones1_o  (ham_ones1),
+    .ones2_o  (ham_ones2),
+    .groups_o (ham_groups)
   );
+  wire unused_ones = ^{ham_ones1, ham_ones2};
 
   // Stage A
   logic [RKW:0]   diff_q;  // lrank - rrank, two's complement (-NB .. NB)
-  logic [RKW-1:0] ham1_q;
-  logic [RKW-2:0] ham2_q;
+  logic [6*G-1:0] grp_q;
   logic           out_q;
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       diff_q <= {1'b0, lrank_i} - {1'b0, rrank_i};
-      ham1_q <= ham1;
-      ham2_q <= ham2;
+      grp_q  <= ham_groups;
       out_q  <= outside_i;
     end
   end
@@ -96,29 +99,40 @@ module sgm_cost_pe #(
     wire unused_ad = ^{lgray_i, rgray_i, ad_cap_i, ad_weight_i};
   end
 
-  // Stage B: cost = rt_op + ham_op + rt_cin.
-  //   out_q:   NB + (unified ? NB : 0)
-  //   mode 0:  (diff ^ sign) + sign      = rt
-  //   mode 1:  ham
-  //   unified: (diff ^ sign) + ham + sign = rt + rsad
+  // Stage B: the operands of C = ham_op + rt_op + rt_cin (+ the AD term):
+  //   out_q:   ham_op = NB + (unified ? NB : 0), rt_op = 0, rt_cin = 0
+  //   mode 0:  rt_op = diff ^ sign, rt_cin = sign: rt
+  //   mode 1:  ham_op = ham
+  //   unified: both: rt + rsad
   wire             neg     = diff_q[RKW];
   wire             use_rt  = mode_i != 2'd1;
   wire             use_ham = mode_i != 2'd0;
   wire [CBITS-1:0] cmax1   = CBITS'(NB);  // Cmax of rt and rsad, half of unified's
   wire [RKW-1:0]   rt_xor  = diff_q[RKW-1:0] ^ {RKW{neg}};
-  wire [CBITS-1:0] rt_op   = out_q ? cmax1 : use_rt ? CBITS'(rt_xor) : '0;
-  wire [CBITS-1:0] ham_op  = out_q ? (mode_i[1] ? cmax1 : '0) : use_ham ? CBITS'(ham1_q) : '0;
-  wire [CBITS-1:0] ham2_op = !out_q && use_ham ? CBITS'({ham2_q, 1'b0}) : '0;
-  wire             rt_cin  = !out_q && use_rt && neg;
+  logic [CBITS-1:0] ones1, ones2;  // the weight-1 and weight-2 group sums
+  always_comb begin
+    ones1 = '0;
+    ones2 = '0;
+    for (int g = 0; g < G; g++) begin
+      ones1 = ones1 + CBITS'(grp_q[3*g +: 3]);
+      ones2 = ones2 + CBITS'(grp_q[3*(G+g) +: 3]);
+    end
+  end
+  wire [CBITS-1:0] ham = ones1 + (ones2 << 1);  // the Hamming distance (<= NB)
 
-  logic [CBITS-1:0] cen_q;   // the census cost
+  logic [CBITS-1:0] ham_q, rt_q;
+  logic             cin_q;
   always_ff @(posedge clk_i) begin
-    if (en_i) cen_q <= rt_op + ham_op + ham2_op + CBITS'(rt_cin);
+    if (en_i) begin
+      ham_q <= out_q ? (mode_i[1] ? CBITS'(2) * cmax1 : cmax1) : use_ham ? ham : '0;
+      rt_q  <= !out_q && use_rt ? CBITS'(rt_xor) : '0;
+      cin_q <= !out_q && use_rt && neg;
+    end
   end
 
   // Stage C: C = census cost + AD term (no wrap: see the header; AD_TERM = 0: + 0).
   always_ff @(posedge clk_i) begin
-    if (en_i) cost_o <= cen_q + term_q;
+    if (en_i) cost_o <= ham_q + rt_q + term_q + CBITS'(cin_q);
   end
 
 endmodule

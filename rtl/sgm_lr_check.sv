@@ -8,8 +8,12 @@
 //   side's unique_i said the winner is unique (sgm_wta: uniqueness ratio).
 //
 // Two input streams:
-//   S side    s_i, col_i, row_i, valid_i (+ width_i, height_i): the slot stream.
-//             It also drives the output timing.
+//   S side    s_i, col_i, row_i, last_i, valid_i (+ width_i, height_i): the
+//             slot stream; last_i flags the last column of a row, decided by
+//             the source a slot or more earlier (a register here: the column
+//             compare in front of the row tail's selects was the LFE5U-85F
+//             five-lane core's critical path at 104.6 MHz). It also drives the
+//             output timing.
 //   WTA side  d_i, disp_i, unique_i with their own position wta_col_i / wta_row_i /
 //             wta_valid_i: the sgm_wta result of the same S, connected directly
 //             (it arrives sgm_wta LATENCY slots after its S, no delay line of S
@@ -115,6 +119,7 @@ module sgm_lr_check #(
   input  wire  [D*SW-1:0]  s_i,
   input  wire  [CW-1:0]    col_i,
   input  wire  [RW-1:0]    row_i,
+  input  wire              last_i,       // col_i == width_i - 1 (sgm_path_engine's last_o)
   input  wire              valid_i,
   // WTA side: winner and disparity of pixel (wta_col_i, wta_row_i).
   input  wire  [LD-1:0]    d_i,
@@ -208,23 +213,16 @@ module sgm_lr_check #(
   end
 
   // ------------------------------------------------------------ row tail
-  // width - 1 and width - (D - 1) registered with each slot, used from the next
-  // one on: width_i is constant within a frame and the first slot of a row is
-  // never its last (width >= 16); the compare behind a subtractor was the
-  // 5-lane core's critical path at c9253c6 (8.8 ns on ECP5). wm1_q resets to
-  // all ones, a column no frame has (CW holds MAX_WIDTH): before the first slot
-  // it must not equal that slot's column 0, or a row tail would start there and
-  // its writes would take the dR write port from the diagonal (a power-up value
-  // of 0, as an FPGA starts, lost dR(0) of the first frame's first row).
-  logic [CW-1:0] wm1_q, wmd_q;
-  always_ff @(posedge clk_i) begin
-    if (!rst_ni) wm1_q <= '1;
-    else if (en_i) wm1_q <= width_i - CW'(1);
-  end
+  // width - (D - 1) registered with each slot, used from the next one on:
+  // width_i is constant within a frame and the first slot of a row is never
+  // its last (width >= 16); the compare behind a subtractor was the 5-lane
+  // core's critical path at c9253c6 (8.8 ns on ECP5). The last column comes
+  // with the slot (last_i).
+  logic [CW-1:0] wmd_q;
   always_ff @(posedge clk_i) begin
     if (en_i) wmd_q <= width_i - CW'(D - 1);
   end
-  wire last_col = valid_i && col_i == wm1_q;
+  wire last_col = valid_i && last_i;
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin

@@ -22,12 +22,15 @@
 // bit (the count, then the decision): with C the candidates (initially the n counted entries) and k = (n-1)/2,
 // at bit b let z = #{e in C : bit b of v_e = 0}; if k < z the result has bit
 // b = 0 and C keeps those entries, else bit b = 1, k -= z and C keeps the
-// entries with bit b = 1. No comparators and no sorting: per bit one 25-input
-// popcount, a 5-bit compare / subtract and 25 AND-ORs. Entry bits travel as
+// entries with bit b = 1. The stages carry m = 2 k + 1 (m = n at the start, so
+// no (n - 1) / 2 behind the count: it was the five-lane core's critical path
+// on the LFE5U-85F at 8.0 ns): k >= z iff m > 2 z, and k -= z is m -= 2 z.
+// No comparators and no sorting: per bit one 25-input
+// popcount, a 6-bit compare / subtract and 25 AND-ORs. Entry bits travel as
 // bit planes; plane b is dropped after its stage.
 //   stage 0   line-buffer read, pixel register
 //   stage A   window shift, live flags, column masks of the centre
-//   stage S   counted set, n (25-input popcount), k = (n - 1) / 2
+//   stage S   counted set, n (25-input popcount) = m
 //   2 DW stages one result bit per two (count | decide), the last one drives
 //             the outputs (the count alone was one ECP5 clock of 10.1 ns)
 // Cost (Yosys 0.23 synth_xilinx, xc7): DW = 8, MAX_WIDTH = 128: ~830 LUT +
@@ -79,7 +82,7 @@ module sgm_median5x5 #(
   localparam int EW = DW + 2;            // line-buffer entry {frame pixel, valid, disp}
   localparam int N  = 25;                // window entries, e = 5 * column + row
   localparam int CENTRE = 12;
-  localparam int KW = 4;                 // k <= 12
+  localparam int KW = 5;                 // m = 2 k + 1 <= 25
   localparam int SW = DW + 2 + CW + RW;  // side word {men, centre valid, centre disp, col, row}
   localparam int PB = N * DW * (DW + 1) / 2;  // bit planes of all bit stages
 
@@ -176,7 +179,7 @@ module sgm_median5x5 #(
     end
   end
   wire [4:0] n_counted = popcount25(counted);
-  wire [KW-1:0] k_s     = KW'((n_counted - 1'b1) >> 1);  // (n - 1) / 2; unused when n = 0
+  wire [KW-1:0] k_s     = n_counted;  // m = 2 k + 1 = n (n = 0: the centre is not a frame pixel, the result unused)
 
   // ------------------------------------------------------------ bit stages
   // Bit stage i (deciding bit B = DW-1-i) is two slots (the 25-input count and
@@ -226,11 +229,11 @@ module sgm_median5x5 #(
     // decide half
     wire [4:0]    z     = z_q[i*5 +: 5];
     wire [KW-1:0] kk    = kc_q[i*KW +: KW];
-    wire          one   = {1'b0, kk} >= z;  // bit B of the k-th smallest
+    wire          one   = {1'b0, kk} > {z, 1'b0};  // bit B of the k-th smallest: k >= z
     wire [DW-1:0] res_n = rc_q[i*DW +: DW] | (DW'(one) << B);
     if (i < DW - 1) begin : g_pass
       assign cand_d[i*N +: N]  = cc_q[i*N +: N] & ~(pb_q[i*N +: N] ^ {N{one}});
-      assign kk_d[i*KW +: KW]  = one ? kk - z[KW-1:0] : kk;
+      assign kk_d[i*KW +: KW]  = one ? kk - {z[KW-2:0], 1'b0} : kk;  // k - z
       assign res_d[i*DW +: DW] = res_n;
     end else begin : g_out
       assign res_last = res_n;

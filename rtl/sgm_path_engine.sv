@@ -112,6 +112,7 @@ module sgm_path_engine #(
   output logic [D*SW-1:0]     s_o,
   output logic [XW-1:0]       col_o,
   output logic [YW-1:0]       row_o,
+  output logic                last_o,    // col_o == width_i - 1 (decided at slot B, carried)
   output logic                valid_o
 );
 
@@ -212,16 +213,17 @@ module sgm_path_engine #(
   logic [3:1]      start;
   logic [XW-1:0]   col_p;
   logic [YW-1:0]   row_p;
+  logic            last_p;
   if (K > 1) begin : g_carry
-    sgm_delay_ram #(.WIDTH(D*CW + 3*PW + 3 + XW + YW), .DEPTH(K - 1)) u_carry (
+    sgm_delay_ram #(.WIDTH(D*CW + 3*PW + 3 + XW + YW + 1), .DEPTH(K - 1)) u_carry (
       .clk_i  (clk_i),
       .rst_ni (rst_ni),
       .en_i   (en_i),
-      .d_i    ({cost_b, p2r_b[PW +: 3*PW], start_b, col_b, row_b}),
-      .q_o    ({cost_p, p2r_p, start, col_p, row_p})
+      .d_i    ({cost_b, p2r_b[PW +: 3*PW], start_b, col_b, row_b, at_right}),
+      .q_o    ({cost_p, p2r_p, start, col_p, row_p, last_p})
     );
   end else begin : g_no_carry
-    assign {cost_p, p2r_p, start, col_p, row_p} = {cost_b, p2r_b[PW +: 3*PW], start_b, col_b, row_b};
+    assign {cost_p, p2r_p, start, col_p, row_p, last_p} = {cost_b, p2r_b[PW +: 3*PW], start_b, col_b, row_b, at_right};
   end
 
   // ------------------------------------------------------ previous-row reads
@@ -302,11 +304,13 @@ module sgm_path_engine #(
   logic [3*D*LW-1:0]  lr_c;  // 45, 90, 135 degrees
   logic [XW-1:0]      col_c;
   logic [YW-1:0]      row_c;
+  logic               last_c;
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       lr_c    <= lr_b;
       col_c   <= col_p;
       row_c   <= row_p;
+      last_c  <= last_p;
     end
   end
 
@@ -392,6 +396,7 @@ module sgm_path_engine #(
       s_o     <= s_c;
       col_o   <= col_c;
       row_o   <= row_c;
+      last_o  <= last_c;
     end
   end
 

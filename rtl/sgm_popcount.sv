@@ -10,24 +10,30 @@
 // adders. (xc7, Yosys 0.23, with the xor: N = 44 60 LUTs + 4 CARRY4, N = 80
 // 122 LUTs + 4 CARRY4.)
 //
-// The outputs are the two weighted counts (count = ones1_o + 2 ones2_o): both
-// callers register them and add them in their next stage (the popcount with its
+// The outputs are the two weighted counts (count = ones1_o + 2 ones2_o), which
+// sgm_census_unit registers and adds in its next stage (the popcount with its
 // final adder was one ECP5 clock of 10.1 ns in sgm_cost_pe, 9.4 ns in
-// sgm_census_unit).
+// sgm_census_unit), and the group counts they are the sums of (groups_o:
+// count = sum of the G weight-1 groups + 2 sum of the G weight-2 groups), which
+// sgm_cost_pe registers instead: the xor, the full adders and the counters are
+// then its whole stage A (the group sums behind them were the LFE5U-85F
+// five-lane core's critical path at 7.7 to 8.7 ns).
 //
-// Parameters: N input bits (>= 2); CNT_W = $clog2(N + 1) count bits.
+// Parameters: N input bits (>= 2); CNT_W = $clog2(N + 1) count bits;
+// G = ceil(ceil(N / 3) / 6) groups per weight.
 // Latency: 0 (combinational).
 module sgm_popcount #(
   parameter int  N     = 44,
-  localparam int CNT_W = $clog2(N + 1)
+  localparam int CNT_W = $clog2(N + 1),
+  localparam int T     = (N + 2) / 3,  // full adders on bit triples
+  localparam int G     = (T + 5) / 6   // 6:3 counters per weight
 ) (
   input  wire  [N-1:0]     bits_i,
   output logic [CNT_W-1:0] ones1_o,  // ones of weight 1 (the triples' sum bits)
-  output logic [CNT_W-2:0] ones2_o   // ones of weight 2 (their carries; <= N / 2)
+  output logic [CNT_W-2:0] ones2_o,  // ones of weight 2 (their carries; <= N / 2)
+  // Group g of weight 1 at [3g +: 3], of weight 2 at [3(G + g) +: 3] (0 .. 6 each).
+  output logic [6*G-1:0]   groups_o
 );
-
-  localparam int T = (N + 2) / 3;  // full adders on bit triples
-  localparam int G = (T + 5) / 6;  // 6:3 counters per weight
 
   // {carry, sum} of three bits.
   function automatic [1:0] fa(input [2:0] v);
@@ -57,13 +63,17 @@ module sgm_popcount #(
   end
 
   // Group counts, summed per weight; count = ones(s1) + 2 ones(c1) (< 2^CNT_W).
+  for (genvar g = 0; g < G; g++) begin : g_group
+    assign groups_o[3*g +: 3]     = cnt6(s1[6*g +: 6]);
+    assign groups_o[3*(G+g) +: 3] = cnt6(c1[6*g +: 6]);
+  end
   logic [CNT_W-1:0] ones_s, ones_c;
   always_comb begin
     ones_s = '0;
     ones_c = '0;
     for (int g = 0; g < G; g++) begin
-      ones_s = ones_s + CNT_W'(cnt6(s1[6*g +: 6]));
-      ones_c = ones_c + CNT_W'(cnt6(c1[6*g +: 6]));
+      ones_s = ones_s + CNT_W'(groups_o[3*g +: 3]);
+      ones_c = ones_c + CNT_W'(groups_o[3*(G+g) +: 3]);
     end
   end
 

@@ -467,6 +467,7 @@ module sgm_top #(
 
   // ------------------------------------------------------------ paths
   logic [D*SW-1:0] sum;
+  logic            last3;  // col3 is its row's last column
   logic            valid3;
 
   // Its previous-row reads run three slots or more ahead of the costs: the
@@ -495,6 +496,7 @@ module sgm_top #(
     .s_o         (sum),
     .col_o       (col3),
     .row_o       (row3),
+    .last_o      (last3),
     .valid_o     (valid3)
   );
 
@@ -552,6 +554,7 @@ module sgm_top #(
     .s_i         (sum),
     .col_i       (col3),
     .row_i       (row3),
+    .last_i      (last3),
     .valid_i     (valid3),
     .d_i         (win_d),
     .disp_i      (win_disp),

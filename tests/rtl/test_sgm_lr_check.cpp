@@ -107,6 +107,7 @@ void runFrames(Top& top, const std::vector<Frame>& frames, uint32_t seed, int la
         m.col_i = junk() & ((1u << kCW) - 1);
         m.row_i = junk() & ((1u << kRW) - 1);
         m.valid_i = junk() & 1;
+        m.last_i = junk() & 1;
         m.width_i = junk() & ((1u << kCW) - 1);
         m.height_i = junk() & ((1u << kRW) - 1);
         m.tol_i = junk() & 7;
@@ -153,6 +154,7 @@ void runFrames(Top& top, const std::vector<Frame>& frames, uint32_t seed, int la
                                 kSW);  // flush slots: junk S
             m.col_i = x;
             m.row_i = y;
+            m.last_i = x == w - 1;
             m.valid_i = real;
             m.rd_col_i = x;  // one lane: the read side is the S side
             m.rd_row_i = y;

@@ -111,6 +111,7 @@ class LrLanes {
                           kSW);
       top_->col_i = sp.col;
       top_->row_i = uint32_t(sp.row) & rowMask;
+      top_->last_i = sp.col == w - 1;
       top_->valid_i = real;
       // WTA side, lag slots later.
       if (n >= lag) {

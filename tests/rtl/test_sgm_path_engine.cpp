@@ -133,6 +133,11 @@ class PathEngine {
       sgm::tb::slotAfterIdle(top_, rng_, idle_);
       if (top_->valid_o && failure.empty()) {
         const int x = top_->col_o, y = int(top_->row_o);
+        if (bool(top_->last_o) != (x == w - 1)) {
+          failure = "stage sgm_path_engine: last_o = " + std::to_string(int(top_->last_o)) + " at (x=" +
+                    std::to_string(x) + ", y=" + std::to_string(y) + "), width " + std::to_string(w);
+          break;
+        }
         const uint16_t* s = expected.at(x, y);
         for (int d = 0; d < kD; ++d) {
           const int got = int(getBits(top_->s_o, d * kSumBits, kSumBits));
