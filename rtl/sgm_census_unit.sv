@@ -115,6 +115,7 @@ module sgm_census_unit #(
   logic [LB-1:0] rd_q;
   logic [7:0]    pix1_q;
   logic [CW-1:0] col1_q, wm4_q;
+  logic          wrap1_q;        // col1_q < RX (the centre wraps to the previous row)
   logic [RW-1:0] row1_q;
   logic [NH*(RW+1)-1:0] hgt1_q;  // hgt1_q[e (RW + 1) +: RW + 1] = height + HOFF(e)
   logic          v1_q;           // the slot came through the pipeline since reset
@@ -134,6 +135,7 @@ module sgm_census_unit #(
       act1_q    <= active_i;
       pix1_q    <= pix_i;
       col1_q    <= col_i;
+      wrap1_q   <= col_i < CW'(RX);
       row1_q    <= row_i;
       wm4_q     <= width_i - CW'(RX);
       for (int k = 0; k <= 2 * RY; k++) hgt1_q[k*(RW+1) +: RW+1] <= {1'b0, height_i} + (RW+1)'(k);
@@ -186,8 +188,11 @@ module sgm_census_unit #(
   // Window column j holds cx + j - 4, inside when 4 <= cx + j < width + 4; since
   // 0 <= x < width and width >= 16 that is x + j >= 8 when x >= 4 (cx = x - 4; the
   // upper bound holds) and x + j < 8 when x < 4 (cx = width + x - 4; the lower
-  // bound holds): a comparison of x with a constant, no adder on the path.
-  wire             wrap   = col1_q < CW'(RX);
+  // bound holds): a comparison of x with a constant, no adder on the path. The
+  // wrap test itself is registered in s1 (wrap1_q: it selects every mask, and
+  // the comparison in front of that fan-out was the five-lane core's critical
+  // path on the LFE5U-85F, 8.3 ns).
+  wire             wrap   = wrap1_q;
   wire  [CW-1:0]   cx     = wrap ? wm4_q + col1_q : col1_q - CW'(RX);
   wire  [RW-1:0]   cy     = row1_q - (wrap ? RW'(RY + LANES) : RW'(RY));
   logic [WR-1:0]   row_ok;
