@@ -45,6 +45,8 @@ module sgm_cost_pe #(
   input  wire  [7:0]        lgray_i,      // stage A's slot, with lcensus_i
   input  wire  [7:0]        rgray_i,      // stage A's slot, with rcensus_i
   input  wire  [7:0]        ad_cap_i,     // T, stage A's slot
+  input  wire  [8:0]        ad_lo_i,      // gray_L - T (9-bit two's complement), stage A's slot
+  input  wire  [8:0]        ad_hi_i,      // gray_L + T, stage A's slot
   input  wire  [3:0]        ad_weight_i,  // W, stage B's slot (one enabled cycle behind stage A's)
   output logic [CBITS-1:0]  cost_o
 );
@@ -78,15 +80,21 @@ module sgm_cost_pe #(
 
   // Stage A, AD term: |gray_L - gray_R| from the two differences (the one that
   // does not borrow), truncated at T; stage B its product with W, divided by 8
-  // (below 2^CBITS: see the header).
+  // (below 2^CBITS: see the header). AD > T iff gray_R < gray_L - T or gray_R >
+  // gray_L + T: the caller's gray_L -+ T make both tests one comparison each,
+  // beside the differences rather than behind them (the difference, then its
+  // comparison with T, was the LFE5U-85F five-lane core's critical path at
+  // 8.1 ns).
   logic [CBITS-1:0] term_q;
   if (AD_TERM != 0) begin : g_ad
     wire [8:0] gd_lr = {1'b0, lgray_i} - {1'b0, rgray_i};
     wire [7:0] gd_rl = rgray_i - lgray_i;
     wire [7:0] ad    = gd_lr[8] ? gd_rl : gd_lr[7:0];
+    wire       above = !ad_lo_i[8] && rgray_i < ad_lo_i[7:0];  // gray_L - gray_R > T
+    wire       below = {1'b0, rgray_i} > ad_hi_i;              // gray_R - gray_L > T
     logic [7:0] adm_q;  // min(AD, T), T outside the image
     always_ff @(posedge clk_i) begin
-      if (en_i) adm_q <= outside_i || ad > ad_cap_i ? ad_cap_i : ad;
+      if (en_i) adm_q <= outside_i || above || below ? ad_cap_i : ad;
     end
     wire [11:0] prod = (ad_weight_i[0] ? 12'(adm_q) : 12'd0) + (ad_weight_i[1] ? 12'(adm_q) << 1 : 12'd0) +
                        (ad_weight_i[2] ? 12'(adm_q) << 2 : 12'd0) + (ad_weight_i[3] ? 12'(adm_q) << 3 : 12'd0);
@@ -96,7 +104,7 @@ module sgm_cost_pe #(
     wire unused_prod = ^{prod[2:0], prod[11:3+CBITS]};  // the division by 8; above 2^CBITS: excluded
   end else begin : g_no_ad
     assign term_q = '0;
-    wire unused_ad = ^{lgray_i, rgray_i, ad_cap_i, ad_weight_i};
+    wire unused_ad = ^{lgray_i, rgray_i, ad_cap_i, ad_lo_i, ad_hi_i, ad_weight_i};
   end
 
   // Stage B: the operands of C = ham_op + rt_op + rt_cin (+ the AD term):

@@ -89,9 +89,11 @@ module sgm_cost_volume #(
     end
   end
 
-  // The AD term's operands: the left gray and the cap with stage A's slot, the
-  // weight with stage B's (AD_TERM = 0: none; the PEs ignore their AD inputs).
+  // The AD term's operands: the left gray, the cap and gray -+ cap (the PEs'
+  // two tests of AD > T) with stage A's slot, the weight with stage B's
+  // (AD_TERM = 0: none; the PEs ignore their AD inputs).
   logic [7:0] lgray1_q, adcap1_q;
+  logic [8:0] adlo1_q, adhi1_q;
   logic [3:0] adw2_q;
   if (AD_TERM != 0) begin : g_ad
     logic [3:0] adw1_q;
@@ -99,6 +101,8 @@ module sgm_cost_volume #(
       if (en_i) begin
         lgray1_q <= lgray_i;
         adcap1_q <= ad_cap_i;
+        adlo1_q  <= {1'b0, lgray_i} - {1'b0, ad_cap_i};
+        adhi1_q  <= {1'b0, lgray_i} + {1'b0, ad_cap_i};
         adw1_q   <= ad_weight_i;
         adw2_q   <= adw1_q;
       end
@@ -107,7 +111,7 @@ module sgm_cost_volume #(
       if (en_i) tap0_q <= {rgray_i, rrank_i, rcensus_i};
     end
   end else begin : g_no_ad
-    assign {lgray1_q, adcap1_q, adw2_q} = '0;
+    assign {lgray1_q, adcap1_q, adlo1_q, adhi1_q, adw2_q} = '0;
     always_ff @(posedge clk_i) begin
       if (en_i) tap0_q <= {rrank_i, rcensus_i};
     end
@@ -159,6 +163,8 @@ module sgm_cost_volume #(
       .lgray_i   (lgray1_q),
       .rgray_i   (rgray),
       .ad_cap_i  (adcap1_q),
+      .ad_lo_i   (adlo1_q),
+      .ad_hi_i   (adhi1_q),
       .ad_weight_i(adw2_q),
       .cost_o    (cost_o[d*CBITS +: CBITS])
     );
