@@ -103,6 +103,8 @@ module sgm_median5x5 #(
   logic [AW-1:0]   addr_q;
   logic [CW-1:0]   x0_q, w0_q;
   logic [RW-1:0]   y0_q, h0_q;
+  logic [RW:0]     h1_q, h2_q, h3_q;  // height + 1, + 2, + 3
+  logic            wrap0_q;           // x0_q < 2: the window centre is in the row above
   logic            men0_q;
 
   always_ff @(posedge clk_i) begin
@@ -115,6 +117,10 @@ module sgm_median5x5 #(
       y0_q              <= row_i;
       w0_q              <= width_i;
       h0_q              <= height_i;
+      h1_q              <= {1'b0, height_i} + (RW+1)'(1);
+      h2_q              <= {1'b0, height_i} + (RW+1)'(2);
+      h3_q              <= {1'b0, height_i} + (RW+1)'(3);
+      wrap0_q           <= col_i < CW'(2);
       men0_q            <= median_en_i;
     end
   end
@@ -140,9 +146,14 @@ module sgm_median5x5 #(
   logic            mena_q;
 
   // Centre of the shifted window and its column masks.
-  wire             wrap = x0_q < CW'(2);
+  // The wrap test and height + k are registered in stage 0, so the row tests
+  // below are comparisons of y0 with registers, no adder in front of them (the
+  // wrap test, y0 - wrap and the comparisons behind it were the LFE5U-85F
+  // five-lane core's critical path at 8.4 ns): row ycb = y0 - wrap, so ycb >= 2
+  // iff y0 >= 2 + wrap, ycb < height + k iff y0 < height + k + wrap.
+  wire             wrap = wrap0_q;
   wire  [CW-1:0]   cx   = wrap ? w0_q + x0_q - CW'(2) : x0_q - CW'(2);
-  wire  [RW:0]     ycb  = {1'b0, y0_q} - {{RW{1'b0}}, wrap};  // row of the bottom window row
+  wire  [RW-1:0]   ycb  = y0_q - RW'(wrap);  // row of the bottom window row
   // Column masks (columns cx - 2 .. cx + 2 inside the frame) from x0 and the
   // width alone, no adder in front of a comparison: off the wrap cx = x0 - 2,
   // so cx - 2 >= 0 iff x0 >= 4, cx + 1 < W iff x0 <= W, cx + 2 < W iff x0 < W;
@@ -156,7 +167,10 @@ module sgm_median5x5 #(
     col_ok[3] = wrap ? x0_q == '0 : x0_q <= w0_q;
     col_ok[4] = !wrap && x0_q < w0_q;
   end
-  wire centre_in = ycb >= (RW+1)'(2) && ycb < {1'b0, h0_q} + (RW+1)'(2) && x0_q < w0_q;
+  wire             y1_top  = wrap ? y1 >= (RW+1)'(3) : y1 >= (RW+1)'(2);  // ycb >= 2
+  wire             y1_bot  = wrap ? y1 < h3_q : y1 < h2_q;                 // ycb < height + 2
+  wire             y1_pass = wrap ? y1 < h1_q : y1 < {1'b0, h0_q};         // ycb < height
+  wire centre_in = y1_top && y1_bot && x0_q < w0_q;
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
@@ -164,8 +178,8 @@ module sgm_median5x5 #(
       live_q  <= {new_live, live_q[N-1:5]};
       colok_q <= col_ok;
       cxa_q   <= cx;
-      cya_q   <= ycb[RW-1:0] - RW'(2);
-      mena_q  <= men0_q && ycb < {1'b0, h0_q};  // centre row < height - 2: the last 2 rows pass through
+      cya_q   <= ycb - RW'(2);
+      mena_q  <= men0_q && y1_pass;  // centre row < height - 2: the last 2 rows pass through
     end
   end
 
