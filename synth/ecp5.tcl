@@ -16,6 +16,13 @@ set synth_flags [env_or SYNTH_ECP5_FLAGS ""]
 # (synth/ecp5_cmp_lut.v); empty or 0: every comparison to synth_ecp5's carry chains.
 set cmp_lut [env_or SYNTH_ECP5_CMP_LUT 0]
 set cmp_map [file join [file dirname [info script]] ecp5_cmp_lut.v]
+# SYNTH_ECP5_CMP_CHAIN: source files (space-separated names, e.g. sgm_path_ring.sv)
+# whose comparisons, and those of every module instantiated inside them, stay
+# carry chains whatever SYNTH_ECP5_CMP_LUT says: a flattened cell's src attribute
+# names each instance on its way down, so `a:src=*<file>*` finds them.
+set cmp_chain [env_or SYNTH_ECP5_CMP_CHAIN ""]
+set cmp_sel {*}
+foreach f $cmp_chain { lappend cmp_sel a:src=*$f* %d }
 
 set stages {}
 foreach_stage {
@@ -29,7 +36,7 @@ foreach_stage {
     yosys opt_clean
     yosys wreduce
     yosys opt_clean
-    yosys techmap -D SGM_CMP_LUT_MAX=$cmp_lut -map $cmp_map
+    yosys techmap -D SGM_CMP_LUT_MAX=$cmp_lut -map $cmp_map {*}$cmp_sel
     yosys synth_ecp5 {*}$synth_flags -top $mod -run coarse:
   } else {
     yosys synth_ecp5 {*}$synth_flags -top $mod

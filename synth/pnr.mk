@@ -100,6 +100,9 @@ PNR_DEFINES      ?= SGM_DELAY_CHAIN SGM_ECP5_GLOBAL
 # levels, so the 5-lane D = 16 core routes at 112.7 MHz instead of 121.3 (edc75f0;
 # 112.0 at 305b236 with the lane control's cuts, synth/README.md).
 PNR_CMP_LUT      ?= 12
+# Source files whose comparisons stay carry chains despite PNR_CMP_LUT (with every
+# module inside them; synth/ecp5.tcl SYNTH_ECP5_CMP_CHAIN).
+PNR_CMP_CHAIN    ?=
 # Cycles per pixel for the video-format table: the largest cycles_per_pixel of
 # build/bench/report.json when `make bench` has run, otherwise this figure
 # (README.md, accuracy table: whole-core test, the worst of the five scenes).
@@ -175,11 +178,11 @@ $(PNR_CFG)/synth/done: $(PNR_DEPS) | pnr-tools
 	@echo "pnr: synth_ecp5, D=$(PNR_D) MAX_WIDTH=$(PNR_MAX_WIDTH) LANES=$(PNR_LANES) (log: $(@D)/yosys.log)"
 	@start=$$(date +%s); \
 	 SYNTH_RTL=rtl SYNTH_D=$(PNR_D) SYNTH_MAX_WIDTH=$(PNR_MAX_WIDTH) SYNTH_MAX_HEIGHT=$(PNR_MAX_HEIGHT) SYNTH_LANES=$(PNR_LANES) SYNTH_OUT=$(@D) \
-	   SYNTH_UNIQUENESS=$(PNR_UNIQUENESS) SYNTH_AD_TERM=$(PNR_AD_TERM) SYNTH_RIGHT_BLOCK=$(PNR_RIGHT_BLOCK) SYNTH_ECP5_FLAGS="$(PNR_SYNTH_FLAGS)" SYNTH_DEFINES="$(PNR_DEFINES)" SYNTH_ECP5_CMP_LUT=$(PNR_CMP_LUT) \
+	   SYNTH_UNIQUENESS=$(PNR_UNIQUENESS) SYNTH_AD_TERM=$(PNR_AD_TERM) SYNTH_RIGHT_BLOCK=$(PNR_RIGHT_BLOCK) SYNTH_ECP5_FLAGS="$(PNR_SYNTH_FLAGS)" SYNTH_DEFINES="$(PNR_DEFINES)" SYNTH_ECP5_CMP_LUT=$(PNR_CMP_LUT) SYNTH_ECP5_CMP_CHAIN="$(PNR_CMP_CHAIN)" \
 	   flock $(PNR_LOCK) timeout $(PNR_TIMEOUT) nice -n $(PNR_NICE) yosys -q -l $(@D)/yosys.log -c synth/ecp5.tcl \
 	   > $(@D)/yosys.out 2>&1; rc=$$?; \
 	 if [ $$rc != 0 ]; then echo "pnr: Yosys failed (exit $$rc):"; grep -E '^ERROR' $(@D)/yosys.log | tail -5; exit 1; fi; \
-	 echo "$$(( $$(date +%s) - start ))" > $(@D)/seconds; echo "$(PNR_SYNTH_FLAGS)$(foreach m,$(PNR_DEFINES), -D$(m))$(if $(filter-out 0,$(PNR_CMP_LUT)), cmp-lut=$(PNR_CMP_LUT))" > $(@D)/flags; \
+	 echo "$$(( $$(date +%s) - start ))" > $(@D)/seconds; echo "$(PNR_SYNTH_FLAGS)$(foreach m,$(PNR_DEFINES), -D$(m))$(if $(filter-out 0,$(PNR_CMP_LUT)), cmp-lut=$(PNR_CMP_LUT))$(if $(PNR_CMP_CHAIN), cmp-chain=$(PNR_CMP_CHAIN))" > $(@D)/flags; \
 	 echo "pnr: synth_ecp5 done in $$(cat $(@D)/seconds) s"
 	@touch $@
 
