@@ -15,14 +15,11 @@ set synth_flags [env_or SYNTH_ECP5_FLAGS ""]
 # SYNTH_ECP5_CMP_LUT: comparisons of at most this many bits as LUT logic
 # (synth/ecp5_cmp_lut.v); empty or 0: every comparison to synth_ecp5's carry chains.
 set cmp_lut [env_or SYNTH_ECP5_CMP_LUT 0]
-set cmp_map [file join [file dirname [info script]] ecp5_cmp_lut.v]
+if {$cmp_lut eq ""} { set cmp_lut 0 }
 # SYNTH_ECP5_CMP_CHAIN: source files (space-separated names, e.g. sgm_path_ring.sv)
-# whose comparisons, and those of every module instantiated inside them, stay
-# carry chains whatever SYNTH_ECP5_CMP_LUT says: a flattened cell's src attribute
-# names each instance on its way down, so `a:src=*<file>*` finds them.
+# whose comparisons stay carry chains whatever SYNTH_ECP5_CMP_LUT says (ecp5_cmp.tcl).
 set cmp_chain [env_or SYNTH_ECP5_CMP_CHAIN ""]
-set cmp_sel {*}
-foreach f $cmp_chain { lappend cmp_sel a:src=*$f* %d }
+source [file join [file dirname [info script]] ecp5_cmp.tcl]
 
 set stages {}
 foreach_stage {
@@ -36,7 +33,7 @@ foreach_stage {
     yosys opt_clean
     yosys wreduce
     yosys opt_clean
-    yosys techmap -D SGM_CMP_LUT_MAX=$cmp_lut -map $cmp_map {*}$cmp_sel
+    ecp5_cmp_map $cmp_lut $cmp_chain
     yosys synth_ecp5 {*}$synth_flags -top $mod -run coarse:
   } else {
     yosys synth_ecp5 {*}$synth_flags -top $mod

@@ -101,7 +101,7 @@ PNR_DEFINES      ?= SGM_DELAY_CHAIN SGM_ECP5_GLOBAL
 # 112.0 at 305b236 with the lane control's cuts, synth/README.md).
 PNR_CMP_LUT      ?= 12
 # Source files whose comparisons stay carry chains despite PNR_CMP_LUT (with every
-# module inside them; synth/ecp5.tcl SYNTH_ECP5_CMP_CHAIN).
+# module inside them; synth/ecp5_cmp.tcl, checked by `make ecp5-cmp-check`).
 PNR_CMP_CHAIN    ?=
 # Cycles per pixel for the video-format table: the largest cycles_per_pixel of
 # build/bench/report.json when `make bench` has run, otherwise this figure
@@ -119,7 +119,7 @@ PNR_DEVNAME  = LFE5U-$(subst k,F,$(PNR_DEVICE))
 PNR_RUN      = $(PNR_CFG)/lfe5u-$(subst k,f,$(PNR_DEVICE))-$(PNR_SPEED)
 PNR_LOCK     = $(PNR_DIR)/.lock
 PNR_SUMMARY  = $(BIN)/pnr-summary
-PNR_DEPS    := $(RTL_SRC) synth/common.tcl synth/ecp5.tcl synth/ecp5_cmp_lut.v
+PNR_DEPS    := $(RTL_SRC) synth/common.tcl synth/ecp5.tcl synth/ecp5_cmp.tcl synth/ecp5_cmp_lut.v
 
 .PHONY: pnr pnr-ci pnr-one pnr-summary pnr-tools pnr-clean pnr-help ecp5-cmp-check
 
@@ -150,13 +150,18 @@ pnr-ci: pnr-tools $(PNR_SUMMARY)
 pnr-one: $(PNR_RUN)/done
 
 # synth/ecp5_cmp_lut.v maps every kind of comparison of tests/synth/cmp_cases.v
-# (signed, unsigned, mixed widths, constants) to logic Yosys proves equal to it.
+# (signed, unsigned, mixed widths, constants) to logic Yosys proves equal to it;
+# synth/ecp5_cmp.tcl keeps those of the files PNR_CMP_CHAIN names as carry chains.
 ecp5-cmp-check: | check-tools
 	@mkdir -p $(BUILD)/synth
 	@yosys -q -l $(BUILD)/synth/ecp5-cmp-check.log -s tests/synth/ecp5_cmp_lut_check.ys > /dev/null 2>&1 || \
 	  { echo "ecp5-cmp-check: synth/ecp5_cmp_lut.v is not equal to the comparisons it maps ($(BUILD)/synth/ecp5-cmp-check.log):"; \
 	    grep -E '^ERROR' $(BUILD)/synth/ecp5-cmp-check.log | tail -3; exit 1; }
 	@echo "ecp5-cmp-check: OK (the comparisons of tests/synth/cmp_cases.v up to 12 bits mapped and proven equal)"
+	@yosys -q -l $(BUILD)/synth/ecp5-cmp-chain-check.log -c tests/synth/ecp5_cmp_chain_check.tcl > /dev/null 2>&1 || \
+	  { echo "ecp5-cmp-check: synth/ecp5_cmp.tcl's carry-chain exception (PNR_CMP_CHAIN) failed ($(BUILD)/synth/ecp5-cmp-chain-check.log):"; \
+	    grep -E '^ERROR' $(BUILD)/synth/ecp5-cmp-chain-check.log | tail -3; exit 1; }
+	@echo "ecp5-cmp-check: OK (PNR_CMP_CHAIN: the named file's comparisons kept as carry chains, the rest mapped, equal to the design)"
 
 pnr-summary: $(PNR_SUMMARY) | pnr-tools
 	@if [ -s $(PNR_BENCH_REPORT) ] && cpp=$$(grep -o '"cycles_per_pixel": *[0-9.]*' $(PNR_BENCH_REPORT) | \
