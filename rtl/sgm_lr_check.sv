@@ -44,10 +44,11 @@
 // so every chain starts inside its own row. Right pixel xr is final
 //   * when it leaves slot D-1, at column x = xr + D - 1 (xr <= W - D), or
 //   * at the last column of the row for xr > W - D: its later candidates
-//     xr + d > W - 1 do not exist. At column W-1 the argmins of slots
-//     0 .. D-2 (xr = W-1 .. W-D+1) go to a shift register (tail_q) that writes
-//     them, xr = W-D+1 first, during the next D-1 slots (columns 0 .. D-2 of
-//     the next row, where slot D-1 finalises nothing: no write port conflict).
+//     xr + d > W - 1 do not exist. The argmins of slots 0 .. D-2 after
+//     column W-1 (xr = W-1 .. W-D+1, in darg of the lane's next slot) are
+//     written, xr = W-D+1 first, during the lane's next D-1 slots (columns
+//     0 .. D-2 of its next row, where slot D-1 finalises nothing: no write
+//     port conflict); entries 1 .. D-2 wait in a shift register (tail_q).
 // dR goes through one registered write port into dr_mem (2 banks by row
 // parity x MAX_WIDTH x log2(D) bit). The WTA result {d, disp} of (x, y) goes
 // to lt_mem (2 banks x MAX_WIDTH x (log2(D) + DW + 2) bit: with the unique and
@@ -92,8 +93,8 @@
 // Latency: one row plus LATENCY = 5 slots: left pixel (x, y) presented on the
 // WTA side is on the outputs after the enabled edge of S slot (x, y+1) plus
 // LATENCY - 1 edges, i.e. S slot (x, y) + width + LATENCY - 1 edges.
-// Throughput: one pixel per slot. Reset: control registers only (tail counter, row-end column,
-// dR write enable, out_valid pipeline).
+// Throughput: one pixel per slot. Reset: control registers only (tail counter, dR write
+// enable, out_valid pipeline, lane warm-up).
 module sgm_lr_check #(
   parameter int D         /*verilator public*/ = 64,
   parameter int SW        /*verilator public*/ = 13,
@@ -234,15 +235,25 @@ module sgm_lr_check #(
     end
   end
 
+  // The lane's first tail slot (the first slot of its next row): the argmins
+  // the last column left in the diagonal array (darg_p) are the tail. Entry 0
+  // is written at once (drw_data_q), entries 1 .. D-2 go to the shift register.
+  // Loading from darg_p rather than from narg at the last column keeps the
+  // diagonal's compare chain out of the tail's input selects (the LFE5U-85F
+  // five-lane fifth-path build's critical path at 28efeba, 8.4 ns).
+  wire tail_first = tail_cnt_p == LD'(D - 1);
+
   for (genvar k = 0; k < D - 1; k++) begin : g_tail
-    wire [LD-1:0] shift_in;
+    wire [LD-1:0] shift_in, load_in;
     if (k < D - 2) begin : g_shift
       assign shift_in = tail_p[(k+1)*LD +: LD];
+      assign load_in  = darg_p[(D-3-k)*LD +: LD];   // entry k + 1
     end else begin : g_end
       assign shift_in = tail_p[k*LD +: LD];
+      assign load_in  = shift_in;
     end
     always_ff @(posedge clk_i) begin
-      if (en_i) tail_q[k*LD +: LD] <= last_col ? narg[(D-2-k)*LD +: LD] : shift_in;
+      if (en_i) tail_q[k*LD +: LD] <= tail_first ? load_in : shift_in;
     end
   end
 
@@ -279,7 +290,7 @@ module sgm_lr_check #(
     if (en_i) begin
       if (tail_cnt_p != '0) begin
         drw_addr_q <= mem_addr(tail_bank_p, tail_col_p);
-        drw_data_q <= tail_p[0 +: LD];
+        drw_data_q <= tail_first ? darg_p[(D-2)*LD +: LD] : tail_p[0 +: LD];
       end else begin
         drw_addr_q <= mem_addr(row_i[BW-1:0], col_i - CW'(D - 1));
         drw_data_q <= narg[(D-1)*LD +: LD];
