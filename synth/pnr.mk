@@ -101,8 +101,15 @@ PNR_DEFINES      ?= SGM_DELAY_CHAIN SGM_ECP5_GLOBAL
 # 112.0 at 305b236 with the lane control's cuts, synth/README.md).
 PNR_CMP_LUT      ?= 12
 # Source files whose comparisons stay carry chains despite PNR_CMP_LUT (with every
-# module inside them; synth/ecp5_cmp.tcl, checked by `make ecp5-cmp-check`).
-PNR_CMP_CHAIN    ?=
+# module inside them; synth/ecp5_cmp.tcl, checked by `make ecp5-cmp-check`). In a
+# build with the fifth path: the 0 degree recursions' rings (the engine's and the
+# fifth path's), whose 4-input minimum nodes as LUT logic were seven to eight LUT
+# levels and the critical path of most seeds; with their chains the five-lane
+# D = 16 core routes at 130.0 MHz (three seeds, LFE5U-85F-8) instead of 121.5, for
+# 1.6 % more TRELLIS_COMB. Not in builds without it: the four-path build routes
+# worse with them (121.5 MHz against 133.3), and D = 64 at six lanes packs to 93 %
+# with them (synth/README.md, "Carry chains in the rings").
+PNR_CMP_CHAIN    ?= $(if $(filter-out 0,$(PNR_RIGHT_BLOCK)),sgm_path_ring.sv)
 # Cycles per pixel for the video-format table: the largest cycles_per_pixel of
 # build/bench/report.json when `make bench` has run, otherwise this figure
 # (README.md, accuracy table: whole-core test, the worst of the five scenes).
