@@ -15,7 +15,6 @@ set synth_flags [env_or SYNTH_ECP5_FLAGS ""]
 # SYNTH_ECP5_CMP_LUT: comparisons of at most this many bits as LUT logic
 # (synth/ecp5_cmp_lut.v); empty or 0: every comparison to synth_ecp5's carry chains.
 set cmp_lut [env_or SYNTH_ECP5_CMP_LUT 0]
-if {$cmp_lut eq ""} { set cmp_lut 0 }
 # SYNTH_ECP5_CMP_CHAIN: source files (space-separated names, e.g. sgm_path_ring.sv)
 # whose comparisons stay carry chains whatever SYNTH_ECP5_CMP_LUT says (ecp5_cmp.tcl).
 set cmp_chain [env_or SYNTH_ECP5_CMP_CHAIN ""]
@@ -27,12 +26,7 @@ foreach_stage {
     # synth_ecp5 up to its coarse step, the comparisons mapped after the
     # first width reduction (as synth_ecp5's own cmp2lut step sits), then the rest.
     yosys synth_ecp5 {*}$synth_flags -top $mod -run begin:coarse
-    yosys proc
-    yosys flatten
-    yosys opt_expr
-    yosys opt_clean
-    yosys wreduce
-    yosys opt_clean
+    ecp5_cmp_prepare
     ecp5_cmp_map $cmp_lut $cmp_chain
     yosys synth_ecp5 {*}$synth_flags -top $mod -run coarse:
   } else {

@@ -1,6 +1,9 @@
 # The ECP5 flow's comparison map (sourced by synth/ecp5.tcl and by
 # tests/synth/ecp5_cmp_chain_check.tcl, so both run the same selection).
 #
+# ecp5_cmp_prepare: the steps in front of the map, where synth_ecp5's own
+# cmp2lut would sit: processes, one flat module, widths reduced.
+#
 # ecp5_cmp_map cmp_lut chain_files: comparisons of at most cmp_lut bits in the
 # current design become LUT logic (synth/ecp5_cmp_lut.v), except those from the
 # source files named in chain_files (space-separated, e.g. sgm_path_ring.sv)
@@ -14,4 +17,8 @@ proc ecp5_cmp_map {cmp_lut chain_files} {
   set sel {*}
   foreach f $chain_files { lappend sel a:src=*$f* %d }
   yosys techmap -D SGM_CMP_LUT_MAX=$cmp_lut -map $::ecp5_cmp_map_file {*}$sel
+}
+
+proc ecp5_cmp_prepare {} {
+  foreach step {proc flatten opt_expr opt_clean wreduce opt_clean} { yosys $step }
 }

@@ -10,12 +10,7 @@ proc load_case {} {
   design -reset
   read_verilog -sv tests/synth/cmp_chain_inner.sv tests/synth/cmp_chain_case.sv
   hierarchy -top cmp_chain_case
-  yosys proc
-  flatten
-  opt_expr
-  opt_clean
-  wreduce
-  opt_clean
+  ecp5_cmp_prepare
 }
 
 load_case
