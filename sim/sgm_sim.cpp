@@ -76,8 +76,8 @@ int main(int argc, char** argv) {
     if (params.p2 > 255) throw Error("P2'=" + std::to_string(params.p2) + " exceeds the core's 8-bit input");
     if (params.lrTolerance > 7) throw Error("LR tolerance " + std::to_string(params.lrTolerance) + " exceeds the core's 3-bit input");
     if (params.experimental())
-      throw Error("--right-path without --right-block, --subpixel-fit linear, --mgm, --median-gate, --p1-paths and "
-                  "--snap-edge are golden-only experiments, not in the core");
+      throw Error("--right-path without --right-block, --subpixel-fit linear, --mgm, --median-gate, --p1-paths, "
+                  "--snap-edge and --edge-reset are golden-only experiments, not in the core");
     if (params.rightPathWeight && params.rightPathBlock != kRightBlock)
       throw Error(kRightBlock ? "this simulator's fifth path runs in blocks of " + std::to_string(kRightBlock) +
                                     " (--right-block " + std::to_string(kRightBlock) + ")"

@@ -65,6 +65,12 @@ TEST(Experiments, OffByDefaultAndNotInAnyPreset) {
   g = p;  // the gated edge snap: golden-only
   g.snapEdge = 96;
   EXPECT_TRUE(g.experimental());
+  g = p;  // the path restart at strong edges: golden-only; its length and paths alone change nothing
+  g.edgeReset.length = 3, g.edgeReset.paths = {0, 0, 0, 1, 1};
+  EXPECT_FALSE(g.experimental());
+  g.edgeReset.threshold = 48;
+  EXPECT_TRUE(g.experimental());
+  EXPECT_NE(g, p);
   sgm::Params u = p;  // the uniqueness ratio and the AD term are in the core: not experiments
   u.uniqueness = 15, u.adWeight = 3;
   EXPECT_FALSE(u.experimental());
@@ -133,6 +139,104 @@ TEST(RightPath, AggregateAddsItToTheFourPaths) {
     sgm::addRightPath(c.at(0, y), gray.ptr<uint8_t>(y), w, nd, p1, table, 3, row.data());
     for (int i = 0; i < w * nd; ++i) ASSERT_EQ(five.at(0, y)[i], row[size_t(i)]) << "y " << y << " i " << i;
   }
+}
+
+// The path restart at strong edges (golden-only, Params::edgeReset) against a direct reading
+// of its definition: pixel p of a marked path starts again (Lr = C) when one of the steps
+// p - k r -> p - (k + 1) r, k = 0 .. R - 1, both ends inside the path, crosses a gray step
+// of at least T; otherwise eq. (1). Each path, the fifth over the row and in blocks.
+TEST(EdgeReset, MatchesItsDefinitionOnEveryPath) {
+  const int w = 29, h = 9, nd = 7, p1 = 8, p2 = 90, threshold = 48, length = 3;
+  std::mt19937 rng(21);
+  CostVolume c(w, h, nd);
+  for (auto& v : c.data) v = uint8_t(rng() % 45);
+  cv::Mat gray(h, w, CV_8UC1);  // weak texture (steps 0 .. 16), one pixel in six raised by 48: steps 32 .. 64
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) gray.at<uint8_t>(y, x) = uint8_t(8 * (rng() % 3) + (rng() % 6 == 0 ? threshold : 0));
+  const sgm::P2Table table = sgm::makeP2Table(p1, p2);
+  const auto dI = [&](int ax, int ay, int bx, int by) {
+    return std::abs(int(gray.at<uint8_t>(ay, ax)) - int(gray.at<uint8_t>(by, bx)));
+  };
+  // Lr of forward path i over the image, restarting or not.
+  const auto forward = [&](int i, bool restart) {
+    const sgm::PathDirection r = sgm::kPathDirections[i];
+    PathVolume lr(w, h, nd);
+    std::vector<uint16_t> prev(size_t(nd) + 2, sgm::kPathSentinel);
+    std::vector<uint16_t> mins(size_t(w) * h, 0);
+    const auto inside = [&](int x, int y) { return x >= 0 && x < w && y >= 0 && y < h; };
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const int px = x + r.dx, py = y + r.dy;
+        bool edge = false;
+        for (int k = 0; k < length && restart; ++k) {
+          const int ax = x + k * r.dx, ay = y + k * r.dy;
+          if (!inside(ax + r.dx, ay + r.dy)) break;
+          edge = edge || dI(ax, ay, ax + r.dx, ay + r.dy) >= threshold;
+        }
+        uint16_t* out = lr.at(x, y);
+        if (!inside(px, py) || edge) {
+          mins[size_t(y) * w + x] = sgm::pathStart(c.at(x, y), nd, out);
+          continue;
+        }
+        std::copy_n(lr.at(px, py), nd, prev.data() + 1);
+        mins[size_t(y) * w + x] = sgm::pathStep(c.at(x, y), prev.data() + 1, mins[size_t(py) * w + px], nd, p1,
+                                                table[size_t(dI(x, y, px, py))], out);
+      }
+    return lr;
+  };
+  // Lr of the fifth path on row y over [x0, x1), started at `start` (>= x1 - 1).
+  const auto fifth = [&](int y, int x0, int start, bool restart, PathVolume& into) {
+    std::vector<uint16_t> prev(size_t(nd) + 2, sgm::kPathSentinel), cur(size_t(nd) + 2, sgm::kPathSentinel);
+    uint16_t minPrev = 0;
+    for (int x = start; x >= x0; --x) {
+      bool edge = false;
+      for (int k = 0; k < length && restart && x + k + 1 <= start; ++k) edge = edge || dI(x + k, y, x + k + 1, y) >= threshold;
+      const uint16_t m = x == start || edge ? sgm::pathStart(c.at(x, y), nd, cur.data() + 1)
+                                            : sgm::pathStep(c.at(x, y), prev.data() + 1, minPrev, nd, p1,
+                                                            table[size_t(dI(x, y, x + 1, y))], cur.data() + 1);
+      std::copy_n(cur.data() + 1, nd, into.at(x, y));
+      std::swap(prev, cur), minPrev = m;
+    }
+  };
+  int restarted = 0;
+  for (const std::array<int, 5> paths : {std::array<int, 5>{1, 1, 1, 1, 1}, std::array<int, 5>{0, 1, 0, 1, 0},
+                                          std::array<int, 5>{1, 0, 1, 0, 1}})
+    for (const int block : {0, 4}) {
+      sgm::EdgeReset reset;
+      reset.threshold = threshold, reset.length = length, reset.paths = paths;
+      const PathVolume s = sgm::aggregateCost(c, gray, p1, p2, sgm::P2Mode::kKnee, sgm::PathWeighting::k3232, 2, false,
+                                              block, nullptr, reset);
+      PathVolume expected(w, h, nd), l5(w, h, nd);
+      const int* weight = sgm::pathWeights(sgm::PathWeighting::k3232);
+      for (int i = 0; i < sgm::kPathCount; ++i) {
+        const PathVolume l = forward(i, paths[size_t(i)] != 0);
+        restarted += l.data != forward(i, false).data;
+        for (size_t j = 0; j < l.data.size(); ++j) expected.data[j] = uint16_t(expected.data[j] + weight[i] * l.data[j]);
+      }
+      for (int y = 0; y < h; ++y) {
+        // Blocks [jB, (j + 1)B), the last one [(m - 1)B, W); each block's pass starts one block to its right.
+        const int span = block ? block : w, blocks = std::max(1, w / span);
+        for (int j = 0; j < blocks; ++j) {
+          const bool last = j == blocks - 1;
+          PathVolume pass(w, h, nd);
+          fifth(y, j * span, last ? w - 1 : j * span + 2 * span - 1, paths[4] != 0, pass);
+          for (int x = j * span; x < (last ? w : j * span + span); ++x) std::copy_n(pass.at(x, y), nd, l5.at(x, y));
+        }
+      }
+      for (size_t j = 0; j < l5.data.size(); ++j) expected.data[j] = uint16_t(expected.data[j] + 2 * l5.data[j]);
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+          for (int d = 0; d < nd; ++d)
+            ASSERT_EQ(s.at(x, y)[d], expected.at(x, y)[d])
+                << "paths " << paths[0] << paths[1] << paths[2] << paths[3] << paths[4] << " block " << block << " (x, y) ("
+                << x << ", " << y << ") d " << d;
+    }
+  EXPECT_GT(restarted, 0);  // the scene has strong steps: the restart changes the paths
+  // Off (threshold 0) is the plain aggregation whatever the other fields say.
+  sgm::EdgeReset off;
+  off.length = 7;
+  EXPECT_EQ(sgm::aggregateCost(c, gray, p1, p2, sgm::P2Mode::kKnee, sgm::PathWeighting::k3232, 2, false, 4, nullptr, off).data,
+            sgm::aggregateCost(c, gray, p1, p2, sgm::P2Mode::kKnee, sgm::PathWeighting::k3232, 2, false, 4).data);
 }
 
 // MGM on a 2 x 2 volume with D = 1: every step term is 0 (one disparity), so Lr = C
@@ -318,7 +422,35 @@ TEST(Experiments, OptionsAndRanges) {
     const sgm::CliArgs cli(int(v.size()), v.data(), sgm::CliArgs::pipelineOptions());
     expectError([&] { cli.pipelineParams(); }, {"--p1-paths expects five percentages"});
   }
+  std::vector<std::string> args3 = {"prog", "--edge-reset", "48", "--edge-reset-len", "4", "--edge-reset-paths", "0,0,0,1,1"};
+  std::vector<char*> argv3;
+  for (std::string& a : args3) argv3.push_back(a.data());
+  const sgm::Params e = sgm::CliArgs(int(argv3.size()), argv3.data(), sgm::CliArgs::pipelineOptions()).pipelineParams();
+  EXPECT_EQ(e.edgeReset.threshold, 48);
+  EXPECT_EQ(e.edgeReset.length, 4);
+  EXPECT_EQ(e.edgeReset.paths, (std::array<int, 5>{0, 0, 0, 1, 1}));
+  EXPECT_TRUE(e.edgeReset.on(3));
+  EXPECT_FALSE(e.edgeReset.on(0));
+  for (const char* list : {"0,0,0,1", "0,0,0,1,1,1", "0,2,0,1,1", "1,,1,1,1"}) {
+    std::vector<std::string> a = {"prog", "--edge-reset-paths", list};
+    std::vector<char*> v;
+    for (std::string& s : a) v.push_back(s.data());
+    const sgm::CliArgs cli(int(v.size()), v.data(), sgm::CliArgs::pipelineOptions());
+    expectError([&] { cli.pipelineParams(); }, {"--edge-reset-paths expects five flags 0..1"});
+  }
   sgm::Params bad;
+  bad.edgeReset.threshold = 256;
+  expectError([&] { bad.validate(); }, {"edge reset 256"});
+  bad = sgm::Params{};
+  bad.edgeReset.length = 0;
+  expectError([&] { bad.validate(); }, {"edge reset length 0"});
+  bad = sgm::Params{};
+  bad.edgeReset.paths[2] = 2;
+  expectError([&] { bad.validate(); }, {"edge reset paths"});
+  bad = sgm::Params{};
+  bad.edgeReset.threshold = 48, bad.mgm = true;
+  expectError([&] { bad.validate(); }, {"does not combine with --mgm"});
+  bad = sgm::Params{};
   bad.p2 = 50, bad.p1PathPercent[4] = 300;  // P1 24 * 3 = 72 > P2' 50
   expectError([&] { bad.validate(); }, {"P1 of path 4"});
   bad = sgm::Params{};

@@ -292,7 +292,13 @@ std::string goldenParamsText(const Params& p) {
             onOff(p.mgm) + ", median gate " + std::to_string(p.medianGate) + ", P1 per path " +
             std::to_string(p.p1PathPercent[0]) + "," + std::to_string(p.p1PathPercent[1]) + "," +
             std::to_string(p.p1PathPercent[2]) + "," + std::to_string(p.p1PathPercent[3]) + "," +
-            std::to_string(p.p1PathPercent[4]) + " %, snap edge " + std::to_string(p.snapEdge);
+            std::to_string(p.p1PathPercent[4]) + " %, snap edge " + std::to_string(p.snapEdge) + ", edge reset " +
+            std::to_string(p.edgeReset.threshold) +
+            (p.edgeReset.threshold ? " over " + std::to_string(p.edgeReset.length) + " steps, paths " +
+                                         std::to_string(p.edgeReset.paths[0]) + std::to_string(p.edgeReset.paths[1]) +
+                                         std::to_string(p.edgeReset.paths[2]) + std::to_string(p.edgeReset.paths[3]) +
+                                         std::to_string(p.edgeReset.paths[4])
+                                   : std::string());
   return text;
 }
 
@@ -321,6 +327,11 @@ void writeGoldenParamFields(JsonWriter& j, const Params& p) {
   for (const int percent : p.p1PathPercent) j.integer(percent);
   j.endArray();
   j.key("snap_edge").integer(p.snapEdge);  // 0: off (every drop snaps)
+  j.key("edge_reset").integer(p.edgeReset.threshold);  // 0: off
+  j.key("edge_reset_length").integer(p.edgeReset.length);
+  j.key("edge_reset_paths").beginArray();
+  for (const int on : p.edgeReset.paths) j.integer(on);
+  j.endArray();
 }
 
 const char* methodKindName(MethodKind kind) {

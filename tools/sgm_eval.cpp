@@ -43,6 +43,8 @@ const char* kUsage =
     "                  equiangular fit) --mgm on|off (raster MGM) --median-gate T (median over pixels within\n"
     "                  T gray levels of the centre) --p1-paths A,B,C,D,E (P1 per path in %: 0, 45, 90, 135 deg, fifth)\n"
     "                  --snap-edge T (edge snapping only onto an intensity step of at least T, with --snap on)\n"
+    "                  --edge-reset T --edge-reset-len R --edge-reset-paths A,B,C,D,E (a path starts again within\n"
+    "                  R steps of a gray step of at least T; the paths marked 1: 0, 45, 90, 135 deg, fifth)\n"
     "--delta X sets the error threshold (default 1); --out defaults to build/eval;\n"
     "--scenes a,b (run, table, pool) keeps only those scenes; --half A|B (pool) keeps one half of the\n"
     "cross-validation split (per set, scenes sorted by name alternate A, B).\n";

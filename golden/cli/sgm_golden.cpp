@@ -29,6 +29,9 @@ const char* kUsage =
     "                  [--median-gate T] the median takes only pixels within T gray levels of the centre\n"
     "                  [--p1-paths A,B,C,D,E] P1 per path in % (0, 45, 90, 135 degrees, the fifth path)\n"
     "                  [--snap-edge T] edge snapping only onto an intensity step of at least T (with --snap on)\n"
+    "                  [--edge-reset T] [--edge-reset-len R] [--edge-reset-paths A,B,C,D,E] a path starts\n"
+    "                                    again (Lr = C) within R steps (default 5) of a gray step >= T (0 off);\n"
+    "                                    the paths marked 1 (0, 45, 90, 135 degrees, the fifth path; default all)\n"
     "Writes PREFIX_disp16.png (disparity x 256, 0 = invalid), PREFIX_disp8.png\n"
     "(the paper's [0, 255] scaling) and PREFIX_color.png. PREFIX defaults to 'disparity'.\n";
 

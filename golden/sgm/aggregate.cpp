@@ -57,6 +57,13 @@ uint16_t pathStart(const uint8_t* cost, int disparities, uint16_t* out) {
 
 namespace {
 
+// Golden-only path restart (Params::edgeReset): the steps since the path last crossed a
+// strong edge, 0 at the step across it, saturating at `length` (also at a path start); the
+// pixel restarts (Lr = C) while the count is below `length`.
+inline int stepsSinceEdge(const EdgeReset& reset, int dI, int previous) {
+  return dI >= reset.threshold ? 0 : std::min(reset.length, previous + 1);
+}
+
 // Lr of one path for the last few rows (a ring of kRows rows), each pixel's D
 // values framed by two sentinels. step() may be called for different pixels
 // from different threads as long as the pixels it reads are already written.
@@ -65,11 +72,12 @@ class PathState {
   static constexpr int kRows = 4;
 
   PathState(int width, int disparities, const cv::Mat& gray, int pathIndex, int p1, const P2Table& p2Table,
-            bool mgm = false)
+            bool mgm = false, const EdgeReset& edgeReset = EdgeReset{})
       : width_(width), disparities_(disparities), gray_(gray), dir_(kPathDirections[pathIndex]),
         perpendicular_(kMgmPerpendicular[pathIndex]), mgm_(mgm), p1_(p1), p2Table_(p2Table),
-        stride_(disparities + 2), rows_(size_t(kRows) * width * stride_, kPathSentinel),
-        mins_(size_t(kRows) * width, 0) {}
+        reset_(edgeReset.on(pathIndex) ? edgeReset : EdgeReset{0}), stride_(disparities + 2),
+        rows_(size_t(kRows) * width * stride_, kPathSentinel), mins_(size_t(kRows) * width, 0),
+        since_(reset_.threshold ? size_t(kRows) * width : 0, 0) {}
 
   // Computes Lr(x, y, .) from C(x, y, .) and returns it (valid for kRows - 1 more rows).
   const uint16_t* step(int x, int y, const uint8_t* cost) {
@@ -77,10 +85,18 @@ class PathState {
     uint16_t* out = lr(x, y);
     const int px = x + dir_.dx, py = y + dir_.dy;
     if (px < 0 || px >= width_ || py < 0) {
+      if (reset_.threshold) since(x, y) = uint8_t(reset_.length);
       minLr(x, y) = pathStart(cost, disparities_, out);
       return out;
     }
     const int dI = std::abs(int(gray_.at<uint8_t>(y, x)) - int(gray_.at<uint8_t>(py, px)));
+    if (reset_.threshold) {
+      since(x, y) = uint8_t(stepsSinceEdge(reset_, dI, since(px, py)));
+      if (since(x, y) < reset_.length) {
+        minLr(x, y) = pathStart(cost, disparities_, out);
+        return out;
+      }
+    }
     minLr(x, y) = pathStepInline(cost, lr(px, py), minLr(px, py), disparities_, p1_, p2Table_[dI], out);
     return out;
   }
@@ -120,6 +136,7 @@ class PathState {
 
   uint16_t* lr(int x, int y) { return rows_.data() + (size_t(y % kRows) * width_ + x) * stride_ + 1; }
   uint16_t& minLr(int x, int y) { return mins_[size_t(y % kRows) * width_ + x]; }
+  uint8_t& since(int x, int y) { return since_[size_t(y % kRows) * width_ + x]; }
 
   const int width_, disparities_;
   const cv::Mat& gray_;
@@ -127,14 +144,17 @@ class PathState {
   const bool mgm_;
   const int p1_;
   const P2Table& p2Table_;
+  const EdgeReset reset_;  // threshold 0 when this path does not restart
   const int stride_;
   std::vector<uint16_t> rows_, mins_;
+  std::vector<uint8_t> since_;  // stepsSinceEdge per pixel (with a restart only)
 };
 
 }  // namespace
 
 void addRightPath(const uint8_t* cost, const uint8_t* grayRow, int width, int nd, int p1, const P2Table& table,
-                  int weight, uint16_t* sum, int block) {
+                  int weight, uint16_t* sum, int block, const EdgeReset& edgeReset) {
+  const bool restarts = edgeReset.on(kPathCount);
   std::vector<uint16_t> buffers(2 * size_t(nd + 2), kPathSentinel);
   // Blocks [jB, (j+1)B) for j = 0 .. m-2 and the last block [(m-1)B, W), m =
   // max(1, W / B): the last takes the remainder (B .. 2B-1 pixels, or the
@@ -153,11 +173,14 @@ void addRightPath(const uint8_t* cost, const uint8_t* grayRow, int width, int nd
     uint16_t* prev = buffers.data() + 1;
     uint16_t* cur = buffers.data() + nd + 3;
     uint16_t minPrev = 0;
+    int since = edgeReset.length;
     for (int x = start; x >= x0; --x) {
       const uint8_t* c = cost + size_t(x) * nd;
-      const uint16_t minCur =
-          x == start ? pathStart(c, nd, cur)
-                     : pathStepInline(c, prev, minPrev, nd, p1, table[std::abs(int(grayRow[x]) - int(grayRow[x + 1]))], cur);
+      const int dI = x == start ? 0 : std::abs(int(grayRow[x]) - int(grayRow[x + 1]));
+      if (restarts && x != start) since = stepsSinceEdge(edgeReset, dI, since);
+      const uint16_t minCur = x == start || (restarts && since < edgeReset.length)
+                                  ? pathStart(c, nd, cur)
+                                  : pathStepInline(c, prev, minPrev, nd, p1, table[dI], cur);
       if (x < x1) {
         uint16_t* s = sum + size_t(x) * nd;
         for (int d = 0; d < nd; ++d) s[d] = uint16_t(s[d] + weight * cur[d]);
@@ -178,7 +201,7 @@ void waitUntil(const std::atomic<int>& counter, int value) {
 
 void aggregateRows(int width, int height, int nd, const cv::Mat& gray, int p1, int p2, P2Mode p2Mode,
                    PathWeighting weights, const CostRowFn& costRow, const SumRowFn& sink, int rightPathWeight,
-                   bool mgm, int rightPathBlock, const int* p1PathPercent) {
+                   bool mgm, int rightPathBlock, const int* p1PathPercent, const EdgeReset& edgeReset) {
   const int* w = pathWeights(weights);
   // Each path's P1 and P2 table (the golden-only per-path P1; one P1 for all in the core).
   int pathP1[kPathCount + 1];
@@ -189,7 +212,8 @@ void aggregateRows(int width, int height, int nd, const cv::Mat& gray, int p1, i
     tables.push_back(makeP2Table(pathP1[i], p2, p2Mode));
   }
   std::vector<PathState> paths;
-  for (int i = 0; i < kPathCount; ++i) paths.emplace_back(width, nd, gray, i, pathP1[i], tables[size_t(i)], mgm);
+  for (int i = 0; i < kPathCount; ++i)
+    paths.emplace_back(width, nd, gray, i, pathP1[i], tables[size_t(i)], mgm, edgeReset);
   // Two workers split every row at column `split`: the left worker computes
   // C and all four paths of columns 0 .. split-1, the right worker those of
   // split .. W-1 and then hands the whole row of S on. The left worker runs
@@ -235,7 +259,8 @@ void aggregateRows(int width, int height, int nd, const cv::Mat& gray, int p1, i
                          rightStarted.store(y + 1, std::memory_order_release);
                        if (rightPathWeight)  // the whole row of C is in its slot now
                          addRightPath(costRing.data() + rowSize * (y % kSlots), gray.ptr<uint8_t>(y), width, nd,
-                                      pathP1[kPathCount], tables[kPathCount], rightPathWeight, sumRing.data() + rowSize * (y % kSlots), rightPathBlock);
+                                      pathP1[kPathCount], tables[kPathCount], rightPathWeight, sumRing.data() + rowSize * (y % kSlots), rightPathBlock,
+                                      edgeReset);
                        sink(1, y, sumRing.data() + rowSize * (y % kSlots));
                        rightRows.store(y + 1, std::memory_order_release);
                      }
@@ -253,7 +278,7 @@ PathVolume pathCost(const CostVolume& cost, const cv::Mat& grayLeft, int pathInd
 
 PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1, int p2, P2Mode p2Mode,
                          PathWeighting weights, int rightPathWeight, bool mgm, int rightPathBlock,
-                         const int* p1PathPercent) {
+                         const int* p1PathPercent, const EdgeReset& edgeReset) {
   PathVolume sum(cost.width, cost.height, cost.depth);
   const size_t rowSize = size_t(cost.width) * cost.depth;
   aggregateRows(
@@ -262,7 +287,7 @@ PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1
         std::copy(cost.at(x0, y), cost.at(x0, y) + size_t(x1 - x0) * cost.depth, row + size_t(x0) * cost.depth);
       },
       [&](int, int y, const uint16_t* row) { std::copy_n(row, rowSize, sum.at(0, y)); }, rightPathWeight, mgm,
-      rightPathBlock, p1PathPercent);
+      rightPathBlock, p1PathPercent, edgeReset);
   return sum;
 }
 

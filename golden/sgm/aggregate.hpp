@@ -54,11 +54,12 @@ PathVolume pathCost(const CostVolume& cost, const cv::Mat& grayLeft, int pathInd
 // RIGHT_BLOCK), 0 over the whole row (golden-only). mgm (golden-only) replaces each
 // path's recursion by the raster-order MGM one (kMgmPerpendicular). p1PathPercent
 // (golden-only; nullptr = 100 each): P1 of each path (0, 45, 90, 135 degrees, the fifth)
-// in percent of p1, each path's P2r from its own P1.
+// in percent of p1, each path's P2r from its own P1. edgeReset (golden-only; threshold 0 =
+// off): the paths it marks start again (Lr = C) within `length` steps of a strong edge.
 PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1, int p2,
                          P2Mode p2Mode = P2Mode::kKnee, PathWeighting weights = PathWeighting::k3232,
                          int rightPathWeight = 0, bool mgm = false, int rightPathBlock = 0,
-                         const int* p1PathPercent = nullptr);
+                         const int* p1PathPercent = nullptr, const EdgeReset& edgeReset = EdgeReset{});
 
 // The streaming form used by the pipeline: rows in order, never more than a
 // few rows of C and S in memory, the work of each row split over two workers.
@@ -71,7 +72,7 @@ using SumRowFn = std::function<void(int worker, int y, const uint16_t* row)>;
 void aggregateRows(int width, int height, int disparities, const cv::Mat& grayLeft, int p1, int p2,
                    P2Mode p2Mode, PathWeighting weights, const CostRowFn& costRow, const SumRowFn& sink,
                    int rightPathWeight = 0, bool mgm = false, int rightPathBlock = 0,
-                   const int* p1PathPercent = nullptr);
+                   const int* p1PathPercent = nullptr, const EdgeReset& edgeReset = EdgeReset{});
 
 // The fifth path over one row: Lr for r = (1, 0), from x = W-1 down to 0,
 // added to sum (W x D) with the given weight. cost is the row of C, grayRow the row of
@@ -80,7 +81,9 @@ void aggregateRows(int width, int height, int disparities, const cv::Mat& grayLe
 // one block to its right (at x0 + 2B - 1; the last block's at W - 1), the next block
 // being its warm-up: a bounded look-ahead instead of the whole row (in hardware a few
 // blocks of C per row lane instead of the row, sgm_right_path). block = 0: the whole row.
+// edgeReset.on(kPathCount): each pass starts again within edgeReset.length steps of a strong edge.
 void addRightPath(const uint8_t* cost, const uint8_t* grayRow, int width, int disparities, int p1,
-                  const P2Table& p2Table, int weight, uint16_t* sum, int block = 0);
+                  const P2Table& p2Table, int weight, uint16_t* sum, int block = 0,
+                  const EdgeReset& edgeReset = EdgeReset{});
 
 }  // namespace sgm

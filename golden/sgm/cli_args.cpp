@@ -80,7 +80,8 @@ const std::set<std::string>& CliArgs::pipelineOptions() {
                                               "snap", "median", "census", "p2-mode", "weights", "preset", "uniqueness",
                                               "ad-weight", "ad-cap", "right-path", "right-block",
                                               // golden-only experiments (not in the RTL)
-                                              "subpixel-fit", "mgm", "median-gate", "p1-paths", "snap-edge"};
+                                              "subpixel-fit", "mgm", "median-gate", "p1-paths", "snap-edge",
+                                              "edge-reset", "edge-reset-len", "edge-reset-paths"};
   return names;
 }
 
@@ -119,25 +120,31 @@ Params CliArgs::pipelineParams(Params p) const {
   else
     throw Error("option --subpixel-fit expects parabola or linear, got '" + fit + "'");
   p.mgm = onOff("mgm", p.mgm);
-  if (has("p1-paths")) {  // five percentages: 0, 45, 90, 135 degrees, the fifth path
-    const std::string list = text("p1-paths", "");
-    std::array<int, kPathCount + 1> percent{};
-    size_t at = 0;
-    for (size_t i = 0; i < percent.size(); ++i) {
-      const size_t comma = i + 1 < percent.size() ? list.find(',', at) : list.size();
-      const std::string item = comma == std::string::npos ? std::string() : list.substr(at, comma - at);
-      char* end = nullptr;
-      const long v = std::strtol(item.c_str(), &end, 10);
-      if (item.empty() || *end != '\0' || v < kMinP1PathPercent || v > kMaxP1PathPercent)
-        throw Error("option --p1-paths expects five percentages " + std::to_string(kMinP1PathPercent) + ".." +
-                    std::to_string(kMaxP1PathPercent) + " (0, 45, 90, 135 degrees, the fifth path), got '" + list + "'");
-      percent[i] = int(v);
-      at = comma + 1;
-    }
-    p.p1PathPercent = percent;
-  }
+  if (has("p1-paths"))
+    p.p1PathPercent = perPath("p1-paths", kMinP1PathPercent, kMaxP1PathPercent, "five percentages");
+  p.edgeReset.threshold = int(integer("edge-reset", p.edgeReset.threshold, 0, 255));
+  p.edgeReset.length = int(integer("edge-reset-len", p.edgeReset.length, 1, kMaxEdgeResetLength));
+  if (has("edge-reset-paths")) p.edgeReset.paths = perPath("edge-reset-paths", 0, 1, "five flags");
   p.validate();
   return p;
+}
+
+std::array<int, kPathCount + 1> CliArgs::perPath(const std::string& name, int min, int max, const std::string& what) const {
+  const std::string list = text(name, "");
+  std::array<int, kPathCount + 1> values{};
+  size_t at = 0;
+  for (size_t i = 0; i < values.size(); ++i) {
+    const size_t comma = i + 1 < values.size() ? list.find(',', at) : list.size();
+    const std::string item = comma == std::string::npos ? std::string() : list.substr(at, comma - at);
+    char* end = nullptr;
+    const long v = std::strtol(item.c_str(), &end, 10);
+    if (item.empty() || *end != '\0' || v < min || v > max)
+      throw Error("option --" + name + " expects " + what + " " + std::to_string(min) + ".." + std::to_string(max) +
+                  " (0, 45, 90, 135 degrees, the fifth path), got '" + list + "'");
+    values[i] = int(v);
+    at = comma + 1;
+  }
+  return values;
 }
 
 std::string oneLine(const std::string& text) {

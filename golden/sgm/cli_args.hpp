@@ -4,6 +4,7 @@
 
 #include "sgm/params.hpp"
 
+#include <array>
 #include <exception>
 #include <map>
 #include <set>
@@ -28,7 +29,8 @@ class CliArgs {
   // Reads --d, --p1, --p2, --mode, --subpixel, --lr, --uniqueness, --ad-weight W, --ad-cap T,
   // --fill, --snap, --median, --census, --p2-mode, --weights and --preset into params, and the
   // golden-only experiments (not in the RTL, off by default): --right-path W, --right-block B,
-  // --subpixel-fit parabola|linear, --mgm on|off. --preset (default | four-path | paper) replaces
+  // --subpixel-fit parabola|linear, --mgm on|off, --median-gate T, --p1-paths A,B,C,D,E,
+  // --snap-edge T, --edge-reset T, --edge-reset-len R, --edge-reset-paths A,B,C,D,E. --preset (default | four-path | paper) replaces
   // base (D excepted) before the other options apply, so they override it; --mode also
   // brings that mode's default P1 / P2' (defaultParams), which --p1 / --p2 override,
   // and a mode without a census switches the AD term off.
@@ -36,6 +38,10 @@ class CliArgs {
   Params pipelineParams(Params base = Params{}) const;
 
  private:
+  // Option `name` as five comma-separated integers min .. max, one per path (0, 45, 90,
+  // 135 degrees, the fifth path); `what` names them in the error ("five percentages").
+  std::array<int, kPathCount + 1> perPath(const std::string& name, int min, int max, const std::string& what) const;
+
   std::vector<std::string> positional_;
   std::map<std::string, std::string> values_;
   std::set<std::string> flags_;

@@ -78,7 +78,8 @@ bool Params::operator==(const Params& o) const {
          census == o.census && p2Mode == o.p2Mode && weights == o.weights && rightPathWeight == o.rightPathWeight &&
          rightPathBlock == o.rightPathBlock &&
          uniqueness == o.uniqueness && adWeight == o.adWeight && adCap == o.adCap && linearSubpixel == o.linearSubpixel &&
-         mgm == o.mgm && medianGate == o.medianGate && p1PathPercent == o.p1PathPercent && snapEdge == o.snapEdge;
+         mgm == o.mgm && medianGate == o.medianGate && p1PathPercent == o.p1PathPercent && snapEdge == o.snapEdge &&
+         edgeReset == o.edgeReset;
 }
 
 const std::vector<std::string>& presetNames() {
@@ -168,6 +169,14 @@ void Params::validate() const {
                   std::to_string(kMaxP1PathPercent) + " % and 0..P2'=" + std::to_string(p2));
   if (medianGate < 0 || medianGate > 255) throw Error("median gate " + std::to_string(medianGate) + " out of range 0..255");
   if (snapEdge < 0 || snapEdge > 255) throw Error("snap edge " + std::to_string(snapEdge) + " out of range 0..255");
+  if (edgeReset.threshold < 0 || edgeReset.threshold > 255)
+    throw Error("edge reset " + std::to_string(edgeReset.threshold) + " out of range 0..255");
+  if (edgeReset.length < 1 || edgeReset.length > kMaxEdgeResetLength)
+    throw Error("edge reset length " + std::to_string(edgeReset.length) + " out of range 1.." +
+                std::to_string(kMaxEdgeResetLength));
+  for (const int on : edgeReset.paths)
+    if (on != 0 && on != 1) throw Error("edge reset paths expect 0 or 1 each, got " + std::to_string(on));
+  if (edgeReset.threshold && mgm) throw Error("the edge reset (--edge-reset) does not combine with --mgm");
   if (uniqueness < 0 || uniqueness > 99) throw Error("uniqueness " + std::to_string(uniqueness) + " out of range 0..99");
   if (adWeight < 0 || adWeight > kMaxAdWeight || adCap < 0 || adCap > kMaxAdCap)
     throw Error("AD term weight " + std::to_string(adWeight) + " / cap " + std::to_string(adCap) +

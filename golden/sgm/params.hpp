@@ -82,8 +82,24 @@ constexpr int kMaxRightPathWeight = 8;            // fifth path's weight (Params
 constexpr int kMaxRightPathBlock = 4096;          // fifth path's block (Params::rightPathBlock; the core: sgm_top RIGHT_BLOCK)
 constexpr int kMaxAdWeight = 15;                  // AD term weight (Params::adWeight, 4 bits in the RTL)
 constexpr int kMinP1PathPercent = 25, kMaxP1PathPercent = 400;  // golden-only per-path P1 (Params::p1PathPercent)
+constexpr int kMaxEdgeResetLength = 15;           // golden-only path restart (Params::edgeReset.length)
 constexpr int kMaxAdCap = 255;                    // AD term truncation (Params::adCap, 8 bits)
 constexpr int kAdShift = 3;                       // AD term = adWeight * min(AD, adCap) >> kAdShift                 // keeps kPathWeightSum * (Cmax + P2') < 2^16
+
+// Golden-only path restart at strong edges (issue 15, docs/algorithm.md section 12): a path
+// starts again (Lr = C) at every pixel whose last `length` steps along the path, the step
+// into it included, cross a gray step |I(q) - I(q - r)| >= threshold, for the paths marked
+// in `paths` (0, 45, 90, 135 degrees, the fifth path). Within a census window of an edge the
+// costs favour the side with the stronger texture (the foreground fattens); restarting the
+// paths there keeps them from carrying that disparity on into the untextured region beyond.
+struct EdgeReset {
+  int threshold = 0;  // gray step of a strong edge; 0 = off
+  int length = 5;     // steps restarted from the edge on, 1 .. kMaxEdgeResetLength
+  std::array<int, kPathCount + 1> paths = {1, 1, 1, 1, 1};  // 1 = that path restarts, 0 = it does not
+  bool on(int path) const { return threshold > 0 && paths[size_t(path)] != 0; }
+  bool operator==(const EdgeReset& o) const { return threshold == o.threshold && length == o.length && paths == o.paths; }
+  bool operator!=(const EdgeReset& o) const { return !(*this == o); }
+};
 
 // The defaults (issue 15, docs/accuracy-pool.md: chosen on half A of the scene pool,
 // reported on half B): the four paths with a fifth from the right in blocks of 64,
@@ -121,12 +137,13 @@ struct Params {
   // P1 per path in percent of p1 (0, 45, 90, 135 degrees, the fifth path); each path's P2r = max(its P1, ...).
   std::array<int, kPathCount + 1> p1PathPercent = {100, 100, 100, 100, 100};
   int pathP1(int path) const { return p1 * p1PathPercent[size_t(path)] / 100; }
+  EdgeReset edgeReset;          // path restart at strong edges; threshold 0 = off
   // Golden-only options: the fifth path over the whole row (in blocks it is in the
   // core, sgm_top RIGHT_BLOCK), the equiangular sub-pixel fit, MGM, the gated median,
-  // per-path P1, the gated edge snap.
+  // per-path P1, the gated edge snap, the path restart at strong edges.
   bool experimental() const {
     return (rightPathWeight && !rightPathBlock) || linearSubpixel || mgm || medianGate ||
-           p1PathPercent != Params{}.p1PathPercent || snapEdge;
+           p1PathPercent != Params{}.p1PathPercent || snapEdge || edgeReset.threshold;
   }
 
   bool operator==(const Params& o) const;
