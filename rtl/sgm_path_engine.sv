@@ -49,16 +49,6 @@
 // group, K (W - 2 - (K - 1) SKEW) + 1 slots after its writes: W >= MIN_WIDTH
 // = K SKEW + 1 (9 .. 11 at K = 1, 19 at D = 64 and K = 6; docs/reschedule.md).
 //
-// Path restart at strong edges (docs/algorithm.md section 12, Params::edgeReset):
-// path r (0, 45, 90, 135 degrees; reset_paths_i[r]) starts again (the sub-PE's
-// start_i, Lr = C) at every pixel whose last R = reset_len_i steps along the
-// path, the step into it included, cross a gray step dI >= T = reset_t_i (T = 0:
-// off). Each path keeps the steps since its last strong edge, s(p) = 0 where
-// dI >= T, else min(R, s(p - r) + 1), R at a path start; the pixel restarts
-// while s(p) < R. The 0 degree count runs beside the ring (K slots per lane);
-// the 45/90/135 degree counts are stored beside min Lr in the min memories
-// (CNTW more bits per word) and read with them.
-//
 // Parameters: D disparities, CW cost width, LW path-cost width (Cmax + P2'max
 // must fit), PW penalty width, MAX_WIDTH, XW column bits, YW row bits, GRAY_LEAD
 // (0 or 1, see t), COL_LEAD (>= 3: how many slots col_i leads cost_i), LANES
@@ -80,7 +70,6 @@ module sgm_path_engine #(
   parameter int YW        = 11,
   parameter int RIGHT_PATH = 0,
   localparam int L5W      = LW + 4,
-  localparam int CNTW     = 4,  // the restart's step count (R <= 15)
   localparam int SW       = LW + 4 + (RIGHT_PATH != 0 ? 1 : 0),
   // 1: P2r registered behind the table (the grays lead by one slot); 0: P2r
   // straight from the table's read port into the sub-PEs (grays with the costs).
@@ -101,11 +90,6 @@ module sgm_path_engine #(
   input  wire  [XW-1:0]       width_i,
   input  wire  [PW-1:0]       p1_i,
   input  wire                 weights_eq_i,  // S weights: 0 = 3,2,3,2, 1 = equal (the paper's sum)
-  // Path restart at strong edges: gray step T (0 = off), steps R (1 .. 15), the paths it
-  // applies to ([r]: 0, 45, 90, 135 degrees).
-  input  wire  [7:0]          reset_t_i,
-  input  wire  [CNTW-1:0]     reset_len_i,
-  input  wire  [3:0]          reset_paths_i,
   // P2 table fill (sgm_p2_lut): start with p1_i / p2_i / p2_mode_i, ready when filled.
   input  wire                 lut_start_i,
   input  wire  [PW-1:0]       p2_i,
@@ -158,15 +142,6 @@ module sgm_path_engine #(
     .p2r_o   (p2r_a)
   );
 
-  // The strong-edge flags of the four steps, aligned with P2r: registered like the
-  // table's read (strong_a), then like P2r (strong_b at B).
-  logic [3:0] strong_a, strong_b;
-  always_ff @(posedge clk_i) begin
-    if (en_i)
-      for (int r = 0; r < 4; r++)
-        strong_a[r] <= reset_t_i != 8'd0 && reset_paths_i[r] && dI[r*8 +: 8] >= reset_t_i;
-  end
-
   logic [YW-1:0]      row_a;  // row_i, GRAY_LEAD slots later (see g_p2r_reg)
   logic [D*CW-1:0]    cost_b;
   logic [YW-1:0]      row_b;
@@ -182,12 +157,10 @@ module sgm_path_engine #(
     always_ff @(posedge clk_i) begin
       if (en_i) p2r_b <= p2r_a;
       if (en_i) row_a <= row_i;
-      if (en_i) strong_b <= strong_a;
     end
   end else begin : g_p2r_ram
     assign p2r_b = p2r_a;
     assign row_a = row_i;
-    assign strong_b = strong_a;
   end
 
   // Slot valid flags (B .. C, then s_o): the only registers with a reset.
@@ -216,25 +189,6 @@ module sgm_path_engine #(
   wire at_right = col_b == width_i - 1'b1;
   wire at_top   = row_b == '0;
 
-  // Steps since the last strong edge of the path, saturating at R (a path start: R).
-  function automatic logic [CNTW-1:0] steps_since(input logic path_start, input logic edge_step,
-                                                   input logic [CNTW-1:0] previous, input logic [CNTW-1:0] len);
-    if (path_start) steps_since = len;
-    else if (edge_step) steps_since = '0;
-    else steps_since = previous >= len ? len : previous + 1'b1;
-  endfunction
-
-  // The 0 degree count: the lane's previous pixel is K slots back.
-  logic [CNTW-1:0] cnt0_b, cnt0_prev;
-  assign cnt0_b = steps_since(at_left, strong_b[0], cnt0_prev, reset_len_i);
-  sgm_delay #(.WIDTH(CNTW), .DEPTH(K)) u_cnt0 (
-    .clk_i (clk_i),
-    .en_i  (en_i),
-    .d_i   (cnt0_b),
-    .q_o   (cnt0_prev)
-  );
-  wire restart0 = reset_t_i != 8'd0 && reset_paths_i[0] && cnt0_b < reset_len_i;
-
   // The 0 degree recursion (sgm_path_ring, K lanes): its sub-PEs and minimum
   // feed back through the ring's registers (lr0_c: the pixel's Lr at C).
   logic [D*LW-1:0] lr0_c;
@@ -246,7 +200,7 @@ module sgm_path_engine #(
     .p1_i    (p1_i),
     .cost_i  (cost_b),
     .p2r_i   (p2r_b[0 +: PW]),
-    .start_i (at_left | restart0),
+    .start_i (at_left),
     .lr_o    (lr0_c),
     .min_o   (min0_c)
   );
@@ -257,21 +211,19 @@ module sgm_path_engine #(
   logic [D*CW-1:0] cost_p;
   logic [3*PW-1:0] p2r_p;
   logic [3:1]      start;
-  logic [3:1]      strong_p;
   logic [XW-1:0]   col_p;
   logic [YW-1:0]   row_p;
   logic            last_p;
   if (K > 1) begin : g_carry
-    sgm_delay_ram #(.WIDTH(D*CW + 3*PW + 6 + XW + YW + 1), .DEPTH(K - 1)) u_carry (
+    sgm_delay_ram #(.WIDTH(D*CW + 3*PW + 3 + XW + YW + 1), .DEPTH(K - 1)) u_carry (
       .clk_i  (clk_i),
       .rst_ni (rst_ni),
       .en_i   (en_i),
-      .d_i    ({cost_b, p2r_b[PW +: 3*PW], start_b, strong_b[3:1], col_b, row_b, at_right}),
-      .q_o    ({cost_p, p2r_p, start, strong_p, col_p, row_p, last_p})
+      .d_i    ({cost_b, p2r_b[PW +: 3*PW], start_b, col_b, row_b, at_right}),
+      .q_o    ({cost_p, p2r_p, start, col_p, row_p, last_p})
     );
   end else begin : g_no_carry
-    assign {cost_p, p2r_p, start, strong_p, col_p, row_p, last_p} =
-           {cost_b, p2r_b[PW +: 3*PW], start_b, strong_b[3:1], col_b, row_b, at_right};
+    assign {cost_p, p2r_p, start, col_p, row_p, last_p} = {cost_b, p2r_b[PW +: 3*PW], start_b, col_b, row_b, at_right};
   end
 
   // ------------------------------------------------------ previous-row reads
@@ -308,16 +260,13 @@ module sgm_path_engine #(
   logic [LWORD-1:0] mem45  [0:MAX_WIDTH-1];
   logic [LWORD-1:0] mem90  [0:MAX_WIDTH-1];
   logic [LWORD-1:0] mem135 [0:MAX_WIDTH-1];
-  // min Lr and, above it, the restart's step count of each word: {count, min}.
-  localparam int MW = LW + CNTW;
-  logic [MW-1:0]    min45  [0:MAX_WIDTH-1];
-  logic [MW-1:0]    min90  [0:MAX_WIDTH-1];
-  logic [MW-1:0]    min135 [0:MAX_WIDTH-1];
+  logic [LW-1:0]    min45  [0:MAX_WIDTH-1];
+  logic [LW-1:0]    min90  [0:MAX_WIDTH-1];
+  logic [LW-1:0]    min135 [0:MAX_WIDTH-1];
 
   // Read at B' - 4, the memories' data at B' - 3, their output register at B' - 2.
   logic [3*LWORD-1:0] rd_m, rd_q;   // {135, 90, 45}
-  logic [3*MW-1:0]    mrd_m, mrd_q, mrd_t;
-  logic [3*CNTW-1:0]  cnt_prev;     // the previous pixel's counts at B'
+  logic [3*LW-1:0]    mrd_m, mrd_q, mrd_t;
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       rd_m  <= {mem135[addr135], mem90[addr90], mem45[addr45]};
@@ -325,23 +274,14 @@ module sgm_path_engine #(
       rd_q  <= rd_m;
       mrd_q <= mrd_m;
       mrd_t <= mrd_q;  // min Lr at part (b), one slot after part (a)
-      for (int r = 0; r < 3; r++) cnt_prev[r*CNTW +: CNTW] <= mrd_t[r*MW + LW +: CNTW];
     end
-  end
-
-  // The 45/90/135 degree counts and restarts at B'.
-  logic [3*CNTW-1:0] cnt_p;
-  logic [3:1]        restart;
-  for (genvar r = 1; r < 4; r++) begin : g_count
-    assign cnt_p[(r-1)*CNTW +: CNTW] = steps_since(start[r], strong_p[r], cnt_prev[(r-1)*CNTW +: CNTW], reset_len_i);
-    assign restart[r] = reset_t_i != 8'd0 && reset_paths_i[r] && cnt_p[(r-1)*CNTW +: CNTW] < reset_len_i;
   end
 
   // ------------------------------------------------------------------ slot B'
   logic [3*D*LW-1:0] lr_b;  // path r (1 .. 3), disparity d at lr_b[((r-1)*D+d)*LW +: LW]
   for (genvar r = 1; r < 4; r++) begin : g_path
     wire [LWORD-1:0] pw      = rd_q[(r-1)*LWORD +: LWORD];
-    wire [LW-1:0]    min_prv = mrd_t[(r-1)*MW +: LW];
+    wire [LW-1:0]    min_prv = mrd_t[(r-1)*LW +: LW];
     for (genvar d = 0; d < D; d++) begin : g_pe
       sgm_path_pe #(.CW(CW), .LW(LW), .PW(PW), .CUTS(3)) u_pe (
         .clk_i      (clk_i),
@@ -355,21 +295,19 @@ module sgm_path_engine #(
         .min_prev_i (min_prv),
         .cost_i     (cost_p[d*CW +: CW]),
         .p2r_i      (p2r_p[(r-1)*PW +: PW]),
-        .start_i    (start[r] | restart[r]),
+        .start_i    (start[r]),
         .lr_o       (lr_b[((r-1)*D+d)*LW +: LW])
       );
     end
   end
 
   logic [3*D*LW-1:0]  lr_c;  // 45, 90, 135 degrees
-  logic [3*CNTW-1:0]  cnt_c;
   logic [XW-1:0]      col_c;
   logic [YW-1:0]      row_c;
   logic               last_c;
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       lr_c    <= lr_b;
-      cnt_c   <= cnt_p;
       col_c   <= col_p;
       row_c   <= row_p;
       last_c  <= last_p;
@@ -386,16 +324,15 @@ module sgm_path_engine #(
   // K - 4 slots after pixel x's C).
   logic [AW-1:0]    col_w45;
   logic [LWORD-1:0] lr_w45;
-  logic [CNTW-1:0]  cnt_w45;
   if (W45_DELAY > 0) begin : g_w45_wait
-    sgm_delay #(.WIDTH(AW + LWORD + CNTW), .DEPTH(W45_DELAY)) u_w45 (
+    sgm_delay #(.WIDTH(AW + LWORD), .DEPTH(W45_DELAY)) u_w45 (
       .clk_i (clk_i),
       .en_i  (en_i),
-      .d_i   ({AW'(col_c), lr_all[1*D*LW +: D*LW], cnt_c[0 +: CNTW]}),
-      .q_o   ({col_w45, lr_w45, cnt_w45})
+      .d_i   ({AW'(col_c), lr_all[1*D*LW +: D*LW]}),
+      .q_o   ({col_w45, lr_w45})
     );
   end else begin : g_w45_now
-    assign {col_w45, lr_w45, cnt_w45} = {AW'(col_c), lr_all[1*D*LW +: D*LW], cnt_c[0 +: CNTW]};
+    assign {col_w45, lr_w45} = {AW'(col_c), lr_all[1*D*LW +: D*LW]};
   end
 
   always_ff @(posedge clk_i) begin
@@ -419,19 +356,18 @@ module sgm_path_engine #(
       .min_o    (min_m[(r-1)*LW +: LW])
     );
   end
-  logic [AW-1:0]   col_m, col_m45;
-  logic [3*CNTW-1:0] cnt_m;  // 45, 90, 135: the counts beside their minima
-  sgm_delay #(.WIDTH(2*AW + 3*CNTW), .DEPTH(MIN_LATENCY)) u_col_m (
+  logic [AW-1:0] col_m, col_m45;
+  sgm_delay #(.WIDTH(2*AW), .DEPTH(MIN_LATENCY)) u_col_m (
     .clk_i (clk_i),
     .en_i  (en_i),
-    .d_i   ({col_wr, cnt_c[CNTW +: 2*CNTW], cnt_w45}),
-    .q_o   ({col_m, col_m45, cnt_m})
+    .d_i   (col_wr),
+    .q_o   ({col_m, col_m45})
   );
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      min45[col_m45] <= {cnt_m[0*CNTW +: CNTW], min_m[0*LW +: LW]};
-      min90[col_m]   <= {cnt_m[1*CNTW +: CNTW], min_m[1*LW +: LW]};
-      min135[col_m]  <= {cnt_m[2*CNTW +: CNTW], min_m[2*LW +: LW]};
+      min45[col_m45] <= min_m[0*LW +: LW];
+      min90[col_m]   <= min_m[1*LW +: LW];
+      min135[col_m]  <= min_m[2*LW +: LW];
     end
   end
 

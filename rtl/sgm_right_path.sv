@@ -44,13 +44,6 @@
 // or its decrement; its start address is a register too (the lane's previous
 // write address, or the one of its row's column W - 1, kept per lane).
 //
-// Path restart at strong edges (docs/algorithm.md section 12, Params::edgeReset,
-// with reset_en_i): a pass starts again (the ring's start_i, Lr = C) at every
-// step whose last R = reset_len_i steps, the step into it included, cross a gray
-// step dI >= T = reset_t_i (T = 0: off). Per lane and ring a count of the steps
-// since the last strong edge, s = 0 where dI >= T, else min(R, s + 1), R at the
-// pass start; the step restarts while s < R. dI is the P2 table's index.
-//
 // Parameters: D disparities, CW cost width, LW path-cost width (Cmax + P2'max
 // must fit), PW penalty width, BLOCK (B, a power of two >= 2), XW column bits,
 // LANES (K >= 1 row lanes, slot K t + k belongs to lane k), SIDE_W side bundle
@@ -85,11 +78,6 @@ module sgm_right_path #(
   input  wire  [XW-1:0]    width_i,
   input  wire  [PW-1:0]    p1_i,
   input  wire  [3:0]       weight_i,  // W5 (constant while a frame flows)
-  // Path restart at strong edges (constant while a frame flows): gray step T (0 = off),
-  // steps R (1 .. 15), and whether it applies to this path.
-  input  wire  [7:0]       reset_t_i,
-  input  wire  [3:0]       reset_len_i,
-  input  wire              reset_en_i,
   // P2 table fill (sgm_p2_lut, the table of the four forward paths); lut_ready_o
   // is this table's ready and lut_ready_i (the other tables filled with it: the
   // top stays wiring only, the hierarchical synthesis flows need that).
@@ -350,29 +338,13 @@ module sgm_right_path #(
     );
     assign lut_idx[r*8 +: 8] = gray1 > gray_prev ? gray1 - gray_prev : gray_prev - gray1;
 
-    // Stage 2: P2r from the table; the restart count; the ring.
+    // Stage 2: P2r from the table; the ring.
     logic [CWD-1:0] cost2;
-    logic           start2, keep2, strong2;
+    logic           start2, keep2;
     logic [RA-1:0]  addr2;
     always_ff @(posedge clk_i) begin
       if (en_i) {cost2, start2, keep2, addr2} <= {cost1, start1, keep1, addr1};
-      if (en_i) strong2 <= reset_t_i != 8'd0 && reset_en_i && lut_idx[r*8 +: 8] >= reset_t_i;
     end
-    // Steps since the pass's last strong edge (R at its start), the lane's previous
-    // step K slots back.
-    logic [3:0] since2, since_prev;
-    always_comb begin
-      if (start2) since2 = reset_len_i;
-      else if (strong2) since2 = '0;
-      else since2 = since_prev >= reset_len_i ? reset_len_i : since_prev + 1'b1;
-    end
-    sgm_delay #(.WIDTH(4), .DEPTH(K)) u_since (
-      .clk_i (clk_i),
-      .en_i  (en_i),
-      .d_i   (since2),
-      .q_o   (since_prev)
-    );
-    wire restart2 = reset_t_i != 8'd0 && reset_en_i && since2 < reset_len_i;
     logic [D*LW-1:0] lr;
     logic [LW-1:0]   unused_min;
     sgm_path_ring #(.D(D), .CW(CW), .LW(LW), .PW(PW), .LANES(K)) u_ring (
@@ -382,7 +354,7 @@ module sgm_right_path #(
       .p1_i    (p1_i),
       .cost_i  (cost2),
       .p2r_i   (p2r[r*PW +: PW]),
-      .start_i (start2 | restart2),
+      .start_i (start2),
       .lr_o    (lr),
       .min_o   (unused_min)
     );

@@ -428,9 +428,6 @@ module sgm_top #(
       .width_i     (width),
       .p1_i        (p1),
       .weight_i    (right_weight),
-      .reset_t_i   (8'd0),  // the path restart: in the module, not yet configurable (off)
-      .reset_len_i (4'd1),
-      .reset_en_i  (1'b0),
       .lut_start_i (lut_start),
       .p2_i        (p2),
       .p2_mode_i   (p2_mode),
@@ -485,9 +482,6 @@ module sgm_top #(
     .width_i     (width),
     .p1_i        (p1),
     .weights_eq_i(weights_eq),
-    .reset_t_i   (8'd0),  // the path restart: in the module, not yet configurable (off)
-    .reset_len_i (4'd1),
-    .reset_paths_i(4'd0),
     .lut_start_i (lut_start),
     .p2_i        (p2),
     .p2_mode_i   (p2_mode),

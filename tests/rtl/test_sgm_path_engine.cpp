@@ -53,7 +53,6 @@ struct Frame {
   int p1 = 20, p2 = 200;
   sgm::P2Mode p2Mode = sgm::P2Mode::kKnee;             // run-time P2 form
   sgm::PathWeighting weights = sgm::PathWeighting::k3232;  // run-time path weights
-  sgm::EdgeReset edgeReset;  // run-time path restart at strong edges (threshold 0: off)
 };
 
 cv::Mat randomImage(int w, int h, std::mt19937& rng) {
@@ -85,8 +84,7 @@ class PathEngine {
   // Streams one frame and checks every S vector; returns the mismatch text or "".
   std::string run(const Frame& f) {
     const int w = f.cost.width, h = f.cost.height;
-    const sgm::PathVolume expected =
-        sgm::aggregateCost(f.cost, f.gray, f.p1, f.p2, f.p2Mode, f.weights, 0, false, 0, nullptr, f.edgeReset);
+    const sgm::PathVolume expected = sgm::aggregateCost(f.cost, f.gray, f.p1, f.p2, f.p2Mode, f.weights);
     // Per-frame configuration and the P2 table fill, pipeline held.
     top_->en_i = 0;
     top_->width_i = w;
@@ -94,10 +92,6 @@ class PathEngine {
     top_->p2_i = f.p2;
     top_->p2_mode_i = f.p2Mode == sgm::P2Mode::kPaper;
     top_->weights_eq_i = f.weights == sgm::PathWeighting::kEqual;
-    top_->reset_t_i = f.edgeReset.threshold;
-    top_->reset_len_i = f.edgeReset.length;
-    top_->reset_paths_i = 0;
-    for (int r = 0; r < 4; ++r) top_->reset_paths_i |= (f.edgeReset.paths[size_t(r)] ? 1u : 0u) << r;
     top_->lut_start_i = 1;
     top_.tick();
     top_->lut_start_i = 0;
@@ -151,8 +145,7 @@ class PathEngine {
             std::ostringstream msg;
             msg << "stage sgm_path_engine: first mismatch at (x=" << x << ", y=" << y << ") d=" << d
                 << ": expected S=" << s[d] << ", got " << got << " (" << w << "x" << h << ", P1=" << f.p1
-                << ", P2'=" << f.p2 << ", " << kLanes << " lanes, restart T=" << f.edgeReset.threshold
-                << " R=" << f.edgeReset.length << ")";
+                << ", P2'=" << f.p2 << ", " << kLanes << " lanes)";
             failure = msg.str();
             break;
           }
@@ -183,21 +176,6 @@ TEST(SgmPathEngine, RandomCostsSeveralSizesBackToBack) {
     f.weights = k / 2 % 2 ? sgm::PathWeighting::kEqual : sgm::PathWeighting::k3232;  // changing per frame
     ++k;
     EXPECT_EQ(engine.run(f), "") << sgm::p2ModeName(f.p2Mode) << " " << sgm::pathWeightingName(f.weights);
-  }
-}
-
-// The path restart at strong edges (Params::edgeReset): random thresholds, lengths 1 .. 15
-// and path masks, frame after frame (the counts of one frame must not leak into the next).
-TEST(SgmPathEngine, RestartAtStrongEdges) {
-  PathEngine engine("sgm_path_engine_restart", 13, 0.25);
-  std::mt19937 rng(5);
-  for (int k = 0; k < 8; ++k) {
-    const int p2 = 60 + int(rng() % 196), p1 = int(rng() % (p2 + 1));
-    Frame f = syntheticFrame(std::max(24 + int(rng() % 60), kMinWidth), 9 + int(rng() % 8), p1, p2, rng);
-    f.edgeReset.threshold = k == 7 ? 0 : 1 + int(rng() % 40);  // the blurred image's steps are mostly small
-    f.edgeReset.length = 1 + int(rng() % sgm::kMaxEdgeResetLength);
-    for (int r = 0; r < 5; ++r) f.edgeReset.paths[size_t(r)] = k < 2 ? 1 : int(rng() % 2);
-    EXPECT_EQ(engine.run(f), "") << "frame " << k;
   }
 }
 

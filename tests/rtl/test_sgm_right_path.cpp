@@ -46,26 +46,23 @@ struct Frame {
   std::vector<uint8_t> cost;     // height x width x D
   int p1 = 20, p2 = 200, weight = 1;  // W5
   sgm::P2Mode p2Mode = sgm::P2Mode::kKnee;
-  sgm::EdgeReset edgeReset;      // path restart at strong edges (threshold 0: off)
   std::vector<uint16_t> l5;      // expected W5 L5, height x width x D
 };
 
-Frame randomFrame(int w, int h, int p1, int p2, sgm::P2Mode mode, int weight, std::mt19937& rng,
-                  const sgm::EdgeReset& edgeReset = sgm::EdgeReset{}, int grayStep = 1) {
+Frame randomFrame(int w, int h, int p1, int p2, sgm::P2Mode mode, int weight, std::mt19937& rng) {
   Frame f;
-  f.width = w, f.height = h, f.p1 = p1, f.p2 = p2, f.p2Mode = mode, f.weight = weight, f.edgeReset = edgeReset;
+  f.width = w, f.height = h, f.p1 = p1, f.p2 = p2, f.p2Mode = mode, f.weight = weight;
   f.gray = cv::Mat(h, w, CV_8UC1);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)  // runs of equal grays (dI = 0) beside random ones
-      f.gray.at<uint8_t>(y, x) =
-          rng() % 3 == 0 && x > 0 ? f.gray.at<uint8_t>(y, x - 1) : uint8_t(rng() % 256 / grayStep * grayStep);
+      f.gray.at<uint8_t>(y, x) = rng() % 3 == 0 && x > 0 ? f.gray.at<uint8_t>(y, x - 1) : uint8_t(rng() % 256);
   f.cost.resize(size_t(w) * h * kD);
   for (auto& c : f.cost) c = uint8_t(rng() % 89);  // anything a hardware cost mode can produce (0 .. 88)
   const sgm::P2Table table = sgm::makeP2Table(p1, p2, mode);
   f.l5.assign(f.cost.size(), 0);
   for (int y = 0; y < h; ++y)
     sgm::addRightPath(f.cost.data() + size_t(y) * w * kD, f.gray.ptr<uint8_t>(y), w, kD, p1, table, weight,
-                      f.l5.data() + size_t(y) * w * kD, kBlock, edgeReset);
+                      f.l5.data() + size_t(y) * w * kD, kBlock);
   return f;
 }
 
@@ -88,9 +85,6 @@ class Bench {
     top_->width_i = f.width;
     top_->p1_i = f.p1;
     top_->weight_i = f.weight;
-    top_->reset_t_i = f.edgeReset.threshold;
-    top_->reset_len_i = f.edgeReset.length;
-    top_->reset_en_i = f.edgeReset.paths[4] != 0;
     top_->p2_i = f.p2;
     top_->p2_mode_i = f.p2Mode == sgm::P2Mode::kPaper;
     top_->lut_ready_i = 1;
@@ -218,31 +212,6 @@ TEST(SgmRightPath, FramesOfManyWidthsBackToBack) {
     pixels += long(f.width) * f.height;
   }
   // Each frame's rows after it flush it: every pixel of every frame is checked.
-  EXPECT_EQ(bench.mismatch(), "");
-  EXPECT_EQ(bench.checked(), pixels);
-}
-
-// The path restart at strong edges: random thresholds and lengths 1 .. 15, on and off for
-// this path, frame after frame. Grays and thresholds in steps of 32, so that many steps
-// equal the threshold.
-TEST(SgmRightPath, RestartAtStrongEdges) {
-  Top top("sgm_right_path_restart");
-  top->en_i = 0;
-  top.reset();
-  std::mt19937 rng(13);
-  std::vector<Frame> frames;
-  for (int k = 0; k < 6; ++k) {
-    sgm::EdgeReset reset;
-    reset.threshold = k == 5 ? 0 : 32 * (1 + int(rng() % 6));
-    reset.length = 1 + int(rng() % sgm::kMaxEdgeResetLength);
-    reset.paths[4] = k == 4 ? 0 : 1;
-    const int p2 = int(rng() % 256), p1 = int(rng() % (p2 + 1));
-    frames.push_back(randomFrame(std::min(255, 2 * kBlock + int(rng() % (3 * kBlock))), kLanes + 2, p1, p2,
-                                 sgm::P2Mode::kKnee, 1 + int(rng() % 8), rng, reset, 32));
-  }
-  Bench bench(top, rng, 0.2);
-  long pixels = 0;
-  for (const Frame& f : frames) bench.run(f, 1), pixels += long(f.width) * f.height;
   EXPECT_EQ(bench.mismatch(), "");
   EXPECT_EQ(bench.checked(), pixels);
 }
