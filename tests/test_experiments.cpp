@@ -393,12 +393,17 @@ TEST(SnapEdge, GateLeavesWeakEdgesAndZeroIsThePlainSnap) {
   EXPECT_GT(cv::countNonZero(sgm::snapEdges(r, rg).disp != sgm::snapEdges(r, rg, 200).disp), 0);
 }
 
-TEST(Experiments, OptionsAndRanges) {
-  std::vector<std::string> args = {"prog", "--right-path", "3", "--right-block", "48", "--uniqueness", "10", "--ad-weight", "8", "--ad-cap", "16",
-                                   "--subpixel-fit", "linear"};
+// The pipeline options of a command line (the program name first).
+sgm::CliArgs pipelineCli(std::vector<std::string> args) {
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
-  const sgm::Params p = sgm::CliArgs(int(argv.size()), argv.data(), sgm::CliArgs::pipelineOptions()).pipelineParams();
+  return sgm::CliArgs(int(argv.size()), argv.data(), sgm::CliArgs::pipelineOptions());
+}
+
+TEST(Experiments, OptionsAndRanges) {
+  const sgm::Params p = pipelineCli({"prog", "--right-path", "3", "--right-block", "48", "--uniqueness", "10", "--ad-weight",
+                                     "8", "--ad-cap", "16", "--subpixel-fit", "linear"})
+                            .pipelineParams();
   EXPECT_EQ(p.rightPathWeight, 3);
   EXPECT_EQ(p.rightPathBlock, 48);
   EXPECT_EQ(p.uniqueness, 10);
@@ -406,36 +411,26 @@ TEST(Experiments, OptionsAndRanges) {
   EXPECT_EQ(p.adCap, 16);
   EXPECT_TRUE(p.linearSubpixel);
   EXPECT_FALSE(p.mgm);
-  std::vector<std::string> args2 = {"prog", "--median-gate", "40", "--p1-paths", "200,100,150,50,100", "--snap-edge", "96"};
-  std::vector<char*> argv2;
-  for (std::string& a : args2) argv2.push_back(a.data());
-  const sgm::Params q = sgm::CliArgs(int(argv2.size()), argv2.data(), sgm::CliArgs::pipelineOptions()).pipelineParams();
+  const sgm::Params q =
+      pipelineCli({"prog", "--median-gate", "40", "--p1-paths", "200,100,150,50,100", "--snap-edge", "96"}).pipelineParams();
   EXPECT_EQ(q.medianGate, 40);
   EXPECT_EQ(q.snapEdge, 96);
   EXPECT_EQ(q.p1PathPercent, (std::array<int, 5>{200, 100, 150, 50, 100}));
   EXPECT_EQ(q.pathP1(0), 48);
   EXPECT_EQ(q.pathP1(3), 12);
   for (const char* list : {"200,100,150,50", "200,100,150,50,100,1", "200,,150,50,100", "20,100,100,100,100", "x"}) {
-    std::vector<std::string> a = {"prog", "--p1-paths", list};
-    std::vector<char*> v;
-    for (std::string& s : a) v.push_back(s.data());
-    const sgm::CliArgs cli(int(v.size()), v.data(), sgm::CliArgs::pipelineOptions());
+    const sgm::CliArgs cli = pipelineCli({"prog", "--p1-paths", list});
     expectError([&] { cli.pipelineParams(); }, {"--p1-paths expects five percentages"});
   }
-  std::vector<std::string> args3 = {"prog", "--edge-reset", "48", "--edge-reset-len", "4", "--edge-reset-paths", "0,0,0,1,1"};
-  std::vector<char*> argv3;
-  for (std::string& a : args3) argv3.push_back(a.data());
-  const sgm::Params e = sgm::CliArgs(int(argv3.size()), argv3.data(), sgm::CliArgs::pipelineOptions()).pipelineParams();
+  const sgm::Params e =
+      pipelineCli({"prog", "--edge-reset", "48", "--edge-reset-len", "4", "--edge-reset-paths", "0,0,0,1,1"}).pipelineParams();
   EXPECT_EQ(e.edgeReset.threshold, 48);
   EXPECT_EQ(e.edgeReset.length, 4);
   EXPECT_EQ(e.edgeReset.paths, (std::array<int, 5>{0, 0, 0, 1, 1}));
   EXPECT_TRUE(e.edgeReset.on(3));
   EXPECT_FALSE(e.edgeReset.on(0));
   for (const char* list : {"0,0,0,1", "0,0,0,1,1,1", "0,2,0,1,1", "1,,1,1,1"}) {
-    std::vector<std::string> a = {"prog", "--edge-reset-paths", list};
-    std::vector<char*> v;
-    for (std::string& s : a) v.push_back(s.data());
-    const sgm::CliArgs cli(int(v.size()), v.data(), sgm::CliArgs::pipelineOptions());
+    const sgm::CliArgs cli = pipelineCli({"prog", "--edge-reset-paths", list});
     expectError([&] { cli.pipelineParams(); }, {"--edge-reset-paths expects five flags 0..1"});
   }
   sgm::Params bad;
