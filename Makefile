@@ -218,26 +218,26 @@ $(eval $(call rtl_test,top-d16-k3-9x9,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGH
 $(eval $(call rtl_test,top-d16-lean,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GUNIQUENESS=0 -GAD_TERM=0 -GRIGHT_BLOCK=0 -CFLAGS -DSGM_D=16))
 # The fifth path in blocks (sgm_top RIGHT_BLOCK): blocks of 8 at one lane, of 16 at two lanes
 # (its defaults run weight 4; the settings, parameter sets and regression vary it).
-$(eval $(call rtl_test,top-d16-rb8,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GRIGHT_BLOCK=8 -CFLAGS -DSGM_D=16))
-$(eval $(call rtl_test,top-d16-k2-rb16,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GLANES=2 -GRIGHT_BLOCK=16 -CFLAGS -DSGM_D=16))
+$(eval $(call rtl_test,top-d16-rb8,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GRIGHT_BLOCK=8 -GEDGE_RESET=1 -CFLAGS -DSGM_D=16))
+$(eval $(call rtl_test,top-d16-k2-rb16,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GLANES=2 -GRIGHT_BLOCK=16 -GEDGE_RESET=1 -CFLAGS -DSGM_D=16))
 # sgm_axi configured through the driver (sw/) over an AXI4-Lite bus model; the lean build reads
 # its FEATURES back and has the frames that ask for a missing lever dropped.
 $(eval $(call rtl_test,axi-d16,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
 $(eval $(call rtl_test,axi-d16-lean,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GUNIQUENESS=0 -GAD_TERM=0 -GRIGHT_BLOCK=0 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
-$(eval $(call rtl_test,axi-d16-rb16,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GRIGHT_BLOCK=16 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
+$(eval $(call rtl_test,axi-d16-rb16,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GRIGHT_BLOCK=16 -GEDGE_RESET=1 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
 $(BIN)/rtl-axi-d16 $(BIN)/rtl-axi-d16-lean $(BIN)/rtl-axi-d16-rb16: sw/sgm_driver.cpp $(wildcard sw/include/*.h*)
-$(eval $(call rtl_test,path-engine-d16,sgm_path_engine,-GD=16 -GMAX_WIDTH=128 -GXW=8 -GYW=8 -CFLAGS -DSGM_D=16))
-$(eval $(call rtl_test,path-engine-d64,sgm_path_engine,-GD=64 -GMAX_WIDTH=512 -GXW=10 -GYW=10 -GGRAY_LEAD=0 -CFLAGS -DSGM_D=64 -CFLAGS -DSGM_YW=10))
+$(eval $(call rtl_test,path-engine-d16,sgm_path_engine,-GD=16 -GMAX_WIDTH=128 -GXW=8 -GYW=8 -GEDGE_RESET=1 -CFLAGS -DSGM_D=16))
+$(eval $(call rtl_test,path-engine-d64,sgm_path_engine,-GD=64 -GMAX_WIDTH=512 -GXW=10 -GYW=10 -GGRAY_LEAD=0 -GEDGE_RESET=1 -CFLAGS -DSGM_D=64 -CFLAGS -DSGM_YW=10))
 # The engine in lane order (docs/reschedule.md): K row lanes, SKEW columns apart.
 $(eval $(call rtl_test,path-engine-d16-k2,sgm_path_engine,-GD=16 -GMAX_WIDTH=128 -GXW=8 -GYW=8 -GLANES=2 -CFLAGS -DSGM_D=16))
-$(eval $(call rtl_test,path-engine-d16-k5,sgm_path_engine,-GD=16 -GMAX_WIDTH=128 -GXW=8 -GYW=8 -GLANES=5 -CFLAGS -DSGM_D=16))
-$(eval $(call rtl_test,path-engine-d64-k6,sgm_path_engine,-GD=64 -GMAX_WIDTH=512 -GXW=10 -GYW=10 -GLANES=6 -CFLAGS -DSGM_D=64 -CFLAGS -DSGM_YW=10))
+$(eval $(call rtl_test,path-engine-d16-k5,sgm_path_engine,-GD=16 -GMAX_WIDTH=128 -GXW=8 -GYW=8 -GLANES=5 -GEDGE_RESET=1 -CFLAGS -DSGM_D=16))
+$(eval $(call rtl_test,path-engine-d64-k6,sgm_path_engine,-GD=64 -GMAX_WIDTH=512 -GXW=10 -GYW=10 -GLANES=6 -GEDGE_RESET=1 -CFLAGS -DSGM_D=64 -CFLAGS -DSGM_YW=10))
 # The fifth path in blocks (sgm_right_path): one lane and lanes, small blocks (narrow
 # frames, many blocks per row) and the D = 64 block of 32 at six lanes.
-$(eval $(call rtl_test,right-path-d16-b8,sgm_right_path,-GD=16 -GBLOCK=8 -GXW=8 -GSIDE_W=16 -CFLAGS -DSGM_D=16))
-$(eval $(call rtl_test,right-path-d16-b4-k2,sgm_right_path,-GD=16 -GBLOCK=4 -GXW=8 -GSIDE_W=16 -GLANES=2 -CFLAGS -DSGM_D=16))
+$(eval $(call rtl_test,right-path-d16-b8,sgm_right_path,-GD=16 -GBLOCK=8 -GXW=8 -GSIDE_W=16 -GEDGE_RESET=1 -CFLAGS -DSGM_D=16))
+$(eval $(call rtl_test,right-path-d16-b4-k2,sgm_right_path,-GD=16 -GBLOCK=4 -GXW=8 -GSIDE_W=16 -GLANES=2 -GEDGE_RESET=1 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,right-path-d16-b16-k3,sgm_right_path,-GD=16 -GBLOCK=16 -GXW=8 -GSIDE_W=16 -GLANES=3 -GL5_LAG=11 -CFLAGS -DSGM_D=16))
-$(eval $(call rtl_test,right-path-d64-b32-k6,sgm_right_path,-GD=64 -GBLOCK=32 -GXW=8 -GSIDE_W=16 -GLANES=6 -GL5_LAG=7 -CFLAGS -DSGM_D=64))
+$(eval $(call rtl_test,right-path-d64-b32-k6,sgm_right_path,-GD=64 -GBLOCK=32 -GXW=8 -GSIDE_W=16 -GLANES=6 -GL5_LAG=7 -GEDGE_RESET=1 -CFLAGS -DSGM_D=64))
 # The 0 degree loop alone at LANES = 1 (the single-lane core) and with 2, 3, 4, 6 row lanes (docs/reschedule.md);
 # 12 lanes at D = 16 put several registers at one boundary (more lanes than loop units);
 # D = 32 pads the tree's 64 leaves (D = 16 and 64 fill theirs).

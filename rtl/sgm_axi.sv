@@ -5,12 +5,13 @@
 // checked against that header by tests/rtl/test_sgm_axi.cpp.
 //
 //   identification  ID, D, MAX_WIDTH, MAX_HEIGHT, CENSUS, MIN_WIDTH, LANES, FEATURES (read-only)
-//   control         CTRL (enable, soft reset, hold), FRAME_SIZE, PENALTY, CONFIG
+//   control         CTRL (enable, soft reset, hold), FRAME_SIZE, PENALTY, CONFIG,
+//                   EDGE_RESET
 //   status          STATUS (busy), FRAMES, ERROR (sticky, W1C), ERROR_COUNT,
 //                   LAST_SIZE
 //   interrupt       IRQ_ENABLE, IRQ_STATUS (W1C); irq_o = |(status & enable)
 //
-// Configuration: the bus writes FRAME_SIZE, PENALTY and CONFIG (shadow
+// Configuration: the bus writes FRAME_SIZE, PENALTY, CONFIG and EDGE_RESET (shadow
 // registers). While CTRL.HOLD is 0 they are copied every cycle into the active
 // set that drives sgm_top's cfg_*_i, and sgm_top takes the active set at the
 // handshake of a frame's first beat, so a write in the middle of a frame acts
@@ -24,7 +25,8 @@
 // writes to read-only registers are ignored with OKAY.
 //
 // Parameters: D, MAX_WIDTH, MAX_HEIGHT, CENSUS_H, LANES, UNIQUENESS, AD_TERM,
-// RIGHT_BLOCK as sgm_top (FEATURES reads back the last three); ADDR_W AXI address bits.
+// RIGHT_BLOCK, EDGE_RESET as sgm_top (FEATURES reads back the last four); ADDR_W AXI
+// address bits.
 // Latency and throughput: those of sgm_top; register responses one cycle
 // after the request.
 module sgm_axi #(
@@ -36,6 +38,7 @@ module sgm_axi #(
   parameter int UNIQUENESS /*verilator public*/ = 1,
   parameter int AD_TERM    /*verilator public*/ = 1,
   parameter int RIGHT_BLOCK /*verilator public*/ = 64,
+  parameter int EDGE_RESET /*verilator public*/ = 0,
   parameter int ADDR_W     = 8,
   localparam int XW        = $clog2(MAX_WIDTH + 1),
   localparam int YW        = $clog2(MAX_HEIGHT + 16)
@@ -97,10 +100,11 @@ module sgm_axi #(
   localparam logic [ADDR_W-1:0] ADDR_ERROR       /*verilator public*/ = ADDR_W'('h38);
   localparam logic [ADDR_W-1:0] ADDR_ERROR_COUNT /*verilator public*/ = ADDR_W'('h3C);
   localparam logic [ADDR_W-1:0] ADDR_LAST_SIZE   /*verilator public*/ = ADDR_W'('h40);
+  localparam logic [ADDR_W-1:0] ADDR_EDGE_RESET  /*verilator public*/ = ADDR_W'('h44);
   localparam logic [ADDR_W-1:0] ADDR_IRQ_ENABLE  /*verilator public*/ = ADDR_W'('h48);
   localparam logic [ADDR_W-1:0] ADDR_IRQ_STATUS  /*verilator public*/ = ADDR_W'('h4C);
 
-  localparam logic [31:0] ID_VALUE       /*verilator public*/ = 32'h5347_4D04;  // "SGM", version 4
+  localparam logic [31:0] ID_VALUE       /*verilator public*/ = 32'h5347_4D05;  // "SGM", version 5
   // The reset values are the golden model's defaults for the build (sgm::buildDefaults):
   // "default" when it has the fifth path, the uniqueness ratio and the AD term, else
   // "four-path" (the defaults before issue 15).
@@ -111,6 +115,10 @@ module sgm_axi #(
   localparam logic [31:0] CONFIG_RESET   /*verilator public*/ =
       FULL_DEFAULTS ? 32'h0F00_5131    // rsad, sub-pixel, LR tol 1, fill, median, uniqueness 15 (no snap)
                     : 32'h0000_7131;   // rsad, sub-pixel, LR tol 1, fill, snap, median
+  // EDGE_RESET: [7:0] T (0 off), [11:8] R, [20:16] path flags; reset: off, R 5, every path
+  // (the golden EdgeReset{}).
+  localparam logic [31:0] EDGE_RESET_RESET /*verilator public*/ = 32'h001F_0500;
+  localparam logic [31:0] EDGE_RESET_MASK  = 32'h001F_0FFF;
   localparam logic [31:0] CTRL_MASK      = 32'h0000_0005;  // ENABLE, HOLD (SOFT_RESET reads 0)
   localparam logic [31:0] CONFIG_MASK    = 32'h7F03_7733;
   localparam logic [31:0] PENALTY_MASK   = 32'hFFFF_FFFF;
@@ -119,10 +127,12 @@ module sgm_axi #(
   localparam int FEATURES_UNIQUENESS_BIT /*verilator public*/ = 0;
   localparam int FEATURES_AD_TERM_BIT    /*verilator public*/ = 1;
   localparam int FEATURES_RIGHT_PATH_BIT /*verilator public*/ = 2;
+  localparam int FEATURES_EDGE_RESET_BIT /*verilator public*/ = 3;
   localparam int FEATURES_RIGHT_BLOCK_LSB /*verilator public*/ = 8;  // [11:8]: log2 of the fifth path's block
   localparam logic [31:0] FEATURES_VALUE /*verilator public*/ =
       (UNIQUENESS != 0 ? 32'd1 << FEATURES_UNIQUENESS_BIT : 32'd0) | (AD_TERM != 0 ? 32'd1 << FEATURES_AD_TERM_BIT : 32'd0) |
-      (RIGHT_BLOCK != 0 ? (32'd1 << FEATURES_RIGHT_PATH_BIT) | (32'($clog2(RIGHT_BLOCK)) << FEATURES_RIGHT_BLOCK_LSB) : 32'd0);
+      (RIGHT_BLOCK != 0 ? (32'd1 << FEATURES_RIGHT_PATH_BIT) | (32'($clog2(RIGHT_BLOCK)) << FEATURES_RIGHT_BLOCK_LSB) : 32'd0) |
+      (EDGE_RESET != 0 ? 32'd1 << FEATURES_EDGE_RESET_BIT : 32'd0);
   localparam int CENSUS_WIDTH  = 9;  // the window of sgm_census_unit: 9 x CENSUS_H
   localparam int CENSUS_HEIGHT = CENSUS_H;
   localparam int SOFT_RESET_CYCLES = 4;
@@ -174,7 +184,7 @@ module sgm_axi #(
     case (a)
       ADDR_ID, ADDR_D, ADDR_MAX_WIDTH, ADDR_MAX_HEIGHT, ADDR_CENSUS, ADDR_MIN_WIDTH, ADDR_LANES, ADDR_FEATURES, ADDR_CTRL,
       ADDR_FRAME_SIZE, ADDR_PENALTY,
-      ADDR_CONFIG, ADDR_STATUS, ADDR_FRAMES, ADDR_ERROR, ADDR_ERROR_COUNT, ADDR_LAST_SIZE, ADDR_IRQ_ENABLE,
+      ADDR_CONFIG, ADDR_STATUS, ADDR_FRAMES, ADDR_ERROR, ADDR_ERROR_COUNT, ADDR_LAST_SIZE, ADDR_EDGE_RESET, ADDR_IRQ_ENABLE,
       ADDR_IRQ_STATUS: defined = 1'b1;
       default: defined = 1'b0;
     endcase
@@ -193,6 +203,7 @@ module sgm_axi #(
   wire wr_frame_size  = reg_we && waddr == ADDR_FRAME_SIZE;
   wire wr_penalty     = reg_we && waddr == ADDR_PENALTY;
   wire wr_config      = reg_we && waddr == ADDR_CONFIG;
+  wire wr_edge_reset  = reg_we && waddr == ADDR_EDGE_RESET;
   wire wr_error       = reg_we && waddr == ADDR_ERROR;
   wire wr_error_count = reg_we && waddr == ADDR_ERROR_COUNT;
   wire wr_irq_enable  = reg_we && waddr == ADDR_IRQ_ENABLE;
@@ -202,7 +213,7 @@ module sgm_axi #(
   assign reg_rerr = !defined(raddr);
 
   // ------------------------------------------------------------ control registers
-  logic [31:0] ctrl_q, frame_size_q, penalty_q, config_q, irq_enable_q;
+  logic [31:0] ctrl_q, frame_size_q, penalty_q, config_q, edge_reset_q, irq_enable_q;
   logic [$clog2(SOFT_RESET_CYCLES + 1)-1:0] soft_reset_q;
 
   always_ff @(posedge clk_i) begin
@@ -211,6 +222,7 @@ module sgm_axi #(
       frame_size_q <= '0;
       penalty_q    <= PENALTY_RESET;
       config_q     <= CONFIG_RESET;
+      edge_reset_q <= EDGE_RESET_RESET;
       irq_enable_q <= '0;
       soft_reset_q <= '0;
     end else begin
@@ -218,6 +230,7 @@ module sgm_axi #(
       if (wr_frame_size) frame_size_q <= merge(frame_size_q, reg_wdata, wmask, 32'hFFFF_FFFF);
       if (wr_penalty) penalty_q <= merge(penalty_q, reg_wdata, wmask, PENALTY_MASK);
       if (wr_config) config_q <= merge(config_q, reg_wdata, wmask, CONFIG_MASK);
+      if (wr_edge_reset) edge_reset_q <= merge(edge_reset_q, reg_wdata, wmask, EDGE_RESET_MASK);
       if (wr_irq_enable) irq_enable_q <= merge(irq_enable_q, reg_wdata, wmask, IRQ_MASK);
       if (wr_ctrl && wset[1]) soft_reset_q <= ($bits(soft_reset_q))'(SOFT_RESET_CYCLES);
       else if (soft_reset_q != '0) soft_reset_q <= soft_reset_q - 1'b1;
@@ -235,6 +248,7 @@ module sgm_axi #(
   logic [YW-1:0] act_height;
   logic [31:0]   act_penalty;
   logic [30:0]   act_config;
+  logic [20:0]   act_edge_reset;
   wire  [15:0]   shadow_width  = frame_size_q[15:0];
   wire  [15:0]   shadow_height = frame_size_q[31:16];
 
@@ -244,11 +258,13 @@ module sgm_axi #(
       act_height  <= '0;
       act_penalty <= PENALTY_RESET;
       act_config  <= CONFIG_RESET[30:0];
+      act_edge_reset <= EDGE_RESET_RESET[20:0];
     end else if (!hold) begin
       act_width   <= 32'(shadow_width) <= MAX_WIDTH ? shadow_width[XW-1:0] : '0;
       act_height  <= 32'(shadow_height) <= MAX_HEIGHT ? shadow_height[YW-1:0] : '0;
       act_penalty <= penalty_q;
       act_config  <= config_q[30:0];
+      act_edge_reset <= edge_reset_q[20:0];
     end
   end
 
@@ -266,7 +282,7 @@ module sgm_axi #(
 
   sgm_top #(
     .D(D), .MAX_WIDTH(MAX_WIDTH), .MAX_HEIGHT(MAX_HEIGHT), .CENSUS_H(CENSUS_H), .LANES(LANES), .UNIQUENESS(UNIQUENESS),
-    .AD_TERM(AD_TERM), .RIGHT_BLOCK(RIGHT_BLOCK)
+    .AD_TERM(AD_TERM), .RIGHT_BLOCK(RIGHT_BLOCK), .EDGE_RESET(EDGE_RESET)
   ) u_core (
     .clk_i         (clk_i),
     .rst_ni        (rst_ni && !core_reset),
@@ -287,6 +303,9 @@ module sgm_axi #(
     .cfg_ad_cap_i  (act_penalty[23:16]),
     .cfg_ad_weight_i(act_penalty[27:24]),
     .cfg_right_weight_i(act_penalty[31:28]),
+    .cfg_reset_t_i (act_edge_reset[7:0]),
+    .cfg_reset_len_i(act_edge_reset[11:8]),
+    .cfg_reset_paths_i(act_edge_reset[20:16]),
     .cfg_mode_i    (act_config[1:0]),
     .cfg_subpixel_i(act_config[4]),
     .cfg_lr_en_i   (act_config[5]),
@@ -361,13 +380,14 @@ module sgm_axi #(
       ADDR_ERROR:       reg_rdata = {28'd0, error_q};
       ADDR_ERROR_COUNT: reg_rdata = error_count_q;
       ADDR_LAST_SIZE:   reg_rdata = last_size_q;
+      ADDR_EDGE_RESET:  reg_rdata = edge_reset_q;
       ADDR_IRQ_ENABLE:  reg_rdata = irq_enable_q;
       ADDR_IRQ_STATUS:  reg_rdata = {30'd0, irq_status_q};
       default:          reg_rdata = 32'd0;
     endcase
   end
 
-  wire unused = &{1'b0, reg_re, reg_waddr[1:0], reg_raddr[1:0], error, act_config[3:2], act_config[7:6], act_config[11], act_config[15], act_config[23:18], shadow_width[15:XW],
+  wire unused = &{1'b0, reg_re, reg_waddr[1:0], reg_raddr[1:0], error, act_config[3:2], act_config[7:6], act_config[11], act_config[15], act_config[23:18], act_edge_reset[15:12], shadow_width[15:XW],
                   shadow_height[15:YW]};
 
 endmodule

@@ -55,6 +55,17 @@
 // (K >= 1), RIGHT_PATH (1: S adds l5w_i, W5 L5 with W5 <= 15 in L5W = LW + 4
 // bits). SW = LW + 4 + RIGHT_PATH holds the larger of the two weightings
 // (10 x 2^LW, with the fifth path (10 + 15) x 2^LW).
+// EDGE_RESET = 1 builds the path restart at strong edges (docs/algorithm.md
+// section 12, golden Params::edgeReset): path r starts again (Lr = C, as at
+// the frame's border) at every pixel whose last R = reset_len_i steps along
+// the path, the step into it included, cross a gray step |dI| >= T =
+// reset_t_i, for the paths marked in reset_paths_i (T = 0: none). A 4-bit
+// count per path (the steps since its last strong edge, saturating at R; R at
+// a path start) travels with the path: for 0 degrees K slots beside the ring
+// (decided at B, the ring's path start), for 45/90/135 degrees beside min Lr
+// in the min memories (MW = LW + 4 bits; decided at B' - 1 from the previous
+// row's count and registered, so that part (c) sees one OR in front of its
+// path start). EDGE_RESET = 0 builds none of it (the reset_* ports unused).
 // Latency: LATENCY = K + 2 slots from cost_i to s_o (l5w_i K + 1 slots after
 // the pixel's cost_i); row_i, centre_i and nbr_i
 // of a pixel are presented GRAY_LEAD slots before its cost_i (valid_i with
@@ -69,7 +80,9 @@ module sgm_path_engine #(
   parameter int XW        = 11,
   parameter int YW        = 11,
   parameter int RIGHT_PATH = 0,
+  parameter int EDGE_RESET /*verilator public*/ = 0,
   localparam int L5W      = LW + 4,
+  localparam int MW       = LW + (EDGE_RESET != 0 ? 4 : 0),  // min memory word: {count, min Lr}
   localparam int SW       = LW + 4 + (RIGHT_PATH != 0 ? 1 : 0),
   // 1: P2r registered behind the table (the grays lead by one slot); 0: P2r
   // straight from the table's read port into the sub-PEs (grays with the costs).
@@ -90,6 +103,10 @@ module sgm_path_engine #(
   input  wire  [XW-1:0]       width_i,
   input  wire  [PW-1:0]       p1_i,
   input  wire                 weights_eq_i,  // S weights: 0 = 3,2,3,2, 1 = equal (the paper's sum)
+  // The path restart at strong edges (EDGE_RESET = 1).
+  input  wire  [7:0]          reset_t_i,     // T: a strong edge's gray step; 0 = off
+  input  wire  [3:0]          reset_len_i,   // R: steps restarted from the edge on (1 .. 15)
+  input  wire  [3:0]          reset_paths_i, // bit r: path r (0, 45, 90, 135 degrees) restarts
   // P2 table fill (sgm_p2_lut): start with p1_i / p2_i / p2_mode_i, ready when filled.
   input  wire                 lut_start_i,
   input  wire  [PW-1:0]       p2_i,
@@ -189,6 +206,74 @@ module sgm_path_engine #(
   wire at_right = col_b == width_i - 1'b1;
   wire at_top   = row_b == '0;
 
+  // ------------------------------------------------- the path restart (EDGE_RESET)
+  // edge_t[r]: pixel p's step along path r is a strong edge of a restarting
+  // path (at slot t); start0: the 0 degree path start at B (the border or a
+  // restart); restart_v[r]: path r (1 .. 3) restarts, registered at B';
+  // count_v[r]: its count at B' (before the path start).
+  logic       start0;
+  logic [3:1] restart_v;
+  logic [11:0] count_v;  // path r at [(r-1)*4 +: 4]
+  logic [11:0] count_prev;  // the previous row's counts at B' - 1 (from the min memories)
+  if (EDGE_RESET != 0) begin : g_restart
+    wire [3:0] on = reset_paths_i & {4{reset_t_i != 8'd0}};
+    logic [3:0] edge_g, edge_t;
+    for (genvar r = 0; r < 4; r++) begin : g_edge
+      assign edge_g[r] = on[r] && dI[r*8 +: 8] >= reset_t_i;
+    end
+    if (GRAY_LEAD == 1) begin : g_edge_reg
+      always_ff @(posedge clk_i) begin
+        if (en_i) edge_t <= edge_g;
+      end
+    end else begin : g_edge_now
+      assign edge_t = edge_g;
+    end
+    // 0 degrees at B: the lane's previous count comes back after K slots.
+    logic edge_b;
+    always_ff @(posedge clk_i) begin
+      if (en_i) edge_b <= edge_t[0];
+    end
+    logic [3:0] count0_prev;
+    wire  [4:0] count0_inc = {1'b0, count0_prev} + 5'd1;
+    wire        near0      = count0_inc < {1'b0, reset_len_i};
+    wire  [3:0] count0     = at_left ? reset_len_i : edge_b ? 4'd0 : near0 ? count0_inc[3:0] : reset_len_i;
+    sgm_delay #(.WIDTH(4), .DEPTH(K)) u_count0 (
+      .clk_i (clk_i),
+      .en_i  (en_i),
+      .d_i   (count0),
+      .q_o   (count0_prev)
+    );
+    assign start0 = at_left || (on[0] && (edge_b || near0));
+    // 45/90/135 degrees at B' - 1 = t + K - 1.
+    logic [3:1] edge_v;
+    if (K > 1) begin : g_edge_carry
+      sgm_delay #(.WIDTH(3), .DEPTH(K - 1)) u_edge_v (
+        .clk_i (clk_i),
+        .en_i  (en_i),
+        .d_i   (edge_t[3:1]),
+        .q_o   (edge_v)
+      );
+    end else begin : g_edge_at_t
+      assign edge_v = edge_t[3:1];
+    end
+    for (genvar r = 1; r < 4; r++) begin : g_count
+      wire [3:0] prev = count_prev[(r-1)*4 +: 4];
+      wire [4:0] inc  = {1'b0, prev} + 5'd1;
+      wire       near = inc < {1'b0, reset_len_i};
+      always_ff @(posedge clk_i) begin
+        if (en_i) begin
+          count_v[(r-1)*4 +: 4] <= edge_v[r] ? 4'd0 : near ? inc[3:0] : reset_len_i;
+          restart_v[r]          <= on[r] && (edge_v[r] || near);
+        end
+      end
+    end
+  end else begin : g_no_restart
+    assign start0    = at_left;
+    assign restart_v = '0;
+    assign count_v   = '0;
+    wire unused_reset = ^{reset_t_i, reset_len_i, reset_paths_i, count_prev};
+  end
+
   // The 0 degree recursion (sgm_path_ring, K lanes): its sub-PEs and minimum
   // feed back through the ring's registers (lr0_c: the pixel's Lr at C).
   logic [D*LW-1:0] lr0_c;
@@ -200,7 +285,7 @@ module sgm_path_engine #(
     .p1_i    (p1_i),
     .cost_i  (cost_b),
     .p2r_i   (p2r_b[0 +: PW]),
-    .start_i (at_left),
+    .start_i (start0),
     .lr_o    (lr0_c),
     .min_o   (min0_c)
   );
@@ -260,13 +345,13 @@ module sgm_path_engine #(
   logic [LWORD-1:0] mem45  [0:MAX_WIDTH-1];
   logic [LWORD-1:0] mem90  [0:MAX_WIDTH-1];
   logic [LWORD-1:0] mem135 [0:MAX_WIDTH-1];
-  logic [LW-1:0]    min45  [0:MAX_WIDTH-1];
-  logic [LW-1:0]    min90  [0:MAX_WIDTH-1];
-  logic [LW-1:0]    min135 [0:MAX_WIDTH-1];
+  logic [MW-1:0]    min45  [0:MAX_WIDTH-1];  // {count (EDGE_RESET), min Lr}
+  logic [MW-1:0]    min90  [0:MAX_WIDTH-1];
+  logic [MW-1:0]    min135 [0:MAX_WIDTH-1];
 
   // Read at B' - 4, the memories' data at B' - 3, their output register at B' - 2.
   logic [3*LWORD-1:0] rd_m, rd_q;   // {135, 90, 45}
-  logic [3*LW-1:0]    mrd_m, mrd_q, mrd_t;
+  logic [3*MW-1:0]    mrd_m, mrd_q, mrd_t;
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       rd_m  <= {mem135[addr135], mem90[addr90], mem45[addr45]};
@@ -281,7 +366,7 @@ module sgm_path_engine #(
   logic [3*D*LW-1:0] lr_b;  // path r (1 .. 3), disparity d at lr_b[((r-1)*D+d)*LW +: LW]
   for (genvar r = 1; r < 4; r++) begin : g_path
     wire [LWORD-1:0] pw      = rd_q[(r-1)*LWORD +: LWORD];
-    wire [LW-1:0]    min_prv = mrd_t[(r-1)*LW +: LW];
+    wire [LW-1:0]    min_prv = mrd_t[(r-1)*MW +: LW];
     for (genvar d = 0; d < D; d++) begin : g_pe
       sgm_path_pe #(.CW(CW), .LW(LW), .PW(PW), .CUTS(3)) u_pe (
         .clk_i      (clk_i),
@@ -295,7 +380,7 @@ module sgm_path_engine #(
         .min_prev_i (min_prv),
         .cost_i     (cost_p[d*CW +: CW]),
         .p2r_i      (p2r_p[(r-1)*PW +: PW]),
-        .start_i    (start[r]),
+        .start_i    (start[r] | restart_v[r]),
         .lr_o       (lr_b[((r-1)*D+d)*LW +: LW])
       );
     end
@@ -305,8 +390,11 @@ module sgm_path_engine #(
   logic [XW-1:0]      col_c;
   logic [YW-1:0]      row_c;
   logic               last_c;
+  logic [11:0]        count_c;  // the counts written beside min Lr: R at a path start
   always_ff @(posedge clk_i) begin
     if (en_i) begin
+      for (int r = 1; r < 4; r++)
+        count_c[(r-1)*4 +: 4] <= start[r] ? reset_len_i : count_v[(r-1)*4 +: 4];
       lr_c    <= lr_b;
       col_c   <= col_p;
       row_c   <= row_p;
@@ -363,11 +451,42 @@ module sgm_path_engine #(
     .d_i   (col_wr),
     .q_o   ({col_m, col_m45})
   );
+  // The counts beside them (EDGE_RESET): the 45 degree count W45_DELAY slots
+  // after C as its word, all three MIN_LATENCY slots more.
+  logic [3*MW-1:0] min_wd;  // {count, min Lr} of 45, 90, 135 degrees
+  if (EDGE_RESET != 0) begin : g_count_wr
+    logic [3:0] count45_w;
+    if (W45_DELAY > 0) begin : g_c45_wait
+      sgm_delay #(.WIDTH(4), .DEPTH(W45_DELAY)) u_c45 (
+        .clk_i (clk_i),
+        .en_i  (en_i),
+        .d_i   (count_c[3:0]),
+        .q_o   (count45_w)
+      );
+    end else begin : g_c45_now
+      assign count45_w = count_c[3:0];
+    end
+    logic [11:0] count_m;
+    sgm_delay #(.WIDTH(12), .DEPTH(MIN_LATENCY)) u_count_m (
+      .clk_i (clk_i),
+      .en_i  (en_i),
+      .d_i   ({count_c[11:4], count45_w}),
+      .q_o   (count_m)
+    );
+    for (genvar r = 0; r < 3; r++) begin : g_word
+      assign min_wd[r*MW +: MW] = {count_m[r*4 +: 4], min_m[r*LW +: LW]};
+      assign count_prev[r*4 +: 4] = mrd_t[r*MW + LW +: 4];
+    end
+  end else begin : g_min_only
+    assign min_wd     = min_m;
+    assign count_prev = '0;
+    wire unused_count = ^count_c;
+  end
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      min45[col_m45] <= min_m[0*LW +: LW];
-      min90[col_m]   <= min_m[1*LW +: LW];
-      min135[col_m]  <= min_m[2*LW +: LW];
+      min45[col_m45] <= min_wd[0*MW +: MW];
+      min90[col_m]   <= min_wd[1*MW +: MW];
+      min135[col_m]  <= min_wd[2*MW +: MW];
     end
   end
 

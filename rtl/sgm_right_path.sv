@@ -44,6 +44,16 @@
 // or its decrement; its start address is a register too (the lane's previous
 // write address, or the one of its row's column W - 1, kept per lane).
 //
+// EDGE_RESET = 1 builds the path restart at strong edges (docs/algorithm.md
+// section 12, golden addRightPath with Params::edgeReset): with reset_en_i and
+// T = reset_t_i != 0 a pass starts again (Lr = C) at every column whose last R
+// = reset_len_i steps of the pass, the step into it included, cross a gray
+// step |dI| >= T. The pass's count (steps since its last strong edge,
+// saturating at R; R at its start) comes back per lane after K slots at stage
+// 1, where |dI| is formed, and the restart joins the pass start registered in
+// front of the ring. EDGE_RESET = 0 builds none of it (the reset_* ports
+// unused).
+//
 // Parameters: D disparities, CW cost width, LW path-cost width (Cmax + P2'max
 // must fit), PW penalty width, BLOCK (B, a power of two >= 2), XW column bits,
 // LANES (K >= 1 row lanes, slot K t + k belongs to lane k), SIDE_W side bundle
@@ -68,6 +78,7 @@ module sgm_right_path #(
   parameter int LANES  /*verilator public*/ = 1,
   parameter int SIDE_W = 1,
   parameter int L5_LAG /*verilator public*/ = 2,
+  parameter int EDGE_RESET /*verilator public*/ = 0,
   localparam int L5W   = LW + 4,
   localparam int DLY   = 4 * BLOCK + 1 + (5 + LANES - 1) / LANES,
   localparam int LATENCY /*verilator public*/ = LANES * DLY + 1
@@ -78,6 +89,10 @@ module sgm_right_path #(
   input  wire  [XW-1:0]    width_i,
   input  wire  [PW-1:0]    p1_i,
   input  wire  [3:0]       weight_i,  // W5 (constant while a frame flows)
+  // The path restart at strong edges (EDGE_RESET = 1; constant while a frame flows).
+  input  wire  [7:0]       reset_t_i,     // T: a strong edge's gray step; 0 = off
+  input  wire  [3:0]       reset_len_i,   // R: steps restarted from the edge on (1 .. 15)
+  input  wire              reset_en_i,    // the fifth path restarts
   // P2 table fill (sgm_p2_lut, the table of the four forward paths); lut_ready_o
   // is this table's ready and lut_ready_i (the other tables filled with it: the
   // top stays wiring only, the hierarchical synthesis flows need that).
@@ -338,12 +353,31 @@ module sgm_right_path #(
     );
     assign lut_idx[r*8 +: 8] = gray1 > gray_prev ? gray1 - gray_prev : gray_prev - gray1;
 
+    // The restart (EDGE_RESET): the lane's count K slots back, this step's.
+    logic restart1;
+    if (EDGE_RESET != 0) begin : g_restart
+      wire        on   = reset_en_i && reset_t_i != 8'd0;
+      wire        step_edge = on && lut_idx[r*8 +: 8] >= reset_t_i;
+      logic [3:0] count_prev;
+      wire  [4:0] inc  = {1'b0, count_prev} + 5'd1;
+      wire        near = inc < {1'b0, reset_len_i};
+      sgm_delay #(.WIDTH(4), .DEPTH(K)) u_count (
+        .clk_i (clk_i),
+        .en_i  (en_i),
+        .d_i   (start1 ? reset_len_i : step_edge ? 4'd0 : near ? inc[3:0] : reset_len_i),
+        .q_o   (count_prev)
+      );
+      assign restart1 = on && (step_edge || near);
+    end else begin : g_no_restart
+      assign restart1 = 1'b0;
+    end
+
     // Stage 2: P2r from the table; the ring.
     logic [CWD-1:0] cost2;
     logic           start2, keep2;
     logic [RA-1:0]  addr2;
     always_ff @(posedge clk_i) begin
-      if (en_i) {cost2, start2, keep2, addr2} <= {cost1, start1, keep1, addr1};
+      if (en_i) {cost2, start2, keep2, addr2} <= {cost1, start1 | restart1, keep1, addr1};
     end
     logic [D*LW-1:0] lr;
     logic [LW-1:0]   unused_min;
@@ -374,6 +408,10 @@ module sgm_right_path #(
         l5_q[r*D*LW +: D*LW] <= l5_mem[l5_addr];
       end
     end
+  end
+
+  if (EDGE_RESET == 0) begin : g_no_reset_cfg
+    wire unused_reset = ^{reset_t_i, reset_len_i, reset_en_i};
   end
 
   // ------------------------------------------------------------ output

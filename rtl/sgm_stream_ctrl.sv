@@ -17,7 +17,8 @@
 // mode's Cmax leaves the cost word) is dropped whole, and so is a frame that asks
 // for a run-time lever the build lacks (a uniqueness ratio other than 0 with
 // UNIQUENESS = 0, an AD weight other than 0 with AD_TERM = 0, a fifth-path weight
-// other than 0 with RIGHT_PATH = 0) or a fifth-path weight above 8.
+// other than 0 with RIGHT_PATH = 0, a path restart threshold other than 0 with
+// EDGE_RESET = 0), a fifth-path weight above 8 or a path restart with length 0.
 //
 // Configuration is sampled with the tuser beat's handshake (kept per input
 // buffer entry) and applied when that frame starts; the P2 table is refilled then (lut_start_o) and the
@@ -35,8 +36,9 @@
 // cost word holds 0 .. 2^CBITS - 1, CBITS = bits of 2 NB), XW/YW column/row
 // bits (rows count on past the frame while flushing: MAX_HEIGHT + flush rows
 // must fit YW bits), PW penalty bits, DW disparity bits (DW <= 15), FIFO_DEPTH,
-// UNIQUENESS, AD_TERM and RIGHT_PATH (sgm_top's: whether the build has the
-// uniqueness test, the AD term, the fifth path; 0 rejects frames that set them).
+// UNIQUENESS, AD_TERM, RIGHT_PATH and EDGE_RESET (sgm_top's: whether the build
+// has the uniqueness test, the AD term, the fifth path, the path restart at strong
+// edges; 0 rejects frames that set them).
 // Throughput: one beat per cycle in both directions when the output is ready.
 module sgm_stream_ctrl #(
   parameter int MAX_WIDTH  = 1280,
@@ -50,7 +52,8 @@ module sgm_stream_ctrl #(
   parameter int FIFO_DEPTH = 4,
   parameter int UNIQUENESS = 1,
   parameter int AD_TERM    = 1,
-  parameter int RIGHT_PATH = 0
+  parameter int RIGHT_PATH = 0,
+  parameter int EDGE_RESET = 0
 ) (
   input  wire                 clk_i,
   input  wire                 rst_ni,
@@ -84,6 +87,9 @@ module sgm_stream_ctrl #(
   input  wire  [3:0]          cfg_ad_weight_i,
   input  wire  [7:0]          cfg_ad_cap_i,
   input  wire  [3:0]          cfg_right_weight_i,
+  input  wire  [7:0]          cfg_reset_t_i,      // path restart: T (0 off), R (1 .. 15), path flags
+  input  wire  [3:0]          cfg_reset_len_i,
+  input  wire  [4:0]          cfg_reset_paths_i,
   // The latched configuration, constant while a frame's slots flow.
   output logic [XW-1:0]       width_o,
   output logic [YW-1:0]       height_o,
@@ -102,6 +108,9 @@ module sgm_stream_ctrl #(
   output logic [3:0]          ad_weight_o,   // AD term weight (0 off)
   output logic [7:0]          ad_cap_o,      // AD term cap
   output logic [3:0]          right_weight_o, // fifth path weight W5 (0 off, 1 .. 8)
+  output logic [7:0]          reset_t_o,     // path restart threshold T (0 off)
+  output logic [3:0]          reset_len_o,   // path restart length R
+  output logic [4:0]          reset_paths_o, // path restart flags (0, 45, 90, 135 degrees, the fifth path)
   output logic                lut_start_o,
   input  wire                 lut_ready_i,
   // Pipeline slots.
@@ -160,18 +169,19 @@ module sgm_stream_ctrl #(
   wire        unused_ad = ^ad_max[2:0];
   // A lever the build lacks must be off (UNIQUENESS / AD_TERM = 0).
   wire        has_levers = (UNIQUENESS != 0 || cfg_unique_i == 7'd0) && (AD_TERM != 0 || cfg_ad_weight_i == 4'd0) &&
-                           (RIGHT_PATH != 0 || cfg_right_weight_i == 4'd0);
+                           (RIGHT_PATH != 0 || cfg_right_weight_i == 4'd0) && (EDGE_RESET != 0 || cfg_reset_t_i == 8'd0);
   wire cfg_ok = cfg_width_i >= XW'(MIN_WIDTH) && cfg_width_i <= XW'(MAX_WIDTH) &&
                 cfg_height_i >= YW'(9) && cfg_height_i <= YW'(MAX_HEIGHT) &&
                 cfg_p2_i >= cfg_p1_i && cfg_mode_i != 2'd3 && cfg_unique_i <= 7'd99 && ad_fits && has_levers &&
-                cfg_right_weight_i <= 4'd8;
-  localparam int CFGW = XW + YW + 2 * PW + 36;
+                cfg_right_weight_i <= 4'd8 && (cfg_reset_t_i == 8'd0 || cfg_reset_len_i != 4'd0);
+  localparam int CFGW = XW + YW + 2 * PW + 53;
   logic [CFGW-1:0] pend_q [0:1];
   always_ff @(posedge clk_i) begin
     if (in_push && s_tuser_i)
       pend_q[in_wr_q] <= {cfg_ok, cfg_width_i, cfg_height_i, cfg_p1_i, cfg_p2_i, cfg_mode_i, cfg_subpixel_i,
                           cfg_lr_en_i, cfg_lr_tol_i, cfg_fill_i, cfg_snap_i, cfg_median_i, cfg_p2_mode_i,
-                          cfg_weights_i, cfg_unique_i, cfg_ad_weight_i, cfg_ad_cap_i, cfg_right_weight_i};
+                          cfg_weights_i, cfg_unique_i, cfg_ad_weight_i, cfg_ad_cap_i, cfg_right_weight_i,
+                          cfg_reset_t_i, cfg_reset_len_i, cfg_reset_paths_i};
   end
   // The configuration of the head beat (meaningful when it is a tuser beat).
   logic [XW-1:0] pend_width;
@@ -184,10 +194,13 @@ module sgm_stream_ctrl #(
   logic [3:0]    pend_ad_weight;
   logic [7:0]    pend_ad_cap;
   logic [3:0]    pend_right_weight;
+  logic [7:0]    pend_reset_t;
+  logic [3:0]    pend_reset_len;
+  logic [4:0]    pend_reset_paths;
   logic          pend_ok;
   assign {pend_ok, pend_width, pend_height, pend_p1, pend_p2, pend_mode, pend_subpixel, pend_lr_en,
           pend_lr_tol, pend_fill, pend_snap, pend_median, pend_p2_mode, pend_weights, pend_unique,
-          pend_ad_weight, pend_ad_cap, pend_right_weight} = pend_q[in_rd_q];
+          pend_ad_weight, pend_ad_cap, pend_right_weight, pend_reset_t, pend_reset_len, pend_reset_paths} = pend_q[in_rd_q];
 
   // ---------------------------------------------------------------- output FIFO
   localparam int FAW = $clog2(FIFO_DEPTH);
@@ -301,6 +314,9 @@ module sgm_stream_ctrl #(
             ad_weight_o <= pend_ad_weight;
             ad_cap_o    <= pend_ad_cap;
             right_weight_o <= pend_right_weight;
+            reset_t_o      <= pend_reset_t;
+            reset_len_o    <= pend_reset_len;
+            reset_paths_o  <= pend_reset_paths;
             lut_start_o <= 1'b1;
             state_q     <= FILL;
           end

@@ -29,6 +29,9 @@
 // run-time weight cfg_right_weight_i, 0 = off): it sits between the cost volume and
 // the path engine and delays everything behind the census by its latency
 // (K (4B + 1 + ceil(5 / K)) + 1 slots); 0 leaves it out (the default: 64).
+// EDGE_RESET = 1 builds the path restart at strong edges (docs/rtl.md; run-time
+// cfg_reset_t_i, 0 = off, cfg_reset_len_i, cfg_reset_paths_i); 0 (the default)
+// leaves it out, and a frame with cfg_reset_t_i != 0 is dropped with error_o[3].
 // Frame constraints: MIN_FRAME_WIDTH (max(D, 16); with many lanes at least the
 // engine's K SKEW + 1) <= width <= MAX_WIDTH, 9 <= height <= MAX_HEIGHT
 // (frames outside are dropped and flagged in error_o[3], as are P2' < P1, cfg_mode_i = 3
@@ -47,6 +50,7 @@ module sgm_top #(
   parameter int UNIQUENESS /*verilator public*/ = 1,  // the uniqueness ratio is built (0: not)
   parameter int AD_TERM    /*verilator public*/ = 1,  // the AD term is built (0: not)
   parameter int RIGHT_BLOCK /*verilator public*/ = 64,  // the fifth path's block B (a power of two >= 2), 0: not built
+  parameter int EDGE_RESET /*verilator public*/ = 0,  // the path restart at strong edges is built (0: not)
   localparam int XW        = $clog2(MAX_WIDTH + 1),
   // Lanes (docs/reschedule.md "The top's wiring at K lanes"). The engine's
   // SKEW (sgm_path_engine owns the formula; mirrored here for the deal, checked
@@ -119,6 +123,11 @@ module sgm_top #(
   input  wire  [3:0]   cfg_ad_weight_i, // AD term weight W: 0 off, 1 .. 15
   input  wire  [7:0]   cfg_ad_cap_i,    // AD term cap T; Cmax of the mode + (W T) >> 3 >= 2^CBITS: out of range, error_o[3]
   input  wire  [3:0]   cfg_right_weight_i, // fifth path weight W5: 0 off, 1 .. 8 (9 .. 15, or any but 0 without RIGHT_BLOCK: error_o[3])
+  // The path restart at strong edges: T (0 off; any but 0 without EDGE_RESET: error_o[3]),
+  // R (1 .. 15; 0 with T != 0: error_o[3]), flags of the paths 0, 45, 90, 135 degrees, the fifth.
+  input  wire  [7:0]   cfg_reset_t_i,
+  input  wire  [3:0]   cfg_reset_len_i,
+  input  wire  [4:0]   cfg_reset_paths_i,
   // Status.
   output logic         busy_o,
   output logic         frame_done_o,
@@ -148,6 +157,9 @@ module sgm_top #(
   logic [3:0]    ad_weight;
   logic [3:0]    right_weight;
   logic [7:0]    ad_cap;
+  logic [7:0]    reset_t;
+  logic [3:0]    reset_len;
+  logic [4:0]    reset_paths;
   logic          lut_start, lut_ready;
   logic          res_valid, res_ok;
   logic [DW-1:0] res_disp;
@@ -164,7 +176,8 @@ module sgm_top #(
     .FIFO_DEPTH(4),
     .UNIQUENESS(UNIQUENESS),
     .AD_TERM   (AD_TERM),
-    .RIGHT_PATH(RIGHT_PATH)
+    .RIGHT_PATH(RIGHT_PATH),
+    .EDGE_RESET(EDGE_RESET)
   ) u_ctrl (
     .clk_i         (clk_i),
     .rst_ni        (rst_ni),
@@ -195,6 +208,9 @@ module sgm_top #(
     .cfg_ad_weight_i(cfg_ad_weight_i),
     .cfg_ad_cap_i  (cfg_ad_cap_i),
     .cfg_right_weight_i(cfg_right_weight_i),
+    .cfg_reset_t_i (cfg_reset_t_i),
+    .cfg_reset_len_i(cfg_reset_len_i),
+    .cfg_reset_paths_i(cfg_reset_paths_i),
     .width_o       (width),
     .height_o      (height),
     .p1_o          (p1),
@@ -212,6 +228,9 @@ module sgm_top #(
     .ad_weight_o   (ad_weight),
     .ad_cap_o      (ad_cap),
     .right_weight_o(right_weight),
+    .reset_t_o     (reset_t),
+    .reset_len_o   (reset_len),
+    .reset_paths_o (reset_paths),
     .lut_start_o   (lut_start),
     .lut_ready_i   (lut_ready),
     .en_o          (en_ctrl),
@@ -420,7 +439,7 @@ module sgm_top #(
     localparam int SIDE_W = 2 * XW + 2 * RW + 8 + 32 + 2;
     sgm_right_path #(
       .D(D), .CW(CBITS), .LW(LW), .PW(8), .BLOCK(RIGHT_BLOCK), .XW(XW), .LANES(LANES), .SIDE_W(SIDE_W),
-      .L5_LAG(LANES + 1)
+      .L5_LAG(LANES + 1), .EDGE_RESET(EDGE_RESET)
     ) u_right (
       .clk_i       (clk_i),
       .rst_ni      (rst_ni),
@@ -428,6 +447,9 @@ module sgm_top #(
       .width_i     (width),
       .p1_i        (p1),
       .weight_i    (right_weight),
+      .reset_t_i   (reset_t),
+      .reset_len_i (reset_len),
+      .reset_en_i  (reset_paths[4]),
       .lut_start_i (lut_start),
       .p2_i        (p2),
       .p2_mode_i   (p2_mode),
@@ -448,7 +470,7 @@ module sgm_top #(
            {lane_col, lane_row, lane_centre, lane_nbr, lane_valid};
     assign {rdt_col_e, rdt_row_e} = {rdt_col, rdt_row};
     assign l5w = '0;
-    wire [XW+3:0] unused_right = {right_weight, col2};  // wiring only (no logic in the top)
+    wire [XW+4:0] unused_right = {right_weight, col2, reset_paths[4]};  // wiring only (no logic in the top)
   end
 
   // The path engine also needs the row and the left grays of the pixel,
@@ -474,7 +496,7 @@ module sgm_top #(
   // census unit's column (COST_LATENCY slots ahead) goes straight in.
   sgm_path_engine #(
     .D(D), .CW(CBITS), .LW(LW), .PW(8), .MAX_WIDTH(MAX_WIDTH), .XW(XW), .YW(RW), .GRAY_LEAD(GRAY_LEAD),
-    .COL_LEAD(COST_LATENCY), .LANES(LANES), .RIGHT_PATH(RIGHT_PATH)
+    .COL_LEAD(COST_LATENCY), .LANES(LANES), .RIGHT_PATH(RIGHT_PATH), .EDGE_RESET(EDGE_RESET)
   ) u_paths (
     .clk_i       (clk_i),
     .rst_ni      (rst_ni),
@@ -482,6 +504,9 @@ module sgm_top #(
     .width_i     (width),
     .p1_i        (p1),
     .weights_eq_i(weights_eq),
+    .reset_t_i   (reset_t),
+    .reset_len_i (reset_len),
+    .reset_paths_i(reset_paths[3:0]),
     .lut_start_i (lut_start),
     .p2_i        (p2),
     .p2_mode_i   (p2_mode),

@@ -22,6 +22,12 @@ uint32_t Driver::encodeConfig(const FrameConfig& f) {
          (f.uniqueness << SGM_CONFIG_UNIQUENESS_SHIFT & SGM_CONFIG_UNIQUENESS_MASK);
 }
 
+uint32_t Driver::encodeEdgeReset(const FrameConfig& f) {
+  return (f.edgeReset & SGM_EDGE_RESET_T_MASK) << SGM_EDGE_RESET_T_SHIFT |
+         (f.edgeResetLength & SGM_EDGE_RESET_LEN_MASK) << SGM_EDGE_RESET_LEN_SHIFT |
+         (f.edgeResetPaths & SGM_EDGE_RESET_PATHS_MASK) << SGM_EDGE_RESET_PATHS_SHIFT;
+}
+
 bool Driver::sizeFits(const Identity& id, uint32_t width, uint32_t height) {
   return width >= id.minWidth && width <= id.maxWidth && height >= SGM_MIN_HEIGHT && height <= id.maxHeight;
 }
@@ -29,7 +35,8 @@ bool Driver::sizeFits(const Identity& id, uint32_t width, uint32_t height) {
 bool Driver::featuresFit(const Identity& id, const FrameConfig& f) {
   return (f.uniqueness == 0 || (id.features & SGM_FEATURES_UNIQUENESS)) &&
          (f.adWeight == 0 || (id.features & SGM_FEATURES_AD_TERM)) &&
-         (f.rightWeight == 0 || (id.features & SGM_FEATURES_RIGHT_PATH));
+         (f.rightWeight == 0 || (id.features & SGM_FEATURES_RIGHT_PATH)) &&
+         (f.edgeReset == 0 || (id.features & SGM_FEATURES_EDGE_RESET));
 }
 
 uint32_t Driver::rightBlock(const Identity& id) {
@@ -60,6 +67,7 @@ void Driver::configure(const FrameConfig& f) {
   write(SGM_REG_FRAME_SIZE, encodeSize(f.width, f.height));
   write(SGM_REG_PENALTY, encodePenalty(f));
   write(SGM_REG_CONFIG, encodeConfig(f));
+  write(SGM_REG_EDGE_RESET, encodeEdgeReset(f));
   write(SGM_REG_CTRL, ctrl & ~SGM_CTRL_HOLD);
 }
 
@@ -83,6 +91,10 @@ FrameConfig Driver::readConfig() {
   f.p2Paper = config & SGM_CONFIG_P2_PAPER;
   f.weightsEqual = config & SGM_CONFIG_WEIGHTS_EQUAL;
   f.uniqueness = (config & SGM_CONFIG_UNIQUENESS_MASK) >> SGM_CONFIG_UNIQUENESS_SHIFT;
+  const uint32_t edge = read(SGM_REG_EDGE_RESET);
+  f.edgeReset = edge >> SGM_EDGE_RESET_T_SHIFT & SGM_EDGE_RESET_T_MASK;
+  f.edgeResetLength = edge >> SGM_EDGE_RESET_LEN_SHIFT & SGM_EDGE_RESET_LEN_MASK;
+  f.edgeResetPaths = edge >> SGM_EDGE_RESET_PATHS_SHIFT & SGM_EDGE_RESET_PATHS_MASK;
   return f;
 }
 

@@ -58,6 +58,7 @@ struct FrameInput {
   int uniqueCode = -1;  // when >= 0, replaces cfg_unique_i (an out-of-range ratio on purpose)
   int adWeightCode = -1;  // when >= 0, replaces cfg_ad_weight_i (an AD term that leaves the cost word)
   int rightWeightCode = -1;  // when >= 0, replaces cfg_right_weight_i (a fifth-path weight out of range)
+  int resetLengthCode = -1;  // when >= 0, replaces cfg_reset_len_i (a restart of length 0)
   // The configuration is out of range: the core drops the frame whole (no output,
   // no frame_done_o); FrameOutput::errors is error_o once its last beat is in.
   bool dropped = false;
@@ -263,6 +264,9 @@ class CoreHarness {
     top_->cfg_ad_weight_i = f.adWeightCode >= 0 ? f.adWeightCode : c.adWeight;
     top_->cfg_ad_cap_i = c.adCap;
     top_->cfg_right_weight_i = f.rightWeightCode >= 0 ? f.rightWeightCode : c.rightWeight;
+    top_->cfg_reset_t_i = c.resetThreshold;
+    top_->cfg_reset_len_i = f.resetLengthCode >= 0 ? f.resetLengthCode : c.resetLength;
+    top_->cfg_reset_paths_i = c.resetPaths;
   }
 
   DisparityMap decode(size_t first, int w, int h) {

@@ -31,6 +31,9 @@ struct HardwareConfig {
   int uniqueness = 0;         // cfg_unique_i: ratio in %, 0 = off
   int adWeight = 0, adCap = 0;  // cfg_ad_weight_i, cfg_ad_cap_i: the AD term
   int rightWeight = 0;          // cfg_right_weight_i: the fifth path's W5 (its block is the build's RIGHT_BLOCK)
+  // cfg_reset_t_i, cfg_reset_len_i, cfg_reset_paths_i: the path restart at strong edges
+  // (T 0 = off; bit k of the flags: path k, 0, 45, 90, 135 degrees, the fifth).
+  int resetThreshold = 0, resetLength = 0, resetPaths = 0;
 };
 
 inline HardwareConfig hardwareConfig(const Params& p, int width, int height) {
@@ -42,6 +45,8 @@ inline HardwareConfig hardwareConfig(const Params& p, int width, int height) {
   c.uniqueness = p.uniqueness;
   c.adWeight = p.adWeight, c.adCap = p.adCap;
   c.rightWeight = p.rightPathWeight;
+  c.resetThreshold = p.edgeReset.threshold, c.resetLength = p.edgeReset.length;
+  for (size_t k = 0; k < p.edgeReset.paths.size(); ++k) c.resetPaths |= (p.edgeReset.paths[k] != 0) << k;
   return c;
 }
 

@@ -34,7 +34,7 @@ struct Identity {
   uint32_t features = 0;  // SGM_FEATURES_* bits: the run-time levers the build has
 };
 
-// One frame's run-time configuration (the fields of FRAME_SIZE, PENALTY, CONFIG).
+// One frame's run-time configuration (the fields of FRAME_SIZE, PENALTY, CONFIG, EDGE_RESET).
 struct FrameConfig {
   uint32_t width = 0, height = 0;
   // Defaults: the golden model's (SGM_PENALTY_RESET / SGM_CONFIG_RESET); a build without
@@ -49,6 +49,9 @@ struct FrameConfig {
   uint32_t uniqueness = 15;  // uniqueness ratio in %, 0 (off) .. SGM_CONFIG_UNIQUENESS_MAX
   uint32_t adWeight = 3, adCap = 20;  // the AD term: C += (W min(AD, T)) >> 3, W 0 (off) .. 15
   uint32_t rightWeight = 4;  // the fifth path's W5: 0 (off) .. 8, in blocks of the build's (FEATURES)
+  // The path restart at strong edges (EDGE_RESET): threshold T (0 off), length R (1 .. 15),
+  // path flags (bit k: path k, 0, 45, 90, 135 degrees, the fifth).
+  uint32_t edgeReset = 0, edgeResetLength = 5, edgeResetPaths = 0x1F;
 
   // The four-path defaults (golden preset "four-path"), for builds without those levers.
   static FrameConfig fourPath() {
@@ -93,7 +96,8 @@ class Driver {
   static bool sizeFits(const Identity& id, uint32_t width, uint32_t height);
   // Whether the build of this identity has every lever the frame sets (the core drops a
   // frame with uniqueness != 0 without SGM_FEATURES_UNIQUENESS, adWeight != 0 without
-  // SGM_FEATURES_AD_TERM, or rightWeight != 0 without SGM_FEATURES_RIGHT_PATH, and flags
+  // SGM_FEATURES_AD_TERM, rightWeight != 0 without SGM_FEATURES_RIGHT_PATH, or edgeReset != 0
+  // without SGM_FEATURES_EDGE_RESET, and flags
   // ERROR.CONFIG).
   static bool featuresFit(const Identity& id, const FrameConfig& frame);
   // The fifth path's block B of the build (0: the build has no fifth path).
@@ -101,6 +105,7 @@ class Driver {
   static uint32_t encodeSize(uint32_t width, uint32_t height);
   static uint32_t encodePenalty(const FrameConfig& frame);
   static uint32_t encodeConfig(const FrameConfig& frame);
+  static uint32_t encodeEdgeReset(const FrameConfig& frame);
 
  private:
   uint32_t read(uint32_t offset) { return bus_.read(offset); }

@@ -18,7 +18,7 @@
 #define SGM_REG_CENSUS          0x10u /* census window: [7:0] width, [15:8] height */
 #define SGM_REG_MIN_WIDTH       0x14u /* narrowest frame width of the build (map version 2) */
 #define SGM_REG_LANES           0x18u /* row lanes of the build, LANES (map version 2) */
-#define SGM_REG_FEATURES        0x1Cu /* the run-time levers the build has, SGM_FEATURES_* (map version 4) */
+#define SGM_REG_FEATURES        0x1Cu /* the run-time levers the build has, SGM_FEATURES_* (map version 4; bit 3 version 5) */
 
 /* ---- control (read-write) */
 #define SGM_REG_CTRL            0x20u
@@ -34,13 +34,16 @@
                                          a write clears the counters of its enabled byte lanes */
 #define SGM_REG_LAST_SIZE       0x40u /* [15:0] width, [31:16] height of the last finished frame */
 
+/* ---- control (read-write), map version 5 */
+#define SGM_REG_EDGE_RESET      0x44u /* the path restart at strong edges: [7:0] T, [11:8] R, [20:16] path flags */
+
 /* ---- interrupt */
 #define SGM_REG_IRQ_ENABLE      0x48u
 #define SGM_REG_IRQ_STATUS      0x4Cu /* write 1 to clear; irq_o = |(IRQ_STATUS & IRQ_ENABLE) */
 
 /* ---- values and fields */
-#define SGM_ID_VALUE            0x53474D04u /* 'S' 'G' 'M', version 4 (3 had no FEATURES, 2 no CONFIG.UNIQUENESS,
-                                               1 no MIN_WIDTH, LANES) */
+#define SGM_ID_VALUE            0x53474D05u /* 'S' 'G' 'M', version 5 (4 had no EDGE_RESET, 3 no FEATURES,
+                                               2 no CONFIG.UNIQUENESS, 1 no MIN_WIDTH, LANES) */
 #define SGM_MIN_HEIGHT          9u /* shortest frame of every build (sgm_stream_ctrl) */
 #define SGM_ID_MAGIC_MASK       0xFFFFFF00u
 #define SGM_ID_VERSION_MASK     0x000000FFu
@@ -49,15 +52,17 @@
 #define SGM_CENSUS_HEIGHT_SHIFT 8
 #define SGM_CENSUS_FIELD_MASK   0xFFu
 
-/* FEATURES: 1 = the build has the lever (sgm_top UNIQUENESS / AD_TERM / RIGHT_BLOCK); a
- * frame that sets a lever the build lacks (CONFIG.UNIQUENESS, PENALTY.AD_WEIGHT or
- * PENALTY.RIGHT_WEIGHT not 0) is dropped with ERROR.CONFIG. Other bits are reserved (read 0). */
+/* FEATURES: 1 = the build has the lever (sgm_top UNIQUENESS / AD_TERM / RIGHT_BLOCK /
+ * EDGE_RESET); a frame that sets a lever the build lacks (CONFIG.UNIQUENESS,
+ * PENALTY.AD_WEIGHT, PENALTY.RIGHT_WEIGHT or EDGE_RESET.T not 0) is dropped with
+ * ERROR.CONFIG. Other bits are reserved (read 0). */
 #define SGM_FEATURES_UNIQUENESS (1u << 0) /* the uniqueness ratio (CONFIG.UNIQUENESS) */
 #define SGM_FEATURES_AD_TERM    (1u << 1) /* the AD term (PENALTY.AD_WEIGHT, AD_CAP) */
 #define SGM_FEATURES_RIGHT_PATH (1u << 2) /* the fifth path in blocks (PENALTY.RIGHT_WEIGHT) */
+#define SGM_FEATURES_EDGE_RESET (1u << 3) /* the path restart at strong edges (EDGE_RESET; map version 5) */
 #define SGM_FEATURES_RIGHT_BLOCK_SHIFT 8  /* 4 bits: log2 of the fifth path's block B (0 without it) */
 #define SGM_FEATURES_RIGHT_BLOCK_MASK  0xFu
-#define SGM_FEATURES_MASK       0x00000F07u
+#define SGM_FEATURES_MASK       0x00000F0Fu
 
 #define SGM_CTRL_ENABLE         (1u << 0) /* 0: a start-of-frame beat is held back (frame boundary) */
 #define SGM_CTRL_SOFT_RESET     (1u << 1) /* write 1: reset the core (not the registers); reads 0 */
@@ -97,6 +102,17 @@
 #define SGM_CONFIG_UNIQUENESS_MAX   99u
 #define SGM_CONFIG_MASK         0x7F037733u
 
+/* EDGE_RESET: a path marked in PATHS starts again (Lr = C) at every pixel whose last R steps
+ * along the path cross a gray step of at least T (docs/algorithm.md section 12). T = 0: off;
+ * T != 0 with R = 0, or without SGM_FEATURES_EDGE_RESET: frame dropped, ERROR.CONFIG. */
+#define SGM_EDGE_RESET_T_SHIFT      0      /* 8 bits: the gray step of a strong edge, 0 off */
+#define SGM_EDGE_RESET_T_MASK       0xFFu
+#define SGM_EDGE_RESET_LEN_SHIFT    8      /* 4 bits: R, steps restarted from the edge on, 1 .. 15 */
+#define SGM_EDGE_RESET_LEN_MASK     0xFu
+#define SGM_EDGE_RESET_PATHS_SHIFT  16     /* 5 bits: bit k = path k restarts (0, 45, 90, 135 degrees, the fifth) */
+#define SGM_EDGE_RESET_PATHS_MASK   0x1Fu
+#define SGM_EDGE_RESET_MASK         0x001F0FFFu
+
 #define SGM_STATUS_BUSY         (1u << 0) /* a frame is in flight */
 #define SGM_STATUS_RESETTING    (1u << 1) /* the soft reset is running */
 
@@ -119,5 +135,6 @@
 #define SGM_CONFIG_RESET        0x0F005131u /* rsad, sub-pixel, LR check tolerance 1, fill, median, uniqueness 15 */
 #define SGM_PENALTY_RESET_FOUR_PATH 0x00146412u /* P1 18, P2' 100, AD cap 20, AD weight 0 (off), W5 0 (off) */
 #define SGM_CONFIG_RESET_FOUR_PATH  0x00007131u /* rsad, sub-pixel, LR check tolerance 1, fill, snap, median */
+#define SGM_EDGE_RESET_RESET    0x001F0500u /* off (T 0), R 5, every path: the golden EdgeReset{} */
 
 #endif /* SGM_REGS_H */

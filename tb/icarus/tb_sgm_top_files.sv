@@ -80,6 +80,9 @@ module tb_sgm_top_files #(
     .cfg_ad_weight_i(cfg_ad_weight),
     .cfg_ad_cap_i  (cfg_ad_cap),
     .cfg_right_weight_i(cfg_right_weight),
+    .cfg_reset_t_i (8'd0),  // the default build has no path restart (EDGE_RESET = 0)
+    .cfg_reset_len_i(4'd0),
+    .cfg_reset_paths_i(5'd0),
     .busy_o        (busy),
     .frame_done_o  (frame_done),
     .error_o       (error),

@@ -49,6 +49,9 @@ module tb_stream_ctrl #(
   logic [3:0]    unused_ad_weight;
   logic [7:0]    unused_ad_cap;
   logic [3:0]    unused_right_weight;
+  logic [7:0]    unused_reset_t;
+  logic [3:0]    unused_reset_len;
+  logic [4:0]    unused_reset_paths;
   logic          unused_sub, unused_lr, unused_fill, unused_snap, unused_med, unused_p2_mode, unused_weights;
 
   // Stand-in P2 table: ready FILL_CYCLES cycles after a start.
@@ -79,10 +82,11 @@ module tb_stream_ctrl #(
     .cfg_p1_i, .cfg_p2_i, .cfg_mode_i, .cfg_subpixel_i(1'b1), .cfg_lr_en_i(1'b1),
     .cfg_lr_tol_i(3'd1), .cfg_fill_i(1'b1), .cfg_snap_i(1'b1), .cfg_median_i(1'b1),
     .cfg_p2_mode_i(1'b0), .cfg_weights_i(1'b0), .cfg_unique_i(7'd0), .cfg_ad_weight_i(4'd0), .cfg_ad_cap_i(8'd0),
-    .cfg_right_weight_i(4'd0),
+    .cfg_right_weight_i(4'd0), .cfg_reset_t_i(8'd0), .cfg_reset_len_i(4'd0), .cfg_reset_paths_i(5'd0),
     .width_o(width), .height_o(height), .p1_o(unused_p1), .p2_o(unused_p2), .mode_o(unused_mode),
     .subpixel_o(unused_sub), .lr_en_o(unused_lr), .lr_tol_o(unused_tol), .fill_o(unused_fill),
-    .snap_o(unused_snap), .median_o(unused_med), .p2_mode_o(unused_p2_mode), .weights_o(unused_weights), .unique_o(unused_unique), .ad_weight_o(unused_ad_weight), .ad_cap_o(unused_ad_cap), .right_weight_o(unused_right_weight), .lut_start_o(lut_start), .lut_ready_i(fill_q == '0),
+    .snap_o(unused_snap), .median_o(unused_med), .p2_mode_o(unused_p2_mode), .weights_o(unused_weights), .unique_o(unused_unique), .ad_weight_o(unused_ad_weight), .ad_cap_o(unused_ad_cap), .right_weight_o(unused_right_weight),
+    .reset_t_o(unused_reset_t), .reset_len_o(unused_reset_len), .reset_paths_o(unused_reset_paths), .lut_start_o(lut_start), .lut_ready_i(fill_q == '0),
     .en_o, .pix_left_o(pix_l), .pix_right_o(pix_r), .col_o(col), .row_o(row), .sof_o(sof),
     .res_valid_i(slot_out[SLOT-1]), .res_disp_i(slot_out[1 +: DW]), .res_ok_i(slot_out[0]),
     .busy_o, .frame_done_o, .error_o, .error_set_o
@@ -90,7 +94,8 @@ module tb_stream_ctrl #(
 
   wire unused = &{1'b0, width, col, sof, unused_p1, unused_p2, unused_mode, unused_tol, unused_sub, unused_lr,
                   unused_fill, unused_snap, unused_med, unused_p2_mode, unused_weights, unused_unique,
-                  unused_ad_weight, unused_ad_cap, unused_right_weight};
+                  unused_ad_weight, unused_ad_cap, unused_right_weight, unused_reset_t, unused_reset_len,
+                  unused_reset_paths};
 
 endmodule
 `default_nettype wire

@@ -96,7 +96,7 @@ fi
 # Test binaries in the order they are tried: NAME (make target build/bin/NAME) and the
 # top it verilates (read from the Makefile's rtl_test lines; the regression from regress.mk).
 order=(rtl-p2-lut rtl-stream-ctrl rtl-hole-fill rtl-edge-snap rtl-median5x5 rtl-wta-d16 rtl-wta-d16-lean rtl-lr-check-d16 rtl-lr-check-d16-lean rtl-lr-lanes-d16-k3
-       rtl-census-unit rtl-census-lanes-k1 rtl-census-lanes-k2 rtl-census-lanes-k3-9x9 rtl-census-lanes-k6 rtl-cost-volume-d16 rtl-cost-volume-d16-lean rtl-cost-lanes-d16-k3 rtl-lane-deal-k2 rtl-lane-deal-k3 rtl-path-ring-d16 rtl-path-ring-d16-k3 rtl-path-ring-d16-k12 rtl-path-ring-d32-k6 rtl-path-ring-d64-k4 rtl-path-ring-d64-k6 rtl-right-path-d16-b8 rtl-right-path-d16-b16-k3 rtl-path-engine-d16 rtl-path-engine-d16-k2 rtl-path-engine-d16-k5 rtl-path-engine-d64-k6 rtl-top-d16 rtl-top-d16-lean rtl-top-d16-rb8 rtl-top-d16-k2 rtl-top-d16-k2-rb16 rtl-top-d16-k3-9x9 sgm-regress-d16-w128 rtl-top-d32 rtl-top-d64
+       rtl-census-unit rtl-census-lanes-k1 rtl-census-lanes-k2 rtl-census-lanes-k3-9x9 rtl-census-lanes-k6 rtl-cost-volume-d16 rtl-cost-volume-d16-lean rtl-cost-lanes-d16-k3 rtl-lane-deal-k2 rtl-lane-deal-k3 rtl-path-ring-d16 rtl-path-ring-d16-k3 rtl-path-ring-d16-k12 rtl-path-ring-d32-k6 rtl-path-ring-d64-k4 rtl-path-ring-d64-k6 rtl-right-path-d16-b8 rtl-right-path-d16-b4-k2 rtl-right-path-d16-b16-k3 rtl-right-path-d64-b32-k6 rtl-path-engine-d16 rtl-path-engine-d16-k2 rtl-path-engine-d16-k5 rtl-path-engine-d64-k6 rtl-top-d16 rtl-top-d16-lean rtl-top-d16-rb8 rtl-top-d16-k2 rtl-top-d16-k2-rb16 rtl-top-d16-k3-9x9 sgm-regress-d16-w128 rtl-top-d32 rtl-top-d64
        rtl-axi-d16 rtl-axi-d16-lean rtl-axi-d16-rb16)
 declare -A top_of=()
 while IFS= read -r l; do

@@ -33,13 +33,15 @@ constexpr int kD = Rtl::D;
 constexpr uint32_t log2Of(uint32_t v) { return v > 1 ? 1 + log2Of(v / 2) : 0; }
 constexpr uint32_t kFeatures =
     (Rtl::UNIQUENESS ? SGM_FEATURES_UNIQUENESS : 0u) | (Rtl::AD_TERM ? SGM_FEATURES_AD_TERM : 0u) |
-    (Rtl::RIGHT_BLOCK ? SGM_FEATURES_RIGHT_PATH | log2Of(Rtl::RIGHT_BLOCK) << SGM_FEATURES_RIGHT_BLOCK_SHIFT : 0u);
+    (Rtl::RIGHT_BLOCK ? SGM_FEATURES_RIGHT_PATH | log2Of(Rtl::RIGHT_BLOCK) << SGM_FEATURES_RIGHT_BLOCK_SHIFT : 0u) |
+    (Rtl::EDGE_RESET ? SGM_FEATURES_EDGE_RESET : 0u);
 
 // The settings with every lever the build lacks off (bit-exact frames run what the build has).
 sgm::Params withBuildLevers(sgm::Params p) {
   if (!Rtl::UNIQUENESS) p.uniqueness = 0;
   if (!Rtl::AD_TERM) p.adWeight = 0;
   if (!Rtl::RIGHT_BLOCK) p.rightPathWeight = 0;
+  if (!Rtl::EDGE_RESET) p.edgeReset.threshold = 0;
   return p;
 }
 
@@ -66,6 +68,8 @@ drv::FrameConfig frameConfig(const sgm::Params& p, cv::Size size) {
   f.lrCheck = c.lrEnable, f.lrTolerance = c.lrTolerance, f.fill = c.fill, f.snap = c.snap, f.median = c.median;
   f.p2Paper = c.p2Paper, f.weightsEqual = c.weightsEqual, f.uniqueness = c.uniqueness;
   f.adWeight = c.adWeight, f.adCap = c.adCap, f.rightWeight = c.rightWeight;
+  f.edgeReset = uint32_t(c.resetThreshold), f.edgeResetLength = uint32_t(c.resetLength);
+  f.edgeResetPaths = uint32_t(c.resetPaths);
   return f;
 }
 
@@ -98,8 +102,12 @@ struct AxiCore {
           extra.sample(core.top().model());
         });
     core.setPresenter([this](const sgm::Params& p, cv::Size size) {
-      busyWhenConfigured.push_back(driver.busy());
+      // Busy once the writes are done: the harness presents a frame's configuration
+      // after the previous frame's first beat, so the writes fell inside that frame
+      // (busy right at the call may still read 0: the controller leaves IDLE two
+      // cycles after the beat).
       driver.configure(frameConfig(p, size));
+      busyWhenConfigured.push_back(driver.busy());
       if (!enabled) driver.enable(enabled = true);
     });
   }
@@ -143,6 +151,7 @@ TEST(SgmAxi, RtlOffsetsAndResetValuesMatchTheHeader) {
       {"ERROR", {Rtl::ADDR_ERROR, SGM_REG_ERROR}},
       {"ERROR_COUNT", {Rtl::ADDR_ERROR_COUNT, SGM_REG_ERROR_COUNT}},
       {"LAST_SIZE", {Rtl::ADDR_LAST_SIZE, SGM_REG_LAST_SIZE}},
+      {"EDGE_RESET", {Rtl::ADDR_EDGE_RESET, SGM_REG_EDGE_RESET}},
       {"IRQ_ENABLE", {Rtl::ADDR_IRQ_ENABLE, SGM_REG_IRQ_ENABLE}},
       {"IRQ_STATUS", {Rtl::ADDR_IRQ_STATUS, SGM_REG_IRQ_STATUS}},
       {"ID_VALUE", {Rtl::ID_VALUE, SGM_ID_VALUE}},
@@ -150,6 +159,8 @@ TEST(SgmAxi, RtlOffsetsAndResetValuesMatchTheHeader) {
       {"FEATURES_AD_TERM", {1u << Rtl::FEATURES_AD_TERM_BIT, SGM_FEATURES_AD_TERM}},
       {"FEATURES_RIGHT_PATH", {1u << Rtl::FEATURES_RIGHT_PATH_BIT, SGM_FEATURES_RIGHT_PATH}},
       {"FEATURES_RIGHT_BLOCK", {uint32_t(Rtl::FEATURES_RIGHT_BLOCK_LSB), SGM_FEATURES_RIGHT_BLOCK_SHIFT}},
+      {"FEATURES_EDGE_RESET", {1u << Rtl::FEATURES_EDGE_RESET_BIT, SGM_FEATURES_EDGE_RESET}},
+      {"EDGE_RESET_RESET", {Rtl::EDGE_RESET_RESET, SGM_EDGE_RESET_RESET}},
       {"FEATURES_VALUE", {Rtl::FEATURES_VALUE, kFeatures}},
       {"PENALTY_RESET", {Rtl::PENALTY_RESET, kPenaltyReset}},
       {"CONFIG_RESET", {Rtl::CONFIG_RESET, kConfigReset}},
@@ -160,6 +171,8 @@ TEST(SgmAxi, RtlOffsetsAndResetValuesMatchTheHeader) {
   const drv::FrameConfig golden = frameConfig(defaults(), {0, 0});
   EXPECT_EQ(drv::Driver::encodePenalty(golden), kPenaltyReset);
   EXPECT_EQ(drv::Driver::encodeConfig(golden), kConfigReset);
+  EXPECT_EQ(drv::Driver::encodeEdgeReset(golden), uint32_t(SGM_EDGE_RESET_RESET));
+  EXPECT_EQ(drv::Driver::encodeEdgeReset(drv::FrameConfig{}), uint32_t(SGM_EDGE_RESET_RESET));
   const drv::FrameConfig ours = frameConfig(sgm::presetParams("default"), {0, 0});
   const drv::FrameConfig four = frameConfig(sgm::presetParams("four-path"), {0, 0});
   EXPECT_EQ(drv::Driver::encodePenalty(ours), uint32_t(SGM_PENALTY_RESET));
@@ -209,6 +222,7 @@ std::vector<RegisterSpec> registers() {
       {"ERROR", SGM_REG_ERROR, 0, 0},              // W1C: its own test
       {"ERROR_COUNT", SGM_REG_ERROR_COUNT, 0, 0},  // cleared by writes: its own test
       {"LAST_SIZE", SGM_REG_LAST_SIZE, 0, 0},
+      {"EDGE_RESET", SGM_REG_EDGE_RESET, SGM_EDGE_RESET_RESET, SGM_EDGE_RESET_MASK},
       {"IRQ_ENABLE", SGM_REG_IRQ_ENABLE, 0, SGM_IRQ_MASK},
       {"IRQ_STATUS", SGM_REG_IRQ_STATUS, 0, 0},    // W1C: its own test
   };
@@ -271,15 +285,23 @@ TEST(SgmAxi, FeaturesAgreeWithTheCore) {
   ad.adWeight = 5, ad.adCap = 24;
   sgm::Params right = defaults();  // the fifth path in the build's blocks (any block when it has none)
   right.rightPathWeight = 4, right.rightPathBlock = Rtl::RIGHT_BLOCK ? Rtl::RIGHT_BLOCK : 16, right.p1 = 24, right.p2 = 200;
+  sgm::Params restart = withBuildLevers(defaults());  // the path restart at strong edges
+  restart.edgeReset = sgm::EdgeReset{30, 6, {1, 1, 0, 1, 1}};
   EXPECT_EQ(drv::Driver::rightBlock(id), uint32_t(Rtl::RIGHT_BLOCK));
   const int w = 40, h = 11;
   uint32_t seed = 30;
-  for (const sgm::Params& p : {unique, ad, right}) {
+  for (const sgm::Params& p : {unique, ad, right, restart}) {
     const drv::FrameConfig config = frameConfig(p, {w, h});
     const bool fits = drv::Driver::featuresFit(id, config);
-    const uint32_t lever = p.uniqueness ? SGM_FEATURES_UNIQUENESS : p.adWeight ? SGM_FEATURES_AD_TERM : SGM_FEATURES_RIGHT_PATH;
+    const uint32_t lever = p.edgeReset.threshold ? SGM_FEATURES_EDGE_RESET
+                           : p.uniqueness        ? SGM_FEATURES_UNIQUENESS
+                           : p.adWeight          ? SGM_FEATURES_AD_TERM
+                                                 : SGM_FEATURES_RIGHT_PATH;
     EXPECT_EQ(fits, (kFeatures & lever) != 0);
-    const std::string what = p.uniqueness ? "uniqueness 30" : p.adWeight ? "AD weight 5" : "fifth path weight 4";
+    const std::string what = p.edgeReset.threshold ? "path restart T 30"
+                             : p.uniqueness        ? "uniqueness 30"
+                             : p.adWeight          ? "AD weight 5"
+                                                   : "fifth path weight 4";
     if (fits) {
       c.expectBitExact({scene(w, h, ++seed, p)}, what + " in a build that has it");
       EXPECT_EQ(c.driver.errors().sticky, 0u) << what;
@@ -346,7 +368,7 @@ TEST(SgmAxi, UndefinedAddressesAnswerSlverrAndChangeNothing) {
     EXPECT_EQ(read.data, 0u) << "read 0x" << std::hex << a;
     EXPECT_EQ(c.bus.write(a, 0xFFFFFFFFu).resp, sgm::tb::kAxilSlvErr) << "write 0x" << std::hex << a;
   }
-  EXPECT_EQ(undefined, 64 - 19);
+  EXPECT_EQ(undefined, 64 - 20);
   for (size_t k = 0; k < registers().size(); ++k)
     EXPECT_EQ(c.bus.read(registers()[k].offset).data, before[k]) << registers()[k].name;
   // Address bits [1:0] are ignored.

@@ -1,7 +1,9 @@
 // sgm_path_engine against the golden path aggregation (docs/algorithm.md
 // section 5): S(p, d) for every pixel and disparity, slots streamed in the
 // engine's lane order (raster order at LANES = 1; tb/lane_schedule.hpp) with
-// random idle cycles, several frames back to back without reset.
+// random idle cycles, several frames back to back without reset. Builds with
+// EDGE_RESET = 1 restart the paths at strong edges as the golden
+// Params::edgeReset does; builds without ignore the restart configuration.
 #include "Vsgm_path_engine.h"
 #include "Vsgm_path_engine_sgm_path_engine.h"
 #include "idle_slot.hpp"
@@ -45,6 +47,8 @@ constexpr int kLanes = int(Vsgm_path_engine_sgm_path_engine::LANES);
 constexpr int kSkew = int(Vsgm_path_engine_sgm_path_engine::SKEW);
 // The narrowest frame that schedule supports (frames here are widened to it).
 constexpr int kMinWidth = int(Vsgm_path_engine_sgm_path_engine::MIN_WIDTH);
+// 1: the build has the path restart at strong edges (EDGE_RESET).
+constexpr bool kEdgeReset = int(Vsgm_path_engine_sgm_path_engine::EDGE_RESET) != 0;
 constexpr int kCostBits = 7, kSumBits = 13;
 
 struct Frame {
@@ -53,6 +57,7 @@ struct Frame {
   int p1 = 20, p2 = 200;
   sgm::P2Mode p2Mode = sgm::P2Mode::kKnee;             // run-time P2 form
   sgm::PathWeighting weights = sgm::PathWeighting::k3232;  // run-time path weights
+  sgm::EdgeReset edgeReset{};  // run-time path restart (threshold 0: off); paths 0 .. 3 only
 };
 
 cv::Mat randomImage(int w, int h, std::mt19937& rng) {
@@ -84,7 +89,9 @@ class PathEngine {
   // Streams one frame and checks every S vector; returns the mismatch text or "".
   std::string run(const Frame& f) {
     const int w = f.cost.width, h = f.cost.height;
-    const sgm::PathVolume expected = sgm::aggregateCost(f.cost, f.gray, f.p1, f.p2, f.p2Mode, f.weights);
+    const sgm::EdgeReset restart = kEdgeReset ? f.edgeReset : sgm::EdgeReset{0};
+    const sgm::PathVolume expected =
+        sgm::aggregateCost(f.cost, f.gray, f.p1, f.p2, f.p2Mode, f.weights, 0, false, 0, nullptr, restart);
     // Per-frame configuration and the P2 table fill, pipeline held.
     top_->en_i = 0;
     top_->width_i = w;
@@ -92,6 +99,11 @@ class PathEngine {
     top_->p2_i = f.p2;
     top_->p2_mode_i = f.p2Mode == sgm::P2Mode::kPaper;
     top_->weights_eq_i = f.weights == sgm::PathWeighting::kEqual;
+    top_->reset_t_i = f.edgeReset.threshold;
+    top_->reset_len_i = f.edgeReset.length;
+    uint32_t resetPaths = 0;
+    for (int r = 0; r < 4; ++r) resetPaths |= uint32_t(f.edgeReset.paths[size_t(r)] != 0) << r;
+    top_->reset_paths_i = resetPaths;
     top_->lut_start_i = 1;
     top_.tick();
     top_->lut_start_i = 0;
@@ -145,7 +157,8 @@ class PathEngine {
             std::ostringstream msg;
             msg << "stage sgm_path_engine: first mismatch at (x=" << x << ", y=" << y << ") d=" << d
                 << ": expected S=" << s[d] << ", got " << got << " (" << w << "x" << h << ", P1=" << f.p1
-                << ", P2'=" << f.p2 << ", " << kLanes << " lanes)";
+                << ", P2'=" << f.p2 << ", " << kLanes << " lanes, restart T=" << f.edgeReset.threshold
+                << " R=" << f.edgeReset.length << " paths " << resetPaths << (kEdgeReset ? "" : " not built") << ")";
             failure = msg.str();
             break;
           }
@@ -184,6 +197,31 @@ TEST(SgmPathEngine, PenaltyExtremes) {
   std::mt19937 rng(2);
   for (auto [p1, p2] : {std::pair{0, 0}, {0, 255}, {255, 255}, {20, 200}})
     EXPECT_EQ(engine.run(syntheticFrame(40, 12, p1, p2, rng)), "");
+}
+
+// The path restart at strong edges: random T, R and path flags changing frame
+// by frame (a threshold that marks many steps, few, none), back to back.
+TEST(SgmPathEngine, RestartAtStrongEdges) {
+  PathEngine engine("sgm_path_engine_restart", 17, 0.25);
+  std::mt19937 rng(5);
+  const int sizes[][2] = {{40, 12}, {23, 9}, {64, 14}, {kD + 5, 11}, {50, 10}, {31, 8}};
+  int k = 0;
+  for (const auto& s : sizes) {
+    const int p2 = 40 + int(rng() % 200), p1 = int(rng() % 40);
+    Frame f = syntheticFrame(std::max(s[0], kMinWidth), s[1], p1, p2, rng);
+    const int thresholds[] = {1, 12, 25, 4, 60, 8};
+    f.edgeReset.threshold = thresholds[k];
+    f.edgeReset.length = k == 0 ? 15 : k == 1 ? 1 : 1 + int(rng() % sgm::kMaxEdgeResetLength);
+    for (int r = 0; r < 4; ++r) f.edgeReset.paths[size_t(r)] = k < 2 ? 1 : int(rng() % 2);
+    f.edgeReset.paths[4] = 0;
+    f.p2Mode = k % 2 ? sgm::P2Mode::kPaper : sgm::P2Mode::kKnee;
+    ++k;
+    EXPECT_EQ(engine.run(f), "");
+  }
+  // Off again (T = 0 with every path flag set).
+  Frame f = syntheticFrame(std::max(33, kMinWidth), 10, 10, 120, rng);
+  f.edgeReset = sgm::EdgeReset{0, 7, {1, 1, 1, 1, 0}};
+  EXPECT_EQ(engine.run(f), "");
 }
 
 TEST(SgmPathEngine, MiddleburyCones) {

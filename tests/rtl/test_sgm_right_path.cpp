@@ -5,7 +5,9 @@
 // the rows y = k mod K), frames of many widths back to back (narrower than a
 // block, between one and two blocks, multiples of a block and not), random idle
 // cycles, and random costs and grays in the rows around each frame (outside the
-// frame: they must not reach a pixel of it).
+// frame: they must not reach a pixel of it). Builds with EDGE_RESET = 1 restart
+// the passes at strong edges as the golden Params::edgeReset does (random T, R
+// and flag per frame); builds without ignore that configuration.
 #include "Vsgm_right_path.h"
 #include "Vsgm_right_path_sgm_right_path.h"
 #include "idle_slot.hpp"
@@ -37,6 +39,7 @@ constexpr int kLanes = int(Vsgm_right_path_sgm_right_path::LANES);
 constexpr int kBlock = int(Vsgm_right_path_sgm_right_path::BLOCK);
 constexpr int kLatency = int(Vsgm_right_path_sgm_right_path::LATENCY);
 constexpr int kL5Lag = int(Vsgm_right_path_sgm_right_path::L5_LAG);
+constexpr bool kEdgeReset = int(Vsgm_right_path_sgm_right_path::EDGE_RESET) != 0;
 constexpr int kCostBits = 7, kPathBits = 9, kWeightedBits = kPathBits + 4;
 constexpr int kDelayLaneSlots = (kLatency - 1) / kLanes;  // DLY
 
@@ -46,12 +49,14 @@ struct Frame {
   std::vector<uint8_t> cost;     // height x width x D
   int p1 = 20, p2 = 200, weight = 1;  // W5
   sgm::P2Mode p2Mode = sgm::P2Mode::kKnee;
+  sgm::EdgeReset edgeReset{0};   // the pass restart (paths[4]: the fifth path's flag)
   std::vector<uint16_t> l5;      // expected W5 L5, height x width x D
 };
 
-Frame randomFrame(int w, int h, int p1, int p2, sgm::P2Mode mode, int weight, std::mt19937& rng) {
+Frame randomFrame(int w, int h, int p1, int p2, sgm::P2Mode mode, int weight, std::mt19937& rng,
+                  const sgm::EdgeReset& edgeReset = sgm::EdgeReset{0}) {
   Frame f;
-  f.width = w, f.height = h, f.p1 = p1, f.p2 = p2, f.p2Mode = mode, f.weight = weight;
+  f.width = w, f.height = h, f.p1 = p1, f.p2 = p2, f.p2Mode = mode, f.weight = weight, f.edgeReset = edgeReset;
   f.gray = cv::Mat(h, w, CV_8UC1);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)  // runs of equal grays (dI = 0) beside random ones
@@ -62,7 +67,7 @@ Frame randomFrame(int w, int h, int p1, int p2, sgm::P2Mode mode, int weight, st
   f.l5.assign(f.cost.size(), 0);
   for (int y = 0; y < h; ++y)
     sgm::addRightPath(f.cost.data() + size_t(y) * w * kD, f.gray.ptr<uint8_t>(y), w, kD, p1, table, weight,
-                      f.l5.data() + size_t(y) * w * kD, kBlock);
+                      f.l5.data() + size_t(y) * w * kD, kBlock, kEdgeReset ? edgeReset : sgm::EdgeReset{0});
   return f;
 }
 
@@ -85,6 +90,9 @@ class Bench {
     top_->width_i = f.width;
     top_->p1_i = f.p1;
     top_->weight_i = f.weight;
+    top_->reset_t_i = f.edgeReset.threshold;
+    top_->reset_len_i = f.edgeReset.length;
+    top_->reset_en_i = f.edgeReset.paths[4] != 0;
     top_->p2_i = f.p2;
     top_->p2_mode_i = f.p2Mode == sgm::P2Mode::kPaper;
     top_->lut_ready_i = 1;
@@ -170,7 +178,8 @@ class Bench {
       if (got != want[d]) {
         where << "(x=" << e.x << ", y=" << e.y << ") W5 L5 d=" << d << ": expected " << want[d] << ", got " << got
               << " (frame " << e.frame << ", " << f.width << "x" << f.height << ", P1=" << f.p1 << ", P2'=" << f.p2 << ", W5=" << f.weight
-              << ")";
+              << ", restart T=" << f.edgeReset.threshold << " R=" << f.edgeReset.length << " on "
+              << f.edgeReset.paths[4] << (kEdgeReset ? "" : " not built") << ")";
         mismatch_ = where.str();
         return;
       }
@@ -212,6 +221,34 @@ TEST(SgmRightPath, FramesOfManyWidthsBackToBack) {
     pixels += long(f.width) * f.height;
   }
   // Each frame's rows after it flush it: every pixel of every frame is checked.
+  EXPECT_EQ(bench.mismatch(), "");
+  EXPECT_EQ(bench.checked(), pixels);
+}
+
+// The pass restart at strong edges: T from many edges to few, R from 1 to 15,
+// the flag on and off, frame by frame back to back (the grays' runs of equal
+// values give steps of 0 beside random ones).
+TEST(SgmRightPath, RestartAtStrongEdges) {
+  Top top("sgm_right_path_restart");
+  top->en_i = 0;
+  top.reset();
+  std::mt19937 rng(13);
+  const int widths[] = {3 * kBlock + 1, kBlock + 3, 2 * kBlock, 5 * kBlock - 2, kBlock / 2 + 1, 4 * kBlock + 7};
+  const int thresholds[] = {1, 100, 40, 0, 160, 20};
+  std::vector<Frame> frames;
+  frames.reserve(std::size(widths));
+  for (size_t i = 0; i < std::size(widths); ++i) {
+    const int w = widths[i];
+    if (w < 2 || w > 255) continue;
+    sgm::EdgeReset reset{thresholds[i], i == 0 ? 15 : i == 1 ? 1 : 1 + int(rng() % sgm::kMaxEdgeResetLength),
+                         {0, 0, 0, 0, i == 5 ? 0 : 1}};
+    const int p2 = 40 + int(rng() % 200), p1 = int(rng() % 40);
+    frames.push_back(randomFrame(w, 2 * kLanes + 1, p1, p2, i % 2 ? sgm::P2Mode::kPaper : sgm::P2Mode::kKnee,
+                                 1 + int(rng() % 8), rng, reset));
+  }
+  Bench bench(top, rng, 0.25);
+  long pixels = 0;
+  for (const Frame& f : frames) bench.run(f, 1), pixels += long(f.width) * f.height;
   EXPECT_EQ(bench.mismatch(), "");
   EXPECT_EQ(bench.checked(), pixels);
 }

@@ -46,6 +46,7 @@ constexpr int kCensusH = Vsgm_top_sgm_top::CENSUS_H;    // 5 or 9
 constexpr bool kUniqueness = Vsgm_top_sgm_top::UNIQUENESS != 0;  // the build has the uniqueness ratio
 constexpr bool kAdTerm = Vsgm_top_sgm_top::AD_TERM != 0;         // the build has the AD term
 constexpr int kRightBlock = Vsgm_top_sgm_top::RIGHT_BLOCK;       // the fifth path's block (0: not built)
+constexpr bool kEdgeReset = Vsgm_top_sgm_top::EDGE_RESET != 0;    // the build has the path restart
 constexpr bool kLean = !kUniqueness || !kAdTerm;
 
 // The settings with every lever the build lacks off (bit-exact tests run what the build
@@ -55,12 +56,14 @@ sgm::Params withBuildLevers(sgm::Params p) {
   if (!kAdTerm) p.adWeight = 0;
   if (!kRightBlock) p.rightPathWeight = 0;
   p.rightPathBlock = p.rightPathWeight ? kRightBlock : 0;
+  if (!kEdgeReset) p.edgeReset.threshold = 0;
   return p;
 }
 
 // Whether the core drops a frame of these settings for a lever its build lacks.
 bool asksMissingLever(const sgm::Params& p) {
-  return (p.uniqueness && !kUniqueness) || (p.adWeight && !kAdTerm) || (p.rightPathWeight && !kRightBlock);
+  return (p.uniqueness && !kUniqueness) || (p.adWeight && !kAdTerm) || (p.rightPathWeight && !kRightBlock) ||
+         (p.edgeReset.threshold && !kEdgeReset);
 }
 
 // A textured left image and a right image shifted by a few pixels plus noise.
@@ -173,7 +176,8 @@ TEST(SgmTop, OutOfRangeConfigurationIsDroppedThenGoodFrame) {
       {"uniqueness 100", syntheticPair(kMinWidth + 3, 9, rng, hardwareDefaults())},
       {"uniqueness 127", syntheticPair(kMinWidth + 1, 10, rng, hardwareDefaults())},
       {"AD term beyond the cost word", syntheticPair(kMinWidth + 2, 9, rng, hardwareDefaults())},
-      {"fifth-path weight 9", syntheticPair(kMinWidth + 1, 9, rng, hardwareDefaults())}};
+      {"fifth-path weight 9", syntheticPair(kMinWidth + 1, 9, rng, hardwareDefaults())},
+      {"path restart length 0", syntheticPair(kMinWidth + 2, 10, rng, hardwareDefaults())}};
   std::vector<FrameInput> frames = {syntheticPair(kMinWidth, 9, rng, equal)};
   for (size_t i = 0; i < bad.size(); ++i) {
     frames.push_back(bad[i].second);
@@ -181,6 +185,10 @@ TEST(SgmTop, OutOfRangeConfigurationIsDroppedThenGoodFrame) {
     frames.back().modeCode = bad[i].first == "cost mode 3" ? 3 : -1;
     frames.back().uniqueCode = bad[i].first == "uniqueness 100" ? 100 : bad[i].first == "uniqueness 127" ? 127 : -1;
     frames.back().rightWeightCode = bad[i].first == "fifth-path weight 9" ? 9 : -1;
+    if (bad[i].first == "path restart length 0") {  // T 30 with R 0 (dropped in every build)
+      frames.back().params.edgeReset.threshold = 30;
+      frames.back().resetLengthCode = 0;
+    }
     if (bad[i].first == "AD term beyond the cost word") {  // rsad 44 + (15 x 45) >> 3 = 128 > 127 (9x5; 9x9: 80 + 84)
       frames.back().params.adCap = Vsgm_top_sgm_top::CENSUS_H == 9 ? 255 : 45;
       frames.back().adWeightCode = 15;
@@ -188,10 +196,11 @@ TEST(SgmTop, OutOfRangeConfigurationIsDroppedThenGoodFrame) {
     sgm::Params good = i % 2 ? unified : hardwareDefaults();
     good.uniqueness = i == 6 ? 99 : 0;  // the largest ratio in range, after the first out of range
     if (i == 9) good.rightPathWeight = sgm::kMaxRightPathWeight;  // the largest weight, after one above it
+    if (i == 10) good.edgeReset = sgm::EdgeReset{255, 1, {1, 1, 1, 1, 1}};  // the largest T, the shortest R
     if (i == 8) {  // weight 15 with the largest cap the build's cost word leaves this mode
       good.adWeight = 15, good.adCap = sgm::largestAdCap(good.mode, good.census, 15);
     }
-    frames.push_back(syntheticPair(kMinWidth + 9 - int(i), 9 + int(i % 3), rng, withBuildLevers(good)));
+    frames.push_back(syntheticPair(kMinWidth + 9 - int(i % 10), 9 + int(i % 3), rng, withBuildLevers(good)));
   }
   Harness core("sgm_top_bad_config", 13, {0.2, 0.2});
   const std::vector<sgm::tb::FrameOutput> out = core.run(frames);
@@ -265,8 +274,14 @@ TEST(SgmTop, ParameterSetsChangeFromFrameToFrame) {
   candidate.uniqueness = 15, candidate.snap = false;
   sgm::Params rightEqual = hardwareDefaults();  // the fifth path beside equal weights, the paper's P2
   rightEqual.rightPathWeight = 1, rightEqual.weights = sgm::PathWeighting::kEqual, rightEqual.p2Mode = sgm::P2Mode::kPaper;
-  for (const sgm::Params& p : {unified, rt, paperP2, unique, ad, strict, kneeEqual, uniqueLr, adRt, raw, candidate,
-                               rightEqual, hardwareDefaults()})
+  sgm::Params restart = candidate;  // the path restart at strong edges (issue 15's candidate)
+  restart.edgeReset = sgm::EdgeReset{40, 6, {1, 1, 0, 1, 1}};
+  sgm::Params restartAll = hardwareDefaults();  // every path, a low threshold, the longest R
+  restartAll.edgeReset = sgm::EdgeReset{8, 15, {1, 1, 1, 1, 1}};
+  sgm::Params restartFifth = hardwareDefaults();  // the fifth path alone
+  restartFifth.edgeReset = sgm::EdgeReset{20, 3, {0, 0, 0, 0, 1}};
+  for (const sgm::Params& p : {unified, rt, paperP2, unique, ad, strict, kneeEqual, restart, uniqueLr, adRt, raw,
+                               candidate, restartAll, rightEqual, restartFifth, hardwareDefaults()})
     frames.push_back(syntheticPair(kD + 20, 20, rng, withBuildLevers(p)));
   expectBitExact(core, frames, "parameter sets");
 }
@@ -289,11 +304,15 @@ TEST(SgmTop, LeversTheBuildLacksAreDroppedThenGoodFrame) {
   capOnly.adWeight = 0, capOnly.adCap = 255;  // weight 0: the term is off
   sgm::Params right = hardwareDefaults();  // the fifth path, in the build's blocks when it has them
   right.rightPathWeight = 4, right.rightPathBlock = kRightBlock ? kRightBlock : 16;
+  sgm::Params restart = hardwareDefaults(), restartOff = hardwareDefaults();
+  restart.edgeReset = sgm::EdgeReset{1, 4, {1, 0, 1, 0, 0}};        // T 1: the smallest that asks for it
+  restartOff.edgeReset = sgm::EdgeReset{0, 15, {1, 1, 1, 1, 1}};    // T 0: off, whatever R and the flags
   const std::vector<std::pair<std::string, sgm::Params>> asks = {
       {"uniqueness 25", unique},         {"uniqueness 1", unique1},
       {"AD weight 4 cap 30", ad},        {"AD weight 1 cap 0", ad1},
       {"uniqueness 10, AD weight 2", both}, {"AD cap 255 weight 0", capOnly},
-      {"fifth path weight 4", right}};
+      {"fifth path weight 4", right},    {"path restart T 1", restart},
+      {"path restart T 0, R 15, every flag", restartOff}};
   std::vector<FrameInput> frames = {syntheticPair(kMinWidth + 2, 9, rng, hardwareDefaults())};
   std::vector<std::string> what = {"first good frame"};
   for (const auto& [name, p] : asks) {
@@ -308,7 +327,8 @@ TEST(SgmTop, LeversTheBuildLacksAreDroppedThenGoodFrame) {
   const std::vector<sgm::tb::FrameOutput> out = core.run(frames);
   for (size_t k = 0; k < frames.size(); ++k) {
     const std::string build = std::string(" (UNIQUENESS=") + (kUniqueness ? "1" : "0") + ", AD_TERM=" + (kAdTerm ? "1" : "0") +
-                              ", RIGHT_BLOCK=" + std::to_string(kRightBlock) + ")";
+                              ", RIGHT_BLOCK=" + std::to_string(kRightBlock) +
+                              ", EDGE_RESET=" + (kEdgeReset ? "1" : "0") + ")";
     if (frames[k].dropped) {
       EXPECT_EQ(out[k].errors, 8u) << what[k] << build << ": error_o of a frame asking for a lever the build lacks";
       continue;
