@@ -64,8 +64,10 @@
 // a path start) travels with the path: for 0 degrees K slots beside the ring
 // (decided at B, the ring's path start), for 45/90/135 degrees beside min Lr
 // in the min memories (MW = LW + 4 bits; decided at B' - 1 from the previous
-// row's count and registered, so that part (c) sees one OR in front of its
-// path start). EDGE_RESET = 0 builds none of it (the reset_* ports unused).
+// row's count; with K >= 2 lanes ORed there with the border start and
+// registered, so that part (c) sees a flip-flop as its path start, as without
+// the restart; with one lane registered and ORed at B'). EDGE_RESET = 0
+// builds none of it (the reset_* ports unused).
 // Latency: LATENCY = K + 2 slots from cost_i to s_o (l5w_i K + 1 slots after
 // the pixel's cost_i); row_i, centre_i and nbr_i
 // of a pixel are presented GRAY_LEAD slots before its cost_i (valid_i with
@@ -205,14 +207,19 @@ module sgm_path_engine #(
   wire at_left  = col_b == '0;
   wire at_right = col_b == width_i - 1'b1;
   wire at_top   = row_b == '0;
+  // The 45/90/135 degree path starts at B (carried to B' with the cost).
+  wire [3:1] start_b = {at_right | at_top, at_top, at_left | at_top};
 
   // ------------------------------------------------- the path restart (EDGE_RESET)
   // edge_t[r]: pixel p's step along path r is a strong edge of a restarting
   // path (at slot t); start0: the 0 degree path start at B (the border or a
-  // restart); restart_v[r]: path r (1 .. 3) restarts, registered at B';
-  // count_v[r]: its count at B' (before the path start).
+  // restart); start_pe[r]: the path start of path r (1 .. 3) at B', the border
+  // or a restart (with K >= 2 lanes one register: the border start taken at
+  // B' - 1 and ORed with the restart there, so that part (c) sees a flip-flop,
+  // as without the restart); count_v[r]: its count at B' (before the path start).
   logic       start0;
-  logic [3:1] restart_v;
+  logic [3:1] start;     // the border starts carried to B' (below, with the cost)
+  logic [3:1] start_pe;
   logic [11:0] count_v;  // path r at [(r-1)*4 +: 4]
   logic [11:0] count_prev;  // the previous row's counts at B' - 1 (from the min memories)
   if (EDGE_RESET != 0) begin : g_restart
@@ -256,20 +263,45 @@ module sgm_path_engine #(
     end else begin : g_edge_at_t
       assign edge_v = edge_t[3:1];
     end
+    logic [3:1] restart_d;  // path r restarts (at B' - 1)
     for (genvar r = 1; r < 4; r++) begin : g_count
       wire [3:0] prev = count_prev[(r-1)*4 +: 4];
       wire [4:0] inc  = {1'b0, prev} + 5'd1;
       wire       near = inc < {1'b0, reset_len_i};
+      assign restart_d[r] = on[r] && (edge_v[r] || near);
       always_ff @(posedge clk_i) begin
-        if (en_i) begin
-          count_v[(r-1)*4 +: 4] <= edge_v[r] ? 4'd0 : near ? inc[3:0] : reset_len_i;
-          restart_v[r]          <= on[r] && (edge_v[r] || near);
-        end
+        if (en_i) count_v[(r-1)*4 +: 4] <= edge_v[r] ? 4'd0 : near ? inc[3:0] : reset_len_i;
       end
+    end
+    if (K > 1) begin : g_start_early
+      // The border starts at B' - 1: start_b carried K - 2 slots.
+      logic [3:1] start_m1, start_q;
+      if (K > 2) begin : g_start_carry
+        sgm_delay #(.WIDTH(3), .DEPTH(K - 2)) u_start_m1 (
+          .clk_i (clk_i),
+          .en_i  (en_i),
+          .d_i   (start_b),
+          .q_o   (start_m1)
+        );
+      end else begin : g_start_at_b
+        assign start_m1 = start_b;
+      end
+      always_ff @(posedge clk_i) begin
+        if (en_i) start_q <= start_m1 | restart_d;
+      end
+      assign start_pe = start_q;
+    end else begin : g_start_or
+      // One lane: B' - 1 comes before B, where the border starts are known; the
+      // restart is registered and ORed with them at B'.
+      logic [3:1] restart_q;
+      always_ff @(posedge clk_i) begin
+        if (en_i) restart_q <= restart_d;
+      end
+      assign start_pe = start | restart_q;
     end
   end else begin : g_no_restart
     assign start0    = at_left;
-    assign restart_v = '0;
+    assign start_pe  = start;
     assign count_v   = '0;
     wire unused_reset = ^{reset_t_i, reset_len_i, reset_paths_i, count_prev};
   end
@@ -292,10 +324,8 @@ module sgm_path_engine #(
 
   // Part (c) of the 45/90/135 degree paths runs at B' = B + K - 1: the cost,
   // their P2r and path starts carried K - 1 slots.
-  wire [3:1] start_b = {at_right | at_top, at_top, at_left | at_top};
   logic [D*CW-1:0] cost_p;
   logic [3*PW-1:0] p2r_p;
-  logic [3:1]      start;
   logic [XW-1:0]   col_p;
   logic [YW-1:0]   row_p;
   logic            last_p;
@@ -380,7 +410,7 @@ module sgm_path_engine #(
         .min_prev_i (min_prv),
         .cost_i     (cost_p[d*CW +: CW]),
         .p2r_i      (p2r_p[(r-1)*PW +: PW]),
-        .start_i    (start[r] | restart_v[r]),
+        .start_i    (start_pe[r]),
         .lr_o       (lr_b[((r-1)*D+d)*LW +: LW])
       );
     end

@@ -50,8 +50,9 @@
 // = reset_len_i steps of the pass, the step into it included, cross a gray
 // step |dI| >= T. The pass's count (steps since its last strong edge,
 // saturating at R; R at its start) comes back per lane after K slots at stage
-// 1, where |dI| is formed, and the restart joins the pass start registered in
-// front of the ring. EDGE_RESET = 0 builds none of it (the reset_* ports
+// 2, from the edge flag registered behind |dI| (stage 1), and the restart joins
+// the pass start at the ring's input (with K >= 2 lanes the ring registers it
+// before the sub-PEs use it). EDGE_RESET = 0 builds none of it (the reset_* ports
 // unused).
 //
 // Parameters: D disparities, CW cost width, LW path-cost width (Cmax + P2'max
@@ -353,31 +354,36 @@ module sgm_right_path #(
     );
     assign lut_idx[r*8 +: 8] = gray1 > gray_prev ? gray1 - gray_prev : gray_prev - gray1;
 
-    // The restart (EDGE_RESET): the lane's count K slots back, this step's.
-    logic restart1;
+    // The restart (EDGE_RESET): the step's edge flag registered behind |dI|
+    // (stage 1), the count at stage 2 (the lane's count K slots back).
+    logic restart2;
+    logic start2;
     if (EDGE_RESET != 0) begin : g_restart
-      wire        on   = reset_en_i && reset_t_i != 8'd0;
-      wire        step_edge = on && lut_idx[r*8 +: 8] >= reset_t_i;
+      wire        on = reset_en_i && reset_t_i != 8'd0;
+      logic       edge2;
+      always_ff @(posedge clk_i) begin
+        if (en_i) edge2 <= on && lut_idx[r*8 +: 8] >= reset_t_i;
+      end
       logic [3:0] count_prev;
       wire  [4:0] inc  = {1'b0, count_prev} + 5'd1;
       wire        near = inc < {1'b0, reset_len_i};
       sgm_delay #(.WIDTH(4), .DEPTH(K)) u_count (
         .clk_i (clk_i),
         .en_i  (en_i),
-        .d_i   (start1 ? reset_len_i : step_edge ? 4'd0 : near ? inc[3:0] : reset_len_i),
+        .d_i   (start2 ? reset_len_i : edge2 ? 4'd0 : near ? inc[3:0] : reset_len_i),
         .q_o   (count_prev)
       );
-      assign restart1 = on && (step_edge || near);
+      assign restart2 = on && (edge2 || near);
     end else begin : g_no_restart
-      assign restart1 = 1'b0;
+      assign restart2 = 1'b0;
     end
 
     // Stage 2: P2r from the table; the ring.
     logic [CWD-1:0] cost2;
-    logic           start2, keep2;
+    logic           keep2;
     logic [RA-1:0]  addr2;
     always_ff @(posedge clk_i) begin
-      if (en_i) {cost2, start2, keep2, addr2} <= {cost1, start1 | restart1, keep1, addr1};
+      if (en_i) {cost2, start2, keep2, addr2} <= {cost1, start1, keep1, addr1};
     end
     logic [D*LW-1:0] lr;
     logic [LW-1:0]   unused_min;
@@ -388,7 +394,7 @@ module sgm_right_path #(
       .p1_i    (p1_i),
       .cost_i  (cost2),
       .p2r_i   (p2r[r*PW +: PW]),
-      .start_i (start2),
+      .start_i (start2 | restart2),
       .lr_o    (lr),
       .min_o   (unused_min)
     );
