@@ -174,14 +174,13 @@ module sgm_stream_ctrl #(
                 cfg_height_i >= YW'(9) && cfg_height_i <= YW'(MAX_HEIGHT) &&
                 cfg_p2_i >= cfg_p1_i && cfg_mode_i != 2'd3 && cfg_unique_i <= 7'd99 && ad_fits && has_levers &&
                 cfg_right_weight_i <= 4'd8 && (cfg_reset_t_i == 8'd0 || cfg_reset_len_i != 4'd0);
-  localparam int CFGW = XW + YW + 2 * PW + 53;
+  localparam int CFGW = XW + YW + 2 * PW + 36;
   logic [CFGW-1:0] pend_q [0:1];
   always_ff @(posedge clk_i) begin
     if (in_push && s_tuser_i)
       pend_q[in_wr_q] <= {cfg_ok, cfg_width_i, cfg_height_i, cfg_p1_i, cfg_p2_i, cfg_mode_i, cfg_subpixel_i,
                           cfg_lr_en_i, cfg_lr_tol_i, cfg_fill_i, cfg_snap_i, cfg_median_i, cfg_p2_mode_i,
-                          cfg_weights_i, cfg_unique_i, cfg_ad_weight_i, cfg_ad_cap_i, cfg_right_weight_i,
-                          cfg_reset_t_i, cfg_reset_len_i, cfg_reset_paths_i};
+                          cfg_weights_i, cfg_unique_i, cfg_ad_weight_i, cfg_ad_cap_i, cfg_right_weight_i};
   end
   // The configuration of the head beat (meaningful when it is a tuser beat).
   logic [XW-1:0] pend_width;
@@ -200,7 +199,19 @@ module sgm_stream_ctrl #(
   logic          pend_ok;
   assign {pend_ok, pend_width, pend_height, pend_p1, pend_p2, pend_mode, pend_subpixel, pend_lr_en,
           pend_lr_tol, pend_fill, pend_snap, pend_median, pend_p2_mode, pend_weights, pend_unique,
-          pend_ad_weight, pend_ad_cap, pend_right_weight, pend_reset_t, pend_reset_len, pend_reset_paths} = pend_q[in_rd_q];
+          pend_ad_weight, pend_ad_cap, pend_right_weight} = pend_q[in_rd_q];
+  // The path restart's fields, in a word of their own per entry in a build with it
+  // (without it the frame's T must be 0, checked in cfg_ok, and they are constants).
+  if (EDGE_RESET != 0) begin : g_reset_cfg
+    logic [16:0] pend_reset_q [0:1];
+    always_ff @(posedge clk_i) begin
+      if (in_push && s_tuser_i) pend_reset_q[in_wr_q] <= {cfg_reset_t_i, cfg_reset_len_i, cfg_reset_paths_i};
+    end
+    assign {pend_reset_t, pend_reset_len, pend_reset_paths} = pend_reset_q[in_rd_q];
+  end else begin : g_no_reset_cfg
+    assign {pend_reset_t, pend_reset_len, pend_reset_paths} = '0;
+    wire unused_reset_cfg = ^{cfg_reset_len_i, cfg_reset_paths_i};
+  end
 
   // ---------------------------------------------------------------- output FIFO
   localparam int FAW = $clog2(FIFO_DEPTH);
