@@ -284,7 +284,13 @@ std::string goldenParamsText(const Params& p) {
                                  : std::string()) +
                      (p.rightPathWeight && p.rightPathBlock ? ", fifth path " + std::to_string(p.rightPathWeight) +
                                                                   " in blocks of " + std::to_string(p.rightPathBlock)
-                                                            : std::string());
+                                                            : std::string()) +
+                     (p.edgeReset.threshold ? ", path restart T " + std::to_string(p.edgeReset.threshold) + " R " +
+                                                  std::to_string(p.edgeReset.length) + " paths " +
+                                                  std::to_string(p.edgeReset.paths[0]) + std::to_string(p.edgeReset.paths[1]) +
+                                                  std::to_string(p.edgeReset.paths[2]) + std::to_string(p.edgeReset.paths[3]) +
+                                                  std::to_string(p.edgeReset.paths[4])
+                                            : std::string());
   if (p.experimental())
     text += "; golden-only experiments (not in the RTL): right path " + std::to_string(p.rightPathWeight) +
             (p.rightPathBlock ? " block " + std::to_string(p.rightPathBlock) : std::string()) +
@@ -292,13 +298,7 @@ std::string goldenParamsText(const Params& p) {
             onOff(p.mgm) + ", median gate " + std::to_string(p.medianGate) + ", P1 per path " +
             std::to_string(p.p1PathPercent[0]) + "," + std::to_string(p.p1PathPercent[1]) + "," +
             std::to_string(p.p1PathPercent[2]) + "," + std::to_string(p.p1PathPercent[3]) + "," +
-            std::to_string(p.p1PathPercent[4]) + " %, snap edge " + std::to_string(p.snapEdge) + ", edge reset " +
-            std::to_string(p.edgeReset.threshold) +
-            (p.edgeReset.threshold ? " over " + std::to_string(p.edgeReset.length) + " steps, paths " +
-                                         std::to_string(p.edgeReset.paths[0]) + std::to_string(p.edgeReset.paths[1]) +
-                                         std::to_string(p.edgeReset.paths[2]) + std::to_string(p.edgeReset.paths[3]) +
-                                         std::to_string(p.edgeReset.paths[4])
-                                   : std::string());
+            std::to_string(p.p1PathPercent[4]) + " %, snap edge " + std::to_string(p.snapEdge);
   return text;
 }
 

@@ -5,7 +5,8 @@
 //
 //   +cfg=FILE  one line per frame: width height p1 p2 mode subpixel lr_en lr_tol
 //              fill snap median p2_mode weights uniqueness ad_weight ad_cap
-//              right_weight (decimal, 17 fields); the first line is the frame count.
+//              right_weight reset_t reset_len reset_paths (decimal, 20 fields); the
+//              first line is the frame count.
 //   +in=FILE   the input beats, one per line: tdata (hex) tuser tlast.
 //   +out=FILE  written: one line per output beat, tdata (hex) tuser tlast, and
 //              one line "done <error_o> <frame_width_o> <frame_height_o>" per
@@ -45,6 +46,9 @@ module tb_sgm_top_files #(
   logic [3:0]    cfg_ad_weight = '0;
   logic [7:0]    cfg_ad_cap = '0;
   logic [3:0]    cfg_right_weight = '0;
+  logic [7:0]    cfg_reset_t = '0;
+  logic [3:0]    cfg_reset_len = '0;
+  logic [4:0]    cfg_reset_paths = '0;
   wire           busy, frame_done;
   wire  [3:0]    error, error_event;
   wire  [XW-1:0] frame_width;
@@ -80,9 +84,9 @@ module tb_sgm_top_files #(
     .cfg_ad_weight_i(cfg_ad_weight),
     .cfg_ad_cap_i  (cfg_ad_cap),
     .cfg_right_weight_i(cfg_right_weight),
-    .cfg_reset_t_i (8'd0),  // the default build has no path restart (EDGE_RESET = 0)
-    .cfg_reset_len_i(4'd0),
-    .cfg_reset_paths_i(5'd0),
+    .cfg_reset_t_i (cfg_reset_t),
+    .cfg_reset_len_i(cfg_reset_len),
+    .cfg_reset_paths_i(cfg_reset_paths),
     .busy_o        (busy),
     .frame_done_o  (frame_done),
     .error_o       (error),
@@ -93,7 +97,7 @@ module tb_sgm_top_files #(
 
   always #5 clk = ~clk;
 
-  int cfg[MAX_FRAMES][17];
+  int cfg[MAX_FRAMES][20];
   int frames, total_in, total_out, stall, seed;
   int in_fd, out_fd;
 
@@ -116,6 +120,9 @@ module tb_sgm_top_files #(
     cfg_ad_weight = cfg[k][14][3:0];
     cfg_ad_cap   = cfg[k][15][7:0];
     cfg_right_weight = cfg[k][16][3:0];
+    cfg_reset_t      = cfg[k][17][7:0];
+    cfg_reset_len    = cfg[k][18][3:0];
+    cfg_reset_paths  = cfg[k][19][4:0];
   endtask
 
   // Reads the next input beat into s_tdata/s_tuser/s_tlast.
@@ -131,7 +138,7 @@ module tb_sgm_top_files #(
     string cfg_name, in_name, out_name;
     int cfg_fd, k, sent, received, presented, since_move, r;
     logic in_fire, out_fire;
-    int v0, v1, v2, v3, v4, v5, v6, v7, v8, v9, v10, v11, v12, v13, v14, v15, v16;
+    int v0, v1, v2, v3, v4, v5, v6, v7, v8, v9, v10, v11, v12, v13, v14, v15, v16, v17, v18, v19;
     if (!$value$plusargs("cfg=%s", cfg_name) || !$value$plusargs("in=%s", in_name) ||
         !$value$plusargs("out=%s", out_name))
       $fatal(1, "tb: usage: +cfg=FILE +in=FILE +out=FILE [+stall=N] [+seed=S]");
@@ -146,12 +153,13 @@ module tb_sgm_top_files #(
     total_in = 0;
     for (k = 0; k < frames; k = k + 1) begin
       // (Icarus 11 scans into plain variables only, not array elements.)
-      r = $fscanf(cfg_fd, "%d %d %d %d %d %d %d %d %d %d %d %d %d %d %d %d %d\n", v0, v1, v2, v3, v4, v5, v6, v7, v8,
-                  v9, v10, v11, v12, v13, v14, v15, v16);
-      if (r != 17) $fatal(1, "tb: %s: frame %0d: bad line", cfg_name, k);
+      r = $fscanf(cfg_fd, "%d %d %d %d %d %d %d %d %d %d %d %d %d %d %d %d %d %d %d %d\n", v0, v1, v2, v3, v4, v5, v6,
+                  v7, v8, v9, v10, v11, v12, v13, v14, v15, v16, v17, v18, v19);
+      if (r != 20) $fatal(1, "tb: %s: frame %0d: bad line", cfg_name, k);
       cfg[k][0] = v0; cfg[k][1] = v1; cfg[k][2] = v2; cfg[k][3] = v3; cfg[k][4] = v4; cfg[k][5] = v5;
       cfg[k][6] = v6; cfg[k][7] = v7; cfg[k][8] = v8; cfg[k][9] = v9; cfg[k][10] = v10; cfg[k][11] = v11;
       cfg[k][12] = v12; cfg[k][13] = v13; cfg[k][14] = v14; cfg[k][15] = v15; cfg[k][16] = v16;
+      cfg[k][17] = v17; cfg[k][18] = v18; cfg[k][19] = v19;
       total_in = total_in + cfg[k][0] * cfg[k][1];
     end
     total_out = total_in;

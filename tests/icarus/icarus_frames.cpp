@@ -60,7 +60,8 @@ void write(const std::string& dir) {
     const sgm::tb::HardwareConfig c = sgm::tb::hardwareConfig(f.params, f.width, f.height);
     cfg << c.width << " " << c.height << " " << c.p1 << " " << c.p2 << " " << c.mode << " " << c.subpixel << " "
         << c.lrEnable << " " << c.lrTolerance << " " << c.fill << " " << c.snap << " " << c.median << " " << c.p2Paper
-        << " " << c.weightsEqual << " " << c.uniqueness << " " << c.adWeight << " " << c.adCap << " " << c.rightWeight << "\n";
+        << " " << c.weightsEqual << " " << c.uniqueness << " " << c.adWeight << " " << c.adCap << " " << c.rightWeight
+        << " " << c.resetThreshold << " " << c.resetLength << " " << c.resetPaths << "\n";
     const cv::Mat left = scene(f, int(k), false), right = scene(f, int(k), true);
     const sgm::DisparityMap golden = sgm::runPipeline(left, right, f.params);
     char line[32];
