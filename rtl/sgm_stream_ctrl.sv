@@ -143,12 +143,18 @@ module sgm_stream_ctrl #(
   logic [1:0]  in_count_q;
   logic        in_rd_q, in_wr_q;
   wire         in_push  = s_tvalid_i && s_tready_o;
-  wire         head_ok  = in_count_q != 2'd0;
-  wire [17:0]  head     = ibuf_q[in_rd_q];
-  wire         head_sof = head_ok && head[17];
+  wire [16:0]  head     = ibuf_q[in_rd_q][16:0];  // its tuser: head_sof_q below
   wire         head_eol = head[16];
   logic        in_pop;
   assign s_tready_o = in_count_q != 2'd2;
+  // The head's two flags the slot decision reads (in_count_q != 0, and that with
+  // the head's tuser) are kept in flip-flops of their own, written with the
+  // buffer's next state, so that the decision does not read the buffer's
+  // distributed RAM (the fifth-path core's critical path on the LFE5U-85F ran
+  // from it through the start-of-frame check into the slot's clock enables).
+  logic        head_ok_q, head_sof_q;
+  wire         head_ok  = head_ok_q;
+  wire         head_sof = head_sof_q;
 
   // Configuration at the start-of-frame handshake, applied when that frame
   // starts: one word per input buffer entry, so that a tuser beat keeps its own
@@ -223,7 +229,9 @@ module sgm_stream_ctrl #(
   // Room in the cycle of the slot decided now: this cycle's push is counted as
   // if it came (push = en_o && res_valid_i: en_o kept out of the slot's logic),
   // this cycle's pop is not counted.
-  wire room = count_q < (FAW+1)'(FIFO_DEPTH - 1);
+  // room_q: count_q < FIFO_DEPTH - 1, written with the next count.
+  logic room_q;
+  wire  room = room_q;
 
   // ---------------------------------------------------------------- slots
   logic [XW-1:0] x_q;          // position of the next slot
@@ -261,9 +269,12 @@ module sgm_stream_ctrl #(
 
   // RUN takes the head beat as the next slot, except a tuser beat inside the
   // frame, which is left for the next frame.
-  wire err_sof  = state_q == RUN && head_sof && !first_px;
-  wire take     = state_q == RUN && head_ok && room && !err_sof;
-  wire gen_slot = (state_q == PAD || state_q == FLUSH) && room;
+  // run_q / gen_q: state_q == RUN / state_q is PAD or FLUSH, as flip-flops
+  // written with the next state (no state decoding in front of the slot).
+  logic run_q, gen_q;
+  wire err_sof  = run_q && head_sof && !first_px;
+  wire take     = run_q && head_ok && room && !err_sof;
+  wire gen_slot = gen_q && room;
   // IDLE drops every beat but a start of frame with a valid configuration.
   wire drop     = state_q == IDLE && head_ok && !(head_sof && pend_ok);
   assign in_pop = take || drop;
@@ -292,9 +303,38 @@ module sgm_stream_ctrl #(
   assign push   = en_o && res_valid_i;
   wire out_last = out_eol_q && out_last_row_q;
 
+  // The next state.
+  state_e state_d;
+  always_comb begin
+    state_d = state_q;
+    case (state_q)
+      IDLE:  if (head_sof && pend_ok) state_d = FILL;
+      FILL:  if (lut_ready_i && !lut_start_o) state_d = RUN;
+      RUN:   if (err_sof) state_d = PAD;
+             else if (take) begin
+               if (last_px) state_d = FLUSH;
+               else if (err_early || err_missing) state_d = PAD;
+             end
+      PAD:   if (gen_slot && last_px) state_d = FLUSH;
+      FLUSH: if (push && out_last) state_d = IDLE;
+      default: state_d = IDLE;
+    endcase
+  end
+
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
-      state_q      <= IDLE;
+      state_q <= IDLE;
+      run_q   <= 1'b0;
+      gen_q   <= 1'b0;
+    end else begin
+      state_q <= state_d;
+      run_q   <= state_d == RUN;
+      gen_q   <= state_d == PAD || state_d == FLUSH;
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
       lut_start_o  <= 1'b0;
       frame_done_o <= 1'b0;
       error_o      <= '0;
@@ -329,39 +369,36 @@ module sgm_stream_ctrl #(
             reset_len_o    <= pend_reset_len;
             reset_paths_o  <= pend_reset_paths;
             lut_start_o <= 1'b1;
-            state_q     <= FILL;
           end
         end
-        FILL: if (lut_ready_i && !lut_start_o) state_q <= RUN;
         RUN: begin
           if (err_sof) begin
             error_o[2]     <= 1'b1;
             error_set_o[2] <= 1'b1;
-            state_q        <= PAD;
           end else if (take) begin
             if (err_early) error_o[0] <= 1'b1;
             if (err_missing) error_o[1] <= 1'b1;
             error_set_o[1:0] <= {err_missing, err_early};
-            if (last_px) state_q <= FLUSH;
-            else if (err_early || err_missing) state_q <= PAD;
           end
         end
-        PAD: if (gen_slot && last_px) state_q <= FLUSH;
-        FLUSH: if (push && out_last) begin
-          state_q      <= IDLE;
-          frame_done_o <= 1'b1;
-        end
-        default: state_q <= IDLE;
+        FLUSH: if (push && out_last) frame_done_o <= 1'b1;
+        default: ;
       endcase
     end
   end
 
-  // Input buffer.
+  // Input buffer. The head after this cycle: the beat pushed now if the buffer is left empty,
+  // else the other entry if the head is popped (the buffer held two), else the head.
+  wire       in_left     = in_count_q != 2'd0 && !(in_pop && in_count_q == 2'd1);
+  wire       head_ok_d   = in_left || in_push;
+  wire       head_user_d = !in_left ? s_tuser_i : in_pop ? ibuf_q[~in_rd_q][17] : head_sof_q;
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       in_count_q <= '0;
       in_rd_q    <= 1'b0;
       in_wr_q    <= 1'b0;
+      head_ok_q  <= 1'b0;
+      head_sof_q <= 1'b0;
     end else begin
       if (in_push) begin
         ibuf_q[in_wr_q] <= {s_tuser_i, s_tlast_i, s_tdata_i};
@@ -369,6 +406,8 @@ module sgm_stream_ctrl #(
       end
       if (in_pop) in_rd_q <= ~in_rd_q;
       in_count_q <= in_count_q + (in_push ? 2'd1 : 2'd0) - (in_pop ? 2'd1 : 2'd0);
+      head_ok_q  <= head_ok_d;
+      head_sof_q <= head_ok_d && head_user_d;
     end
   end
 
@@ -408,9 +447,11 @@ module sgm_stream_ctrl #(
   end
 
   // Output FIFO.
+  wire [FAW:0] count_d = count_q + (FAW+1)'(push) - (FAW+1)'(pop);
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       count_q <= '0;
+      room_q  <= 1'b1;
       rd_q    <= '0;
       wr_q    <= '0;
     end else begin
@@ -420,7 +461,8 @@ module sgm_stream_ctrl #(
         wr_q         <= wr_q == FAW'(FIFO_DEPTH - 1) ? '0 : wr_q + 1'b1;
       end
       if (pop) rd_q <= rd_q == FAW'(FIFO_DEPTH - 1) ? '0 : rd_q + 1'b1;
-      count_q <= count_q + (FAW+1)'(push) - (FAW+1)'(pop);
+      count_q <= count_d;
+      room_q  <= count_d < (FAW+1)'(FIFO_DEPTH - 1);
     end
   end
 

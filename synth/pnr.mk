@@ -15,7 +15,8 @@
 #                       and PNR_RIGHT_BLOCK, the core's RIGHT_BLOCK, default 0: the P&R
 #                       builds are four-path cores unless asked, because the fifth path does
 #                       not fit beside the D = 64 six-lane core on the LFE5U-85F; sgm_top's
-#                       own default is 64, docs/accuracy-pool.md "Clock (decision)")
+#                       own default is 64, docs/accuracy-pool.md "Clock (decision)"),
+#                       and PNR_EDGE_RESET, the core's EDGE_RESET (empty: sgm_top's default)
 #   make pnr-summary    rebuild summary.{json,md} from what build/pnr holds
 #
 # Yosys and nextpnr run one at a time (flock on build/pnr/.lock, also under
@@ -35,6 +36,8 @@ PNR_LANES        ?= 6
 PNR_UNIQUENESS   ?= 1
 PNR_AD_TERM      ?= 1
 PNR_RIGHT_BLOCK  ?= 0
+# The core's EDGE_RESET (the path restart at strong edges); empty: sgm_top's default.
+PNR_EDGE_RESET   ?=
 PNR_DEVICE       ?= 85k
 PNR_PACKAGE      ?= CABGA381
 PNR_SPEEDS       ?= 8 6
@@ -121,7 +124,7 @@ PNR_BENCH_REPORT     := $(BUILD)/bench/report.json
 TEST_EXTRA += ecp5-cmp-check pnr-ci
 
 PNR_DIR     := $(BUILD)/pnr
-PNR_CFG      = $(PNR_DIR)/d$(PNR_D)-w$(PNR_MAX_WIDTH)$(if $(filter-out 1,$(PNR_LANES)),-k$(PNR_LANES))$(if $(filter 0,$(PNR_UNIQUENESS)),-u0)$(if $(filter 0,$(PNR_AD_TERM)),-ad0)$(if $(filter-out 0,$(PNR_RIGHT_BLOCK)),-rb$(PNR_RIGHT_BLOCK))
+PNR_CFG      = $(PNR_DIR)/d$(PNR_D)-w$(PNR_MAX_WIDTH)$(if $(filter-out 1,$(PNR_LANES)),-k$(PNR_LANES))$(if $(filter 0,$(PNR_UNIQUENESS)),-u0)$(if $(filter 0,$(PNR_AD_TERM)),-ad0)$(if $(filter-out 0,$(PNR_RIGHT_BLOCK)),-rb$(PNR_RIGHT_BLOCK))$(if $(PNR_EDGE_RESET),-er$(PNR_EDGE_RESET))
 PNR_DEVNAME  = LFE5U-$(subst k,F,$(PNR_DEVICE))
 PNR_RUN      = $(PNR_CFG)/lfe5u-$(subst k,f,$(PNR_DEVICE))-$(PNR_SPEED)
 PNR_LOCK     = $(PNR_DIR)/.lock
@@ -190,7 +193,7 @@ $(PNR_CFG)/synth/done: $(PNR_DEPS) | pnr-tools
 	@echo "pnr: synth_ecp5, D=$(PNR_D) MAX_WIDTH=$(PNR_MAX_WIDTH) LANES=$(PNR_LANES) (log: $(@D)/yosys.log)"
 	@start=$$(date +%s); \
 	 SYNTH_RTL=rtl SYNTH_D=$(PNR_D) SYNTH_MAX_WIDTH=$(PNR_MAX_WIDTH) SYNTH_MAX_HEIGHT=$(PNR_MAX_HEIGHT) SYNTH_LANES=$(PNR_LANES) SYNTH_OUT=$(@D) \
-	   SYNTH_UNIQUENESS=$(PNR_UNIQUENESS) SYNTH_AD_TERM=$(PNR_AD_TERM) SYNTH_RIGHT_BLOCK=$(PNR_RIGHT_BLOCK) SYNTH_ECP5_FLAGS="$(PNR_SYNTH_FLAGS)" SYNTH_DEFINES="$(PNR_DEFINES)" SYNTH_ECP5_CMP_LUT=$(PNR_CMP_LUT) SYNTH_ECP5_CMP_CHAIN="$(PNR_CMP_CHAIN)" \
+	   SYNTH_UNIQUENESS=$(PNR_UNIQUENESS) SYNTH_AD_TERM=$(PNR_AD_TERM) SYNTH_RIGHT_BLOCK=$(PNR_RIGHT_BLOCK) SYNTH_EDGE_RESET=$(PNR_EDGE_RESET) SYNTH_ECP5_FLAGS="$(PNR_SYNTH_FLAGS)" SYNTH_DEFINES="$(PNR_DEFINES)" SYNTH_ECP5_CMP_LUT=$(PNR_CMP_LUT) SYNTH_ECP5_CMP_CHAIN="$(PNR_CMP_CHAIN)" \
 	   flock $(PNR_LOCK) timeout $(PNR_TIMEOUT) nice -n $(PNR_NICE) yosys -q -l $(@D)/yosys.log -c synth/ecp5.tcl \
 	   > $(@D)/yosys.out 2>&1; rc=$$?; \
 	 if [ $$rc != 0 ]; then echo "pnr: Yosys failed (exit $$rc):"; grep -E '^ERROR' $(@D)/yosys.log | tail -5; exit 1; fi; \
