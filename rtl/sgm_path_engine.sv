@@ -348,9 +348,14 @@ module sgm_path_engine #(
   // M135 at x + 1 (unused at the last column: 135 deg start). When the column
   // is there a slot before the read (READ_DELAY > 0) the addresses are
   // computed then and registered, so that no comparison with the width sits in
-  // front of the memories (distributed RAM reads asynchronously).
+  // front of the memories (distributed RAM reads asynchronously). The unused
+  // reads take the column itself (x + 0 at the last column, x - 0 at x = 0): the
+  // border checks are an adder's carry, not a constant, so that synthesis does
+  // not make them a synchronous reset gated by en_i (on the ECP5 a LUT from the
+  // global enable into the flip-flops' LSR: a critical path of the fifth-path
+  // core on the LFE5U-85F).
   function automatic logic [3*AW-1:0] read_addrs(input logic [XW-1:0] col, input logic [XW-1:0] width);
-    read_addrs = {col == width - 1'b1 ? AW'(0) : AW'(col + 1'b1), AW'(col), col == '0 ? AW'(0) : AW'(col - 1'b1)};
+    read_addrs = {AW'(col + XW'(col != width - 1'b1)), AW'(col), AW'(col - XW'(col != '0))};
   endfunction
   logic [AW-1:0] addr90, addr45, addr135;
   if (READ_DELAY > 0) begin : g_addr_reg
