@@ -41,7 +41,7 @@
 // - 3 >= 4B K + 4 + K, DLY = 4B + 1 + ceil(5 / LANES) (no slot to spare at one
 // lane, L5_LAG = 2: mutation rp-delay). A pass keeps the memory address
 // of its column (not the lane's word), so that the read address is a register
-// or its decrement; its start address is a register too (the lane's previous
+// (its decrement is taken a step ahead and carried with the lane's state); its start address is a register too (the lane's previous
 // write address, or the one of its row's column W - 1, kept per lane).
 //
 // EDGE_RESET = 1 builds the path restart at strong edges (docs/algorithm.md
@@ -289,7 +289,7 @@ module sgm_right_path #(
     logic [K-1:0]   act_q;
     logic           last_k;
     logic [SCW-1:0] left_k;
-    logic [RA-1:0]  addr_k;
+    logic [RA-1:0]  next_k;  // the lane's word after its previous step's (one below, wrapping)
     wire start = dec_any && dec_ring == 1'(r);
     wire step  = start || (act_q[K-1] && left_k != '0);
     logic           last_d;
@@ -303,9 +303,15 @@ module sgm_right_path #(
       end else begin
         last_d = last_k;
         left_d = left_k - 1'b1;
-        addr_d = addr_k == base_q ? top_q : addr_k - 1'b1;  // the lane's previous word
+        addr_d = next_k;
       end
     end
+    // The word of the lane's next step, taken now and carried K slots (base_q /
+    // top_q are this slot's lane's, the same lane's K slots later), so that the
+    // read address is a register or the decision's (no comparison and decrement
+    // in front of the block RAM: the five-lane core's critical path on the
+    // LFE5U-85F).
+    wire [RA-1:0] next_d = addr_d == base_q ? top_q : addr_d - 1'b1;  // the lane's previous word
     always_ff @(posedge clk_i) begin
       if (!rst_ni) begin
         act_q <= '0;
@@ -317,8 +323,8 @@ module sgm_right_path #(
     sgm_delay #(.WIDTH(1 + SCW + RA), .DEPTH(K)) u_lane_state (
       .clk_i (clk_i),
       .en_i  (en_i),
-      .d_i   ({last_d, left_d, addr_d}),
-      .q_o   ({last_k, left_k, addr_k})
+      .d_i   ({last_d, left_d, next_d}),
+      .q_o   ({last_k, left_k, next_k})
     );
     // Keep the step's L5 when it is one of its block's columns.
     wire keep = step && (last_d || left_d < SCW'(BLOCK));
