@@ -80,26 +80,42 @@ module sgm_lane_deal #(
   for (genvar k = 0; k < LANES; k++) begin : g_init
     assign st_init[k*LSW +: LSW] = lane_init(k);
   end
-  wire [LANES*LSW-1:0] st_now = sof_i ? st_init : st_q;
-  wire [LSW-1:0] cur = st_now[0 +: LSW];
-  wire           cur_active = cur[LSW-1] || cur[XW + YW +: WW] == '0;
-  wire [WW-1:0]  cur_wait   = cur[XW + YW +: WW];
-  wire [XW-1:0]  cur_col    = cur[YW +: XW];
-  wire [YW-1:0]  cur_row    = cur[0 +: YW];
+  // The state after the lane's slot (last: the slot is its row's last column).
+  function automatic logic [LSW-1:0] advance(input logic [LSW-1:0] st, input logic last);
+    logic          act;
+    logic [WW-1:0] wait_n;
+    logic [XW-1:0] col;
+    logic [YW-1:0] row;
+    {wait_n, col, row} = st[0 +: WW + XW + YW];
+    act = st[LSW-1] || wait_n == '0;
+    advance = !act ? {1'b0, wait_n - 1'b1, col, row} :
+              last ? {1'b1, WW'(0), XW'(0), row + YW'(LANES)} :
+                     {1'b1, WW'(0), col + 1'b1, row};
+  endfunction
+
+  // sof_i selects between the two results, each from registers or constants
+  // (the state after the frame's first slot is a constant: lane 0 at column 0,
+  // never its row's last, width >= 2), so that it is the last step in front of
+  // the lane states rather than the first (a critical path of the five-lane
+  // core on the LFE5U-85F ran from sof_i through the state update).
   logic [XW-1:0] wm1_q;  // width - 1, a cycle behind width_i
   always_ff @(posedge clk_i) wm1_q <= width_i - 1'b1;
-  wire           cur_last   = cur_col == wm1_q;
-
-  wire [LSW-1:0] advanced = !cur_active ? {1'b0, cur_wait - 1'b1, cur_col, cur_row} :
-                            cur_last    ? {1'b1, WW'(0), XW'(0), cur_row + YW'(LANES)} :
-                                          {1'b1, WW'(0), cur_col + 1'b1, cur_row};
+  wire [LSW-1:0] cur_q    = st_q[0 +: LSW];
+  wire [LSW-1:0] adv_q    = advance(cur_q, cur_q[YW +: XW] == wm1_q);
+  wire [LSW-1:0] adv_init = advance(st_init[0 +: LSW], 1'b0);
 
   logic [LANES*LSW-1:0] st_d;
   if (LANES > 1) begin : g_rotate
-    assign st_d = {advanced, st_now[LANES*LSW-1:LSW]};
+    assign st_d = sof_i ? {adv_init, st_init[LANES*LSW-1:LSW]} : {adv_q, st_q[LANES*LSW-1:LSW]};
   end else begin : g_single
-    assign st_d = advanced;
+    assign st_d = sof_i ? adv_init : adv_q;
   end
+
+  // The slot's lane state (its position, whether it started).
+  wire [LSW-1:0] cur        = sof_i ? st_init[0 +: LSW] : cur_q;
+  wire           cur_active = cur[LSW-1] || cur[XW + YW +: WW] == '0;
+  wire [XW-1:0]  cur_col    = cur[YW +: XW];
+  wire [YW-1:0]  cur_row    = cur[0 +: YW];
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin

@@ -3,17 +3,21 @@
 // nodes (sgm_min_tree, N = ARITY = 4) with a register after every level, so
 // that one stage holds one node (six comparator chains side by side and a
 // 4:1 select, docs/reschedule.md). The minima of the 45, 90 and 135 degree
-// paths (sgm_path_engine), which are needed only a row later.
+// paths (sgm_path_engine), which are needed only a row later. IN_REG = 1
+// registers the values first (where the schedule has a slot to spare: the
+// values come from registers that also feed the path memories, and the route
+// from them into the first level was a critical path of the five-lane core).
 //
-// Parameters: N inputs (>= 1), W bits each.
-// Latency: LATENCY = ceil(log4 N) slots (0 for N = 1). Throughput: one
-// minimum per slot (en_i).
+// Parameters: N inputs (>= 1), W bits each, IN_REG (0 or 1).
+// Latency: LATENCY = ceil(log4 N) + IN_REG slots (ceil(log4 N) = 0 for N = 1).
+// Throughput: one minimum per slot (en_i).
 module sgm_min_pipe #(
   parameter int N = 64,
   parameter int W = 9,
+  parameter int IN_REG = 0,
   localparam int ARITY   = 4,
   localparam int LEVELS  = ($clog2(N) + 1) / 2,  // ceil(log4 N)
-  localparam int LATENCY = LEVELS
+  localparam int LATENCY = LEVELS + IN_REG
 ) (
   input  wire            clk_i,
   input  wire            en_i,
@@ -28,7 +32,17 @@ module sgm_min_pipe #(
   // registered. split_var: each level is its own variable for Verilator.
   logic [P*W-1:0] lvl [LEVELS+1] /* verilator split_var */;
 
-  assign lvl[0] = {{(P-N){{W{1'b1}}}}, values_i};
+  logic [N*W-1:0] values;
+  if (IN_REG != 0) begin : g_in_reg
+    logic [N*W-1:0] values_q;
+    always_ff @(posedge clk_i) begin
+      if (en_i) values_q <= values_i;
+    end
+    assign values = values_q;
+  end else begin : g_in_now
+    assign values = values_i;
+  end
+  assign lvl[0] = {{(P-N){{W{1'b1}}}}, values};
 
   for (genvar l = 0; l < LEVELS; l++) begin : g_level
     localparam int NN = P / (ARITY ** (l + 1));  // values of level l + 1

@@ -31,7 +31,7 @@
 //          to the path memories at the pixel's column (45 degrees
 //          W45_DELAY = max(0, K - 4) slots later); each word's minimum enters
 //          sgm_min_pipe as the word is written and is written to the path's
-//          min memory MIN_LATENCY slots after it
+//          min memory MIN_DELAY slots after it (MIN_LATENCY, the tree's, or one more)
 // Path memories (per vertical path: MAX_WIDTH words of D x LW bits and
 // MAX_WIDTH words of LW bits for min Lr; synchronous read with enable -> block
 // RAM). Row y reads the words row y - 1 wrote at x - 1 .. x + 1 at slot
@@ -466,13 +466,18 @@ module sgm_path_engine #(
     end
   end
 
-  // min Lr of 45/90/135 degrees, MIN_LATENCY slots after their Lr words are
-  // written (the 45 degree word W45_DELAY slots after C), at the same column.
+  // min Lr of 45/90/135 degrees, MIN_DELAY slots after their Lr words are
+  // written (the 45 degree word W45_DELAY slots after C), at the same column:
+  // the tree's MIN_LATENCY, and one slot more (its values registered first)
+  // where the lanes' SKEW leaves one to spare ((SKEW - 1) K >= 6 + MIN_LATENCY;
+  // never at one lane, whose SKEW has none).
+  localparam int MIN_IN_REG = LANES * (SKEW - 1) - 5 - MIN_LATENCY > 0 ? 1 : 0;
+  localparam int MIN_DELAY  = MIN_LATENCY + MIN_IN_REG;
   wire [3*LWORD-1:0] lr_wr  = {lr_all[3*D*LW +: D*LW], lr_all[2*D*LW +: D*LW], lr_w45};
   wire [2*AW-1:0]    col_wr = {AW'(col_c), col_w45};  // 90 and 135, 45
   logic [3*LW-1:0] min_m;  // 45, 90, 135
   for (genvar r = 1; r < 4; r++) begin : g_min
-    sgm_min_pipe #(.N(D), .W(LW)) u_min (
+    sgm_min_pipe #(.N(D), .W(LW), .IN_REG(MIN_IN_REG)) u_min (
       .clk_i    (clk_i),
       .en_i     (en_i),
       .values_i (lr_wr[(r-1)*LWORD +: LWORD]),
@@ -480,14 +485,14 @@ module sgm_path_engine #(
     );
   end
   logic [AW-1:0] col_m, col_m45;
-  sgm_delay #(.WIDTH(2*AW), .DEPTH(MIN_LATENCY)) u_col_m (
+  sgm_delay #(.WIDTH(2*AW), .DEPTH(MIN_DELAY)) u_col_m (
     .clk_i (clk_i),
     .en_i  (en_i),
     .d_i   (col_wr),
     .q_o   ({col_m, col_m45})
   );
   // The counts beside them (EDGE_RESET): the 45 degree count W45_DELAY slots
-  // after C as its word, all three MIN_LATENCY slots more.
+  // after C as its word, all three MIN_DELAY slots more.
   logic [3*MW-1:0] min_wd;  // {count, min Lr} of 45, 90, 135 degrees
   if (EDGE_RESET != 0) begin : g_count_wr
     logic [3:0] count45_w;
@@ -502,7 +507,7 @@ module sgm_path_engine #(
       assign count45_w = count_c[3:0];
     end
     logic [11:0] count_m;
-    sgm_delay #(.WIDTH(12), .DEPTH(MIN_LATENCY)) u_count_m (
+    sgm_delay #(.WIDTH(12), .DEPTH(MIN_DELAY)) u_count_m (
       .clk_i (clk_i),
       .en_i  (en_i),
       .d_i   ({count_c[11:4], count45_w}),
