@@ -224,22 +224,25 @@ module sgm_right_path #(
   for (genvar i = 0; i < 2; i++) begin : g_rd_addr
     localparam int RD_OFF = i == 0 ? K * DLY - 1 : K * DLY + L5_LAG - 3;
     localparam int T0     = (4 * K * M - RD_OFF) % (K * M);  // the slot count RD_OFF before 0, mod K M
+    // The address lane_rq M + n_rq itself is the register (as wr_addr_q), so
+    // that no adder sits in front of the block RAM (a critical path of the
+    // five-lane core on the LFE5U-85F).
     logic [LNW-1:0] lane_rq;
     logic [AW-1:0]  n_rq;
-    logic [RA-1:0]  base_rq;
+    logic [RA-1:0]  addr_rq;
     wire            wrap = lane_rq == LNW'(K - 1);
     always_ff @(posedge clk_i) begin
       if (!rst_ni) begin
         lane_rq <= LNW'(T0 % K);
         n_rq    <= AW'(T0 / K);
-        base_rq <= RA'((T0 % K) * M);
+        addr_rq <= RA'((T0 % K) * M + T0 / K);
       end else if (en_i) begin
         lane_rq <= wrap ? '0 : lane_rq + 1'b1;
-        base_rq <= wrap ? '0 : base_rq + RA'(M);
+        addr_rq <= wrap ? (n_rq == AW'(M - 1) ? '0 : RA'(n_rq) + 1'b1) : addr_rq + RA'(M);
         if (wrap) n_rq <= n_rq == AW'(M - 1) ? '0 : n_rq + 1'b1;
       end
     end
-    assign cnt_addr[i*RA +: RA] = base_rq + RA'(n_rq);
+    assign cnt_addr[i*RA +: RA] = addr_rq;
   end
   wire [RA-1:0] out_addr = cnt_addr[0 +: RA];
   wire [RA-1:0] l5_addr  = cnt_addr[RA +: RA];
