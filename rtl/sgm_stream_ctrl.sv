@@ -229,6 +229,9 @@ module sgm_stream_ctrl #(
   // Room in the cycle of the slot decided now: this cycle's push is counted as
   // if it came (push = en_o && res_valid_i: en_o kept out of the slot's logic),
   // this cycle's pop is not counted.
+  // room_q: count_q < FIFO_DEPTH - 1, written with the next count.
+  logic room_q;
+  wire  room = room_q;
 
   // ---------------------------------------------------------------- slots
   logic [XW-1:0] x_q;          // position of the next slot
@@ -266,25 +269,18 @@ module sgm_stream_ctrl #(
 
   // RUN takes the head beat as the next slot, except a tuser beat inside the
   // frame, which is left for the next frame.
-  // The slot decision itself comes from two flip-flops, take_q and slot_q
-  // (below: written in the cycle before from the next values of the flags
-  // it reads: the state, the head's flags, the FIFO's room, first_q), so
-  // that the slot's clock enables and the pixels' zeroing are a route from a
-  // register, not a logic path (the five-lane core's critical path on the
-  // LFE5U-85F ran from first_q through the decision into them). take: the
-  // head beat is taken (RUN, the head there, room, and not a tuser beat
-  // inside the frame); gen_slot: a padding or flush slot (PAD or FLUSH, room).
-  logic run_q;  // state_q == RUN, written with the next state
-  logic take_q, slot_q;
-  wire take     = take_q;
-  wire slot     = slot_q;
-  wire gen_slot = slot_q && !take_q;  // RUN and PAD / FLUSH exclude each other
+  // run_q / gen_q: state_q == RUN / state_q is PAD or FLUSH, as flip-flops
+  // written with the next state (no state decoding in front of the slot).
+  logic run_q, gen_q;
   wire err_sof  = run_q && head_sof && !first_px;
+  wire take     = run_q && head_ok && room && !err_sof;
+  wire gen_slot = gen_q && room;
   // IDLE drops every beat but a start of frame with a valid configuration.
   wire drop     = state_q == IDLE && head_ok && !(head_sof && pend_ok);
   assign in_pop = take || drop;
 
   // The slot decided in this cycle enters the pipeline in the next.
+  wire slot = take || gen_slot;
   always_ff @(posedge clk_i) begin
     if (!rst_ni) en_o <= 1'b0;
     else         en_o <= slot;
@@ -329,9 +325,11 @@ module sgm_stream_ctrl #(
     if (!rst_ni) begin
       state_q <= IDLE;
       run_q   <= 1'b0;
+      gen_q   <= 1'b0;
     end else begin
       state_q <= state_d;
       run_q   <= state_d == RUN;
+      gen_q   <= state_d == PAD || state_d == FLUSH;
     end
   end
 
@@ -453,6 +451,7 @@ module sgm_stream_ctrl #(
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       count_q <= '0;
+      room_q  <= 1'b1;
       rd_q    <= '0;
       wr_q    <= '0;
     end else begin
@@ -463,6 +462,7 @@ module sgm_stream_ctrl #(
       end
       if (pop) rd_q <= rd_q == FAW'(FIFO_DEPTH - 1) ? '0 : rd_q + 1'b1;
       count_q <= count_d;
+      room_q  <= count_d < (FAW+1)'(FIFO_DEPTH - 1);
     end
   end
 
@@ -470,24 +470,6 @@ module sgm_stream_ctrl #(
   assign m_tuser_o  = fifo_q[rd_q][17];
   assign m_tlast_o  = fifo_q[rd_q][16];
   assign m_tdata_o  = fifo_q[rd_q][15:0];
-
-  // The next values of what the slot decision reads: room in the FIFO (the
-  // room of the slot decided then, as count_q < FIFO_DEPTH - 1 would give
-  // it), the head's flags, first_q, the state.
-  wire room_d  = count_d < (FAW+1)'(FIFO_DEPTH - 1);
-  wire first_d = state_q == IDLE ? 1'b1 : slot ? 1'b0 : first_q;
-  wire gen_d   = state_d == PAD || state_d == FLUSH;
-  wire take_d  = state_d == RUN && head_ok_d && room_d && !(head_ok_d && head_user_d && !first_d);
-
-  always_ff @(posedge clk_i) begin
-    if (!rst_ni) begin
-      take_q <= 1'b0;
-      slot_q <= 1'b0;
-    end else begin
-      take_q <= take_d;
-      slot_q <= take_d || (gen_d && room_d);
-    end
-  end
 
 endmodule
 `default_nettype wire
