@@ -29,6 +29,7 @@
 // popcount, a 6-bit compare / subtract and 25 AND-ORs. Entry bits travel as
 // bit planes; plane b is dropped after its stage.
 //   stage 0   line-buffer read, pixel register
+//   stage 0b  both registered once more (the block RAM's clock-to-out alone)
 //   stage A   window shift, live flags, column masks of the centre
 //   stage S   counted set, n (25-input popcount) = m
 //   2 DW stages one result bit per two (count | decide), the last one drives
@@ -49,8 +50,8 @@
 // out_valid_o = the centre lies inside the frame and its own slot was a frame
 // pixel (in_valid_i, stored with it: a slot of an earlier frame still in
 // flight after a frame switch may have a position inside the new frame).
-// Latency: LATENCY_ROWS * width + LATENCY slots (pixel (x, y) leaves 2 DW + 3
-// slots after input slot (x + 2, y + 2)). Throughput: one pixel per enabled slot.
+// Latency: LATENCY_ROWS * width + LATENCY slots (pixel (x, y) leaves 2 DW + 4
+// slots after input slot (x + 2, y + 2)), one more than before stage 0b). Throughput: one pixel per enabled slot.
 module sgm_median5x5 #(
   parameter int DW        /*verilator public*/ = 8,
   parameter int MAX_WIDTH /*verilator public*/ = 128,
@@ -76,7 +77,7 @@ module sgm_median5x5 #(
 );
 
   localparam int LATENCY_ROWS /*verilator public*/ = 2;
-  localparam int LATENCY      /*verilator public*/ = 2 * DW + 5;
+  localparam int LATENCY      /*verilator public*/ = 2 * DW + 6;
 
   localparam int AW = $clog2(MAX_WIDTH);
   localparam int EW = DW + 2;            // line-buffer entry {frame pixel, valid, disp}
@@ -125,16 +126,31 @@ module sgm_median5x5 #(
     end
   end
 
+  // Stage 0b: the line buffers' words and stage 0 registered once more, so
+  // that the block RAM's clock-to-out (4.3 ns on the ECP5, no output register)
+  // is not followed by the live flags' comparisons (a critical path of the
+  // five-lane core on the LFE5U-85F). The write-back above keeps stage 0.
+  logic [4*EW-1:0] lines_r;
+  logic [EW-1:0]   pix_r;
+  logic [CW-1:0]   x0_r, w0_r;
+  logic [RW-1:0]   y0_r, h0_r;
+  logic [RW:0]     h1_r, h2_r, h3_r;
+  logic            wrap0_r, men0_r;
+  always_ff @(posedge clk_i) begin
+    if (en_i) {lines_r, pix_r, x0_r, w0_r, y0_r, h0_r, h1_r, h2_r, h3_r, wrap0_r, men0_r} <=
+                {lines_q, pix_q, x0_q, w0_q, y0_q, h0_q, h1_q, h2_q, h3_q, wrap0_q, men0_q};
+  end
+
   // The new column, entry r = row y-4+r; live = valid and that row inside.
-  wire  [5*EW-1:0] new_ent = {pix_q, lines_q[EW-1:0], lines_q[2*EW-1:EW], lines_q[3*EW-1:2*EW],
-                              lines_q[4*EW-1:3*EW]};
-  wire  [RW:0]     y1      = {1'b0, y0_q};
+  wire  [5*EW-1:0] new_ent = {pix_r, lines_r[EW-1:0], lines_r[2*EW-1:EW], lines_r[3*EW-1:2*EW],
+                              lines_r[4*EW-1:3*EW]};
+  wire  [RW:0]     y1      = {1'b0, y0_r};
   logic [5*DW-1:0] new_val;
   logic [4:0]      new_live;
   for (genvar r = 0; r < 5; r++) begin : g_newcol
     wire [RW:0] yr4 = y1 + (RW+1)'(r);  // row y-4+r, plus 4
     assign new_val[r*DW +: DW] = new_ent[r*EW +: DW];
-    assign new_live[r]         = new_ent[r*EW + DW] && yr4 >= (RW+1)'(4) && yr4 < {1'b0, h0_q} + (RW+1)'(4);
+    assign new_live[r]         = new_ent[r*EW + DW] && yr4 >= (RW+1)'(4) && yr4 < {1'b0, h0_r} + (RW+1)'(4);
   end
 
   // ------------------------------------------------------------ stage A: window
@@ -151,9 +167,9 @@ module sgm_median5x5 #(
   // wrap test, y0 - wrap and the comparisons behind it were the LFE5U-85F
   // five-lane core's critical path at 8.4 ns): row ycb = y0 - wrap, so ycb >= 2
   // iff y0 >= 2 + wrap, ycb < height + k iff y0 < height + k + wrap.
-  wire             wrap = wrap0_q;
-  wire  [CW-1:0]   cx   = wrap ? w0_q + x0_q - CW'(2) : x0_q - CW'(2);
-  wire  [RW-1:0]   ycb  = y0_q - RW'(wrap);  // row of the bottom window row
+  wire             wrap = wrap0_r;
+  wire  [CW-1:0]   cx   = wrap ? w0_r + x0_r - CW'(2) : x0_r - CW'(2);
+  wire  [RW-1:0]   ycb  = y0_r - RW'(wrap);  // row of the bottom window row
   // Column masks (columns cx - 2 .. cx + 2 inside the frame) from x0 and the
   // width alone, no adder in front of a comparison: off the wrap cx = x0 - 2,
   // so cx - 2 >= 0 iff x0 >= 4, cx + 1 < W iff x0 <= W, cx + 2 < W iff x0 < W;
@@ -161,16 +177,16 @@ module sgm_median5x5 #(
   // cx + 2 < W never.
   logic [4:0]      col_ok;
   always_comb begin
-    col_ok[0] = wrap || x0_q >= CW'(4);
-    col_ok[1] = wrap || x0_q >= CW'(3);
+    col_ok[0] = wrap || x0_r >= CW'(4);
+    col_ok[1] = wrap || x0_r >= CW'(3);
     col_ok[2] = 1'b1;
-    col_ok[3] = wrap ? x0_q == '0 : x0_q <= w0_q;
-    col_ok[4] = !wrap && x0_q < w0_q;
+    col_ok[3] = wrap ? x0_r == '0 : x0_r <= w0_r;
+    col_ok[4] = !wrap && x0_r < w0_r;
   end
   wire             y1_top  = wrap ? y1 >= (RW+1)'(3) : y1 >= (RW+1)'(2);  // ycb >= 2
-  wire             y1_bot  = wrap ? y1 < h3_q : y1 < h2_q;                 // ycb < height + 2
-  wire             y1_pass = wrap ? y1 < h1_q : y1 < {1'b0, h0_q};         // ycb < height
-  wire centre_in = y1_top && y1_bot && x0_q < w0_q;
+  wire             y1_bot  = wrap ? y1 < h3_r : y1 < h2_r;                 // ycb < height + 2
+  wire             y1_pass = wrap ? y1 < h1_r : y1 < {1'b0, h0_r};         // ycb < height
+  wire centre_in = y1_top && y1_bot && x0_r < w0_r;
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
@@ -179,7 +195,7 @@ module sgm_median5x5 #(
       colok_q <= col_ok;
       cxa_q   <= cx;
       cya_q   <= ycb - RW'(2);
-      mena_q  <= men0_q && y1_pass;  // centre row < height - 2: the last 2 rows pass through
+      mena_q  <= men0_r && y1_pass;  // centre row < height - 2: the last 2 rows pass through
     end
   end
 
@@ -313,17 +329,20 @@ module sgm_median5x5 #(
     else if (en_i && in_valid_i) armed_q <= 1'b1;
   end
 
-  // Control: v0_q marks stage 0 as loaded since reset; oka_q, ok_q follow the centre.
-  logic v0_q, oka_q;
+  // Control: v0_q / v0b_q mark stages 0 / 0b as loaded since reset; oka_q,
+  // ok_q follow the centre.
+  logic v0_q, v0b_q, oka_q;
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       v0_q        <= 1'b0;
+      v0b_q       <= 1'b0;
       oka_q       <= 1'b0;
       ok_q        <= '0;
       out_valid_o <= 1'b0;
     end else if (en_i) begin
       v0_q        <= 1'b1;
-      oka_q       <= v0_q && armed_q && centre_in && real_q[1];
+      v0b_q       <= v0_q;
+      oka_q       <= v0b_q && armed_q && centre_in && real_q[1];
       ok_q        <= {ok_q[2*DW-2:0], oka_q};
       out_valid_o <= ok_q[2*DW-1];
     end
