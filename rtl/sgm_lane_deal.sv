@@ -80,15 +80,18 @@ module sgm_lane_deal #(
   for (genvar k = 0; k < LANES; k++) begin : g_init
     assign st_init[k*LSW +: LSW] = lane_init(k);
   end
+  // A lane has started: its flag, or its start countdown at 0.
+  function automatic logic started(input logic [LSW-1:0] st);
+    started = st[LSW-1] || st[XW + YW +: WW] == '0;
+  endfunction
+
   // The state after the lane's slot (last: the slot is its row's last column).
   function automatic logic [LSW-1:0] advance(input logic [LSW-1:0] st, input logic last);
-    logic          act;
     logic [WW-1:0] wait_n;
     logic [XW-1:0] col;
     logic [YW-1:0] row;
     {wait_n, col, row} = st[0 +: WW + XW + YW];
-    act = st[LSW-1] || wait_n == '0;
-    advance = !act ? {1'b0, wait_n - 1'b1, col, row} :
+    advance = !started(st) ? {1'b0, wait_n - 1'b1, col, row} :
               last ? {1'b1, WW'(0), XW'(0), row + YW'(LANES)} :
                      {1'b1, WW'(0), col + 1'b1, row};
   endfunction
@@ -113,7 +116,7 @@ module sgm_lane_deal #(
 
   // The slot's lane state (its position, whether it started).
   wire [LSW-1:0] cur        = sof_i ? st_init[0 +: LSW] : cur_q;
-  wire           cur_active = cur[LSW-1] || cur[XW + YW +: WW] == '0;
+  wire           cur_active = started(cur);
   wire [XW-1:0]  cur_col    = cur[YW +: XW];
   wire [YW-1:0]  cur_row    = cur[0 +: YW];
 

@@ -51,7 +51,8 @@
 // pixel (in_valid_i, stored with it: a slot of an earlier frame still in
 // flight after a frame switch may have a position inside the new frame).
 // Latency: LATENCY_ROWS * width + LATENCY slots (pixel (x, y) leaves 2 DW + 4
-// slots after input slot (x + 2, y + 2)), one more than before stage 0b). Throughput: one pixel per enabled slot.
+// slots after input slot (x + 2, y + 2), one more than before stage 0b).
+// Throughput: one pixel per enabled slot.
 module sgm_median5x5 #(
   parameter int DW        /*verilator public*/ = 8,
   parameter int MAX_WIDTH /*verilator public*/ = 128,
