@@ -38,7 +38,7 @@ module sgm_axi #(
   parameter int UNIQUENESS /*verilator public*/ = 1,
   parameter int AD_TERM    /*verilator public*/ = 1,
   parameter int RIGHT_BLOCK /*verilator public*/ = 64,
-  parameter int EDGE_RESET /*verilator public*/ = 0,
+  parameter int EDGE_RESET /*verilator public*/ = 1,
   parameter int ADDR_W     = 8,
   localparam int XW        = $clog2(MAX_WIDTH + 1),
   localparam int YW        = $clog2(MAX_HEIGHT + 16)
@@ -106,18 +106,20 @@ module sgm_axi #(
 
   localparam logic [31:0] ID_VALUE       /*verilator public*/ = 32'h5347_4D05;  // "SGM", version 5
   // The reset values are the golden model's defaults for the build (sgm::buildDefaults):
-  // "default" when it has the fifth path, the uniqueness ratio and the AD term, else
+  // "default" when it has the fifth path, the uniqueness ratio, the AD term and the path
+  // restart, else
   // "four-path" (the defaults before issue 15).
-  localparam bit      FULL_DEFAULTS  = RIGHT_BLOCK != 0 && UNIQUENESS != 0 && AD_TERM != 0;
+  localparam bit      FULL_DEFAULTS  = RIGHT_BLOCK != 0 && UNIQUENESS != 0 && AD_TERM != 0 && EDGE_RESET != 0;
   localparam logic [31:0] PENALTY_RESET  /*verilator public*/ =
       FULL_DEFAULTS ? 32'h4314_C818    // P1 24, P2' 200, AD cap 20, AD weight 3, W5 4
                     : 32'h0014_6412;   // P1 18, P2' 100, AD cap 20, AD weight 0 (off), W5 0 (off)
   localparam logic [31:0] CONFIG_RESET   /*verilator public*/ =
       FULL_DEFAULTS ? 32'h0F00_5131    // rsad, sub-pixel, LR tol 1, fill, median, uniqueness 15 (no snap)
                     : 32'h0000_7131;   // rsad, sub-pixel, LR tol 1, fill, snap, median
-  // EDGE_RESET: [7:0] T (0 off), [11:8] R, [20:16] path flags; reset: off, R 5, every path
-  // (the golden EdgeReset{}).
-  localparam logic [31:0] EDGE_RESET_RESET /*verilator public*/ = 32'h001F_0500;
+  // EDGE_RESET: [7:0] T (0 off), [11:8] R, [20:16] path flags.
+  localparam logic [31:0] EDGE_RESET_RESET /*verilator public*/ =
+      FULL_DEFAULTS ? 32'h001B_0628    // T 40, R 6, paths 0, 45, 135 degrees and the fifth
+                    : 32'h001F_0500;   // off (T 0), R 5, every path: the golden EdgeReset{}
   localparam logic [31:0] EDGE_RESET_MASK  = 32'h001F_0FFF;
   localparam logic [31:0] CTRL_MASK      = 32'h0000_0005;  // ENABLE, HOLD (SOFT_RESET reads 0)
   localparam logic [31:0] CONFIG_MASK    = 32'h7F03_7733;

@@ -30,7 +30,7 @@
 // the path engine and delays everything behind the census by its latency
 // (K (4B + 1 + ceil(5 / K)) + 1 slots); 0 leaves it out (the default: 64).
 // EDGE_RESET = 1 builds the path restart at strong edges (docs/rtl.md; run-time
-// cfg_reset_t_i, 0 = off, cfg_reset_len_i, cfg_reset_paths_i); 0 (the default)
+// cfg_reset_t_i, 0 = off, cfg_reset_len_i, cfg_reset_paths_i; the default); 0
 // leaves it out, and a frame with cfg_reset_t_i != 0 is dropped with error_o[3].
 // Frame constraints: MIN_FRAME_WIDTH (max(D, 16); with many lanes at least the
 // engine's K SKEW + 1) <= width <= MAX_WIDTH, 9 <= height <= MAX_HEIGHT
@@ -50,7 +50,7 @@ module sgm_top #(
   parameter int UNIQUENESS /*verilator public*/ = 1,  // the uniqueness ratio is built (0: not)
   parameter int AD_TERM    /*verilator public*/ = 1,  // the AD term is built (0: not)
   parameter int RIGHT_BLOCK /*verilator public*/ = 64,  // the fifth path's block B (a power of two >= 2), 0: not built
-  parameter int EDGE_RESET /*verilator public*/ = 0,  // the path restart at strong edges is built (0: not)
+  parameter int EDGE_RESET /*verilator public*/ = 1,  // the path restart at strong edges is built (0: not)
   localparam int XW        = $clog2(MAX_WIDTH + 1),
   // Lanes (docs/reschedule.md "The top's wiring at K lanes"). The engine's
   // SKEW (sgm_path_engine owns the formula; mirrored here for the deal, checked

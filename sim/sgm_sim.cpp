@@ -63,6 +63,7 @@ int main(int argc, char** argv) {
     constexpr int kCensusH = Vsgm_top_sgm_top::CENSUS_H;        // this build's census window
     BuildLevers build;
     build.rightBlock = kRightBlock, build.census9x9 = kCensusH == 9;
+    build.edgeReset = Vsgm_top_sgm_top::EDGE_RESET != 0;
     const Params params = args.pipelineParams(buildDefaults(build, SGM_D));  // the build's defaults, then the options
     if (params.disparities != SGM_D)
       throw Error("this simulator is built for D=" + std::to_string(SGM_D) + " (make sim D=" +
@@ -76,8 +77,10 @@ int main(int argc, char** argv) {
     if (params.p2 > 255) throw Error("P2'=" + std::to_string(params.p2) + " exceeds the core's 8-bit input");
     if (params.lrTolerance > 7) throw Error("LR tolerance " + std::to_string(params.lrTolerance) + " exceeds the core's 3-bit input");
     if (params.experimental())
-      throw Error("--right-path without --right-block, --subpixel-fit linear, --mgm, --median-gate, --p1-paths, "
-                  "--snap-edge and --edge-reset are golden-only experiments, not in the core");
+      throw Error("--right-path without --right-block, --subpixel-fit linear, --mgm, --median-gate, --p1-paths "
+                  "and --snap-edge are golden-only experiments, not in the core");
+    if (params.edgeReset.threshold && !Vsgm_top_sgm_top::EDGE_RESET)
+      throw Error("this simulator is built without the path restart (sgm_top EDGE_RESET = 0): give --edge-reset 0");
     if (params.rightPathWeight && params.rightPathBlock != kRightBlock)
       throw Error(kRightBlock ? "this simulator's fifth path runs in blocks of " + std::to_string(kRightBlock) +
                                     " (--right-block " + std::to_string(kRightBlock) + ")"

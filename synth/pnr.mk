@@ -16,7 +16,9 @@
 #                       builds are four-path cores unless asked, because the fifth path does
 #                       not fit beside the D = 64 six-lane core on the LFE5U-85F; sgm_top's
 #                       own default is 64, docs/accuracy-pool.md "Clock (decision)"),
-#                       and PNR_EDGE_RESET, the core's EDGE_RESET (empty: sgm_top's default)
+#                       and PNR_EDGE_RESET, the core's EDGE_RESET, default 1 with the fifth
+#                       path (the default build) and 0 without it (a four-path build resets
+#                       to the four-path preset, which leaves the restart off)
 #   make pnr-summary    rebuild summary.{json,md} from what build/pnr holds
 #
 # Yosys and nextpnr run one at a time (flock on build/pnr/.lock, also under
@@ -36,8 +38,12 @@ PNR_LANES        ?= 6
 PNR_UNIQUENESS   ?= 1
 PNR_AD_TERM      ?= 1
 PNR_RIGHT_BLOCK  ?= 0
-# The core's EDGE_RESET (the path restart at strong edges); empty: sgm_top's default.
-PNR_EDGE_RESET   ?=
+# The core's EDGE_RESET (the path restart at strong edges): built with the fifth path, as in
+# sgm_top's defaults; not in four-path builds, whose reset values (the four-path preset)
+# leave it off, so that `make pnr` and `make pnr-ci` keep their area. A run directory names
+# it (-er0, -er1) only where it differs from this default.
+PNR_EDGE_RESET_DEFAULT = $(if $(filter-out 0,$(PNR_RIGHT_BLOCK)),1,0)
+PNR_EDGE_RESET   ?= $(PNR_EDGE_RESET_DEFAULT)
 PNR_DEVICE       ?= 85k
 PNR_PACKAGE      ?= CABGA381
 PNR_SPEEDS       ?= 8 6
@@ -124,7 +130,7 @@ PNR_BENCH_REPORT     := $(BUILD)/bench/report.json
 TEST_EXTRA += ecp5-cmp-check pnr-ci
 
 PNR_DIR     := $(BUILD)/pnr
-PNR_CFG      = $(PNR_DIR)/d$(PNR_D)-w$(PNR_MAX_WIDTH)$(if $(filter-out 1,$(PNR_LANES)),-k$(PNR_LANES))$(if $(filter 0,$(PNR_UNIQUENESS)),-u0)$(if $(filter 0,$(PNR_AD_TERM)),-ad0)$(if $(filter-out 0,$(PNR_RIGHT_BLOCK)),-rb$(PNR_RIGHT_BLOCK))$(if $(PNR_EDGE_RESET),-er$(PNR_EDGE_RESET))
+PNR_CFG      = $(PNR_DIR)/d$(PNR_D)-w$(PNR_MAX_WIDTH)$(if $(filter-out 1,$(PNR_LANES)),-k$(PNR_LANES))$(if $(filter 0,$(PNR_UNIQUENESS)),-u0)$(if $(filter 0,$(PNR_AD_TERM)),-ad0)$(if $(filter-out 0,$(PNR_RIGHT_BLOCK)),-rb$(PNR_RIGHT_BLOCK))$(if $(filter-out $(PNR_EDGE_RESET_DEFAULT),$(PNR_EDGE_RESET)),-er$(PNR_EDGE_RESET))
 PNR_DEVNAME  = LFE5U-$(subst k,F,$(PNR_DEVICE))
 PNR_RUN      = $(PNR_CFG)/lfe5u-$(subst k,f,$(PNR_DEVICE))-$(PNR_SPEED)
 PNR_LOCK     = $(PNR_DIR)/.lock
@@ -240,7 +246,7 @@ define pnr_route
 endef
 
 $(PNR_RUN)/done: $(PNR_CFG)/synth/done | pnr-tools
-	$(call pnr_route,$(PNR_CFG),D=$(PNR_D) MAX_WIDTH=$(PNR_MAX_WIDTH) LANES=$(PNR_LANES),echo "kind=core"; echo "d=$(PNR_D)"; echo "max_width=$(PNR_MAX_WIDTH)"; echo "lanes=$(PNR_LANES)";)
+	$(call pnr_route,$(PNR_CFG),D=$(PNR_D) MAX_WIDTH=$(PNR_MAX_WIDTH) LANES=$(PNR_LANES),echo "kind=core"; echo "d=$(PNR_D)"; echo "max_width=$(PNR_MAX_WIDTH)"; echo "lanes=$(PNR_LANES)"; echo "right_block=$(PNR_RIGHT_BLOCK)"; echo "edge_reset=$(PNR_EDGE_RESET)";)
 
 # ------------------------------------------------------------------ the loop alone
 # `make pnr-loop`: the 0 degree recursion alone (synth/sgm_path_loop.sv, the loop

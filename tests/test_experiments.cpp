@@ -65,12 +65,12 @@ TEST(Experiments, OffByDefaultAndNotInAnyPreset) {
   g = p;  // the gated edge snap: golden-only
   g.snapEdge = 96;
   EXPECT_TRUE(g.experimental());
-  g = p;  // the path restart at strong edges: golden-only; its length and paths alone change nothing
-  g.edgeReset.length = 3, g.edgeReset.paths = {0, 0, 0, 1, 1};
+  g = p;  // the path restart at strong edges is in the core (sgm_top EDGE_RESET): not an experiment
+  g.edgeReset = sgm::EdgeReset{48, 3, {0, 0, 0, 1, 1}};
   EXPECT_FALSE(g.experimental());
-  g.edgeReset.threshold = 48;
-  EXPECT_TRUE(g.experimental());
   EXPECT_NE(g, p);
+  g.edgeReset.threshold = 0;  // off
+  EXPECT_FALSE(g.experimental());
   sgm::Params u = p;  // the uniqueness ratio and the AD term are in the core: not experiments
   u.uniqueness = 15, u.adWeight = 3;
   EXPECT_FALSE(u.experimental());
@@ -141,10 +141,11 @@ TEST(RightPath, AggregateAddsItToTheFourPaths) {
   }
 }
 
-// The path restart at strong edges (golden-only, Params::edgeReset) against a direct reading
-// of its definition: pixel p of a marked path starts again (Lr = C) when one of the steps
-// p - k r -> p - (k + 1) r, k = 0 .. R - 1, both ends inside the path, crosses a gray step
-// of at least T; otherwise eq. (1). Each path, the fifth over the row and in blocks.
+// The path restart at strong edges (Params::edgeReset, a default; in the core with
+// EDGE_RESET = 1) against a direct reading of its definition: pixel p of a marked path
+// starts again (Lr = C) when one of the steps p - k r -> p - (k + 1) r, k = 0 .. R - 1,
+// both ends inside the path, crosses a gray step of at least T; otherwise eq. (1). Each
+// path, the fifth over the row and in blocks.
 TEST(EdgeReset, MatchesItsDefinitionOnEveryPath) {
   const int w = 29, h = 9, nd = 7, p1 = 8, p2 = 90, threshold = 48, length = 3;
   std::mt19937 rng(21);
@@ -315,6 +316,7 @@ TEST(Experiments, StreamingPipelineEqualsStagesAndChangesTheResult) {
   p.disparities = 16;
   const sgm::DisparityMap today = sgm::runPipeline(scene.left, scene.right, p);
   p.rightPathWeight = 3, p.uniqueness = 15, p.adWeight = 8, p.adCap = 16, p.linearSubpixel = true, p.mgm = true;
+  p.edgeReset.threshold = 0;  // MGM does not combine with the path restart
   const sgm::DisparityMap streamed = sgm::runPipeline(scene.left, scene.right, p);
   const sgm::PipelineStages staged = sgm::runPipelineStages(scene.left, scene.right, p);
   EXPECT_EQ(cv::countNonZero(streamed.disp != staged.result.disp), 0);

@@ -193,7 +193,7 @@ std::string notesMarkdown(const TableReport& r) {
       "the left-right check, hole filling and edge snapping off (`lrTolerance = -1`, `fill = false`, `snap = false`); sub-pixel refinement and "
       "the 5x5 median stay as in `defaultParams` (on). The paper's figure is in parentheses.\n"
       "- **Full pipeline** (rows `full-*`): `defaultParams(mode)` as is (LR check, hole filling, sub-pixel, median; "
-      "for `rsad` the defaults: the fifth path, the AD term, uniqueness 15, no snapping; the other modes with edge "
+      "for `rsad` the defaults: the fifth path, the AD term, uniqueness 15, the path restart, no snapping; the other modes with edge "
       "snapping, four paths) for each cost mode the hardware implements; `" + r.hardwareDefault +
       "` is the hardware default (`Params{}.mode`); `full-four-path` is the `four-path` preset (the defaults before "
       "issue 15); `full-paper` is the `paper` preset (9x9, `unified`, P2' / dI, "

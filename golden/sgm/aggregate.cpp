@@ -57,9 +57,10 @@ uint16_t pathStart(const uint8_t* cost, int disparities, uint16_t* out) {
 
 namespace {
 
-// Golden-only path restart (Params::edgeReset): the steps since the path last crossed a
-// strong edge, 0 at the step across it, saturating at `length` (also at a path start); the
-// pixel restarts (Lr = C) while the count is below `length`.
+// The path restart at strong edges (Params::edgeReset; in the core: sgm_top EDGE_RESET):
+// the steps since the path last crossed a strong edge, 0 at the step across it, saturating
+// at `length` (also at a path start); the pixel restarts (Lr = C) while the count is below
+// `length`.
 inline int stepsSinceEdge(const EdgeReset& reset, int dI, int previous) {
   return dI >= reset.threshold ? 0 : std::min(reset.length, previous + 1);
 }

@@ -54,7 +54,7 @@ PathVolume pathCost(const CostVolume& cost, const cv::Mat& grayLeft, int pathInd
 // RIGHT_BLOCK), 0 over the whole row (golden-only). mgm (golden-only) replaces each
 // path's recursion by the raster-order MGM one (kMgmPerpendicular). p1PathPercent
 // (golden-only; nullptr = 100 each): P1 of each path (0, 45, 90, 135 degrees, the fifth)
-// in percent of p1, each path's P2r from its own P1. edgeReset (golden-only; threshold 0 =
+// in percent of p1, each path's P2r from its own P1. edgeReset (the path restart; threshold 0 =
 // off): the paths it marks start again (Lr = C) within `length` steps of a strong edge.
 PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1, int p2,
                          P2Mode p2Mode = P2Mode::kKnee, PathWeighting weights = PathWeighting::k3232,

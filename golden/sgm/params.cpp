@@ -96,6 +96,7 @@ Params presetParams(const std::string& name) {
     p.uniqueness = 0;
     p.adWeight = 0;
     p.rightPathWeight = 0, p.rightPathBlock = 0;
+    p.edgeReset = EdgeReset{};  // off
     return p;
   }
   if (name == "paper") {
@@ -112,6 +113,7 @@ Params presetParams(const std::string& name) {
     p.uniqueness = 0;
     p.adWeight = 0;
     p.rightPathWeight = 0, p.rightPathBlock = 0;
+    p.edgeReset = EdgeReset{};  // off
     return p;
   }
   throw Error("unknown preset '" + name + "' (expected default, four-path or paper)");
@@ -128,7 +130,7 @@ std::string presetName(const Params& params) {
 
 Params buildDefaults(const BuildLevers& build, int disparities) {
   Params p = presetParams(build.census9x9 ? "paper"
-                          : build.rightBlock && build.uniqueness && build.adTerm ? "default"
+                          : build.rightBlock && build.uniqueness && build.adTerm && build.edgeReset ? "default"
                                                                                  : "four-path");
   if (p.rightPathWeight) p.rightPathBlock = build.rightBlock;
   p.disparities = disparities;
@@ -176,7 +178,7 @@ void Params::validate() const {
                 std::to_string(kMaxEdgeResetLength));
   for (const int on : edgeReset.paths)
     if (on != 0 && on != 1) throw Error("edge reset paths expect 0 or 1 each, got " + std::to_string(on));
-  if (edgeReset.threshold && mgm) throw Error("the edge reset (--edge-reset) does not combine with --mgm");
+  if (edgeReset.threshold && mgm) throw Error("the path restart at strong edges (--edge-reset, on by default) does not combine with --mgm: give --edge-reset 0");
   if (uniqueness < 0 || uniqueness > 99) throw Error("uniqueness " + std::to_string(uniqueness) + " out of range 0..99");
   if (adWeight < 0 || adWeight > kMaxAdWeight || adCap < 0 || adCap > kMaxAdCap)
     throw Error("AD term weight " + std::to_string(adWeight) + " / cap " + std::to_string(adCap) +

@@ -82,11 +82,12 @@ constexpr int kMaxRightPathWeight = 8;            // fifth path's weight (Params
 constexpr int kMaxRightPathBlock = 4096;          // fifth path's block (Params::rightPathBlock; the core: sgm_top RIGHT_BLOCK)
 constexpr int kMaxAdWeight = 15;                  // AD term weight (Params::adWeight, 4 bits in the RTL)
 constexpr int kMinP1PathPercent = 25, kMaxP1PathPercent = 400;  // golden-only per-path P1 (Params::p1PathPercent)
-constexpr int kMaxEdgeResetLength = 15;           // golden-only path restart (Params::edgeReset.length)
+constexpr int kMaxEdgeResetLength = 15;           // the path restart (Params::edgeReset.length)
 constexpr int kMaxAdCap = 255;                    // AD term truncation (Params::adCap, 8 bits)
 constexpr int kAdShift = 3;                       // AD term = adWeight * min(AD, adCap) >> kAdShift                 // keeps kPathWeightSum * (Cmax + P2') < 2^16
 
-// Golden-only path restart at strong edges (issue 15, docs/algorithm.md section 12): a path
+// The path restart at strong edges (issue 15, docs/algorithm.md section 12; in the core
+// with sgm_top EDGE_RESET = 1, run-time T, R and flags): a path
 // starts again (Lr = C) at every pixel whose last `length` steps along the path, the step
 // into it included, cross a gray step |I(q) - I(q - r)| >= threshold, for the paths marked
 // in `paths` (0, 45, 90, 135 degrees, the fifth path). Within a census window of an edge the
@@ -103,7 +104,7 @@ struct EdgeReset {
 
 // The defaults (issue 15, docs/accuracy-pool.md: chosen on half A of the scene pool,
 // reported on half B): the four paths with a fifth from the right in blocks of 64,
-// the AD term, the uniqueness ratio, no edge snapping. The preset "four-path" is the
+// the AD term, the uniqueness ratio, the path restart at strong edges, no edge snapping. The preset "four-path" is the
 // former defaults, for builds without these levers (sgm_top RIGHT_BLOCK = 0, ...).
 struct Params {
   int disparities = 64;        // D: candidates 0 .. D-1
@@ -128,6 +129,9 @@ struct Params {
   // whole row (rightPathBlock = 0) golden-only.
   int rightPathWeight = 4;  // its weight in S, 0..kMaxRightPathWeight; 0 = off
   int rightPathBlock = 64;  // per block of this many pixels with one block of look-ahead; 0 = whole row
+  // The path restart at strong edges (in the core with sgm_top EDGE_RESET = 1): T 40, R 6,
+  // every path but 90 degrees (docs/accuracy-pool.md, "The path restart at strong edges").
+  EdgeReset edgeReset{40, 6, {1, 1, 0, 1, 1}};
   // Golden-only experiments (issue 15, docs/algorithm.md section 12): NOT in the RTL,
   // every one off by default, so Params{} and the presets stay bit-exact with the core.
   bool linearSubpixel = false;  // sub-pixel by the equiangular (V) fit instead of the parabola
@@ -137,13 +141,12 @@ struct Params {
   // P1 per path in percent of p1 (0, 45, 90, 135 degrees, the fifth path); each path's P2r = max(its P1, ...).
   std::array<int, kPathCount + 1> p1PathPercent = {100, 100, 100, 100, 100};
   int pathP1(int path) const { return p1 * p1PathPercent[size_t(path)] / 100; }
-  EdgeReset edgeReset;          // path restart at strong edges; threshold 0 = off
   // Golden-only options: the fifth path over the whole row (in blocks it is in the
   // core, sgm_top RIGHT_BLOCK), the equiangular sub-pixel fit, MGM, the gated median,
-  // per-path P1, the gated edge snap, the path restart at strong edges.
+  // per-path P1, the gated edge snap.
   bool experimental() const {
     return (rightPathWeight && !rightPathBlock) || linearSubpixel || mgm || medianGate ||
-           p1PathPercent != Params{}.p1PathPercent || snapEdge || edgeReset.threshold;
+           p1PathPercent != Params{}.p1PathPercent || snapEdge;
   }
 
   bool operator==(const Params& o) const;
@@ -175,10 +178,11 @@ std::string presetName(const Params& params);
 struct BuildLevers {
   int rightBlock = 0;  // the fifth path's block, 0: not built
   bool uniqueness = true, adTerm = true;
+  bool edgeReset = true;  // sgm_top EDGE_RESET
   bool census9x9 = false;
 };
 // The configuration such a build runs by default (its reset values): "default" with the
-// build's block when it has all three levers, "four-path" otherwise, "paper" on the 9x9
+// build's block when it has all four levers, "four-path" otherwise, "paper" on the 9x9
 // window; D as given.
 Params buildDefaults(const BuildLevers& build, int disparities);
 

@@ -37,8 +37,9 @@ struct Identity {
 // One frame's run-time configuration (the fields of FRAME_SIZE, PENALTY, CONFIG, EDGE_RESET).
 struct FrameConfig {
   uint32_t width = 0, height = 0;
-  // Defaults: the golden model's (SGM_PENALTY_RESET / SGM_CONFIG_RESET); a build without
-  // the fifth path, the uniqueness ratio or the AD term (FEATURES) resets to fourPath().
+  // Defaults: the golden model's (SGM_PENALTY_RESET / SGM_CONFIG_RESET / SGM_EDGE_RESET_RESET); a build
+  // without the fifth path, the uniqueness ratio, the AD term or the path restart (FEATURES)
+  // resets to fourPath().
   uint32_t p1 = 24, p2 = 200;
   uint32_t mode = SGM_MODE_RSAD;
   bool subpixel = true;
@@ -51,12 +52,13 @@ struct FrameConfig {
   uint32_t rightWeight = 4;  // the fifth path's W5: 0 (off) .. 8, in blocks of the build's (FEATURES)
   // The path restart at strong edges (EDGE_RESET): threshold T (0 off), length R (1 .. 15),
   // path flags (bit k: path k, 0, 45, 90, 135 degrees, the fifth).
-  uint32_t edgeReset = 0, edgeResetLength = 5, edgeResetPaths = 0x1F;
+  uint32_t edgeReset = 40, edgeResetLength = 6, edgeResetPaths = 0x1B;
 
   // The four-path defaults (golden preset "four-path"), for builds without those levers.
   static FrameConfig fourPath() {
     FrameConfig f;
     f.p1 = 18, f.p2 = 100, f.snap = true, f.uniqueness = 0, f.adWeight = 0, f.rightWeight = 0;
+    f.edgeReset = 0, f.edgeResetLength = 5, f.edgeResetPaths = 0x1F;
     return f;
   }
 };

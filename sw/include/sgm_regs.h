@@ -129,12 +129,13 @@
 #define SGM_IRQ_MASK            0x00000003u
 
 /* ---- reset values (every other register resets to 0) */
-/* A build with the fifth path, the uniqueness ratio and the AD term (FEATURES) resets to
+/* A build with the fifth path, the uniqueness ratio, the AD term and the path restart (FEATURES) resets to
    the golden model's defaults, any other build to its "four-path" preset. */
 #define SGM_PENALTY_RESET       0x4314C818u /* P1 24, P2' 200, AD cap 20, AD weight 3, W5 4 */
 #define SGM_CONFIG_RESET        0x0F005131u /* rsad, sub-pixel, LR check tolerance 1, fill, median, uniqueness 15 */
 #define SGM_PENALTY_RESET_FOUR_PATH 0x00146412u /* P1 18, P2' 100, AD cap 20, AD weight 0 (off), W5 0 (off) */
 #define SGM_CONFIG_RESET_FOUR_PATH  0x00007131u /* rsad, sub-pixel, LR check tolerance 1, fill, snap, median */
-#define SGM_EDGE_RESET_RESET    0x001F0500u /* off (T 0), R 5, every path: the golden EdgeReset{} */
+#define SGM_EDGE_RESET_RESET    0x001B0628u /* T 40, R 6, paths 0, 45, 135 degrees and the fifth */
+#define SGM_EDGE_RESET_RESET_FOUR_PATH 0x001F0500u /* off (T 0), R 5, every path: the golden EdgeReset{} */
 
 #endif /* SGM_REGS_H */

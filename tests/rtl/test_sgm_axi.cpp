@@ -46,15 +46,17 @@ sgm::Params withBuildLevers(sgm::Params p) {
 }
 
 // The build's defaults (sgm::buildDefaults), which its registers reset to.
-constexpr bool kFullDefaults = Rtl::RIGHT_BLOCK && Rtl::UNIQUENESS && Rtl::AD_TERM;
+constexpr bool kFullDefaults = Rtl::RIGHT_BLOCK && Rtl::UNIQUENESS && Rtl::AD_TERM && Rtl::EDGE_RESET;
 sgm::Params defaults() {
   sgm::BuildLevers build;
   build.rightBlock = Rtl::RIGHT_BLOCK, build.uniqueness = Rtl::UNIQUENESS, build.adTerm = Rtl::AD_TERM;
+  build.edgeReset = Rtl::EDGE_RESET;
   build.census9x9 = Rtl::CENSUS_H == 9;
   return sgm::buildDefaults(build, kD);
 }
 constexpr uint32_t kPenaltyReset = kFullDefaults ? SGM_PENALTY_RESET : SGM_PENALTY_RESET_FOUR_PATH;
 constexpr uint32_t kConfigReset = kFullDefaults ? SGM_CONFIG_RESET : SGM_CONFIG_RESET_FOUR_PATH;
+constexpr uint32_t kEdgeResetReset = kFullDefaults ? SGM_EDGE_RESET_RESET : SGM_EDGE_RESET_RESET_FOUR_PATH;
 
 FrameInput scene(int w, int h, uint32_t seed, const sgm::Params& p) {
   const sgm::synth::SyntheticScene s = sgm::synth::makeSyntheticScene(w, h, kD, seed);
@@ -160,7 +162,7 @@ TEST(SgmAxi, RtlOffsetsAndResetValuesMatchTheHeader) {
       {"FEATURES_RIGHT_PATH", {1u << Rtl::FEATURES_RIGHT_PATH_BIT, SGM_FEATURES_RIGHT_PATH}},
       {"FEATURES_RIGHT_BLOCK", {uint32_t(Rtl::FEATURES_RIGHT_BLOCK_LSB), SGM_FEATURES_RIGHT_BLOCK_SHIFT}},
       {"FEATURES_EDGE_RESET", {1u << Rtl::FEATURES_EDGE_RESET_BIT, SGM_FEATURES_EDGE_RESET}},
-      {"EDGE_RESET_RESET", {Rtl::EDGE_RESET_RESET, SGM_EDGE_RESET_RESET}},
+      {"EDGE_RESET_RESET", {Rtl::EDGE_RESET_RESET, kEdgeResetReset}},
       {"FEATURES_VALUE", {Rtl::FEATURES_VALUE, kFeatures}},
       {"PENALTY_RESET", {Rtl::PENALTY_RESET, kPenaltyReset}},
       {"CONFIG_RESET", {Rtl::CONFIG_RESET, kConfigReset}},
@@ -171,14 +173,17 @@ TEST(SgmAxi, RtlOffsetsAndResetValuesMatchTheHeader) {
   const drv::FrameConfig golden = frameConfig(defaults(), {0, 0});
   EXPECT_EQ(drv::Driver::encodePenalty(golden), kPenaltyReset);
   EXPECT_EQ(drv::Driver::encodeConfig(golden), kConfigReset);
-  EXPECT_EQ(drv::Driver::encodeEdgeReset(golden), uint32_t(SGM_EDGE_RESET_RESET));
+  EXPECT_EQ(drv::Driver::encodeEdgeReset(golden), kEdgeResetReset);
   EXPECT_EQ(drv::Driver::encodeEdgeReset(drv::FrameConfig{}), uint32_t(SGM_EDGE_RESET_RESET));
+  EXPECT_EQ(drv::Driver::encodeEdgeReset(drv::FrameConfig::fourPath()), uint32_t(SGM_EDGE_RESET_RESET_FOUR_PATH));
   const drv::FrameConfig ours = frameConfig(sgm::presetParams("default"), {0, 0});
   const drv::FrameConfig four = frameConfig(sgm::presetParams("four-path"), {0, 0});
   EXPECT_EQ(drv::Driver::encodePenalty(ours), uint32_t(SGM_PENALTY_RESET));
   EXPECT_EQ(drv::Driver::encodeConfig(ours), uint32_t(SGM_CONFIG_RESET));
   EXPECT_EQ(drv::Driver::encodePenalty(four), uint32_t(SGM_PENALTY_RESET_FOUR_PATH));
   EXPECT_EQ(drv::Driver::encodeConfig(four), uint32_t(SGM_CONFIG_RESET_FOUR_PATH));
+  EXPECT_EQ(drv::Driver::encodeEdgeReset(ours), uint32_t(SGM_EDGE_RESET_RESET));
+  EXPECT_EQ(drv::Driver::encodeEdgeReset(four), uint32_t(SGM_EDGE_RESET_RESET_FOUR_PATH));
   // The driver's FrameConfig{} is the golden model's defaults too.
   EXPECT_EQ(drv::Driver::encodePenalty(drv::FrameConfig{}), uint32_t(SGM_PENALTY_RESET));
   EXPECT_EQ(drv::Driver::encodeConfig(drv::FrameConfig{}), uint32_t(SGM_CONFIG_RESET));
@@ -222,7 +227,7 @@ std::vector<RegisterSpec> registers() {
       {"ERROR", SGM_REG_ERROR, 0, 0},              // W1C: its own test
       {"ERROR_COUNT", SGM_REG_ERROR_COUNT, 0, 0},  // cleared by writes: its own test
       {"LAST_SIZE", SGM_REG_LAST_SIZE, 0, 0},
-      {"EDGE_RESET", SGM_REG_EDGE_RESET, SGM_EDGE_RESET_RESET, SGM_EDGE_RESET_MASK},
+      {"EDGE_RESET", SGM_REG_EDGE_RESET, kEdgeResetReset, SGM_EDGE_RESET_MASK},
       {"IRQ_ENABLE", SGM_REG_IRQ_ENABLE, 0, SGM_IRQ_MASK},
       {"IRQ_STATUS", SGM_REG_IRQ_STATUS, 0, 0},    // W1C: its own test
   };

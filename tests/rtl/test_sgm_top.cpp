@@ -88,7 +88,7 @@ FrameInput syntheticPair(int w, int h, std::mt19937& rng, const sgm::Params& par
 // preset in a 9x9 build.
 sgm::Params hardwareDefaults() {
   sgm::BuildLevers build;
-  build.rightBlock = kRightBlock, build.uniqueness = kUniqueness, build.adTerm = kAdTerm;
+  build.rightBlock = kRightBlock, build.uniqueness = kUniqueness, build.adTerm = kAdTerm, build.edgeReset = kEdgeReset;
   build.census9x9 = kCensusH == 9;
   return sgm::buildDefaults(build, kD);
 }
