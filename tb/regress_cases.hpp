@@ -85,11 +85,16 @@ Params drawParams(Rng& rng) {
   // The fifth path: half the frames, any weight, in the build's blocks.
   p.rightPathWeight = rng.chance(0.5) ? 0 : rng.uniform(1, kMaxRightPathWeight);
   p.rightPathBlock = Vsgm_top_sgm_top::RIGHT_BLOCK;
-  // A lever the build lacks (sgm_top UNIQUENESS / AD_TERM = 0, RIGHT_BLOCK = 0) stays off:
-  // drawn all the same, so that a case is the same in every build but for it.
+  // The path restart at strong edges: half the frames, any threshold, length and paths.
+  p.edgeReset.threshold = rng.chance(0.5) ? 0 : rng.uniform(1, 160);
+  p.edgeReset.length = rng.uniform(1, kMaxEdgeResetLength);
+  for (int& on : p.edgeReset.paths) on = rng.chance(0.7);
+  // A lever the build lacks (sgm_top UNIQUENESS / AD_TERM / EDGE_RESET = 0, RIGHT_BLOCK = 0)
+  // stays off: drawn all the same, so that a case is the same in every build but for it.
   if (!Vsgm_top_sgm_top::UNIQUENESS) p.uniqueness = 0;
   if (!Vsgm_top_sgm_top::AD_TERM) p.adWeight = 0;
   if (!Vsgm_top_sgm_top::RIGHT_BLOCK) p.rightPathWeight = 0;
+  if (!Vsgm_top_sgm_top::EDGE_RESET) p.edgeReset.threshold = 0;
   return p;
 }
 
@@ -99,7 +104,8 @@ std::string paramText(const Params& p) {
     << " fill=" << p.fill << " snap=" << p.snap << " median=" << p.median << " census=" << censusWindowName(p.census)
     << " p2-mode=" << p2ModeName(p.p2Mode) << " weights=" << pathWeightingName(p.weights)
     << " uniqueness=" << p.uniqueness << " ad=" << p.adWeight << "/" << p.adCap << " right=" << p.rightPathWeight << "/"
-    << p.rightPathBlock;
+    << p.rightPathBlock << " restart=" << p.edgeReset.threshold << "/" << p.edgeReset.length << "/";
+  for (int on : p.edgeReset.paths) t << on;
   return t.str();
 }
 
