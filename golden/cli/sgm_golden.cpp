@@ -23,15 +23,15 @@ const char* kUsage =
     "                                    (default 64, the core's RIGHT_BLOCK; 0: the whole row, golden-only)\n"
     "                  [--uniqueness U] uniqueness ratio U % (0..99; default 15, 0 off)\n"
     "                  [--ad-weight W] [--ad-cap T] C += W * min(|IL - IR|, T) / 8 (default 3, 20; W 0 off)\n"
+    "                  [--edge-reset T] [--edge-reset-len R] [--edge-reset-paths A,B,C,D,E] a path starts\n"
+    "                                    again (Lr = C) within R steps of a gray step >= T, for the paths\n"
+    "                                    marked 1 (0, 45, 90, 135 degrees, the fifth; default 40, 6, 1,1,0,1,1; T 0 off)\n"
     "golden-only experiments, NOT in the RTL (off by default; docs/algorithm.md section 12):\n"
     "                  [--subpixel-fit parabola|linear] linear: the equiangular (V) fit\n"
     "                  [--mgm on|off] raster-order MGM: each path averages two causal neighbours\n"
     "                  [--median-gate T] the median takes only pixels within T gray levels of the centre\n"
     "                  [--p1-paths A,B,C,D,E] P1 per path in % (0, 45, 90, 135 degrees, the fifth path)\n"
     "                  [--snap-edge T] edge snapping only onto an intensity step of at least T (with --snap on)\n"
-    "                  [--edge-reset T] [--edge-reset-len R] [--edge-reset-paths A,B,C,D,E] a path starts\n"
-    "                                    again (Lr = C) within R steps (default 5) of a gray step >= T (0 off);\n"
-    "                                    the paths marked 1 (0, 45, 90, 135 degrees, the fifth path; default all)\n"
     "Writes PREFIX_disp16.png (disparity x 256, 0 = invalid), PREFIX_disp8.png\n"
     "(the paper's [0, 255] scaling) and PREFIX_color.png. PREFIX defaults to 'disparity'.\n";
 
