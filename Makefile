@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # SGM stereo core: golden model, evaluator, RTL simulation, synthesis, tests.
 # `make help` lists the targets.
 
@@ -286,8 +287,10 @@ rtl-tests: $(RTL_TEST_BINS)
 	  SGM_DATA="$(DATA)" $$t --gtest_output=xml:$(RESULTS)/$$(basename $$t).xml || exit 1; \
 	  echo "time: run $$(basename $$t) $$(( $$(date +%s) - s )) s"; done
 
-# verilator --lint-only -Wall on every module; waivers live in rtl/lint.vlt.
+# The SPDX line of every source file (scripts/spdx-check.sh), then verilator --lint-only -Wall
+# on every module; waivers live in rtl/lint.vlt.
 lint: | check-tools
+	@scripts/spdx-check.sh
 	@for m in $(RTL_MODULES); do \
 	  $(VERILATOR) --lint-only -Wall $(VLT) -Irtl --top-module $$m rtl/$$m.sv || exit 1; \
 	done; echo "lint: $(words $(RTL_MODULES)) modules clean"

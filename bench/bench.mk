@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # `make bench [DATA=...]`: accuracy and speed of the core, the golden model and
 # OpenCV StereoSGBM on the same pairs, in one run (included by the main Makefile).
 #

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sgm-bench: the `make bench` report. bench/bench.mk runs the verilated core
 // (sgm-sim, which checks every output pixel against the golden model in the
 // same process) on every scene and on one frame of each video format, and the

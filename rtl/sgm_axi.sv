@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // sgm_axi: sgm_top with an AXI4-Lite control and status slave (32-bit data,
 // one clock). The register map is docs/registers.md; the offsets and fields

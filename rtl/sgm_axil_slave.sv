@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // sgm_axil_slave: an AXI4-Lite slave (32-bit data) turned into a simple
 // register port: one write strobe (address, data, byte strobes) and one read

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // sgm_census_unit: CENSUS_H-line buffer, 9 x CENSUS_H window (9x5 or the paper's
 // 9x9), census and rank of ONE image (docs/algorithm.md section 2, docs/rtl.md

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // sgm_cost_pe: matching cost C(p, d) of one disparity d (docs/algorithm.md
 // section 3) from the left census/rank at x and the right census/rank at x - d:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // sgm_cost_volume: the right census/rank delay line and D cost PEs
 // (docs/algorithm.md section 3). For the slot entering at t it outputs the

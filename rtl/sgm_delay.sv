@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // sgm_delay: DEPTH slots of delay for a WIDTH-bit bundle, advancing on en_i
 // only (docs/rtl.md, step stream). Aligns side signals with a stage's latency.

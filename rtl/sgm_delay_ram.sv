@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // sgm_delay_ram: DEPTH slots of delay for a wide WIDTH-bit bundle, advancing on
 // en_i only, held in a small memory instead of a register chain: DEPTH - 1 words

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // sgm_edge_snap: edge snapping along each row (docs/algorithm.md section 8b).
 // With step(k) = |I(k) - I(k-1)| of the left gray image, a drop at e (pixels e

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // sgm_global_buf: a net of very high fan-out onto the FPGA's clock network.
 //

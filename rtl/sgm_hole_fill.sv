@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // sgm_hole_fill: hole filling along each row (docs/algorithm.md section 8).
 // An invalid pixel keeps its own disparity when it is within 16 (1 px) of the

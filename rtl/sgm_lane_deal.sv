@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // sgm_lane_deal: deals a raster slot stream to K row lanes (docs/reschedule.md).
 // Every slot writes its payload into a ring of ROWS rows (bank = row mod ROWS,

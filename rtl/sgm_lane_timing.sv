@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // sgm_lane_timing: the frame-relative positions sgm_top needs with K > 1 row
 // lanes (docs/reschedule.md, docs/rtl.md "Lanes: the slot schedule"):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // sgm_lr_check: left-right validation (docs/algorithm.md section 7) at one
 // pixel per slot, with the right disparities computed from the same S:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // sgm_median5x5: 5x5 median over the valid pixels (docs/algorithm.md section 9).
 // Over the 5x5 window clipped to the image, taking only valid pixels, the

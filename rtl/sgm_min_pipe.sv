@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // sgm_min_pipe: pipelined minimum of N unsigned values, a tree of 4-input
 // nodes (sgm_min_tree, N = ARITY = 4) with a register after every level, so

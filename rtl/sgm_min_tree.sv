@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // sgm_min_tree: combinational minimum of N unsigned values, a tree of
 // ARITY-input nodes (ceil(log_ARITY N) levels). A node compares its inputs

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // sgm_p2_lut: the adaptive P2 table of docs/algorithm.md section 4, k = 0 .. 255,
 //   knee  (mode 0): P2r(k) = max(P1, floor(4 P2' / (k + 4)))

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // sgm_path_engine: the four causal path costs of eq. (1) and their sum S
 // (docs/algorithm.md section 5) at one pixel per slot, D sub-PEs per path.

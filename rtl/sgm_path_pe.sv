@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // sgm_path_pe: one sub-PE of eq. (1) (docs/algorithm.md section 5), one
 // disparity d of one path:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // sgm_path_ring: the 0 degree path recursion of eq. (1) (docs/algorithm.md
 // section 5), the one loop of the core: D sgm_path_pe sub-PEs fed by the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // sgm_popcount: number of ones in an N-bit census word (rank, and the Hamming
 // distance of two signatures): 44 bits for the 9x5 census, 80 for the 9x9.

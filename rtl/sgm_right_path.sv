@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // sgm_right_path: the fifth path, 0 degrees from the right (r = (1, 0)), in
 // blocks of BLOCK = B pixels with one block of look-ahead (docs/algorithm.md

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // sgm_stream_ctrl: the AXI4-Stream side of the core. Turns input beats into
 // pipeline slots (docs/rtl.md), generates the flush slots after a frame,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // sgm_top: Semi-Global Matching stereo core with the refined rank cost of
 // Yao & Cheng, one pixel per clock (docs/algorithm.md defines every bit,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // sgm_wta: winner-take-all and quadratic sub-pixel refinement
 // (docs/algorithm.md section 6) at one pixel per slot.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # The packages the project needs, the `deps` target that installs them and the
 # guards the build targets depend on. This file is the one list: every
 # documented target's tools are here, and `make deps` installs all of them.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Measures golden-model option sets on the scene pool and on the four Table I scenes,
 # one line per option set (docs/accuracy-pool.md):
 #   options | Middlebury A | B | all | KITTI A | B | all | worst change vs today | cones teddy venus sawtooth

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Runs the TEST_EXTRA targets of `make test` in two streams so that both cores of a CI machine
 # work: the BESIDE targets (single-threaded EDA runs: yosys, nextpnr) one after another in the
 # background, the other targets one after another in the foreground. Each target's output goes

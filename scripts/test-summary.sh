@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Sums the GoogleTest XML reports in DIR into one line: "N passed, N failed, N skipped".
 set -euo pipefail
 dir=${1:?usage: test-summary.sh DIR}

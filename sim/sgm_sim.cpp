@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sgm-sim: streams a stereo pair through the verilated sgm_top, runs the
 // golden model on the same pair in the same process, compares every output
 // pixel, and writes disparity PNGs, a side-by-side picture and report.json.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sgm_driver.cpp: see sw/include/sgm_driver.hpp.
 #include "sgm_driver.hpp"
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # `make synth-axi [D=16 MAX_WIDTH=128 SYNTH_AXI_MAX_HEIGHT=64]`: the xc7 cells the
 # AXI4-Lite wrapper (sgm_axi + sgm_axil_slave) adds around sgm_top, which is
 # a black box here (synth/xilinx_axi.tcl). Prints one line; the full `stat` is

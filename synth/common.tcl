@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Common part of the synth/*.tcl scripts (run as `yosys -c synth/<target>.tcl`).
 #
 # Reads the RTL, sets the top's parameters with chparam, elaborates, runs

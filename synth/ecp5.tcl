@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # ECP5 synthesis of the whole sgm_top for place and route (`make pnr`,
 # synth/pnr.mk). Each pipeline stage is synthesized as its own top with
 # synth_ecp5 (flattened inside; see common.tcl for why one stage at a time),

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # The ECP5 flow's comparison map (sourced by synth/ecp5.tcl and by
 # tests/synth/ecp5_cmp_chain_check.tcl, so both run the same selection).
 #

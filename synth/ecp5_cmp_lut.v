@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Yosys techmap for the ECP5 flow (synth/ecp5.tcl, SYNTH_ECP5_CMP_LUT = N):
 // magnitude comparisons ($lt $le $gt $ge) of at most N bits as LUT logic
 // instead of a CCU2C carry chain. Not RTL: a mapping file Yosys reads with

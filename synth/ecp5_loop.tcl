@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # ECP5 synthesis of the loop harness (synth/sgm_path_loop.sv) for `make pnr-loop`
 # (synth/pnr.mk): SYNTH_LOOP_D, SYNTH_LOOP_LANES, SYNTH_ECP5_FLAGS, SYNTH_OUT.
 yosys -import

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Technology-independent synthesis of sgm_top, one pipeline stage at a time
 # (see common.tcl): Yosys `synth -flatten` up to its `fine` label, then the
 # fine steps except memory_map, so that every inferred memory stays one $mem_v2

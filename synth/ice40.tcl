@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # iCE40 synthesis of sgm_top, one pipeline stage at a time (see common.tcl):
 # synth_ice40 (flattened inside each stage). Shows what the whole core needs in
 # LUT4s and SB_RAM40_4K against the largest iCE40 (HX8K: 7,680 LCs, 32 RAMs);

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # iCE40 synthesis of the loop harness synth/sgm_path_loop.sv (the 0 degree path
 # recursion of sgm_path_engine) for nextpnr-ice40.
 #

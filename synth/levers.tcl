@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # The area of the two build-time levers (sgm_top UNIQUENESS, AD_TERM): one module alone,
 # synth_ecp5 -abc9 (Yosys 0.23), its `stat` into SYNTH_OUT/stat.txt. Run as
 # `yosys -c synth/levers.tcl` by `make synth-levers` (synth/synth.mk), once per module and

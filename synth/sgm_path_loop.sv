@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // sgm_path_loop: timing harness for place and route of the one single-cycle
 // loop of the core, the 0 degree path recursion (rtl/sgm_path_ring.sv, the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # `make synth`: Yosys resource and timing reports of sgm_top against the
 # paper's Table III (included by the main Makefile; synth/README.md explains
 # the flow, the outputs and the figures).

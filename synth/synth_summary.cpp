@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // synth_summary: collects the `make synth` reports under build/synth into
 // summary.json and summary.md (synth/README.md describes the layout).
 //

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Xilinx synthesis of sgm_top, one pipeline stage at a time (see common.tcl):
 # synth_xilinx -family $SYNTH_FAMILY (xc7 or xc6s) -flatten, no I/O buffers and
 # no clock buffer (the core is an IP block, not a chip). Per stage <name> it

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # What the AXI4-Lite wrapper adds on xc7: synth_xilinx of sgm_axi with sgm_top
 # read as a black box (read_verilog -lib), so the netlist holds the register
 # file, the AXI4-Lite slave and the stream gating only. Run by `make synth-axi`

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Xilinx synthesis of the whole of sgm_top in one run, flattened (optimisation
 # across stage boundaries; exact totals and the longest path across stages).
 # Slow for large D: Yosys' opt loop then iterates over the whole design

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // AXI4-Lite master bus-functional model with seeded random delays on all five
 // channels, for a verilated model with AXI4-Lite slave ports named s_axil_*
 // (sgm_axi). One transfer at a time: AW and W each wait a random number of

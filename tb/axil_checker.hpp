@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // AXI4-Lite protocol checker, fed cycle by cycle (before the clock edge) with
 // what the bus carries. Rules:
 //   handshake:  on each of the five channels (AW, W, AR from the master, B, R

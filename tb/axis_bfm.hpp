@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // AXI4-Stream bus-functional models with seeded random stalls, for any
 // verilated top with the core's port names (s_tdata_i/s_tuser_i/s_tlast_i/
 // s_tvalid_i/s_tready_o in, m_tdata_o/m_tuser_o/m_tlast_o/m_tvalid_o/

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // AXI4-Stream protocol checker for a video stream (tuser = start of frame,
 // tlast = end of line), fed cycle by cycle with what the sink sees. Rules:
 //   handshake: once tvalid is high it stays high, and tdata/tuser/tlast stay

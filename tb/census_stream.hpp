@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The census window's slot raster, shared by the sgm_census_unit and
 // sgm_cost_volume fixtures (docs/rtl.md "Window and census"): every frame is
 // streamed in raster order, followed by flush slots (rows height, height+1,

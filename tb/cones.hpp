@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The Middlebury cones pair under $SGM_DATA/cones for the fixtures' real-data
 // cases, and the golden pipeline's stages on it (computed once per D).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Streams stereo frames through a verilated sgm_top (or any top with its
 // ports) with seeded stalls, collects the output frames, and measures cycles.
 // Every output cycle goes through the stream checker (axis_checker.hpp): a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // GoogleTest fixture for the disparity-map stages sgm_hole_fill,
 // sgm_edge_snap and sgm_median5x5 (same ports: disp_i/valid_i/in_valid_i/col_i/row_i/width_i/
 // height_i and the stage's enable in, disp_o/valid_o/col_o/row_o/out_valid_o

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The core's run-time configuration inputs (sgm_top cfg_*_i) for a golden
 // model parameter set and a frame size: one mapping for every testbench (the
 // verilated harness, the Icarus files, the AXI4-Lite register tests).

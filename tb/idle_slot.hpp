@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One enabled slot of a verilated model with an en_i input, after a random run
 // of idle cycles (en_i = 0): each cycle before the slot is idle with
 // probability `idle`. The inputs set before the call are the slot's.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Malformed input frames for the whole-core tests and the regression: each
 // kind breaks one framing rule of the input stream, and says which error_o bit
 // the core must raise for it (docs/rtl.md, "Malformed frames"). The core still

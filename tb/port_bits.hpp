@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Bit-field access to verilated ports of any width: CData/SData/IData (<= 32
 // bits), QData (<= 64 bits) and VlWide<N> (wider), so that a flattened array
 // port (element i of width W at bits [i*W +: W]) reads and writes the same way.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The cases of the constrained-random regression of sgm_top (sgm-regress,
 // tests/rtl/regress_main.cpp), shared with the whole-core GoogleTest of the
 // D = 64 build (tests/rtl/test_sgm_top.cpp runs a short seeded slice of them):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The slot driver shared by the module fixtures: a verilated model with an
 // en_i input is stepped one enabled slot at a time, each slot preceded by the
 // disabled cycles of a seeded random enable pattern. While en_i = 0 every other

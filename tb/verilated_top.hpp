@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One verilated top with its VerilatedContext: clocking, reset and optional
 // FST waveform (TRACE=1 in the environment, file under build/trace/).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the sgm_wta and sgm_lr_check fixtures share: the golden winner-take-all
 // result of one S vector (sgm::winnerTakeAll + sgm::subpixelOffset, as sgm_wta
 // delivers it), sgm_wta's latency for D, random S volumes and junk S vectors

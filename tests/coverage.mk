@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # `make coverage`: line and toggle coverage of rtl/ (included by the main Makefile).
 #
 # Builds the verilated GoogleTest fixtures (every module family and the whole

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shared test helper: expects an sgm::Error with a one-line message naming the problem.
 #pragma once
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # FuseSoC: sgm.core (top level) describes the core for FuseSoC users; these
 # targets run its three targets with this repository as the cores root, work
 # directories under build/fusesoc/. Included by the main Makefile; CI runs

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Bad input to the tools (included by the Makefile after its variables).
 #
 #   make fuzz [FUZZ_SEED=S] [FUZZ_ITERS=N] [FUZZ_TOOL_RUNS=K]

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # `make icarus`: the RTL in a second simulator. Icarus Verilog (iverilog -g2012)
 # compiles rtl/ with the file-driven testbench tb/icarus/tb_sgm_top_files.sv
 # (D = 16, MAX_WIDTH = 128); tests/icarus/icarus_frames.cpp writes two small

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # `make regress`: constrained-random regression of the verilated sgm_top against
 # the golden model (tests/rtl/regress_main.cpp; included by the main Makefile).
 #

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Adaptive P2 table, one step of eq. (1), the four path costs and their sum
 // (docs/algorithm.md sections 4 and 5).
 #include "sgm/aggregate.hpp"

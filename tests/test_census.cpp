@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Census transform and rank (docs/algorithm.md section 2): bit order, border
 // rule, rank and Hamming distance, on hand-made images.
 #include "sgm/census.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Command-line behaviour: the CliArgs parser in-process, and the sgm-golden /
 // sgm-eval binaries (from $SGM_BIN) run as child processes. Every user error
 // must exit non-zero with exactly one stderr line "<tool>: error: ..." and

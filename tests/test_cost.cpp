@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Matching costs (docs/algorithm.md section 3): the three hardware modes on
 // census pairs, the out-of-image cost, and the software modes sad, bt, sad+rt
 // on hand-made images.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Disparity selection and refinement (docs/algorithm.md sections 6 to 9):
 // WTA, sub-pixel, right disparity, LR check, hole filling, edge snapping, 5x5 median.
 #include "sgm/disparity.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Whole-pipeline checks: accuracy on the Middlebury scenes against the
 // project's accuracy goals (needs $SGM_DATA), and a synthetic random-dot pair with a known
 // constant disparity.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The evaluator (tools/eval_lib.hpp): the paper's eq. (5) error ratios on a
 // hand-made scene, the derived non-occluded mask, scene loading.
 #include "eval_lib.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Golden-only experiments of issue 15 (docs/algorithm.md section 12, not in the RTL):
 // the gated median, per-path P1, the gated edge snap, MGM and the others below;
 // the fifth path from the right, the AD term; their defaults leave the pipeline

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Image I/O (docs/algorithm.md sections 1 and 10): gray conversion, input
 // errors, output encodings and the atomic PNG writer.
 #include "sgm/image_io.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The paper's configuration beside ours (docs/algorithm.md sections 2, 4, 5, 11):
 // the 9x9 census window (bits, order, borders, Cmax), both P2 forms, both path
 // weightings, the presets and their command-line options.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Parameter validation, cost-mode names and the pipeline's input checks.
 #include "sgm/params.hpp"
 #include "sgm/pipeline.hpp"

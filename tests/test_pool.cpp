@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The scene pool's evaluation (tools/report_pool.hpp, eval_lib's meta.txt and D1):
 // 16-bit ground truth and its scale, ndisp / set parsing and bad meta.txt, the
 // derived non-occluded mask of a loaded scene, the KITTI D1 measure on a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Bit-exact comparison of the golden pipeline with a deliberately naive,
 // independent implementation of docs/algorithm.md (sections 2 to 9, 8b), on small
 // random images, for every cost mode and several parameter sets. Catches

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The synthetic scene generator: determinism, disparity range, and the ground
 // truth and occlusion mask against the rendered views.
 #include "synthetic_scene.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Accuracy evaluation against Middlebury ground truth (the paper's eq. (5)),
 // scene loading and the OpenCV StereoSGBM reference, shared by sgm-eval, the
 // tests and the simulator.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # `make eval-pool`: the golden model and OpenCV StereoSGBM on every scene of the pool
 # (POOL, layout of ../shared/data/pool/README.md), each at its meta.txt ndisp ->
 # build/eval/pool.md, pool.json, pool.png. POOL_SCENES=a,b keeps those scenes;

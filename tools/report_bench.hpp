@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `sgm-eval bench`: wall-clock time of the golden model against OpenCV
 // StereoSGBM on one frame, in the same process, interleaved. Measures and
 // reports only; nothing here judges the numbers.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "report_chart.hpp"
 
 #include <opencv2/imgproc.hpp>

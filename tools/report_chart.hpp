@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // table1.png: grouped bar chart of the Table I report, drawn with OpenCV.
 #pragma once
 

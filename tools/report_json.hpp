@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Minimal hand-written JSON output (no JSON library in the project) and an
 // all-or-nothing text file writer, shared by the table and bench reports.
 #pragma once

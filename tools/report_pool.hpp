@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `sgm-eval pool`: the golden model (and OpenCV StereoSGBM) on every scene of a
 // directory in the pool layout (../shared/data/pool/README.md), each scene at its
 // own D (meta.txt `ndisp:`), scored by its set's measure, with per-set and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "report_table.hpp"
 
 #include "report_json.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `sgm-eval table`: the paper's Table I (golden model with each matching cost),
 // the full pipeline per hardware cost mode and OpenCV StereoSGBM, evaluated on
 // the same scenes; rendered as markdown and JSON (the chart is report_chart).

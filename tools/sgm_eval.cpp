@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sgm-eval: accuracy of the golden model (and OpenCV StereoSGBM) on the
 // Middlebury scenes: the paper's eq. (5) error ratio, Table I, timing.
 #include "eval_lib.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Synthetic stereo scenes with exact ground truth, all from a seed: a layered
 // scene model (a background plane, fronto-parallel or slanted, and occluding
 // rectangles and discs in front of it) with textures attached to the surfaces

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sgm-golden: runs the golden model on a stereo pair and writes the disparity
 // map as 16-bit PNG (disparity x 256), the paper's 8-bit rendering and a
 // colour-mapped PNG.

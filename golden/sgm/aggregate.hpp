@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Adaptive P2 table and the four causal path costs of eq. (1)
 // (docs/algorithm.md, sections "P2 table" and "Path costs").
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // 9x5 / 9x9 census transform and rank (docs/algorithm.md, section "Census and rank").
 #pragma once
 

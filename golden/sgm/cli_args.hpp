@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Small command-line parser shared by the project's tools: positional
 // arguments plus "--name value" options, every error a one-line sgm::Error.
 #pragma once

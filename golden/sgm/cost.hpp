@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Matching cost C(p, d) for every pixel and disparity (docs/algorithm.md,
 // section "Matching cost").
 #pragma once

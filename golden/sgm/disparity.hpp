@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Disparity selection and refinement: winner-take-all, sub-pixel, left-right
 // validation, hole filling, edge snapping and the 5x5 median
 // (docs/algorithm.md, sections 6 to 9).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "sgm/image_io.hpp"
 
 #include "sgm/params.hpp"

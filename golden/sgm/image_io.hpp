@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The one image I/O layer of the project: the golden CLI, the evaluator and the
 // Verilator harness all read and write images through these functions.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Runs independent jobs on the machine's cores (at most two threads here).
 #pragma once
 

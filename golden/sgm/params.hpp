@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Parameters of the SGM pipeline and the fixed-point constants of the contract.
 // docs/algorithm.md is the prose version of everything in this header.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The whole golden pipeline: gray pair in, disparity map out.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A W x H x depth array stored pixel-major ([y][x][d]), the layout in which the
 // pipeline streams: all disparities of one pixel are adjacent.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sgm_driver: a small bus-agnostic driver of sgm_axi (register map:
 // sgm_regs.h, docs/registers.md). The caller supplies the 32-bit register
 // read and write functions (a memory-mapped pointer, a UIO device, a

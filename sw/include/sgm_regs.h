@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* sgm_regs.h: the register map of sgm_axi (rtl/sgm_axi.sv), the one machine
  * source of the offsets, fields and reset values: the driver (sw/) and the
  * tests use it, and tests/rtl/test_sgm_axi.cpp checks the RTL's localparams

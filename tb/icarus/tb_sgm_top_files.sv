@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // tb_sgm_top_files: a file-driven testbench of sgm_top for Icarus Verilog
 // (make icarus; tests/icarus/icarus_frames.cpp writes the inputs and checks the

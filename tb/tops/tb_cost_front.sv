@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // tb_cost_front: test wrapper for tests/rtl/test_tb_cost_front.cpp. Two
 // sgm_census_unit (left, right) on one step stream feed sgm_cost_volume, as in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // tb_stream_ctrl: sgm_stream_ctrl around a stand-in pipeline, for the stream
 // protocol tests. The stand-in has a fixed latency of LAT slots; a slot at

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // coverage-summary: line and toggle coverage of rtl/ from Verilator coverage
 // data files (make coverage). A coverage point is one (file, line, column,
 // kind, signal) of the source, merged over every instance and every data file:

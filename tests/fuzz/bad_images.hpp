@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Test images and the bad files made from them: synthetic textures and stereo
 // pairs, encoded files, headers that announce another size. Shared by the CLI
 // tests, the image I/O tests and the fuzz driver (its seeds).

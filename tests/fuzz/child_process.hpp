@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Runs a tool as a child process (argv as given, no shell) in a working
 // directory with a time limit, and captures its exit status, stdout and stderr.
 // Shared by the CLI tests and the fuzz driver.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // GoogleTest fixture for the tools run as child processes: the binaries in
 // $SGM_BIN, an input directory and an empty output / working directory. The
 // contract of a user error: non-zero exit, exactly one stderr line

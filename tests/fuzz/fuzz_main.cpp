@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sgm-fuzz: seeded random-corruption fuzzing of the tools' input handling.
 //
 //   images  mutated PNG / JPEG / PGM / PPM / BMP files (synthetic and Aloe

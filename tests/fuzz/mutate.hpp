@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Random mutations of a file's bytes for the fuzz driver: bit flips, byte
 // changes, truncation, insertions, erasures, header field edits (with the PNG
 // IHDR CRC fixed up so the decoder believes them), duplications and splices.

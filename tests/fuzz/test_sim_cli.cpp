@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sgm-sim fed bad input: every case must end before the simulation with a
 // non-zero exit, exactly one stderr line "sgm-sim: error: ..." naming the
 // problem, and no output file. Runs the small build sgm-sim-d16-w128 from

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sgm-icarus-frames: the files of the Icarus Verilog run (make icarus) and its
 // verdict. tb/icarus/tb_sgm_top_files.sv streams the frames through sgm_top.
 //

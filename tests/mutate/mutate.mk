@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # `make mutate`: mutation testing of rtl/ (tests/mutate/mutate.sh; included by the main Makefile).
 #
 #   make mutate [MUTATE_ONLY=id,id]   every mutation of tests/mutate/mutations.txt (or the listed

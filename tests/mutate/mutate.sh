@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Mutation runner of rtl/ (`make mutate`, `make mutate-ci`; tests/mutate/mutate.mk).
 #
 #   tests/mutate/mutate.sh [--only id,id] [--check] [--require-kill] [--out DIR] [--tree DIR] LIST

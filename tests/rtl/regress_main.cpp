@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sgm-regress: constrained-random regression of the verilated sgm_top against
 // the golden model. From a master seed, case K (seed mixSeed(master, K)) draws
 // a few frames streamed back to back through a freshly reset core: synthetic

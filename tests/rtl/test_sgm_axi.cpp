@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sgm_axi (sgm_top + AXI4-Lite registers) configured THROUGH the driver
 // (sw/sgm_driver.cpp) over an AXI4-Lite master with random delays on all five
 // channels, every bus cycle checked by the protocol checker; the streams go

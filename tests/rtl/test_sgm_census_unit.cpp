@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sgm_census_unit against the golden sgm::censusTransform (docs/algorithm.md
 // section 2, docs/rtl.md "Window and census"). Frames are streamed slot by slot
 // in the census raster of tb/census_stream.hpp (each frame followed by flush

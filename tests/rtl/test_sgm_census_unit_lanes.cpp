@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sgm_census_unit with K row lanes (LANES, docs/reschedule.md) against the golden
 // sgm::censusTransform (docs/algorithm.md section 2). Frames are streamed slot by
 // slot in the lane order of tb/lane_schedule.hpp (slot K n + k of a frame belongs

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sgm_cost_volume (with its sgm_cost_pe) against the golden sgm::computeCost
 // (docs/algorithm.md section 3), through the wrapper tb/tops/tb_cost_front.sv:
 // two sgm_census_unit (left, right) feeding the cost volume, as in the core.

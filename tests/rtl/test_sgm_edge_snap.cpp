@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sgm_edge_snap against the golden sgm::snapEdges (docs/algorithm.md section 8b),
 // with the disparity-stage fixture of tb/disparity_stage.hpp (frames streamed
 // back to back without reset, random stalls with junk inputs, stale slots,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sgm_hole_fill against the golden sgm::fillHoles (docs/algorithm.md section 8),
 // with the disparity-stage fixture of tb/disparity_stage.hpp: frames streamed
 // slot by slot back to back without reset, seeded random stalls with junk

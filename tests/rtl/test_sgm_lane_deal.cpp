@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sgm_lane_deal against the lane schedule of tb/lane_schedule.hpp: a raster
 // stream that starts like the stream controller's (the frame's first slot at
 // (0, 0), rows on past the frame as flush) carries a tag of its frame,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sgm_lr_check against the golden sgm::selectDisparity (its disp and valid
 // planes; docs/algorithm.md section 7). S volumes are streamed slot by slot in
 // raster order on the S side; the WTA side carries the golden winnerTakeAll /

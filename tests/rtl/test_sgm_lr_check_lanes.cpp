@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sgm_lr_check with K lanes (docs/reschedule.md) against the golden
 // sgm::selectDisparity (docs/algorithm.md section 7): the S side and the WTA side (its golden result,
 // `lag` slots later) in the slot order of K row lanes (tb/lane_schedule.hpp),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sgm_median5x5 against the golden sgm::median5x5 (docs/algorithm.md section 9),
 // with the disparity-stage fixture of tb/disparity_stage.hpp: frames streamed
 // slot by slot back to back without reset, seeded random stalls with junk

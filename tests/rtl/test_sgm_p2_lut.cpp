@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sgm_p2_lut against the golden P2 table (docs/algorithm.md section 4).
 #include "Vsgm_p2_lut.h"
 #include "verilated_top.hpp"

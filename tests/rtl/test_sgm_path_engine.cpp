@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sgm_path_engine against the golden path aggregation (docs/algorithm.md
 // section 5): S(p, d) for every pixel and disparity, slots streamed in the
 // engine's lane order (raster order at LANES = 1; tb/lane_schedule.hpp) with

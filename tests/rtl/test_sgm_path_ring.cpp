@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sgm_path_ring against the golden 0 degree path costs (docs/algorithm.md
 // section 5, sgm::pathCost path 0): Lr(p, d) and its minimum for every pixel,
 // LANES row lanes interleaved slot by slot as the re-scheduled core deals them

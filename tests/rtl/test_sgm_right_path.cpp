@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sgm_right_path against the golden fifth path in blocks (docs/algorithm.md
 // section 12, sgm::addRightPath with block B): the L5 vector of every pixel of
 // every frame, its costs and its side bundle LATENCY slots later, LANES row

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The whole core (sgm_top) against the golden model: every output pixel of
 // every frame, frames back to back, random stalls on both streams, several
 // parameter sets, every kind of malformed frame, reset in the middle of a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sgm_wta against the golden sgm::winnerTakeAll / sgm::subpixelOffset
 // (docs/algorithm.md section 6). S volumes are streamed slot by slot in raster
 // order, each frame followed by flush slots (rows >= height), back to back

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sgm_stream_ctrl (through tb_stream_ctrl, a stand-in pipeline of fixed
 // latency): AXI4-Stream framing, random stalls on both sides, back-to-back
 // frames of different sizes, malformed frames and recovery at the next start

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Comparisons of every kind that synth/ecp5_cmp_lut.v maps (and two it leaves
 // to synth_ecp5: wider than the limit), for `make ecp5-cmp-check`: the mapped
 // module must equal this one (Yosys equiv_make / equiv_simple).

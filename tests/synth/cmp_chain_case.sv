@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // `make ecp5-cmp-check`: the comparison map's carry-chain exception
 // (synth/ecp5_cmp.tcl, SYNTH_ECP5_CMP_CHAIN). Two instances of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // The inner module of tests/synth/cmp_chain_case.sv (`make ecp5-cmp-check`):
 // comparisons that SYNTH_ECP5_CMP_CHAIN=cmp_chain_inner.sv keeps as carry

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # `make ecp5-cmp-check`: synth/ecp5_cmp.tcl's carry-chain exception. After
 # the flow's own steps (proc, flatten, width reduction), ecp5_cmp_map with
 # cmp_chain_inner.sv named keeps the 6 comparisons of its two instances and
