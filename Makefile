@@ -30,6 +30,7 @@ GOLDEN_OBJ := $(patsubst %.cpp,$(OBJ)/%.o,$(GOLDEN_SRC))
 GOLDEN_LIB := $(BUILD)/lib/libsgmgolden.a
 GOLDEN_HDR := $(wildcard golden/sgm/*.hpp)
 RTL_SRC    := $(wildcard rtl/*.sv)
+RTL_INC    := $(wildcard rtl/*.svh)
 TB_HDR     := $(wildcard tb/*.hpp)
 
 # tools/*.cpp except the CLI mains form the evaluation library (scenes, error
@@ -81,6 +82,8 @@ TEST_EXTRA := sim-ci eval-ci
 -include tools/pool.mk
 # `make pnr`, `make pnr-ci`: place and route on ECP5 (synth/pnr.mk).
 -include synth/pnr.mk
+# `make regmap`, `make regmap-check`: the register map from its one description (regmap/regmap.mk).
+include regmap/regmap.mk
 
 # ---------------------------------------------------------------- golden model
 $(OBJ)/%.o: %.cpp $(GOLDEN_HDR) $(wildcard tools/*.hpp tests/*.hpp) | check-tools
@@ -180,7 +183,7 @@ RTL_TEST_BINS += $(BIN)/rtl-$(1)
 FIXTURE_TOP_$(1) := $(2)
 FIXTURE_FLAGS_$(1) := $(3)
 FIXTURE_TEST_$(1) := $(if $(4),$(4),tests/rtl/test_$(2).cpp)
-$(BIN)/rtl-$(1): $(if $(4),$(4),tests/rtl/test_$(2).cpp) $(RTL_SRC) $(RTL_TOPS) $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
+$(BIN)/rtl-$(1): $(if $(4),$(4),tests/rtl/test_$(2).cpp) $(RTL_SRC) $(RTL_INC) $(RTL_TOPS) $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
 	@mkdir -p $(BIN) $(BUILD)/verilator
 	@echo "verilating $(2) for $$@ (log: $(BUILD)/verilator-$(1).log)"
 	@s=$$$$(date +%s); MAKEFLAGS= $(VERILATOR) --cc --exe --build -j $(JOBS) -Wall $(VLT) --x-assign unique --x-initial unique $(VL_TRACE) \
@@ -291,6 +294,7 @@ rtl-tests: $(RTL_TEST_BINS)
 # on every module; waivers live in rtl/lint.vlt.
 lint: | check-tools
 	@scripts/spdx-check.sh
+	@$(MAKE) --no-print-directory regmap-check
 	@for m in $(RTL_MODULES); do \
 	  $(VERILATOR) --lint-only -Wall $(VLT) -Irtl --top-module $$m rtl/$$m.sv || exit 1; \
 	done; echo "lint: $(words $(RTL_MODULES)) modules clean"

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // sgm_axi: sgm_top with an AXI4-Lite control and status slave (32-bit data,
-// one clock). The register map is docs/registers.md; the offsets and fields
-// are defined once, in sw/include/sgm_regs.h, and the localparams below are
-// checked against that header by tests/rtl/test_sgm_axi.cpp.
+// one clock). The register map is docs/registers.md. Offsets, fields, masks
+// and reset values are described once, in regmap/sgm_regmap.def, from which
+// `make regmap` generates rtl/sgm_regmap.svh (included below), the C header
+// sw/include/sgm_regs.h and the tables of docs/registers.md.
 //
 //   identification  ID, D, MAX_WIDTH, MAX_HEIGHT, CENSUS, MIN_WIDTH, LANES, FEATURES (read-only)
 //   control         CTRL (enable, soft reset, hold), FRAME_SIZE, PENALTY, CONFIG,
@@ -83,62 +84,13 @@ module sgm_axi #(
 );
 
   // ------------------------------------------------------------ register map
-  // Byte offsets and reset values: the same numbers as sw/include/sgm_regs.h.
-  localparam logic [ADDR_W-1:0] ADDR_ID          /*verilator public*/ = ADDR_W'('h00);
-  localparam logic [ADDR_W-1:0] ADDR_D           /*verilator public*/ = ADDR_W'('h04);
-  localparam logic [ADDR_W-1:0] ADDR_MAX_WIDTH   /*verilator public*/ = ADDR_W'('h08);
-  localparam logic [ADDR_W-1:0] ADDR_MAX_HEIGHT  /*verilator public*/ = ADDR_W'('h0C);
-  localparam logic [ADDR_W-1:0] ADDR_CENSUS      /*verilator public*/ = ADDR_W'('h10);
-  localparam logic [ADDR_W-1:0] ADDR_MIN_WIDTH   /*verilator public*/ = ADDR_W'('h14);
-  localparam logic [ADDR_W-1:0] ADDR_LANES       /*verilator public*/ = ADDR_W'('h18);
-  localparam logic [ADDR_W-1:0] ADDR_FEATURES    /*verilator public*/ = ADDR_W'('h1C);
-  localparam logic [ADDR_W-1:0] ADDR_CTRL        /*verilator public*/ = ADDR_W'('h20);
-  localparam logic [ADDR_W-1:0] ADDR_FRAME_SIZE  /*verilator public*/ = ADDR_W'('h24);
-  localparam logic [ADDR_W-1:0] ADDR_PENALTY     /*verilator public*/ = ADDR_W'('h28);
-  localparam logic [ADDR_W-1:0] ADDR_CONFIG      /*verilator public*/ = ADDR_W'('h2C);
-  localparam logic [ADDR_W-1:0] ADDR_STATUS      /*verilator public*/ = ADDR_W'('h30);
-  localparam logic [ADDR_W-1:0] ADDR_FRAMES      /*verilator public*/ = ADDR_W'('h34);
-  localparam logic [ADDR_W-1:0] ADDR_ERROR       /*verilator public*/ = ADDR_W'('h38);
-  localparam logic [ADDR_W-1:0] ADDR_ERROR_COUNT /*verilator public*/ = ADDR_W'('h3C);
-  localparam logic [ADDR_W-1:0] ADDR_LAST_SIZE   /*verilator public*/ = ADDR_W'('h40);
-  localparam logic [ADDR_W-1:0] ADDR_EDGE_RESET  /*verilator public*/ = ADDR_W'('h44);
-  localparam logic [ADDR_W-1:0] ADDR_IRQ_ENABLE  /*verilator public*/ = ADDR_W'('h48);
-  localparam logic [ADDR_W-1:0] ADDR_IRQ_STATUS  /*verilator public*/ = ADDR_W'('h4C);
-
-  localparam logic [31:0] ID_VALUE       /*verilator public*/ = 32'h5347_4D05;  // "SGM", version 5
-  // The reset values are the golden model's defaults for the build (sgm::buildDefaults):
-  // "default" when it has the fifth path, the uniqueness ratio, the AD term and the path
-  // restart, else
-  // "four-path" (the defaults before issue 15).
-  localparam bit      FULL_DEFAULTS  = RIGHT_BLOCK != 0 && UNIQUENESS != 0 && AD_TERM != 0 && EDGE_RESET != 0;
-  localparam logic [31:0] PENALTY_RESET  /*verilator public*/ =
-      FULL_DEFAULTS ? 32'h4314_C818    // P1 24, P2' 200, AD cap 20, AD weight 3, W5 4
-                    : 32'h0014_6412;   // P1 18, P2' 100, AD cap 20, AD weight 0 (off), W5 0 (off)
-  localparam logic [31:0] CONFIG_RESET   /*verilator public*/ =
-      FULL_DEFAULTS ? 32'h0F00_5131    // rsad, sub-pixel, LR tol 1, fill, median, uniqueness 15 (no snap)
-                    : 32'h0000_7131;   // rsad, sub-pixel, LR tol 1, fill, snap, median
-  // EDGE_RESET: [7:0] T (0 off), [11:8] R, [20:16] path flags.
-  localparam logic [31:0] EDGE_RESET_RESET /*verilator public*/ =
-      FULL_DEFAULTS ? 32'h001B_0628    // T 40, R 6, paths 0, 45, 135 degrees and the fifth
-                    : 32'h001F_0500;   // off (T 0), R 5, every path: the golden EdgeReset{}
-  localparam logic [31:0] EDGE_RESET_MASK  = 32'h001F_0FFF;
-  localparam logic [31:0] CTRL_MASK      = 32'h0000_0005;  // ENABLE, HOLD (SOFT_RESET reads 0)
-  localparam logic [31:0] CONFIG_MASK    = 32'h7F03_7733;
-  localparam logic [31:0] PENALTY_MASK   = 32'hFFFF_FFFF;
-  localparam logic [31:0] IRQ_MASK       = 32'h0000_0003;
-  // FEATURES: the run-time levers of the build, one bit each (the rest reserved, 0).
-  localparam int FEATURES_UNIQUENESS_BIT /*verilator public*/ = 0;
-  localparam int FEATURES_AD_TERM_BIT    /*verilator public*/ = 1;
-  localparam int FEATURES_RIGHT_PATH_BIT /*verilator public*/ = 2;
-  localparam int FEATURES_EDGE_RESET_BIT /*verilator public*/ = 3;
-  localparam int FEATURES_RIGHT_BLOCK_LSB /*verilator public*/ = 8;  // [11:8]: log2 of the fifth path's block
-  localparam logic [31:0] FEATURES_VALUE /*verilator public*/ =
-      (UNIQUENESS != 0 ? 32'd1 << FEATURES_UNIQUENESS_BIT : 32'd0) | (AD_TERM != 0 ? 32'd1 << FEATURES_AD_TERM_BIT : 32'd0) |
-      (RIGHT_BLOCK != 0 ? (32'd1 << FEATURES_RIGHT_PATH_BIT) | (32'($clog2(RIGHT_BLOCK)) << FEATURES_RIGHT_BLOCK_LSB) : 32'd0) |
-      (EDGE_RESET != 0 ? 32'd1 << FEATURES_EDGE_RESET_BIT : 32'd0);
-  localparam int CENSUS_WIDTH  = 9;  // the window of sgm_census_unit: 9 x CENSUS_H
-  localparam int CENSUS_HEIGHT = CENSUS_H;
-  localparam int SOFT_RESET_CYCLES = 4;
+  // Offsets, field positions, masks, reset values and the build's constant registers:
+  // rtl/sgm_regmap.svh, generated from regmap/sgm_regmap.def (`make regmap`). The reset
+  // values are the golden model's defaults for the build (sgm::buildDefaults): those of a
+  // build with the fifth path, the uniqueness ratio, the AD term and the path restart, else
+  // the four-path preset.
+  localparam bit FULL_DEFAULTS = RIGHT_BLOCK != 0 && UNIQUENESS != 0 && AD_TERM != 0 && EDGE_RESET != 0;
+`include "sgm_regmap.svh"
 
   // ------------------------------------------------------------ bus
   logic              reg_we, reg_re, reg_werr, reg_rerr;
@@ -183,19 +135,10 @@ module sgm_axi #(
   wire [ADDR_W-1:0] waddr = {reg_waddr[ADDR_W-1:2], 2'b00};
   wire [ADDR_W-1:0] raddr = {reg_raddr[ADDR_W-1:2], 2'b00};
 
-  function automatic logic defined(input logic [ADDR_W-1:0] a);
-    case (a)
-      ADDR_ID, ADDR_D, ADDR_MAX_WIDTH, ADDR_MAX_HEIGHT, ADDR_CENSUS, ADDR_MIN_WIDTH, ADDR_LANES, ADDR_FEATURES, ADDR_CTRL,
-      ADDR_FRAME_SIZE, ADDR_PENALTY,
-      ADDR_CONFIG, ADDR_STATUS, ADDR_FRAMES, ADDR_ERROR, ADDR_ERROR_COUNT, ADDR_LAST_SIZE, ADDR_EDGE_RESET, ADDR_IRQ_ENABLE,
-      ADDR_IRQ_STATUS: defined = 1'b1;
-      default: defined = 1'b0;
-    endcase
-  endfunction
 
   // The bits of a write that its byte strobes enable.
   wire [31:0] wmask = {{8{reg_wstrb[3]}}, {8{reg_wstrb[2]}}, {8{reg_wstrb[1]}}, {8{reg_wstrb[0]}}};
-  wire [3:0]  wset  = reg_wdata[3:0] & wmask[3:0];  // low bits written as 1 (W1C)
+  wire [31:0] wset  = reg_wdata & wmask;  // bits written as 1 (W1C, W1P)
 
   function automatic logic [31:0] merge(input logic [31:0] old, input logic [31:0] data, input logic [31:0] mask,
                                         input logic [31:0] fields);
@@ -212,8 +155,8 @@ module sgm_axi #(
   wire wr_irq_enable  = reg_we && waddr == ADDR_IRQ_ENABLE;
   wire wr_irq_status  = reg_we && waddr == ADDR_IRQ_STATUS;
 
-  assign reg_werr = !defined(waddr);
-  assign reg_rerr = !defined(raddr);
+  assign reg_werr = !reg_defined(waddr);
+  assign reg_rerr = !reg_defined(raddr);
 
   // ------------------------------------------------------------ control registers
   logic [31:0] ctrl_q, frame_size_q, penalty_q, config_q, edge_reset_q, irq_enable_q;
@@ -230,18 +173,18 @@ module sgm_axi #(
       soft_reset_q <= '0;
     end else begin
       if (wr_ctrl) ctrl_q <= merge(ctrl_q, reg_wdata, wmask, CTRL_MASK);
-      if (wr_frame_size) frame_size_q <= merge(frame_size_q, reg_wdata, wmask, 32'hFFFF_FFFF);
+      if (wr_frame_size) frame_size_q <= merge(frame_size_q, reg_wdata, wmask, FRAME_SIZE_MASK);
       if (wr_penalty) penalty_q <= merge(penalty_q, reg_wdata, wmask, PENALTY_MASK);
       if (wr_config) config_q <= merge(config_q, reg_wdata, wmask, CONFIG_MASK);
       if (wr_edge_reset) edge_reset_q <= merge(edge_reset_q, reg_wdata, wmask, EDGE_RESET_MASK);
-      if (wr_irq_enable) irq_enable_q <= merge(irq_enable_q, reg_wdata, wmask, IRQ_MASK);
-      if (wr_ctrl && wset[1]) soft_reset_q <= ($bits(soft_reset_q))'(SOFT_RESET_CYCLES);
+      if (wr_irq_enable) irq_enable_q <= merge(irq_enable_q, reg_wdata, wmask, IRQ_ENABLE_MASK);
+      if (wr_ctrl && wset[CTRL_SOFT_RESET_LSB]) soft_reset_q <= ($bits(soft_reset_q))'(SOFT_RESET_CYCLES);
       else if (soft_reset_q != '0) soft_reset_q <= soft_reset_q - 1'b1;
     end
   end
 
-  wire enable     = ctrl_q[0];
-  wire hold       = ctrl_q[2];
+  wire enable     = ctrl_q[CTRL_ENABLE_LSB];
+  wire hold       = ctrl_q[CTRL_HOLD_LSB];
   wire core_reset = soft_reset_q != '0;
 
   // Active configuration: follows the shadow registers unless held. A size
@@ -249,25 +192,23 @@ module sgm_axi #(
   // rejects (error_o[3]) like any other out-of-range size.
   logic [XW-1:0] act_width;
   logic [YW-1:0] act_height;
-  logic [31:0]   act_penalty;
-  logic [30:0]   act_config;
-  logic [20:0]   act_edge_reset;
-  wire  [15:0]   shadow_width  = frame_size_q[15:0];
-  wire  [15:0]   shadow_height = frame_size_q[31:16];
+  logic [31:0]   act_penalty, act_config, act_edge_reset;
+  wire  [15:0]   shadow_width  = frame_size_q[FRAME_SIZE_WIDTH_LSB +: 16];
+  wire  [15:0]   shadow_height = frame_size_q[FRAME_SIZE_HEIGHT_LSB +: 16];
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       act_width   <= '0;
       act_height  <= '0;
       act_penalty <= PENALTY_RESET;
-      act_config  <= CONFIG_RESET[30:0];
-      act_edge_reset <= EDGE_RESET_RESET[20:0];
+      act_config  <= CONFIG_RESET;
+      act_edge_reset <= EDGE_RESET_RESET;
     end else if (!hold) begin
       act_width   <= 32'(shadow_width) <= MAX_WIDTH ? shadow_width[XW-1:0] : '0;
       act_height  <= 32'(shadow_height) <= MAX_HEIGHT ? shadow_height[YW-1:0] : '0;
       act_penalty <= penalty_q;
-      act_config  <= config_q[30:0];
-      act_edge_reset <= edge_reset_q[20:0];
+      act_config  <= config_q;
+      act_edge_reset <= edge_reset_q;
     end
   end
 
@@ -301,24 +242,24 @@ module sgm_axi #(
     .m_tready_i    (m_tready_i),
     .cfg_width_i   (act_width),
     .cfg_height_i  (act_height),
-    .cfg_p1_i      (act_penalty[7:0]),
-    .cfg_p2_i      (act_penalty[15:8]),
-    .cfg_ad_cap_i  (act_penalty[23:16]),
-    .cfg_ad_weight_i(act_penalty[27:24]),
-    .cfg_right_weight_i(act_penalty[31:28]),
-    .cfg_reset_t_i (act_edge_reset[7:0]),
-    .cfg_reset_len_i(act_edge_reset[11:8]),
-    .cfg_reset_paths_i(act_edge_reset[20:16]),
-    .cfg_mode_i    (act_config[1:0]),
-    .cfg_subpixel_i(act_config[4]),
-    .cfg_lr_en_i   (act_config[5]),
-    .cfg_lr_tol_i  (act_config[10:8]),
-    .cfg_fill_i    (act_config[12]),
-    .cfg_snap_i    (act_config[13]),
-    .cfg_median_i  (act_config[14]),
-    .cfg_p2_mode_i (act_config[16]),
-    .cfg_weights_i (act_config[17]),
-    .cfg_unique_i  (act_config[30:24]),
+    .cfg_p1_i      (act_penalty[PENALTY_P1_LSB +: PENALTY_P1_W]),
+    .cfg_p2_i      (act_penalty[PENALTY_P2_LSB +: PENALTY_P2_W]),
+    .cfg_ad_cap_i  (act_penalty[PENALTY_AD_CAP_LSB +: PENALTY_AD_CAP_W]),
+    .cfg_ad_weight_i(act_penalty[PENALTY_AD_WEIGHT_LSB +: PENALTY_AD_WEIGHT_W]),
+    .cfg_right_weight_i(act_penalty[PENALTY_RIGHT_WEIGHT_LSB +: PENALTY_RIGHT_WEIGHT_W]),
+    .cfg_reset_t_i (act_edge_reset[EDGE_RESET_T_LSB +: EDGE_RESET_T_W]),
+    .cfg_reset_len_i(act_edge_reset[EDGE_RESET_LEN_LSB +: EDGE_RESET_LEN_W]),
+    .cfg_reset_paths_i(act_edge_reset[EDGE_RESET_PATHS_LSB +: EDGE_RESET_PATHS_W]),
+    .cfg_mode_i    (act_config[CONFIG_MODE_LSB +: CONFIG_MODE_W]),
+    .cfg_subpixel_i(act_config[CONFIG_SUBPIXEL_LSB]),
+    .cfg_lr_en_i   (act_config[CONFIG_LR_ENABLE_LSB]),
+    .cfg_lr_tol_i  (act_config[CONFIG_LR_TOL_LSB +: CONFIG_LR_TOL_W]),
+    .cfg_fill_i    (act_config[CONFIG_FILL_LSB]),
+    .cfg_snap_i    (act_config[CONFIG_SNAP_LSB]),
+    .cfg_median_i  (act_config[CONFIG_MEDIAN_LSB]),
+    .cfg_p2_mode_i (act_config[CONFIG_P2_PAPER_LSB]),
+    .cfg_weights_i (act_config[CONFIG_WEIGHTS_EQUAL_LSB]),
+    .cfg_unique_i  (act_config[CONFIG_UNIQUENESS_LSB +: CONFIG_UNIQUENESS_W]),
     .busy_o        (busy),
     .frame_done_o  (frame_done),
     .error_o       (error),
@@ -330,7 +271,7 @@ module sgm_axi #(
 
   // ------------------------------------------------------------ status
   logic [31:0] frames_q, last_size_q;
-  logic [3:0]  error_q;
+  logic [ERROR_KINDS-1:0] error_q;
   logic [31:0] error_count_q;  // byte k: events of kind k
   logic [1:0]  irq_status_q;
 
@@ -346,7 +287,7 @@ module sgm_axi #(
         last_size_q <= {16'(frame_height), 16'(frame_width)};
       end
       // Sticky bits: an event in the cycle of a clear wins.
-      error_q      <= (error_q & ~(wr_error ? wset[3:0] : 4'd0)) | error_event;
+      error_q      <= (error_q & ~(wr_error ? wset[ERROR_KINDS-1:0] : '0)) | error_event;
       irq_status_q <= (irq_status_q & ~(wr_irq_status ? wset[1:0] : 2'd0)) | {|error_event, frame_done};
     end
   end
@@ -367,31 +308,31 @@ module sgm_axi #(
   always_comb begin
     case (raddr)
       ADDR_ID:          reg_rdata = ID_VALUE;
-      ADDR_D:           reg_rdata = 32'(D);
-      ADDR_MAX_WIDTH:   reg_rdata = 32'(MAX_WIDTH);
-      ADDR_MAX_HEIGHT:  reg_rdata = 32'(MAX_HEIGHT);
-      ADDR_CENSUS:      reg_rdata = {16'd0, 8'(CENSUS_HEIGHT), 8'(CENSUS_WIDTH)};
+      ADDR_D:           reg_rdata = D_VALUE;
+      ADDR_MAX_WIDTH:   reg_rdata = MAX_WIDTH_VALUE;
+      ADDR_MAX_HEIGHT:  reg_rdata = MAX_HEIGHT_VALUE;
+      ADDR_CENSUS:      reg_rdata = CENSUS_VALUE;
       ADDR_MIN_WIDTH:   reg_rdata = 32'(core_min_width);
-      ADDR_LANES:       reg_rdata = 32'(LANES);
+      ADDR_LANES:       reg_rdata = LANES_VALUE;
       ADDR_FEATURES:    reg_rdata = FEATURES_VALUE;
       ADDR_CTRL:        reg_rdata = ctrl_q;
       ADDR_FRAME_SIZE:  reg_rdata = frame_size_q;
       ADDR_PENALTY:     reg_rdata = penalty_q;
       ADDR_CONFIG:      reg_rdata = config_q;
-      ADDR_STATUS:      reg_rdata = {30'd0, core_reset, busy};
+      ADDR_STATUS:      reg_rdata = 32'(busy) << STATUS_BUSY_LSB | 32'(core_reset) << STATUS_RESETTING_LSB;
       ADDR_FRAMES:      reg_rdata = frames_q;
-      ADDR_ERROR:       reg_rdata = {28'd0, error_q};
+      ADDR_ERROR:       reg_rdata = 32'(error_q) << ERROR_LAST_EARLY_LSB;
       ADDR_ERROR_COUNT: reg_rdata = error_count_q;
       ADDR_LAST_SIZE:   reg_rdata = last_size_q;
       ADDR_EDGE_RESET:  reg_rdata = edge_reset_q;
       ADDR_IRQ_ENABLE:  reg_rdata = irq_enable_q;
-      ADDR_IRQ_STATUS:  reg_rdata = {30'd0, irq_status_q};
+      ADDR_IRQ_STATUS:  reg_rdata = 32'(irq_status_q);
       default:          reg_rdata = 32'd0;
     endcase
   end
 
-  wire unused = &{1'b0, reg_re, reg_waddr[1:0], reg_raddr[1:0], error, act_config[3:2], act_config[7:6], act_config[11], act_config[15], act_config[23:18], act_edge_reset[15:12], shadow_width[15:XW],
-                  shadow_height[15:YW]};
+  wire unused = &{1'b0, reg_re, reg_waddr[1:0], reg_raddr[1:0], error, act_config, act_edge_reset, wset,
+                  shadow_width[15:XW], shadow_height[15:YW]};
 
 endmodule
 `default_nettype wire

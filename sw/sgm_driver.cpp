@@ -5,32 +5,28 @@
 namespace sgm::driver {
 
 uint32_t Driver::encodeSize(uint32_t width, uint32_t height) {
-  return (width & SGM_SIZE_FIELD_MASK) << SGM_SIZE_WIDTH_SHIFT | (height & SGM_SIZE_FIELD_MASK) << SGM_SIZE_HEIGHT_SHIFT;
+  return SGM_PUT(FRAME_SIZE_WIDTH, width) | SGM_PUT(FRAME_SIZE_HEIGHT, height);
 }
 
 uint32_t Driver::encodePenalty(const FrameConfig& f) {
-  return (f.p1 & SGM_PENALTY_FIELD_MASK) << SGM_PENALTY_P1_SHIFT | (f.p2 & SGM_PENALTY_FIELD_MASK) << SGM_PENALTY_P2_SHIFT |
-         (f.adCap & SGM_PENALTY_FIELD_MASK) << SGM_PENALTY_AD_CAP_SHIFT |
-         (f.adWeight & SGM_PENALTY_AD_WEIGHT_MASK) << SGM_PENALTY_AD_WEIGHT_SHIFT |
-         (f.rightWeight & SGM_PENALTY_RIGHT_WEIGHT_MASK) << SGM_PENALTY_RIGHT_WEIGHT_SHIFT;
+  return SGM_PUT(PENALTY_P1, f.p1) | SGM_PUT(PENALTY_P2, f.p2) | SGM_PUT(PENALTY_AD_CAP, f.adCap) |
+         SGM_PUT(PENALTY_AD_WEIGHT, f.adWeight) | SGM_PUT(PENALTY_RIGHT_WEIGHT, f.rightWeight);
 }
 
 uint32_t Driver::encodeConfig(const FrameConfig& f) {
-  return (f.mode << SGM_CONFIG_MODE_SHIFT & SGM_CONFIG_MODE_MASK) | (f.subpixel ? SGM_CONFIG_SUBPIXEL : 0u) |
-         (f.lrCheck ? SGM_CONFIG_LR_ENABLE : 0u) | (f.lrTolerance << SGM_CONFIG_LR_TOL_SHIFT & SGM_CONFIG_LR_TOL_MASK) |
-         (f.fill ? SGM_CONFIG_FILL : 0u) | (f.snap ? SGM_CONFIG_SNAP : 0u) | (f.median ? SGM_CONFIG_MEDIAN : 0u) |
-         (f.p2Paper ? SGM_CONFIG_P2_PAPER : 0u) | (f.weightsEqual ? SGM_CONFIG_WEIGHTS_EQUAL : 0u) |
-         (f.uniqueness << SGM_CONFIG_UNIQUENESS_SHIFT & SGM_CONFIG_UNIQUENESS_MASK);
+  return SGM_PUT(CONFIG_MODE, f.mode) | SGM_PUT(CONFIG_SUBPIXEL, f.subpixel) | SGM_PUT(CONFIG_LR_ENABLE, f.lrCheck) |
+         SGM_PUT(CONFIG_LR_TOL, f.lrTolerance) | SGM_PUT(CONFIG_FILL, f.fill) | SGM_PUT(CONFIG_SNAP, f.snap) |
+         SGM_PUT(CONFIG_MEDIAN, f.median) | SGM_PUT(CONFIG_P2_PAPER, f.p2Paper) |
+         SGM_PUT(CONFIG_WEIGHTS_EQUAL, f.weightsEqual) | SGM_PUT(CONFIG_UNIQUENESS, f.uniqueness);
 }
 
 uint32_t Driver::encodeEdgeReset(const FrameConfig& f) {
-  return (f.edgeReset & SGM_EDGE_RESET_T_MASK) << SGM_EDGE_RESET_T_SHIFT |
-         (f.edgeResetLength & SGM_EDGE_RESET_LEN_MASK) << SGM_EDGE_RESET_LEN_SHIFT |
-         (f.edgeResetPaths & SGM_EDGE_RESET_PATHS_MASK) << SGM_EDGE_RESET_PATHS_SHIFT;
+  return SGM_PUT(EDGE_RESET_T, f.edgeReset) | SGM_PUT(EDGE_RESET_LEN, f.edgeResetLength) |
+         SGM_PUT(EDGE_RESET_PATHS, f.edgeResetPaths);
 }
 
 bool Driver::sizeFits(const Identity& id, uint32_t width, uint32_t height) {
-  return width >= id.minWidth && width <= id.maxWidth && height >= SGM_MIN_HEIGHT && height <= id.maxHeight;
+  return width >= id.minWidth && width <= id.maxWidth && height >= SGM_FRAME_SIZE_HEIGHT_MIN && height <= id.maxHeight;
 }
 
 bool Driver::featuresFit(const Identity& id, const FrameConfig& f) {
@@ -42,19 +38,19 @@ bool Driver::featuresFit(const Identity& id, const FrameConfig& f) {
 
 uint32_t Driver::rightBlock(const Identity& id) {
   if (!(id.features & SGM_FEATURES_RIGHT_PATH)) return 0;
-  return 1u << (id.features >> SGM_FEATURES_RIGHT_BLOCK_SHIFT & SGM_FEATURES_RIGHT_BLOCK_MASK);
+  return 1u << SGM_GET(id.features, FEATURES_RIGHT_BLOCK);
 }
 
 bool Driver::identify(Identity* id) {
   const uint32_t value = read(SGM_REG_ID);
   if (id) {
-    id->version = value & SGM_ID_VERSION_MASK;
+    id->version = SGM_GET(value, ID_VERSION);
     id->disparities = read(SGM_REG_D);
     id->maxWidth = read(SGM_REG_MAX_WIDTH);
     id->maxHeight = read(SGM_REG_MAX_HEIGHT);
     const uint32_t census = read(SGM_REG_CENSUS);
-    id->censusWidth = census >> SGM_CENSUS_WIDTH_SHIFT & SGM_CENSUS_FIELD_MASK;
-    id->censusHeight = census >> SGM_CENSUS_HEIGHT_SHIFT & SGM_CENSUS_FIELD_MASK;
+    id->censusWidth = SGM_GET(census, CENSUS_WIDTH);
+    id->censusHeight = SGM_GET(census, CENSUS_HEIGHT);
     id->minWidth = read(SGM_REG_MIN_WIDTH);
     id->lanes = read(SGM_REG_LANES);
     id->features = read(SGM_REG_FEATURES);
@@ -75,27 +71,27 @@ void Driver::configure(const FrameConfig& f) {
 FrameConfig Driver::readConfig() {
   FrameConfig f;
   const uint32_t size = read(SGM_REG_FRAME_SIZE), penalty = read(SGM_REG_PENALTY), config = read(SGM_REG_CONFIG);
-  f.width = size >> SGM_SIZE_WIDTH_SHIFT & SGM_SIZE_FIELD_MASK;
-  f.height = size >> SGM_SIZE_HEIGHT_SHIFT & SGM_SIZE_FIELD_MASK;
-  f.p1 = penalty >> SGM_PENALTY_P1_SHIFT & SGM_PENALTY_FIELD_MASK;
-  f.p2 = penalty >> SGM_PENALTY_P2_SHIFT & SGM_PENALTY_FIELD_MASK;
-  f.adCap = penalty >> SGM_PENALTY_AD_CAP_SHIFT & SGM_PENALTY_FIELD_MASK;
-  f.adWeight = penalty >> SGM_PENALTY_AD_WEIGHT_SHIFT & SGM_PENALTY_AD_WEIGHT_MASK;
-  f.rightWeight = penalty >> SGM_PENALTY_RIGHT_WEIGHT_SHIFT & SGM_PENALTY_RIGHT_WEIGHT_MASK;
-  f.mode = (config & SGM_CONFIG_MODE_MASK) >> SGM_CONFIG_MODE_SHIFT;
-  f.subpixel = config & SGM_CONFIG_SUBPIXEL;
-  f.lrCheck = config & SGM_CONFIG_LR_ENABLE;
-  f.lrTolerance = (config & SGM_CONFIG_LR_TOL_MASK) >> SGM_CONFIG_LR_TOL_SHIFT;
-  f.fill = config & SGM_CONFIG_FILL;
-  f.snap = config & SGM_CONFIG_SNAP;
-  f.median = config & SGM_CONFIG_MEDIAN;
-  f.p2Paper = config & SGM_CONFIG_P2_PAPER;
-  f.weightsEqual = config & SGM_CONFIG_WEIGHTS_EQUAL;
-  f.uniqueness = (config & SGM_CONFIG_UNIQUENESS_MASK) >> SGM_CONFIG_UNIQUENESS_SHIFT;
+  f.width = SGM_GET(size, FRAME_SIZE_WIDTH);
+  f.height = SGM_GET(size, FRAME_SIZE_HEIGHT);
+  f.p1 = SGM_GET(penalty, PENALTY_P1);
+  f.p2 = SGM_GET(penalty, PENALTY_P2);
+  f.adCap = SGM_GET(penalty, PENALTY_AD_CAP);
+  f.adWeight = SGM_GET(penalty, PENALTY_AD_WEIGHT);
+  f.rightWeight = SGM_GET(penalty, PENALTY_RIGHT_WEIGHT);
+  f.mode = SGM_GET(config, CONFIG_MODE);
+  f.subpixel = SGM_GET(config, CONFIG_SUBPIXEL);
+  f.lrCheck = SGM_GET(config, CONFIG_LR_ENABLE);
+  f.lrTolerance = SGM_GET(config, CONFIG_LR_TOL);
+  f.fill = SGM_GET(config, CONFIG_FILL);
+  f.snap = SGM_GET(config, CONFIG_SNAP);
+  f.median = SGM_GET(config, CONFIG_MEDIAN);
+  f.p2Paper = SGM_GET(config, CONFIG_P2_PAPER);
+  f.weightsEqual = SGM_GET(config, CONFIG_WEIGHTS_EQUAL);
+  f.uniqueness = SGM_GET(config, CONFIG_UNIQUENESS);
   const uint32_t edge = read(SGM_REG_EDGE_RESET);
-  f.edgeReset = edge >> SGM_EDGE_RESET_T_SHIFT & SGM_EDGE_RESET_T_MASK;
-  f.edgeResetLength = edge >> SGM_EDGE_RESET_LEN_SHIFT & SGM_EDGE_RESET_LEN_MASK;
-  f.edgeResetPaths = edge >> SGM_EDGE_RESET_PATHS_SHIFT & SGM_EDGE_RESET_PATHS_MASK;
+  f.edgeReset = SGM_GET(edge, EDGE_RESET_T);
+  f.edgeResetLength = SGM_GET(edge, EDGE_RESET_LEN);
+  f.edgeResetPaths = SGM_GET(edge, EDGE_RESET_PATHS);
   return f;
 }
 
@@ -123,15 +119,18 @@ bool Driver::waitFrames(uint32_t target, long maxPolls) {
 
 void Driver::lastFrameSize(uint32_t* width, uint32_t* height) {
   const uint32_t size = read(SGM_REG_LAST_SIZE);
-  *width = size >> SGM_SIZE_WIDTH_SHIFT & SGM_SIZE_FIELD_MASK;
-  *height = size >> SGM_SIZE_HEIGHT_SHIFT & SGM_SIZE_FIELD_MASK;
+  *width = SGM_GET(size, LAST_SIZE_WIDTH);
+  *height = SGM_GET(size, LAST_SIZE_HEIGHT);
 }
 
 Errors Driver::errors() {
   Errors e;
   e.sticky = read(SGM_REG_ERROR) & SGM_ERROR_MASK;
   const uint32_t counts = read(SGM_REG_ERROR_COUNT);
-  for (int k = 0; k < SGM_ERROR_KINDS; ++k) e.counts[k] = counts >> (8 * k) & 0xFFu;
+  e.counts[0] = SGM_GET(counts, ERROR_COUNT_LAST_EARLY);
+  e.counts[1] = SGM_GET(counts, ERROR_COUNT_LAST_MISSING);
+  e.counts[2] = SGM_GET(counts, ERROR_COUNT_START_INSIDE);
+  e.counts[3] = SGM_GET(counts, ERROR_COUNT_CONFIG);
   return e;
 }
 
@@ -140,10 +139,10 @@ void Driver::clearErrors() {
   write(SGM_REG_ERROR_COUNT, 0);
 }
 
-void Driver::enableInterrupts(uint32_t mask) { write(SGM_REG_IRQ_ENABLE, mask & SGM_IRQ_MASK); }
+void Driver::enableInterrupts(uint32_t mask) { write(SGM_REG_IRQ_ENABLE, mask & SGM_IRQ_ENABLE_MASK); }
 
 uint32_t Driver::interrupts() { return read(SGM_REG_IRQ_STATUS); }
 
-void Driver::clearInterrupts(uint32_t mask) { write(SGM_REG_IRQ_STATUS, mask & SGM_IRQ_MASK); }
+void Driver::clearInterrupts(uint32_t mask) { write(SGM_REG_IRQ_STATUS, mask & SGM_IRQ_STATUS_MASK); }
 
 }  // namespace sgm::driver

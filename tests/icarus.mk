@@ -24,9 +24,9 @@ $(BIN)/sgm-icarus-frames: $(OBJ)/tests/icarus/icarus_frames.o $(EVAL_OBJ) $(GOLD
 $(OBJ)/tests/icarus/icarus_frames.o: override CXXFLAGS += -Itb -DICARUS_RIGHT_BLOCK=$(ICARUS_RIGHT_BLOCK)
 $(OBJ)/tests/icarus/icarus_frames.o: tests/icarus.mk
 
-$(ICARUS_DIR)/tb_sgm_top_files.vvp: tb/icarus/tb_sgm_top_files.sv $(RTL_SRC) tests/icarus.mk | check-tools
+$(ICARUS_DIR)/tb_sgm_top_files.vvp: tb/icarus/tb_sgm_top_files.sv $(RTL_SRC) $(RTL_INC) tests/icarus.mk | check-tools
 	@mkdir -p $(dir $@)
-	$(IVERILOG) -g2012 -Wall -Wno-timescale -Wno-sensitivity-entire-array -o $@ -s tb_sgm_top_files \
+	$(IVERILOG) -g2012 -Wall -Wno-timescale -Wno-sensitivity-entire-array -I rtl -o $@ -s tb_sgm_top_files \
 	  -Ptb_sgm_top_files.D=16 -Ptb_sgm_top_files.MAX_WIDTH=128 -Ptb_sgm_top_files.MAX_HEIGHT=64 \
 	  -Ptb_sgm_top_files.RIGHT_BLOCK=$(ICARUS_RIGHT_BLOCK) \
 	  tb/icarus/tb_sgm_top_files.sv $(RTL_SRC) 2> $(ICARUS_DIR)/iverilog.log || { cat $(ICARUS_DIR)/iverilog.log; exit 1; }

@@ -38,34 +38,47 @@ struct Identity {
 // One frame's run-time configuration (the fields of FRAME_SIZE, PENALTY, CONFIG, EDGE_RESET).
 struct FrameConfig {
   uint32_t width = 0, height = 0;
-  // Defaults: the golden model's (SGM_PENALTY_RESET / SGM_CONFIG_RESET / SGM_EDGE_RESET_RESET); a build
-  // without the fifth path, the uniqueness ratio, the AD term or the path restart (FEATURES)
-  // resets to fourPath().
-  uint32_t p1 = 24, p2 = 200;
-  uint32_t mode = SGM_MODE_RSAD;
-  bool subpixel = true;
-  bool lrCheck = true;
-  uint32_t lrTolerance = 1;
-  bool fill = true, snap = false, median = true;
-  bool p2Paper = false, weightsEqual = false;  // the paper's P2'/dI and equal path weights
-  uint32_t uniqueness = 15;  // uniqueness ratio in %, 0 (off) .. SGM_CONFIG_UNIQUENESS_MAX
-  uint32_t adWeight = 3, adCap = 20;  // the AD term: C += (W min(AD, T)) >> 3, W 0 (off) .. 15
-  uint32_t rightWeight = 4;  // the fifth path's W5: 0 (off) .. 8, in blocks of the build's (FEATURES)
+  // Defaults: the golden model's, as the registers of a build with every lever reset to
+  // (SGM_*_DEFAULT of sgm_regs.h, generated from regmap/sgm_regmap.def); a build without
+  // the fifth path, the uniqueness ratio, the AD term or the path restart (FEATURES) resets
+  // to fourPath().
+  uint32_t p1 = SGM_PENALTY_P1_DEFAULT, p2 = SGM_PENALTY_P2_DEFAULT;
+  uint32_t mode = SGM_CONFIG_MODE_DEFAULT;  // SGM_CONFIG_MODE_RT, _RSAD or _UNIFIED
+  bool subpixel = SGM_CONFIG_SUBPIXEL_DEFAULT;
+  bool lrCheck = SGM_CONFIG_LR_ENABLE_DEFAULT;
+  uint32_t lrTolerance = SGM_CONFIG_LR_TOL_DEFAULT;
+  bool fill = SGM_CONFIG_FILL_DEFAULT, snap = SGM_CONFIG_SNAP_DEFAULT, median = SGM_CONFIG_MEDIAN_DEFAULT;
+  // The paper's P2'/dI and equal path weights.
+  bool p2Paper = SGM_CONFIG_P2_PAPER_DEFAULT, weightsEqual = SGM_CONFIG_WEIGHTS_EQUAL_DEFAULT;
+  uint32_t uniqueness = SGM_CONFIG_UNIQUENESS_DEFAULT;  // uniqueness ratio in %, 0 (off) .. SGM_CONFIG_UNIQUENESS_MAX
+  // The AD term: C += (W min(AD, T)) >> 3, W 0 (off) .. 15.
+  uint32_t adWeight = SGM_PENALTY_AD_WEIGHT_DEFAULT, adCap = SGM_PENALTY_AD_CAP_DEFAULT;
+  // The fifth path's W5: 0 (off) .. SGM_PENALTY_RIGHT_WEIGHT_MAX, in blocks of the build's (FEATURES).
+  uint32_t rightWeight = SGM_PENALTY_RIGHT_WEIGHT_DEFAULT;
   // The path restart at strong edges (EDGE_RESET): threshold T (0 off), length R (1 .. 15),
   // path flags (bit k: path k, 0, 45, 90, 135 degrees, the fifth).
-  uint32_t edgeReset = 40, edgeResetLength = 6, edgeResetPaths = 0x1B;
+  uint32_t edgeReset = SGM_EDGE_RESET_T_DEFAULT, edgeResetLength = SGM_EDGE_RESET_LEN_DEFAULT;
+  uint32_t edgeResetPaths = SGM_EDGE_RESET_PATHS_DEFAULT;
 
   // The four-path defaults (golden preset "four-path"), for builds without those levers.
   static FrameConfig fourPath() {
     FrameConfig f;
-    f.p1 = 18, f.p2 = 100, f.snap = true, f.uniqueness = 0, f.adWeight = 0, f.rightWeight = 0;
-    f.edgeReset = 0, f.edgeResetLength = 5, f.edgeResetPaths = 0x1F;
+    f.p1 = SGM_PENALTY_P1_FOUR_PATH, f.p2 = SGM_PENALTY_P2_FOUR_PATH;
+    f.adCap = SGM_PENALTY_AD_CAP_FOUR_PATH, f.adWeight = SGM_PENALTY_AD_WEIGHT_FOUR_PATH;
+    f.rightWeight = SGM_PENALTY_RIGHT_WEIGHT_FOUR_PATH;
+    f.mode = SGM_CONFIG_MODE_FOUR_PATH, f.subpixel = SGM_CONFIG_SUBPIXEL_FOUR_PATH;
+    f.lrCheck = SGM_CONFIG_LR_ENABLE_FOUR_PATH, f.lrTolerance = SGM_CONFIG_LR_TOL_FOUR_PATH;
+    f.fill = SGM_CONFIG_FILL_FOUR_PATH, f.snap = SGM_CONFIG_SNAP_FOUR_PATH, f.median = SGM_CONFIG_MEDIAN_FOUR_PATH;
+    f.p2Paper = SGM_CONFIG_P2_PAPER_FOUR_PATH, f.weightsEqual = SGM_CONFIG_WEIGHTS_EQUAL_FOUR_PATH;
+    f.uniqueness = SGM_CONFIG_UNIQUENESS_FOUR_PATH;
+    f.edgeReset = SGM_EDGE_RESET_T_FOUR_PATH, f.edgeResetLength = SGM_EDGE_RESET_LEN_FOUR_PATH;
+    f.edgeResetPaths = SGM_EDGE_RESET_PATHS_FOUR_PATH;
     return f;
   }
 };
 
 struct Errors {
-  uint32_t sticky = 0;                 // SGM_ERROR_* bits
+  uint32_t sticky = 0;                 // SGM_ERROR_* bits (SGM_ERROR_LAST_EARLY ...)
   uint32_t counts[SGM_ERROR_KINDS] = {};  // events per kind (saturate at 255)
 };
 
@@ -90,7 +103,7 @@ class Driver {
   Errors errors();
   // Clears the sticky kinds and the counters.
   void clearErrors();
-  void enableInterrupts(uint32_t mask);  // SGM_IRQ_* bits
+  void enableInterrupts(uint32_t mask);  // SGM_IRQ_ENABLE_* bits
   uint32_t interrupts();                 // IRQ_STATUS
   void clearInterrupts(uint32_t mask);
 

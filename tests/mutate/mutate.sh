@@ -6,6 +6,7 @@
 #
 # LIST holds one mutation per line (blank lines and # comments skipped):
 #   id @@ rtl/file.sv @@ exact text @@ replacement @@ bug class [@@ equivalent: reason]
+# (a file may be an included rtl/*.svh: its tests are those of the modules that include it)
 # The exact text must occur exactly once in the file (else the run stops: the RTL
 # changed and the list must follow it in the same commit). Each mutation is applied
 # to a scratch copy of the tree (--tree, default build/mutate/tree; rtl/ is never
@@ -124,6 +125,20 @@ declare -A tests_of=()  # module -> tests containing it, cheapest first
 for t in "${order[@]}"; do
   for m in $(closure "${top_of[$t]}" | sort -u); do tests_of[$m]+="$t "; done
 done
+# The tests of a mutated file: those of its module, or for an included .svh those of every
+# module that includes it, cheapest first.
+tests_of_file() {
+  local f="$1" m t mods=() out=""
+  if [[ "$f" == *.svh ]]; then
+    for m in $(grep -lF "\`include \"$(basename "$f")\"" rtl/*.sv tb/tops/*.sv 2>/dev/null); do mods+=("$(basename "$m" .sv)"); done
+  else
+    mods=("$(basename "$f" .sv)")
+  fi
+  for t in "${order[@]}"; do
+    for m in "${mods[@]}"; do [[ " ${tests_of[$m]:-} " == *" $t "* ]] && { out+="$t "; break; }; done
+  done
+  echo "$out"
+}
 
 run_test() {  # run_test DIR NAME LOG: runs build/bin/NAME of DIR; returns its status
   local dir="$1" name="$2" log="$3"
@@ -137,8 +152,7 @@ run_test() {  # run_test DIR NAME LOG: runs build/bin/NAME of DIR; returns its s
 # ------------------------------------------------------------------ baseline
 for i in "${selected[@]}"; do
   [[ -n "${equivs[$i]}" ]] && continue
-  m=$(basename "${files[$i]}" .sv)
-  [[ -n "${tests_of[$m]:-}" ]] || die "${ids[$i]}: no test binary instantiates $m"
+  [[ -n "$(tests_of_file "${files[$i]}")" ]] || die "${ids[$i]}: no test binary instantiates the module of ${files[$i]}"
 done
 ((check_only)) && { echo "mutate: $list: ${#ids[@]} mutations, every text found once"; exit 0; }
 mkdir -p "$out/logs"
@@ -223,7 +237,6 @@ for i in "${selected[@]}"; do
     write_report
     continue
   fi
-  m=$(basename "$file" .sv)
   start=$SECONDS
   content=$(cat "$file"; echo x)
   content="${content%x}"
@@ -231,7 +244,7 @@ for i in "${selected[@]}"; do
   [[ "$mutated" != "$content" ]] || die "$id: replacement did not apply"
   printf '%s' "$mutated" > "$tree/$file"
   status=survived killer=""
-  for t in ${tests_of[$m]}; do
+  for t in $(tests_of_file "$file"); do
     baseline "$t"
     log="$out/logs/$id-$t.log"
     if ! (cd "$tree" && nice -n 5 "${MUTANT_MAKE[@]}" "build/bin/$t") > "$log" 2>&1; then

@@ -158,11 +158,11 @@ TEST(SgmAxi, RtlOffsetsAndResetValuesMatchTheHeader) {
       {"IRQ_ENABLE", {Rtl::ADDR_IRQ_ENABLE, SGM_REG_IRQ_ENABLE}},
       {"IRQ_STATUS", {Rtl::ADDR_IRQ_STATUS, SGM_REG_IRQ_STATUS}},
       {"ID_VALUE", {Rtl::ID_VALUE, SGM_ID_VALUE}},
-      {"FEATURES_UNIQUENESS", {1u << Rtl::FEATURES_UNIQUENESS_BIT, SGM_FEATURES_UNIQUENESS}},
-      {"FEATURES_AD_TERM", {1u << Rtl::FEATURES_AD_TERM_BIT, SGM_FEATURES_AD_TERM}},
-      {"FEATURES_RIGHT_PATH", {1u << Rtl::FEATURES_RIGHT_PATH_BIT, SGM_FEATURES_RIGHT_PATH}},
+      {"FEATURES_UNIQUENESS", {1u << Rtl::FEATURES_UNIQUENESS_LSB, SGM_FEATURES_UNIQUENESS}},
+      {"FEATURES_AD_TERM", {1u << Rtl::FEATURES_AD_TERM_LSB, SGM_FEATURES_AD_TERM}},
+      {"FEATURES_RIGHT_PATH", {1u << Rtl::FEATURES_RIGHT_PATH_LSB, SGM_FEATURES_RIGHT_PATH}},
       {"FEATURES_RIGHT_BLOCK", {uint32_t(Rtl::FEATURES_RIGHT_BLOCK_LSB), SGM_FEATURES_RIGHT_BLOCK_SHIFT}},
-      {"FEATURES_EDGE_RESET", {1u << Rtl::FEATURES_EDGE_RESET_BIT, SGM_FEATURES_EDGE_RESET}},
+      {"FEATURES_EDGE_RESET", {1u << Rtl::FEATURES_EDGE_RESET_LSB, SGM_FEATURES_EDGE_RESET}},
       {"EDGE_RESET_RESET", {Rtl::EDGE_RESET_RESET, kEdgeResetReset}},
       {"FEATURES_VALUE", {Rtl::FEATURES_VALUE, kFeatures}},
       {"PENALTY_RESET", {Rtl::PENALTY_RESET, kPenaltyReset}},
@@ -220,7 +220,7 @@ std::vector<RegisterSpec> registers() {
       {"LANES", SGM_REG_LANES, uint32_t(Rtl::LANES), 0},
       {"FEATURES", SGM_REG_FEATURES, kFeatures, 0},
       {"CTRL", SGM_REG_CTRL, 0, SGM_CTRL_MASK},
-      {"FRAME_SIZE", SGM_REG_FRAME_SIZE, 0, 0xFFFFFFFFu},
+      {"FRAME_SIZE", SGM_REG_FRAME_SIZE, 0, SGM_FRAME_SIZE_MASK},
       {"PENALTY", SGM_REG_PENALTY, kPenaltyReset, SGM_PENALTY_MASK},
       {"CONFIG", SGM_REG_CONFIG, kConfigReset, SGM_CONFIG_MASK},
       {"STATUS", SGM_REG_STATUS, 0, 0},
@@ -229,7 +229,7 @@ std::vector<RegisterSpec> registers() {
       {"ERROR_COUNT", SGM_REG_ERROR_COUNT, 0, 0},  // cleared by writes: its own test
       {"LAST_SIZE", SGM_REG_LAST_SIZE, 0, 0},
       {"EDGE_RESET", SGM_REG_EDGE_RESET, kEdgeResetReset, SGM_EDGE_RESET_MASK},
-      {"IRQ_ENABLE", SGM_REG_IRQ_ENABLE, 0, SGM_IRQ_MASK},
+      {"IRQ_ENABLE", SGM_REG_IRQ_ENABLE, 0, SGM_IRQ_ENABLE_MASK},
       {"IRQ_STATUS", SGM_REG_IRQ_STATUS, 0, 0},    // W1C: its own test
   };
 }
@@ -255,7 +255,7 @@ TEST(SgmAxi, SizeFitsAgreesWithTheCore) {
   ASSERT_TRUE(c.driver.identify(&id));
   EXPECT_EQ(id.lanes, uint32_t(Rtl::LANES));
   ASSERT_GE(id.minWidth, 16u);
-  const uint32_t w = id.minWidth, h = SGM_MIN_HEIGHT;
+  const uint32_t w = id.minWidth, h = SGM_FRAME_SIZE_HEIGHT_MIN;
   EXPECT_TRUE(drv::Driver::sizeFits(id, w, h));
   EXPECT_TRUE(drv::Driver::sizeFits(id, id.maxWidth, id.maxHeight));
   EXPECT_FALSE(drv::Driver::sizeFits(id, id.maxWidth + 1, h));
@@ -452,7 +452,7 @@ TEST(SgmAxi, HoldKeepsTheReleasedConfigurationUntilCleared) {
 // counters (cleared per byte lane), the error interrupt.
 TEST(SgmAxi, ErrorsAreStickyCountedAndClearedByWritingOne) {
   AxiCore c("sgm_axi_errors", 5, {0.1, 0.1});
-  c.driver.enableInterrupts(SGM_IRQ_ERROR);
+  c.driver.enableInterrupts(SGM_IRQ_ENABLE_ERROR);
   std::mt19937 rng(2);
   const int w = 36, h = 12;
   std::vector<FrameInput> frames = {scene(w, h, 10, defaults())};
@@ -496,7 +496,7 @@ TEST(SgmAxi, ErrorsAreStickyCountedAndClearedByWritingOne) {
   c.bus.write(SGM_REG_ERROR_COUNT, 0, 0x8);
   EXPECT_EQ(c.bus.read(SGM_REG_ERROR_COUNT).data, 0x00010101u);
   EXPECT_EQ(c.model().irq_o, 1) << "the interrupt stays until IRQ_STATUS is cleared";
-  c.driver.clearInterrupts(SGM_IRQ_ERROR);
+  c.driver.clearInterrupts(SGM_IRQ_STATUS_ERROR);
   EXPECT_EQ(c.model().irq_o, 0);
   c.driver.clearErrors();
   e = c.driver.errors();
@@ -511,18 +511,18 @@ TEST(SgmAxi, ErrorsAreStickyCountedAndClearedByWritingOne) {
 TEST(SgmAxi, FrameDoneInterruptRaisedMaskedAndCleared) {
   AxiCore c("sgm_axi_irq", 6);
   c.expectBitExact({scene(34, 10, 20, defaults())}, "first frame");
-  EXPECT_EQ(c.driver.interrupts(), uint32_t(SGM_IRQ_FRAME_DONE)) << "status is set whatever the enable";
+  EXPECT_EQ(c.driver.interrupts(), uint32_t(SGM_IRQ_STATUS_FRAME_DONE)) << "status is set whatever the enable";
   EXPECT_EQ(c.model().irq_o, 0) << "masked";
-  c.driver.enableInterrupts(SGM_IRQ_FRAME_DONE);
+  c.driver.enableInterrupts(SGM_IRQ_ENABLE_FRAME_DONE);
   EXPECT_EQ(c.model().irq_o, 1);
-  c.bus.write(SGM_REG_IRQ_STATUS, SGM_IRQ_FRAME_DONE, 0x0);  // no strobe: nothing cleared
+  c.bus.write(SGM_REG_IRQ_STATUS, SGM_IRQ_STATUS_FRAME_DONE, 0x0);  // no strobe: nothing cleared
   EXPECT_EQ(c.model().irq_o, 1);
-  c.driver.clearInterrupts(SGM_IRQ_FRAME_DONE);
+  c.driver.clearInterrupts(SGM_IRQ_STATUS_FRAME_DONE);
   EXPECT_EQ(c.model().irq_o, 0);
   EXPECT_EQ(c.driver.interrupts(), 0u);
   c.expectBitExact({scene(40, 12, 21, defaults())}, "second frame");
   EXPECT_EQ(c.model().irq_o, 1);
-  EXPECT_EQ(c.driver.interrupts(), uint32_t(SGM_IRQ_FRAME_DONE));
+  EXPECT_EQ(c.driver.interrupts(), uint32_t(SGM_IRQ_STATUS_FRAME_DONE));
   c.driver.enableInterrupts(0);
   EXPECT_EQ(c.model().irq_o, 0);
   EXPECT_EQ(c.driver.framesDone(), 2u);
