@@ -40,6 +40,10 @@ EVAL_OBJ   := $(patsubst %.cpp,$(OBJ)/%.o,$(EVAL_SRC))
 TEST_SRC   := $(wildcard tests/*.cpp)
 TEST_OBJ   := $(patsubst %.cpp,$(OBJ)/%.o,$(TEST_SRC))
 
+# One definition of a core build (sgm_top's parameters, their defaults, the tag that names
+# a build, its Verilator and Yosys flags, its meta.txt) for every flow (scripts/build.mk).
+include scripts/build.mk
+
 .PHONY: all help deps check-tools golden eval eval-ci bench-golden test unit-test rtl-tests sim sim-ci synth lint clean
 .DEFAULT_GOAL := all
 
@@ -75,7 +79,7 @@ help:
 include scripts/deps.mk
 # Fragments add their own targets; each appends the targets CI must run to
 # TEST_EXTRA (run by `make test` after the GoogleTest binaries).
-TEST_EXTRA := sim-ci eval-ci
+TEST_EXTRA := build-defaults-check sim-ci eval-ci
 # `make synth` and its reports (synth/synth.mk, when present).
 -include synth/synth.mk synth/axi.mk
 # `make eval-pool`, `make eval-pool-ci`: accuracy on the scene pool (tools/pool.mk).
@@ -86,9 +90,17 @@ TEST_EXTRA := sim-ci eval-ci
 include regmap/regmap.mk
 
 # ---------------------------------------------------------------- golden model
-$(OBJ)/%.o: %.cpp $(GOLDEN_HDR) $(wildcard tools/*.hpp tests/*.hpp) | check-tools
+# Each object depends on the headers it includes: the compiler writes them into its .d
+# file (-MMD: project headers, not system ones; -MP: a removed header does not stop make).
+# An object without its .d file (not built since) is rebuilt: the empty rule makes a missing
+# .d a target that is always out of date.
+$(OBJ)/%.o: %.cpp $(OBJ)/%.d | check-tools
 	@mkdir -p $(dir $@)
-	$(CXX) $(CXXFLAGS) $(OPENCV_CFLAGS) -c $< -o $@
+	$(CXX) $(CXXFLAGS) $(OPENCV_CFLAGS) -MMD -MP -c $< -o $@
+
+$(OBJ)/%.d: ;
+.PRECIOUS: $(OBJ)/%.d
+-include $(wildcard $(OBJ)/*/*.d $(OBJ)/*/*/*.d $(OBJ)/*/*/*/*.d)
 
 $(GOLDEN_LIB): $(GOLDEN_OBJ)
 	@mkdir -p $(dir $@)
@@ -107,25 +119,24 @@ golden: $(BIN)/sgm-golden $(BIN)/sgm-eval
 # ---------------------------------------------------------------- simulation
 # make sim [LEFT=... RIGHT=... [GT=...] [GT_SCALE=...]] [OUT=build/sim] [D=64] [MAX_WIDTH=1280]
 #          [STALL=0.0] [SEED=1] [FRAMES=1] [TRACE=1] [PRESET=default|four-path|paper] [CENSUS=9x5|9x9] [LANES=1]
-#          [RIGHT_BLOCK=64 [RIGHT_WEIGHT=]]
+#          [RIGHT_BLOCK=64 [RIGHT_WEIGHT=]] [MAX_HEIGHT=1024] [UNIQUENESS=1] [AD_TERM=1] [EDGE_RESET=1]
 # The program is sim/sgm_sim.cpp; CENSUS sets the core's census window (-GCENSUS_H),
 # PRESET=paper implies CENSUS=9x9 and runs sgm-sim --preset paper. LANES = K row lanes
 # (-GLANES, docs/reschedule.md; also taken by make synth). RIGHT_BLOCK = B builds the
 # fifth path in blocks of B (-GRIGHT_BLOCK; 0: none; default 64, 0 with PRESET=paper or
-# four-path; the binary is named -rbB when B is not 64); the build runs its defaults
-# (sgm::buildDefaults: with the fifth path ours in its blocks, without it the four-path
-# preset); RIGHT_WEIGHT = W5 sets the weight (--right-path W5 --right-block B).
+# four-path); the build runs its defaults (sgm::buildDefaults: with the fifth path ours in
+# its blocks, without it the four-path preset); RIGHT_WEIGHT = W5 sets the weight
+# (--right-path W5 --right-block B). The knobs and their defaults are scripts/build.mk's;
+# the binary is build/bin/sgm-sim-<tag>[-trace] (the tag of scripts/build.mk, e.g.
+# sgm-sim-d64-w1280, sgm-sim-d64-w1280-c9x9-rb0 for PRESET=paper), its parameters in
+# build/verilator/<binary>/meta.txt and, after a run, in OUT/meta.txt.
 OUT       ?= $(BUILD)/sim
-D         ?= 64
-MAX_WIDTH ?= 1280
-MAX_HEIGHT ?= 1024
-LANES     ?= 1
-RIGHT_BLOCK ?= $(if $(filter paper four-path,$(PRESET)),0,64)
 RIGHT_WEIGHT ?=
 PRESET    ?=
-CENSUS    ?= $(if $(filter paper,$(PRESET)),9x9,9x5)
-CENSUS_H   = $(if $(filter 9x9,$(CENSUS)),9,$(if $(filter 9x5,$(CENSUS)),5,$(error CENSUS=$(CENSUS): expected 9x5 or 9x9)))
-SIM_BIN    = $(BIN)/sgm-sim-d$(D)-w$(MAX_WIDTH)$(if $(filter-out 1024,$(MAX_HEIGHT)),-h$(MAX_HEIGHT))$(if $(filter 9,$(CENSUS_H)),-c9x9)$(if $(filter-out 1,$(LANES)),-k$(LANES))$(if $(filter-out 64,$(RIGHT_BLOCK)),-rb$(RIGHT_BLOCK))$(if $(filter 1,$(TRACE)),-trace)
+SIM_CORE   = $(CORE)
+SIM_BIN    = $(BIN)/sgm-sim-$(call core_tag,$(SIM_CORE))$(if $(filter 1,$(TRACE)),-trace)
+# Suffixes a binary name may add to the tag (make bench adds its variants).
+SIM_BIN_SUFFIXES := trace
 SIM_ARGS   = --out $(OUT) --d $(D) $(if $(PRESET),--preset $(PRESET)) $(if $(filter 9,$(CENSUS_H)),--census 9x9) \
              $(if $(LEFT),--left $(LEFT)) $(if $(RIGHT),--right $(RIGHT)) \
              $(if $(GT),--gt $(GT)) $(if $(GT_SCALE),--gt-scale $(GT_SCALE)) $(if $(STALL),--stall $(STALL)) \
@@ -133,17 +144,24 @@ SIM_ARGS   = --out $(OUT) --d $(D) $(if $(PRESET),--preset $(PRESET)) $(if $(fil
              $(if $(RIGHT_WEIGHT),--right-path $(RIGHT_WEIGHT) --right-block $(RIGHT_BLOCK))
 SIM_VFLAGS = -O3 --x-assign fast --x-initial fast
 
+# Any build/bin/sgm-sim-<tag>[-suffix] builds the core of SIM_CORE; the recipe stops unless
+# the name is that build's tag (make build/bin/sgm-sim-d16-w128 D=16 MAX_WIDTH=128).
 $(BIN)/sgm-sim-d%: sim/sgm_sim.cpp $(RTL_SRC) $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
+	@case $(notdir $@) in sgm-sim-$(call core_tag,$(SIM_CORE))$(subst $(core_space),,$(foreach x,$(SIM_BIN_SUFFIXES),|sgm-sim-$(call core_tag,$(SIM_CORE))-$(x)))) ;; \
+	   *) echo "$@: not the name of the build asked for (sgm-sim-$(call core_tag,$(SIM_CORE)): $(SIM_CORE))"; exit 1 ;; esac
 	@mkdir -p $(BIN) $(BUILD)/verilator
-	@echo "verilating sgm_top (D=$(D), MAX_WIDTH=$(MAX_WIDTH), census 9x$(CENSUS_H), LANES=$(LANES), RIGHT_BLOCK=$(RIGHT_BLOCK)) for $@"
+	@echo "verilating sgm_top ($(call core_gflags,$(SIM_CORE))) for $@"
 	@$(VERILATOR) --cc --exe --build -j $(JOBS) -Wall $(VLT) $(SIM_VFLAGS) $(VL_TRACE) -y rtl --top-module sgm_top \
-	  -GD=$(D) -GMAX_WIDTH=$(MAX_WIDTH) -GMAX_HEIGHT=$(MAX_HEIGHT) -GCENSUS_H=$(CENSUS_H) -GLANES=$(LANES) -GRIGHT_BLOCK=$(RIGHT_BLOCK) -Mdir $(BUILD)/verilator/$(notdir $@) -o $(abspath $@) \
+	  $(call core_gflags,$(SIM_CORE)) -Mdir $(BUILD)/verilator/$(notdir $@) -o $(abspath $@) \
 	  rtl/sgm_top.sv $(abspath sim/sgm_sim.cpp) $(abspath $(EVAL_OBJ)) $(abspath $(GOLDEN_LIB)) \
-	  -CFLAGS "$(VL_CFLAGS) -DSGM_D=$(D) -DSGM_MAX_WIDTH=$(MAX_WIDTH) -DSGM_MAX_HEIGHT=$(MAX_HEIGHT)" -LDFLAGS "$(OPENCV_LIBS) -pthread" \
+	  -CFLAGS "$(VL_CFLAGS) -DSGM_D=$(call core_get,$(SIM_CORE),D) -DSGM_MAX_WIDTH=$(call core_get,$(SIM_CORE),MAX_WIDTH) -DSGM_MAX_HEIGHT=$(call core_get,$(SIM_CORE),MAX_HEIGHT)" \
+	  -LDFLAGS "$(OPENCV_LIBS) -pthread" \
 	  > $(BUILD)/verilator-$(notdir $@).log || { tail -30 $(BUILD)/verilator-$(notdir $@).log; exit 1; }
+	@$(call core_meta_write,$(SIM_CORE),$(BUILD)/verilator/$(notdir $@)/meta.txt)
 
 sim: $(SIM_BIN)
 	TRACE=$(TRACE) $(SIM_BIN) $(SIM_ARGS)
+	@$(call core_meta_write,$(SIM_CORE),$(OUT)/meta.txt)
 
 # CI smoke of `make sim`: the default scene (Aloe) at D = 64 on a MAX_WIDTH = 512 build,
 # the same binary `make bench-ci` runs; sgm-sim exits non-zero unless bit-exact.

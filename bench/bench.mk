@@ -29,8 +29,12 @@ BENCH_VARIANTS  ?= fast threads2 checked
 BENCH_FLAGS_fast     = $(SIM_VFLAGS)
 BENCH_FLAGS_threads2 = $(SIM_VFLAGS) --threads 2
 BENCH_FLAGS_checked  = --x-assign unique --x-initial unique
-# The `fast` variant is the `make sim` build itself (same options, same binary name).
-BENCH_SIM        = $(BIN)/sgm-sim-d$(D)-w$(BENCH_MAX_WIDTH)$(if $(filter-out 1024,$(BENCH_MAX_HEIGHT)),-h$(BENCH_MAX_HEIGHT))$(if $(filter-out fast,$(1)),-$(1))
+# The build: make sim's (SIM_CORE, scripts/build.mk) at BENCH_MAX_WIDTH x BENCH_MAX_HEIGHT.
+# The `fast` variant is the `make sim` build itself (same options, same binary name,
+# sgm-sim-<tag>); the others are sgm-sim-<tag>-<variant>. build/bench/meta.txt records the build.
+BENCH_CORE       = $(SIM_CORE) MAX_WIDTH=$(BENCH_MAX_WIDTH) MAX_HEIGHT=$(BENCH_MAX_HEIGHT)
+BENCH_SIM        = $(BIN)/sgm-sim-$(call core_tag,$(BENCH_CORE))$(if $(filter-out fast,$(1)),-$(1))
+SIM_BIN_SUFFIXES += $(filter-out fast,$(BENCH_VARIANTS))
 BENCH_SCENES    ?= cones teddy sawtooth venus
 BENCH_ALOE      ?= 1
 BENCH_FRAMES    ?= 450x375 640x480 1280x720 1920x1080
@@ -59,7 +63,7 @@ $(BENCH_TOOL): bench/sgm_bench.cpp $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
 # One sgm-sim build per variant, through the main Makefile's sgm-sim rule.
 define bench_variant
 $(call BENCH_SIM,$(1)): $(RTL_SRC) sim/sgm_sim.cpp $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
-	@$$(MAKE) --no-print-directory BENCH_INNER=1 D=$(D) MAX_WIDTH=$(BENCH_MAX_WIDTH) MAX_HEIGHT=$(BENCH_MAX_HEIGHT) SIM_VFLAGS="$(BENCH_FLAGS_$(1))" $$@
+	@$$(MAKE) --no-print-directory BENCH_INNER=1 MAX_WIDTH=$(BENCH_MAX_WIDTH) MAX_HEIGHT=$(BENCH_MAX_HEIGHT) SIM_VFLAGS="$(BENCH_FLAGS_$(1))" $$@
 endef
 # (BENCH_INNER: the inner make builds with the pattern rule, not this one.)
 ifndef BENCH_INNER
@@ -70,6 +74,7 @@ bench: $(BENCH_TOOL) $(foreach v,$(BENCH_VARIANTS),$(call BENCH_SIM,$(v))) | che
 	@test -d "$(DATA)" || { echo "bench: DATA=$(DATA) not found: point DATA at the Middlebury scenes (README, 'Data')"; exit 1; }
 	@rm -rf $(BENCH_DIR) && mkdir -p $(BENCH_DIR)/rtl $(BENCH_DIR)/formats $(BENCH_DIR)/simspeed
 	@echo $(BENCH_MAX_WIDTH) > $(BENCH_DIR)/max_width.txt
+	@$(call core_meta_write,$(BENCH_CORE),$(BENCH_DIR)/meta.txt)
 	@set -e; sim=$(call BENCH_SIM,fast); \
 	 for s in $(BENCH_SCENES); do \
 	   if [ -f "$(DATA)/$$s/left.png" ]; then \

@@ -19,7 +19,11 @@
 #                       own default is 64, docs/accuracy-pool.md "Clock (decision)"),
 #                       and PNR_EDGE_RESET, the core's EDGE_RESET, default 1 with the fifth
 #                       path (the default build) and 0 without it (a four-path build resets
-#                       to the four-path preset, which leaves the restart off)
+#                       to the four-path preset, which leaves the restart off); PNR_MAX_HEIGHT
+#                       and PNR_CENSUS_H (sgm_top's defaults) complete the build, PNR_CORE
+#                       (scripts/build.mk): every parameter goes to Yosys, the run directory
+#                       is build/pnr/<tag>/lfe5u-<device>-<speed>/ (e.g. d64-w1024-k6-rb0-er0)
+#                       and its meta.txt records every parameter
 #   make pnr-summary    rebuild summary.{json,md} from what build/pnr holds
 #
 # Yosys and nextpnr run one at a time (flock on build/pnr/.lock, also under
@@ -30,7 +34,8 @@ PNR_D            ?= 64
 # 1024: the largest MAX_WIDTH whose memories fit the 208 EBR of the LFE5U-85F
 # at D = 64 (synth/README.md, "Place and route").
 PNR_MAX_WIDTH    ?= 1024
-PNR_MAX_HEIGHT   ?= 1024
+PNR_MAX_HEIGHT   ?= $(call core_default,MAX_HEIGHT)
+PNR_CENSUS_H     ?= $(call core_default,CENSUS_H)
 # Six lanes: the 0 degree recursion gets six slots, which is what a 125 MHz clock
 # at D = 64 needs (docs/rtl.md, the loop alone in `make pnr-loop`); one lane
 # (the paper's schedule, one slot) routed at 26.6 MHz at D = 16 on LFE5U-45F-6
@@ -41,8 +46,8 @@ PNR_AD_TERM      ?= 1
 PNR_RIGHT_BLOCK  ?= 0
 # The core's EDGE_RESET (the path restart at strong edges): built with the fifth path, as in
 # sgm_top's defaults; not in four-path builds, whose reset values (the four-path preset)
-# leave it off, so that `make pnr` and `make pnr-ci` keep their area. A run directory names
-# it (-er0, -er1) only where it differs from this default.
+# leave it off, so that `make pnr` and `make pnr-ci` keep their area. Like every parameter,
+# the tag of the run directory names it where it differs from sgm_top's default (-er0).
 PNR_EDGE_RESET_DEFAULT = $(if $(filter-out 0,$(PNR_RIGHT_BLOCK)),1,0)
 PNR_EDGE_RESET   ?= $(PNR_EDGE_RESET_DEFAULT)
 PNR_DEVICE       ?= 85k
@@ -131,7 +136,10 @@ PNR_BENCH_REPORT     := $(BUILD)/bench/report.json
 TEST_EXTRA += ecp5-cmp-check pnr-ci
 
 PNR_DIR     := $(BUILD)/pnr
-PNR_CFG      = $(PNR_DIR)/d$(PNR_D)-w$(PNR_MAX_WIDTH)$(if $(filter-out 1,$(PNR_LANES)),-k$(PNR_LANES))$(if $(filter 0,$(PNR_UNIQUENESS)),-u0)$(if $(filter 0,$(PNR_AD_TERM)),-ad0)$(if $(filter-out 0,$(PNR_RIGHT_BLOCK)),-rb$(PNR_RIGHT_BLOCK))$(if $(filter-out $(PNR_EDGE_RESET_DEFAULT),$(PNR_EDGE_RESET)),-er$(PNR_EDGE_RESET))
+# The build: PNR_D, PNR_MAX_WIDTH, ... PNR_EDGE_RESET (scripts/build.mk); pnr-ci's at its size.
+PNR_CORE     = $(call core_spec_of,PNR_)
+PNR_CI_CORE  = $(PNR_CORE) D=$(PNR_CI_D) MAX_WIDTH=$(PNR_CI_MAX_WIDTH) LANES=$(PNR_CI_LANES)
+PNR_CFG      = $(PNR_DIR)/$(call core_tag,$(PNR_CORE))
 PNR_DEVNAME  = LFE5U-$(subst k,F,$(PNR_DEVICE))
 PNR_RUN      = $(PNR_CFG)/lfe5u-$(subst k,f,$(PNR_DEVICE))-$(PNR_SPEED)
 PNR_LOCK     = $(PNR_DIR)/.lock
@@ -161,7 +169,7 @@ pnr-ci: pnr-tools $(PNR_SUMMARY)
 	 $(MAKE) --no-print-directory pnr-one PNR_D=$(PNR_CI_D) PNR_MAX_WIDTH=$(PNR_CI_MAX_WIDTH) PNR_LANES=$(PNR_CI_LANES) \
 	   PNR_DEVICE=$(PNR_CI_DEVICE) PNR_SPEED=$(PNR_CI_SPEED) PNR_FLAGS="$(PNR_CI_FLAGS)" && \
 	 $(MAKE) --no-print-directory pnr-summary \
-	   PNR_CHECK=d$(PNR_CI_D)-w$(PNR_CI_MAX_WIDTH)$(if $(filter-out 1,$(PNR_CI_LANES)),-k$(PNR_CI_LANES))/lfe5u-$(subst k,f,$(PNR_CI_DEVICE))-$(PNR_CI_SPEED) && \
+	   PNR_CHECK=$(call core_tag,$(PNR_CI_CORE))/lfe5u-$(subst k,f,$(PNR_CI_DEVICE))-$(PNR_CI_SPEED) && \
 	 echo "pnr-ci: OK ($$(( $$(date +%s) - start )) s)"
 
 pnr-one: $(PNR_RUN)/done
@@ -197,10 +205,10 @@ $(PNR_SUMMARY): synth/pnr_summary.cpp tools/report_json.cpp tools/report_json.hp
 # Synthesis of one configuration: the hierarchical netlist of the whole core.
 $(PNR_CFG)/synth/done: $(PNR_DEPS) | pnr-tools
 	@rm -rf $(@D) && mkdir -p $(@D)
-	@echo "pnr: synth_ecp5, D=$(PNR_D) MAX_WIDTH=$(PNR_MAX_WIDTH) LANES=$(PNR_LANES) (log: $(@D)/yosys.log)"
+	@echo "pnr: synth_ecp5, $(PNR_CORE) (log: $(@D)/yosys.log)"
 	@start=$$(date +%s); \
-	 SYNTH_RTL=rtl SYNTH_D=$(PNR_D) SYNTH_MAX_WIDTH=$(PNR_MAX_WIDTH) SYNTH_MAX_HEIGHT=$(PNR_MAX_HEIGHT) SYNTH_LANES=$(PNR_LANES) SYNTH_OUT=$(@D) \
-	   SYNTH_UNIQUENESS=$(PNR_UNIQUENESS) SYNTH_AD_TERM=$(PNR_AD_TERM) SYNTH_RIGHT_BLOCK=$(PNR_RIGHT_BLOCK) SYNTH_EDGE_RESET=$(PNR_EDGE_RESET) SYNTH_ECP5_FLAGS="$(PNR_SYNTH_FLAGS)" SYNTH_DEFINES="$(PNR_DEFINES)" SYNTH_ECP5_CMP_LUT=$(PNR_CMP_LUT) SYNTH_ECP5_CMP_CHAIN="$(PNR_CMP_CHAIN)" \
+	 SYNTH_RTL=rtl $(call core_env,$(PNR_CORE),SYNTH_) SYNTH_OUT=$(@D) \
+	   SYNTH_ECP5_FLAGS="$(PNR_SYNTH_FLAGS)" SYNTH_DEFINES="$(PNR_DEFINES)" SYNTH_ECP5_CMP_LUT=$(PNR_CMP_LUT) SYNTH_ECP5_CMP_CHAIN="$(PNR_CMP_CHAIN)" \
 	   flock $(PNR_LOCK) timeout $(PNR_TIMEOUT) nice -n $(PNR_NICE) yosys -q -l $(@D)/yosys.log -c synth/ecp5.tcl \
 	   > $(@D)/yosys.out 2>&1; rc=$$?; \
 	 if [ $$rc != 0 ]; then echo "pnr: Yosys failed (exit $$rc):"; grep -E '^ERROR' $(@D)/yosys.log | tail -5; exit 1; fi; \
@@ -247,7 +255,7 @@ define pnr_route
 endef
 
 $(PNR_RUN)/done: $(PNR_CFG)/synth/done | pnr-tools
-	$(call pnr_route,$(PNR_CFG),D=$(PNR_D) MAX_WIDTH=$(PNR_MAX_WIDTH) LANES=$(PNR_LANES),echo "kind=core"; echo "d=$(PNR_D)"; echo "max_width=$(PNR_MAX_WIDTH)"; echo "lanes=$(PNR_LANES)"; echo "right_block=$(PNR_RIGHT_BLOCK)"; echo "edge_reset=$(PNR_EDGE_RESET)";)
+	$(call pnr_route,$(PNR_CFG),$(PNR_CORE),echo "kind=core"; $(call core_meta,$(PNR_CORE)))
 
 # ------------------------------------------------------------------ the loop alone
 # `make pnr-loop`: the 0 degree recursion alone (synth/sgm_path_loop.sv, the loop

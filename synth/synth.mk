@@ -4,6 +4,7 @@
 # the flow, the outputs and the figures).
 #
 #   make synth [D=64] [MAX_WIDTH=1280] [CENSUS=9x5|9x9] [LANES=1] [UNIQUENESS=1] [AD_TERM=1] [RIGHT_BLOCK=64]
+#              [MAX_HEIGHT=1024] [EDGE_RESET=1]
 #                                        xc7, xc6s, generic and iCE40 synthesis of
 #                                        that configuration (CENSUS=9x9: the paper's
 #                                        census window, sgm_top's CENSUS_H = 9), the
@@ -25,17 +26,16 @@
 #
 # UNIQUENESS=0 / AD_TERM=0 build the core without the uniqueness ratio / the AD term
 # (sgm_top's build parameters, docs/rtl.md "Build parameters"); the default 1 builds them.
+# The knobs are `make sim`'s, with the same defaults (scripts/build.mk); the build is
+# SYNTH_CORE, passed whole to Yosys (every sgm_top parameter, chparam in synth/common.tcl),
+# its results in build/synth/<tag>/<target>/ (the tag of scripts/build.mk, e.g. d64-w1280)
+# with every parameter in meta.txt.
 #
 # Yosys and nextpnr run one at a time (flock on build/synth/.lock, also under
 # make -j), each under `timeout $(SYNTH_TIMEOUT)`. The results depend on rtl/*.sv and
 # synth/*.tcl; after changing an option here, `make synth-clean` (or delete the
 # target directory) to rerun.
 
-# The same variables and defaults as `make sim` (the main Makefile sets them
-# after including this file).
-D                 ?= 64
-MAX_WIDTH         ?= 1280
-SYNTH_MAX_HEIGHT  ?= 1024
 SYNTH_TARGETS     ?= xc7 xc6s generic ice40
 SYNTH_TIMEOUT     ?= 10800
 SYNTH_CI_D        ?= 16
@@ -50,15 +50,14 @@ ICE40_FREQ        ?= 100
 ICE40_SEED        ?= 1
 
 SYNTH_DIR    := $(BUILD)/synth
-SYNTH_CENSUS ?= $(if $(CENSUS),$(CENSUS),9x5)
-SYNTH_CENSUS_H = $(if $(filter 9x9,$(SYNTH_CENSUS)),9,$(if $(filter 9x5,$(SYNTH_CENSUS)),5,$(error CENSUS=$(SYNTH_CENSUS): expected 9x5 or 9x9)))
-SYNTH_LANES  ?= $(if $(LANES),$(LANES),1)
 comma := ,
-SYNTH_UNIQUENESS ?= $(if $(UNIQUENESS),$(UNIQUENESS),1)
-SYNTH_AD_TERM    ?= $(if $(AD_TERM),$(AD_TERM),1)
-SYNTH_RIGHT_BLOCK ?= $(if $(RIGHT_BLOCK),$(RIGHT_BLOCK),64)
-SYNTH_CFG     = d$(D)-w$(MAX_WIDTH)$(if $(filter 9,$(SYNTH_CENSUS_H)),-c9x9)$(if $(filter-out 1,$(SYNTH_LANES)),-k$(SYNTH_LANES))$(if $(filter 0,$(SYNTH_UNIQUENESS)),-u0)$(if $(filter 0,$(SYNTH_AD_TERM)),-ad0)$(if $(filter-out 0,$(SYNTH_RIGHT_BLOCK)),-rb$(SYNTH_RIGHT_BLOCK))
+SYNTH_CORE    = $(CORE)
+synth_get     = $(call core_get,$(SYNTH_CORE),$(1))
+SYNTH_CENSUS  = 9x$(call synth_get,CENSUS_H)
+SYNTH_CFG     = $(call core_tag,$(SYNTH_CORE))
 SYNTH_OUT     = $(SYNTH_DIR)/$(SYNTH_CFG)
+# The configuration synth-ci builds and checks.
+SYNTH_CI_CORE = $(SYNTH_CORE) D=$(SYNTH_CI_D) MAX_WIDTH=$(SYNTH_CI_MAX_WIDTH)
 SYNTH_LOOP    = $(SYNTH_DIR)/ice40-loop-d$(ICE40_LOOP_D)
 SYNTH_LOCK    = $(SYNTH_DIR)/.lock
 SYNTH_SUMMARY = $(BIN)/synth-summary
@@ -76,12 +75,12 @@ synth-help:
 
 synth: $(foreach t,$(SYNTH_TARGETS),$(SYNTH_OUT)/$(t)/done) $(SYNTH_LOOP)/done $(SYNTH_SUMMARY) | check-tools
 	@$(SYNTH_SUMMARY) $(SYNTH_DIR)
-	@awk '/^## D = $(D), MAX_WIDTH = $(MAX_WIDTH), census $(SYNTH_CENSUS)$(if $(filter 0,$(SYNTH_UNIQUENESS)),$(comma) UNIQUENESS = 0)$(if $(filter 0,$(SYNTH_AD_TERM)),$(comma) AD_TERM = 0)$(if $(filter-out 0,$(SYNTH_RIGHT_BLOCK)),$(comma) RIGHT_BLOCK = $(SYNTH_RIGHT_BLOCK)) /{f=1} f && /^\*\*Path buffers/{exit} f' $(SYNTH_DIR)/summary.md
+	@awk '/^## D = $(call synth_get,D), MAX_WIDTH = $(call synth_get,MAX_WIDTH), census $(SYNTH_CENSUS)$(if $(filter 0,$(call synth_get,UNIQUENESS)),$(comma) UNIQUENESS = 0)$(if $(filter 0,$(call synth_get,AD_TERM)),$(comma) AD_TERM = 0)$(if $(filter-out 0,$(call synth_get,RIGHT_BLOCK)),$(comma) RIGHT_BLOCK = $(call synth_get,RIGHT_BLOCK)) /{f=1} f && /^\*\*Path buffers/{exit} f' $(SYNTH_DIR)/summary.md
 
 synth-ci: $(SYNTH_SUMMARY) | check-tools
 	@$(MAKE) --no-print-directory D=$(SYNTH_CI_D) MAX_WIDTH=$(SYNTH_CI_MAX_WIDTH) synth-xc7
 	@$(MAKE) --no-print-directory synth-ice40-loop
-	@$(SYNTH_SUMMARY) $(SYNTH_DIR) --check d$(SYNTH_CI_D)-w$(SYNTH_CI_MAX_WIDTH)$(if $(filter-out 0,$(SYNTH_RIGHT_BLOCK)),-rb$(SYNTH_RIGHT_BLOCK))/xc7 --check ice40-loop-d$(ICE40_LOOP_D)
+	@$(SYNTH_SUMMARY) $(SYNTH_DIR) --check $(call core_tag,$(SYNTH_CI_CORE))/xc7 --check ice40-loop-d$(ICE40_LOOP_D)
 	@test -s $(SYNTH_DIR)/summary.json && test -s $(SYNTH_DIR)/summary.md || \
 	  { echo "synth-ci: FAIL: $(SYNTH_DIR)/summary.json or summary.md missing or empty"; exit 1; }
 	@echo "synth-ci: OK ($(SYNTH_DIR)/summary.json, $(SYNTH_DIR)/summary.md)"
@@ -107,16 +106,16 @@ $(SYNTH_SUMMARY): synth/synth_summary.cpp | check-tools
 # configuration in the environment, then write $(@D)/meta.txt and the stamp.
 define synth_yosys
 	@rm -rf $(@D) && mkdir -p $(@D)
-	@echo "synth: $(1), D=$(D) MAX_WIDTH=$(MAX_WIDTH) census $(SYNTH_CENSUS) (log: $(@D)/yosys.log)"
+	@echo "synth: $(1), $(SYNTH_CORE) (log: $(@D)/yosys.log)"
 	@start=$$(date +%s); \
 	 commit=$$(git log -1 --format=%h -- rtl 2>/dev/null)$$(git status --porcelain -- rtl 2>/dev/null | grep -q . && echo -dirty); \
-	 SYNTH_RTL=rtl SYNTH_D=$(D) SYNTH_MAX_WIDTH=$(MAX_WIDTH) SYNTH_MAX_HEIGHT=$(SYNTH_MAX_HEIGHT) SYNTH_CENSUS_H=$(SYNTH_CENSUS_H) SYNTH_LANES=$(SYNTH_LANES) SYNTH_UNIQUENESS=$(SYNTH_UNIQUENESS) SYNTH_AD_TERM=$(SYNTH_AD_TERM) SYNTH_RIGHT_BLOCK=$(SYNTH_RIGHT_BLOCK) SYNTH_OUT=$(@D) $(3) \
+	 SYNTH_RTL=rtl $(call core_env,$(SYNTH_CORE),SYNTH_) SYNTH_OUT=$(@D) $(3) \
 	   flock $(SYNTH_LOCK) timeout $(SYNTH_TIMEOUT) yosys -q -l $(@D)/yosys.log -c $(2) > $(@D)/yosys.out 2>&1; rc=$$?; \
 	 if [ $$rc != 0 ]; then \
 	   if [ $$rc = 124 ]; then echo "synth: $(1): Yosys timed out after $(SYNTH_TIMEOUT) s (SYNTH_TIMEOUT)"; \
 	   else echo "synth: $(1): Yosys failed (exit $$rc):"; grep -E '^ERROR' $(@D)/yosys.log | tail -5; fi; exit 1; fi; \
-	 { echo "target=$(1)"; echo "d=$(D)"; echo "max_width=$(MAX_WIDTH)"; echo "max_height=$(SYNTH_MAX_HEIGHT)"; echo "census=$(SYNTH_CENSUS)"; \
-	   echo "uniqueness=$(SYNTH_UNIQUENESS)"; echo "ad_term=$(SYNTH_AD_TERM)"; echo "right_block=$(SYNTH_RIGHT_BLOCK)"; echo "yosys=$$(yosys -V)"; echo "rtl_commit=$$commit"; \
+	 { echo "target=$(1)"; $(call core_meta,$(SYNTH_CORE)) echo "census=$(SYNTH_CENSUS)"; \
+	   echo "yosys=$$(yosys -V)"; echo "rtl_commit=$$commit"; \
 	   echo "date=$$(date -u +%Y-%m-%dT%H:%M:%SZ)"; echo "seconds=$$(( $$(date +%s) - start ))"; } > $(@D)/meta.txt; \
 	 echo "synth: $(1) done in $$(( $$(date +%s) - start )) s"
 	@touch $@

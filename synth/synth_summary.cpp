@@ -4,7 +4,7 @@
 //
 //   synth-summary ROOT [--check CONFIG/TARGET]...
 //
-// ROOT holds one directory per configuration, d<D>-w<MAX_WIDTH>[-c9x9][-k<LANES>][-u0][-ad0][-rb<B>], with one
+// ROOT holds one directory per configuration, named by its build tag (scripts/build.mk), with one
 // directory per target (xc7, xc6s, generic, ice40) written by synth/*.tcl,
 // and ice40-loop-d<D> directories (the routed loop harness). Every target
 // directory has a meta.txt (key=value, written by synth/synth.mk) and is
@@ -850,7 +850,7 @@ int main(int argc, char **argv) {
   }
   std::vector<Target> targets;
   std::vector<Loop> loops;
-  static const std::regex cfgRe(R"(d[0-9]+-w[0-9]+(-c9x9)?(-k[0-9]+)?(-u0)?(-ad0)?(-rb[0-9]+)?)");
+  static const std::regex cfgRe(R"(d[0-9]+-w[0-9]+(-h[0-9]+)?(-c9x[0-9]+)?(-k[0-9]+)?(-u[0-9]+)?(-ad[0-9]+)?(-rb[0-9]+)?(-er[0-9]+)?)");
   static const std::regex loopRe(R"(ice40-loop-d[0-9]+)");
   for (auto &cfg : listDir(root)) {
     std::string p = root + "/" + cfg;

@@ -16,10 +16,12 @@ COV_VFLAGS   := --coverage-line --coverage-toggle
 COV_SUMMARY  := $(BIN)/coverage-summary
 COV_REGRESS_FRAMES ?= 120
 COV_REGRESS_SEED   ?= 1
-# The regression (tests/regress.mk) built the same way, D = 16.
-COV_REGRESS_BIN    := $(BIN)/cov-regress-d16-w128
+# The regression (tests/regress.mk) built the same way, D = 16: cov-regress-<tag> (scripts/build.mk);
+# build/coverage/meta.txt records its build.
+COV_REGRESS_CORE   := D=16 MAX_WIDTH=128
+COV_REGRESS_BIN    := $(BIN)/cov-regress-$(call core_tag,$(COV_REGRESS_CORE))
 COV_REGRESS_ARGS    = --seed $(COV_REGRESS_SEED) --frames $(COV_REGRESS_FRAMES) --max-height 40 --quiet
-$(eval $(call regress_build,$(COV_REGRESS_BIN),16,128,$(COV_VFLAGS)))
+$(eval $(call regress_build,$(COV_REGRESS_BIN),$(COV_REGRESS_CORE),$(COV_VFLAGS)))
 
 # The coverage variants: the fixtures of COV_FIXTURES built again, with the same
 # top and options as their `make rtl-tests` builds (the rtl_test macro records
@@ -52,6 +54,7 @@ $(COV_SUMMARY): tests/coverage/coverage_summary.cpp | check-tools
 
 coverage: $(COV_TEST_BINS) $(COV_SUMMARY) $(COV_REGRESS_BIN) | check-tools
 	@rm -rf $(COV_DIR) && mkdir -p $(COV_DIR)/data $(COV_DIR)/results
+	@$(call core_meta_write,$(COV_REGRESS_CORE),$(COV_DIR)/meta.txt)
 	@set -e; for t in $(COV_TEST_BINS); do echo "== $$t"; \
 	  SGM_COVERAGE_DIR=$(COV_DIR)/data SGM_DATA="$(DATA)" $$t --gtest_brief=1 \
 	    --gtest_output=xml:$(COV_DIR)/results/$$(basename $$t).xml > $(COV_DIR)/results/$$(basename $$t).log \

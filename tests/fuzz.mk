@@ -15,19 +15,15 @@ FUZZ_TOOL_RUNS    ?= 100
 FUZZ_CI_SEED      ?= 1
 FUZZ_CI_ITERS     ?= 3000
 FUZZ_CI_TOOL_RUNS ?= 20
-FUZZ_SIM          := sgm-sim-d16-w128
-FUZZ_HDR          := $(wildcard tests/fuzz/*.hpp)
+FUZZ_CORE         := D=16 MAX_WIDTH=128
+FUZZ_SIM          := sgm-sim-$(call core_tag,$(FUZZ_CORE))
 
 .PHONY: fuzz fuzz-ci
 
-# tests/*.cpp and tests/fuzz/*.cpp include the tests/fuzz/ headers.
-$(TEST_OBJ) $(OBJ)/tests/fuzz/fuzz_main.o $(OBJ)/tests/fuzz/test_sim_cli.o: $(FUZZ_HDR)
-
-# The small simulator build the bad-input tests run: D = 16, MAX_WIDTH = 128, MAX_HEIGHT = 1024,
-# whatever the command line says.
-$(BIN)/$(FUZZ_SIM): override D := 16
-$(BIN)/$(FUZZ_SIM): override MAX_WIDTH := 128
-$(BIN)/$(FUZZ_SIM): override MAX_HEIGHT := 1024
+# The small simulator build the bad-input tests run (tests/fuzz/test_sim_cli.cpp names it):
+# D = 16, MAX_WIDTH = 128, sgm_top's defaults otherwise (scripts/build.mk), whatever the
+# command line says.
+$(BIN)/$(FUZZ_SIM): override SIM_CORE = $(FUZZ_CORE)
 
 $(BIN)/sgm-fuzz: $(OBJ)/tests/fuzz/fuzz_main.o $(EVAL_OBJ) $(GOLDEN_LIB)
 	@mkdir -p $(dir $@)

@@ -11,9 +11,12 @@
 #   make regress-ci                               the fixed seeded slices CI runs
 #                                                 (one lane, and 2 lanes)
 #
-# $(call regress_build,BINARY,D,MAX_WIDTH,EXTRA-VERILATOR-FLAGS) adds the rule of
-# one regression binary (its own -Mdir under build/verilator/), e.g. a --coverage
-# variant in another directory.
+# $(call regress_build,BINARY,CORE,EXTRA-VERILATOR-FLAGS) adds the rule of one regression
+# binary of the build CORE (a spec of scripts/build.mk, e.g. "D=16 MAX_WIDTH=128 LANES=2";
+# every parameter passed, the rest at sgm_top's defaults) with its own -Mdir under
+# build/verilator/ holding its meta.txt, e.g. a --coverage variant in another directory.
+# The binaries are named sgm-regress-<tag> (REGRESS_MAX_HEIGHT is the frames' height at run
+# time, not the build's MAX_HEIGHT).
 
 REGRESS_D          ?= 16
 REGRESS_MAX_WIDTH  ?= 128
@@ -25,29 +28,33 @@ REGRESS_CASE       ?=
 REGRESS_CI_SEED    ?= 1
 REGRESS_CI_FRAMES  ?= 300
 REGRESS_VFLAGS     ?= -O3 --x-assign unique --x-initial unique
-REGRESS_BIN         = $(BIN)/sgm-regress-d$(REGRESS_D)-w$(REGRESS_MAX_WIDTH)$(if $(filter-out 1,$(REGRESS_LANES)),-k$(REGRESS_LANES))
-REGRESS_CI_BIN     := $(BIN)/sgm-regress-d16-w128
-REGRESS_CI_K2_BIN  := $(BIN)/sgm-regress-d16-w128-k2
+REGRESS_CORE        = D=$(REGRESS_D) MAX_WIDTH=$(REGRESS_MAX_WIDTH) LANES=$(REGRESS_LANES)
+REGRESS_CI_CORE    := D=16 MAX_WIDTH=128
+REGRESS_CI_K2_CORE := D=16 MAX_WIDTH=128 LANES=2
+REGRESS_BIN         = $(BIN)/sgm-regress-$(call core_tag,$(REGRESS_CORE))
+REGRESS_CI_BIN     := $(BIN)/sgm-regress-$(call core_tag,$(REGRESS_CI_CORE))
+REGRESS_CI_K2_BIN  := $(BIN)/sgm-regress-$(call core_tag,$(REGRESS_CI_K2_CORE))
 REGRESS_ARGS        = --max-height $(REGRESS_MAX_HEIGHT) $(if $(REGRESS_SEED),--seed $(REGRESS_SEED)) \
                       $(if $(REGRESS_CASE),--case $(REGRESS_CASE),--frames $(REGRESS_FRAMES))
 
 define regress_build
 $(1): tests/rtl/regress_main.cpp $(RTL_SRC) $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
 	@mkdir -p $(BIN) $(BUILD)/verilator
-	@echo "verilating sgm_top (D=$(2), MAX_WIDTH=$(3)) for $$@ (log: $(BUILD)/verilator-$$(notdir $$@).log)"
-	@$(VERILATOR) --cc --exe --build -j $(JOBS) -Wall $(VLT) $(REGRESS_VFLAGS) $(4) -y rtl --top-module sgm_top \
-	  -GD=$(2) -GMAX_WIDTH=$(3) -Mdir $(BUILD)/verilator/$$(notdir $$@) -o $$(abspath $$@) \
+	@echo "verilating sgm_top ($(call core_tag,$(2))) for $$@ (log: $(BUILD)/verilator-$$(notdir $$@).log)"
+	@$(VERILATOR) --cc --exe --build -j $(JOBS) -Wall $(VLT) $(REGRESS_VFLAGS) $(3) -y rtl --top-module sgm_top \
+	  $(call core_gflags,$(2)) -Mdir $(BUILD)/verilator/$$(notdir $$@) -o $$(abspath $$@) \
 	  rtl/sgm_top.sv $(abspath tests/rtl/regress_main.cpp) $(abspath $(EVAL_OBJ)) $(abspath $(GOLDEN_LIB)) \
 	  -CFLAGS "$(VL_CFLAGS)" -LDFLAGS "$(OPENCV_LIBS) -pthread" > $(BUILD)/verilator-$$(notdir $$@).log || \
 	  { tail -30 $(BUILD)/verilator-$$(notdir $$@).log; exit 1; }
+	@$(call core_meta_write,$(2),$(BUILD)/verilator/$$(notdir $$@)/meta.txt)
 endef
 
-$(eval $(call regress_build,$(REGRESS_BIN),$(REGRESS_D),$(REGRESS_MAX_WIDTH),-GLANES=$(REGRESS_LANES)))
+$(eval $(call regress_build,$(REGRESS_BIN),$(REGRESS_CORE),))
 ifneq ($(REGRESS_CI_BIN),$(REGRESS_BIN))
-$(eval $(call regress_build,$(REGRESS_CI_BIN),16,128,))
+$(eval $(call regress_build,$(REGRESS_CI_BIN),$(REGRESS_CI_CORE),))
 endif
 ifneq ($(REGRESS_CI_K2_BIN),$(REGRESS_BIN))
-$(eval $(call regress_build,$(REGRESS_CI_K2_BIN),16,128,-GLANES=2))
+$(eval $(call regress_build,$(REGRESS_CI_K2_BIN),$(REGRESS_CI_K2_CORE),))
 endif
 
 .PHONY: regress regress-ci

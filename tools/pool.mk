@@ -28,13 +28,14 @@ TEST_EXTRA += eval-pool-ci
 # sgm-sim compares every output pixel with the golden model and exits non-zero on the first
 # mismatch. Heavy: one whole-core Verilator build at D = 128 (not part of `make test`).
 POOL_RTL_SCENES ?= aloe kitti2015_000045
-POOL_RTL_SIM    := $(BIN)/sgm-sim-d128-w1280
+POOL_RTL_CORE   := D=128 MAX_WIDTH=1280
+POOL_RTL_SIM    := $(BIN)/sgm-sim-$(call core_tag,$(POOL_RTL_CORE))
 POOL_RTL_OUT    ?= $(BUILD)/eval-pool-rtl
 
 .PHONY: eval-pool-rtl
 eval-pool-rtl:
 	@if [ -d "$(POOL)" ]; then \
-	   $(MAKE) --no-print-directory D=128 MAX_WIDTH=1280 MAX_HEIGHT=1024 CENSUS=9x5 TRACE= $(POOL_RTL_SIM) && \
+	   $(MAKE) --no-print-directory SIM_CORE="$(POOL_RTL_CORE)" TRACE= $(POOL_RTL_SIM) && \
 	   for s in $(POOL_RTL_SCENES); do \
 	     echo "eval-pool-rtl: the core on $$s (D = 128)"; \
 	     $(POOL_RTL_SIM) --left "$(POOL)/$$s/left.png" --right "$(POOL)/$$s/right.png" --gt "$(POOL)/$$s/gt.png" \
