@@ -316,7 +316,7 @@ unit-test: $(BIN)/unit-tests golden
 # `make regress` (constrained-random regression), `make fuzz` (bad input), `make coverage`,
 # `make bench`: included here, after every variable and the rtl_test macro are defined.
 -include tests/regress.mk tests/fuzz.mk tests/coverage.mk bench/bench.mk tests/mutate/mutate.mk
--include tests/icarus.mk tests/fusesoc.mk
+-include tests/icarus.mk tests/fusesoc.mk tests/params.mk
 
 # `make test`: lint and every binary of the GoogleTest suites built $(JOBS) at a time, the suites
 # run one after another, then TEST_EXTRA in two streams (scripts/test-extra.sh): the targets of

@@ -52,6 +52,19 @@ module sgm_cost_pe #(
   output logic [CBITS-1:0]  cost_o
 );
 
+  // ------------------------------------------------------------ parameter checks
+  // An illegal parameter value stops elaboration with a message naming it ($error in
+  // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
+  // so its builds, of legal parameters only, leave the checks out).
+`ifndef __ICARUS__
+  if (!(NB == 44 || NB == 80)) begin : g_bad_nb
+    $error("sgm_cost_pe: NB = %0d: NB must be 44 or 80 (9 CENSUS_H - 1 census bits, CENSUS_H 5 or 9)", NB);
+  end
+  if (!(AD_TERM == 0 || AD_TERM == 1)) begin : g_bad_ad_term
+    $error("sgm_cost_pe: AD_TERM = %0d: AD_TERM must be 0 or 1", AD_TERM);
+  end
+`endif
+
   // The Hamming distance as the popcount's group counts (hamming = the weight-1
   // groups + 2 the weight-2 groups): stage A registers them, stage B sums them.
   localparam int G = ((NB + 2) / 3 + 5) / 6;  // groups per weight (sgm_popcount's G)

@@ -73,6 +73,28 @@ module sgm_edge_snap #(
   output logic          out_valid_o
 );
 
+  // ------------------------------------------------------------ parameter checks
+  // An illegal parameter value stops elaboration with a message naming it ($error in
+  // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
+  // so its builds, of legal parameters only, leave the checks out).
+`ifndef __ICARUS__
+  if (!(DW >= 5)) begin : g_bad_dw
+    $error("sgm_edge_snap: DW = %0d: DW must be at least 5 (4 fractional bits)", DW);
+  end
+  if (!(MAX_WIDTH >= 16)) begin : g_bad_max_width
+    $error("sgm_edge_snap: MAX_WIDTH = %0d: MAX_WIDTH must be at least 16 (frames are 16 or more pixels wide)", MAX_WIDTH);
+  end
+  if (!(CW >= $clog2(MAX_WIDTH + 1))) begin : g_bad_cw
+    $error("sgm_edge_snap: CW = %0d: CW must hold MAX_WIDTH = %0d (at least $clog2(MAX_WIDTH + 1) bits)", CW, MAX_WIDTH);
+  end
+  if (!(RW >= 4)) begin : g_bad_rw
+    $error("sgm_edge_snap: RW = %0d: RW must be at least 4 (a 9-row frame and its flush rows)", RW);
+  end
+  if (!(GRAY_ROWS >= 4 && (GRAY_ROWS & (GRAY_ROWS - 1)) == 0)) begin : g_bad_gray_rows
+    $error("sgm_edge_snap: GRAY_ROWS = %0d: GRAY_ROWS must be a power of two >= 4", GRAY_ROWS);
+  end
+`endif
+
   localparam int LATENCY_ROWS /*verilator public*/ = 0;
   localparam int LATENCY      /*verilator public*/ = 10;
 

@@ -142,6 +142,40 @@ module sgm_lr_check #(
   output logic             out_valid_o   // the slot carries a pixel of the frame
 );
 
+  // ------------------------------------------------------------ parameter checks
+  // An illegal parameter value stops elaboration with a message naming it ($error in
+  // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
+  // so its builds, of legal parameters only, leave the checks out).
+`ifndef __ICARUS__
+  if (!(D >= 16 && D <= 256 && (D & (D - 1)) == 0)) begin : g_bad_d
+    $error("sgm_lr_check: D = %0d: D must be a power of two from 16 to 256", D);
+  end
+  if (!(DW == $clog2(D) + 4)) begin : g_bad_dw
+    $error("sgm_lr_check: DW = %0d: DW must be $clog2(D) + 4 = %0d (the disparity and 4 fractional bits)", DW, $clog2(D) + 4);
+  end
+  if (!(MAX_WIDTH >= D && MAX_WIDTH >= 16)) begin : g_bad_max_width
+    $error("sgm_lr_check: MAX_WIDTH = %0d: MAX_WIDTH must be at least max(D, 16) (D = %0d)", MAX_WIDTH, D);
+  end
+  if (!(CW >= $clog2(MAX_WIDTH + 1))) begin : g_bad_cw
+    $error("sgm_lr_check: CW = %0d: CW must hold MAX_WIDTH = %0d (at least $clog2(MAX_WIDTH + 1) bits)", CW, MAX_WIDTH);
+  end
+  if (!(RW >= 2)) begin : g_bad_rw
+    $error("sgm_lr_check: RW = %0d: RW must be at least 2", RW);
+  end
+  if (!(SW >= 1)) begin : g_bad_sw
+    $error("sgm_lr_check: SW = %0d: SW must be at least 1", SW);
+  end
+  if (!(LANES >= 1)) begin : g_bad_lanes
+    $error("sgm_lr_check: LANES = %0d: LANES must be at least 1", LANES);
+  end
+  if (!(ROW_BANKS >= 2 && (ROW_BANKS & (ROW_BANKS - 1)) == 0)) begin : g_bad_row_banks
+    $error("sgm_lr_check: ROW_BANKS = %0d: ROW_BANKS must be a power of two >= 2", ROW_BANKS);
+  end
+  if (!(UNIQUENESS == 0 || UNIQUENESS == 1)) begin : g_bad_uniqueness
+    $error("sgm_lr_check: UNIQUENESS = %0d: UNIQUENESS must be 0 or 1", UNIQUENESS);
+  end
+`endif
+
   localparam int BW  = $clog2(ROW_BANKS);    // bank bits (row mod ROW_BANKS)
   localparam int MW  = ROW_BANKS * MAX_WIDTH; // words per memory
   localparam int MAW = $clog2(MW);

@@ -36,6 +36,16 @@ module sgm_popcount #(
   output logic [6*G-1:0]   groups_o
 );
 
+  // ------------------------------------------------------------ parameter checks
+  // An illegal parameter value stops elaboration with a message naming it ($error in
+  // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
+  // so its builds, of legal parameters only, leave the checks out).
+`ifndef __ICARUS__
+  if (!(N >= 2)) begin : g_bad_n
+    $error("sgm_popcount: N = %0d: N must be at least 2", N);
+  end
+`endif
+
   // {carry, sum} of three bits.
   function automatic [1:0] fa(input [2:0] v);
     fa = {(v[0] & v[1]) | (v[0] & v[2]) | (v[1] & v[2]), ^v};

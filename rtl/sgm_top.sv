@@ -142,6 +142,40 @@ module sgm_top #(
   output logic [XW-1:0] min_width_o
 );
 
+  // ------------------------------------------------------------ parameter checks
+  // An illegal parameter value stops elaboration with a message naming it ($error in
+  // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
+  // so its builds, of legal parameters only, leave the checks out).
+`ifndef __ICARUS__
+  if (!(D >= 16 && D <= 256 && (D & (D - 1)) == 0)) begin : g_bad_d
+    $error("sgm_top: D = %0d: D must be a power of two from 16 to 256", D);
+  end
+  if (!(MAX_WIDTH >= MIN_FRAME_WIDTH)) begin : g_bad_max_width
+    $error("sgm_top: MAX_WIDTH = %0d: MAX_WIDTH must be at least the narrowest frame, MIN_FRAME_WIDTH = %0d (max(D, 16, LANES SKEW + 1))", MAX_WIDTH, MIN_FRAME_WIDTH);
+  end
+  if (!(MAX_HEIGHT >= 9)) begin : g_bad_max_height
+    $error("sgm_top: MAX_HEIGHT = %0d: MAX_HEIGHT must be at least 9 (the narrowest frame has 9 rows)", MAX_HEIGHT);
+  end
+  if (!(CENSUS_H == 5 || CENSUS_H == 9)) begin : g_bad_census_h
+    $error("sgm_top: CENSUS_H = %0d: CENSUS_H must be 5 (the 9x5 census) or 9 (the 9x9)", CENSUS_H);
+  end
+  if (!(LANES >= 1)) begin : g_bad_lanes
+    $error("sgm_top: LANES = %0d: LANES must be at least 1", LANES);
+  end
+  if (!(UNIQUENESS == 0 || UNIQUENESS == 1)) begin : g_bad_uniqueness
+    $error("sgm_top: UNIQUENESS = %0d: UNIQUENESS must be 0 or 1", UNIQUENESS);
+  end
+  if (!(AD_TERM == 0 || AD_TERM == 1)) begin : g_bad_ad_term
+    $error("sgm_top: AD_TERM = %0d: AD_TERM must be 0 or 1", AD_TERM);
+  end
+  if (!(EDGE_RESET == 0 || EDGE_RESET == 1)) begin : g_bad_edge_reset
+    $error("sgm_top: EDGE_RESET = %0d: EDGE_RESET must be 0 or 1", EDGE_RESET);
+  end
+  if (!(RIGHT_BLOCK == 0 || (RIGHT_BLOCK >= 2 && (RIGHT_BLOCK & (RIGHT_BLOCK - 1)) == 0))) begin : g_bad_right_block
+    $error("sgm_top: RIGHT_BLOCK = %0d: RIGHT_BLOCK must be 0 (no fifth path) or a power of two >= 2", RIGHT_BLOCK);
+  end
+`endif
+
   assign min_width_o = XW'(MIN_FRAME_WIDTH);
 
   // ------------------------------------------------------------ control

@@ -88,6 +88,28 @@ module sgm_wta #(
   output logic             valid_o
 );
 
+  // ------------------------------------------------------------ parameter checks
+  // An illegal parameter value stops elaboration with a message naming it ($error in
+  // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
+  // so its builds, of legal parameters only, leave the checks out).
+`ifndef __ICARUS__
+  if (!(D >= 16 && D <= 256 && (D & (D - 1)) == 0)) begin : g_bad_d
+    $error("sgm_wta: D = %0d: D must be a power of two from 16 to 256", D);
+  end
+  if (!(SW >= 1)) begin : g_bad_sw
+    $error("sgm_wta: SW = %0d: SW must be at least 1", SW);
+  end
+  if (!(CW >= 1)) begin : g_bad_cw
+    $error("sgm_wta: CW = %0d: CW must be at least 1", CW);
+  end
+  if (!(RW >= 1)) begin : g_bad_rw
+    $error("sgm_wta: RW = %0d: RW must be at least 1", RW);
+  end
+  if (!(UNIQUENESS == 0 || UNIQUENESS == 1)) begin : g_bad_uniqueness
+    $error("sgm_wta: UNIQUENESS = %0d: UNIQUENESS must be 0 or 1", UNIQUENESS);
+  end
+`endif
+
   localparam int UF = UNIQUENESS != 0 ? 3 : 0;  // uniqueness fields of a node
   localparam int NW = (3 + UF) * SW + LD;  // tree node {exl, exf, sec, b, a, m, d} ({b, a, m, d} without them)
   localparam int UW = SW + 7;       // sec (100 - U) and 100 m: below 2^(SW+7)
