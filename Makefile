@@ -137,7 +137,8 @@ $(BIN)/sgm-sim-d%: sim/sgm_sim.cpp $(RTL_SRC) $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB
 	  -GD=$(D) -GMAX_WIDTH=$(MAX_WIDTH) -GMAX_HEIGHT=$(MAX_HEIGHT) -GCENSUS_H=$(CENSUS_H) -GLANES=$(LANES) -GRIGHT_BLOCK=$(RIGHT_BLOCK) -Mdir $(BUILD)/verilator/$(notdir $@) -o $(abspath $@) \
 	  rtl/sgm_top.sv $(abspath sim/sgm_sim.cpp) $(abspath $(EVAL_OBJ)) $(abspath $(GOLDEN_LIB)) \
 	  -CFLAGS "$(VL_CFLAGS) -DSGM_D=$(D) -DSGM_MAX_WIDTH=$(MAX_WIDTH) -DSGM_MAX_HEIGHT=$(MAX_HEIGHT)" -LDFLAGS "$(OPENCV_LIBS) -pthread" \
-	  > $(BUILD)/verilator-$(notdir $@).log || { tail -30 $(BUILD)/verilator-$(notdir $@).log; exit 1; }
+	  > $(BUILD)/verilator-$(notdir $@).log || { grep -E -- '-USER(ERROR|FATAL):' $(BUILD)/verilator-$(notdir $@).log || \
+	    tail -30 $(BUILD)/verilator-$(notdir $@).log; exit 1; }
 
 sim: $(SIM_BIN)
 	TRACE=$(TRACE) $(SIM_BIN) $(SIM_ARGS)
@@ -187,7 +188,7 @@ $(BIN)/rtl-$(1): $(if $(4),$(4),tests/rtl/test_$(2).cpp) $(RTL_SRC) $(RTL_TOPS) 
 	  -y rtl -y tb/tops --top-module $(2) $(3) -Mdir $(BUILD)/verilator/$(1) -o $(abspath $(BIN))/rtl-$(1) \
 	  $(wildcard rtl/$(2).sv tb/tops/$(2).sv) $(abspath $(if $(4),$(4),tests/rtl/test_$(2).cpp)) $(abspath $(EVAL_OBJ)) $(abspath $(GOLDEN_LIB)) \
 	  -CFLAGS "$(VL_CFLAGS)" -LDFLAGS "$(VL_LDFLAGS)" > $(BUILD)/verilator-$(1).log || \
-	  { tail -30 $(BUILD)/verilator-$(1).log; exit 1; }; \
+	  { grep -E -- '-USER(ERROR|FATAL):' $(BUILD)/verilator-$(1).log || tail -30 $(BUILD)/verilator-$(1).log; exit 1; }; \
 	  echo "time: build rtl-$(1) $$$$(( $$$$(date +%s) - s )) s"
 endef
 
