@@ -293,7 +293,7 @@ module sgm_census_unit #(
 
   // ------------------------------------------------------------ s4: rank's two weighted counts
   // rank = ones1 + 2 ones2 (sgm_popcount): the popcount with its final adder
-  // in one slot was the 5-lane core's critical path at 6b1d454 (9.4 ns on ECP5).
+  // in one slot would be the 5-lane core's critical path (9.4 ns on ECP5).
   logic [RKW-1:0] ones1, ones1_4q;
   logic [RKW-2:0] ones2, ones2_4q;
   logic [6*(((NB + 2) / 3 + 5) / 6)-1:0] rank_groups;  // sgm_popcount's group counts: not used here

@@ -16,7 +16,7 @@
 // Latency: 3 enabled cycles. Stage A registers the rank difference (signed),
 // the Hamming distance as the popcount's group counts (sgm_popcount groups_o:
 // the xor, the full adders and the 6:3 counters are the whole stage; with the
-// group sums behind them it was the LFE5U-85F five-lane core's critical path,
+// group sums behind them it would be the LFE5U-85F five-lane core's critical path,
 // 7.7 to 8.7 ns) and the out-of-image flag of the slot. Stage B selects by
 // mode_i, which belongs to stage B's slot (the slot entered one enabled cycle
 // earlier), and registers the three operands of the cost: the Hamming distance
@@ -97,7 +97,7 @@ module sgm_cost_pe #(
   // (below 2^CBITS: see the header). AD > T iff gray_R < gray_L - T or gray_R >
   // gray_L + T: the caller's gray_L -+ T make both tests one comparison each,
   // beside the differences rather than behind them (the difference, then its
-  // comparison with T, was the LFE5U-85F five-lane core's critical path at
+  // comparison with T, would be the LFE5U-85F five-lane core's critical path at
   // 8.1 ns).
   logic [CBITS-1:0] term_q;
   if (AD_TERM != 0) begin : g_ad

@@ -18,7 +18,7 @@
 //   P0    input registers (pixel, position, frame-pixel flag)
 //   P1    gray read of the P0 pixel (the block RAM's read register)
 //   P2    the gray registered again (the block RAM's clock-to-out, 4.3 ns on
-//         ECP5, in front of the step was the 5-lane core's critical path at
+//         ECP5, in front of the step would be the 5-lane core's critical path at
 //         108.9 MHz)
 //   W     a window along the stream, w[0] the newest; the pixel leaving is
 //         x = w[3], with x+1 .. x+3 in w[2] .. w[0]; x-1 and x-2 take part
@@ -30,7 +30,7 @@
 //   max   the maxima of the step candidates (one compare-select level on the
 //         pair maxima), the
 //         drops and x's fields, registered (the maxima and the comparison in
-//         one slot were the 5-lane core's critical path at 97.4 MHz)
+//         one slot would be the 5-lane core's critical path at 97.4 MHz)
 //   dec   the snapping decision (step comparisons), registered
 //   out   the selected disparity, output registers.
 // Parameters: DW disparity width (4 fractional bits), MAX_WIDTH, CW column /
@@ -148,7 +148,7 @@ module sgm_edge_snap #(
   // continues the row of n-1, else 0 (step(n) is 0 then, and n-1 is another
   // row's). Computed from w[0] and w[1] and shifted with them, so that the
   // maxima of the max stage are one compare-select level each (two levels
-  // there were the 5-lane core's critical path on ECP5, 8.0 ns at 124.5 MHz).
+  // there would be the 5-lane core's critical path on ECP5, 8.0 ns at 124.5 MHz).
   // wpm_q[j] is pm of w[j + 1].
   logic [4*9-1:0]   wpm_q;
 

@@ -17,7 +17,7 @@
 //     ends the run ("none" for a run reaching the end of the row).
 // At input slot (x, y + 1): read pixel (x, y); the slot after the next: read
 // its run-table entry (the pixel word registered once more in between: the
-// pixel memory's clock-to-out in front of the run table's address was the
+// pixel memory's clock-to-out in front of the run table's address would be the
 // 5-lane core's critical path on ECP5); then the entry is registered again and
 // the fill decided. The run table's writes are registered one slot (written at
 // the slot after their pixel), so that the read of row y's last pixel, which

@@ -12,7 +12,7 @@
 //   S side    s_i, col_i, row_i, last_i, valid_i (+ width_i, height_i): the
 //             slot stream; last_i flags the last column of a row, decided by
 //             the source a slot or more earlier (a register here: the column
-//             compare in front of the row tail's selects was the LFE5U-85F
+//             compare in front of the row tail's selects would be the LFE5U-85F
 //             five-lane core's critical path at 104.6 MHz). It also drives the
 //             output timing.
 //   WTA side  d_i, disp_i, unique_i with their own position wta_col_i / wta_row_i /
@@ -60,7 +60,7 @@
 //   R1o the memory's output register
 //   R2  xr = x - d; read dr_mem[bank (y-1) % 2][xr] when x >= d
 //   R2o the memory's output register (the block RAM's clock-to-out in front of
-//       the comparison was the 5-lane core's critical path at 101.8 MHz)
+//       the comparison would be the 5-lane core's critical path at 101.8 MHz)
 //   R3  valid = (!check_en || (x >= d && |dR - d| <= tol)) && unique; output registers.
 // Order of memory accesses (slot = S-side slot, a write at slot t is visible
 // to reads at slots > t):
@@ -251,8 +251,8 @@ module sgm_lr_check #(
   // ------------------------------------------------------------ row tail
   // width - (D - 1) registered with each slot, used from the next one on:
   // width_i is constant within a frame and the first slot of a row is never
-  // its last (width >= 16); the compare behind a subtractor was the 5-lane
-  // core's critical path at c9253c6 (8.8 ns on ECP5). The last column comes
+  // its last (width >= 16); the compare behind a subtractor would be the 5-lane
+  // core's critical path (8.8 ns on ECP5). The last column comes
   // with the slot (last_i).
   logic [CW-1:0] wmd_q;
   always_ff @(posedge clk_i) begin
@@ -275,7 +275,7 @@ module sgm_lr_check #(
   // is written at once (drw_data_q), entries 1 .. D-2 go to the shift register.
   // Loading from darg_p rather than from narg at the last column keeps the
   // diagonal's compare chain out of the tail's input selects (the LFE5U-85F
-  // five-lane fifth-path build's critical path at 28efeba, 8.4 ns).
+  // five-lane fifth-path build's critical path otherwise, 8.4 ns).
   wire tail_first = tail_cnt_p == LD'(D - 1);
 
   for (genvar k = 0; k < D - 1; k++) begin : g_tail

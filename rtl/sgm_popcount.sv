@@ -17,7 +17,7 @@
 // sgm_census_unit), and the group counts they are the sums of (groups_o:
 // count = sum of the G weight-1 groups + 2 sum of the G weight-2 groups), which
 // sgm_cost_pe registers instead: the xor, the full adders and the counters are
-// then its whole stage A (the group sums behind them were the LFE5U-85F
+// then its whole stage A (the group sums behind them would be the LFE5U-85F
 // five-lane core's critical path at 7.7 to 8.7 ns).
 //
 // Parameters: N input bits (>= 2); CNT_W = $clog2(N + 1) count bits;

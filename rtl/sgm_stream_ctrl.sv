@@ -212,7 +212,7 @@ module sgm_stream_ctrl #(
   // or 2; 3 is not a mode; uniqueness ratio 0 .. 99; Cmax of the mode (NB, or 2 NB
   // unified) + (W T) >> 3 within the cost word; no lever the build lacks) is done as the word is written and kept with it, so
   // that the start-of-frame decision reads one flag (its comparisons behind the
-  // entry's distributed RAM were the 5-lane core's critical path at 95.8 MHz).
+  // entry's distributed RAM would be the 5-lane core's critical path at 95.8 MHz).
   // The AD term's largest value (W T) >> 3 added to the mode's Cmax stays within
   // the cost word (the golden model's Params::validate, costLimit).
   localparam int CBITS = $clog2(2 * NB + 1);
@@ -288,7 +288,7 @@ module sgm_stream_ctrl #(
 
   // Row and column ends as flags kept beside the positions, so that no
   // comparison with the configuration sits between the positions and the FSM
-  // or the FIFO (the 5-lane core's critical path at 7d29a88). wm2_q and hm1_q
+  // or the FIFO (otherwise the 5-lane core's critical path). wm2_q and hm1_q
   // follow width_o / height_o one cycle later: those change only in IDLE, and
   // the first slot comes after FILL. last_col_q: x_q == width - 1, kept
   // exact on every slot (width >= MIN_WIDTH >= 16, so 0 is never the last

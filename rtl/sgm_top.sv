@@ -8,7 +8,8 @@
 //   -> sgm_cost_volume (D PEs) -> sgm_path_engine (4 paths, S) -> sgm_wta
 //   -> sgm_lr_check -> sgm_hole_fill -> sgm_edge_snap -> sgm_median5x5 -> sgm_stream_ctrl -> m_axis
 //
-// Parameters: D disparities (16, 32, 64, 128), MAX_WIDTH, MAX_HEIGHT (public to
+// Parameters: D disparities (a power of two from 16 to 256; built and tested at 16, 32,
+// 64, 128), MAX_WIDTH (>= MIN_FRAME_WIDTH), MAX_HEIGHT (>= 9) (public to
 // the Verilator testbenches, which read the build's limits from the model),
 // CENSUS_H census window height: 5 (9x5, ours, the default) or 9 (9x9, the
 // paper's); every dependent width follows from it (census bits NB 44 / 80,
@@ -68,8 +69,8 @@ module sgm_top #(
   // 4K slots later than a census behind the deal would give them: its 4 columns
   // of lag cost K slots each in a lane); LR_LAG = 2K - 3 + ceil(LR_WAIT / W) per
   // frame, at most LR_LAG_MAX. LR_WAIT's constant is the cost volume's latency
-  // (3 when it was derived; 4 since the AD term's stage: each slot more there
-  // is a slot later for every write).
+  // (4, with the AD term's stage: each slot more there is a slot later for every
+  // write).
   localparam int COST_LATENCY = 4,  // sgm_cost_volume LATENCY
   // The fifth path: RP_LATENCY bounds sgm_right_path's LATENCY (K (4B + 1 +
   // ceil(5 / K)) + 1 <= K (4B + 6) + 1) for the row counts below.
