@@ -156,7 +156,8 @@ $(BIN)/sgm-sim-d%: sim/sgm_sim.cpp $(RTL_SRC) $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB
 	  rtl/sgm_top.sv $(abspath sim/sgm_sim.cpp) $(abspath $(EVAL_OBJ)) $(abspath $(GOLDEN_LIB)) \
 	  -CFLAGS "$(VL_CFLAGS) -DSGM_D=$(call core_get,$(SIM_CORE),D) -DSGM_MAX_WIDTH=$(call core_get,$(SIM_CORE),MAX_WIDTH) -DSGM_MAX_HEIGHT=$(call core_get,$(SIM_CORE),MAX_HEIGHT)" \
 	  -LDFLAGS "$(OPENCV_LIBS) -pthread" \
-	  > $(BUILD)/verilator-$(notdir $@).log || { tail -30 $(BUILD)/verilator-$(notdir $@).log; exit 1; }
+	  > $(BUILD)/verilator-$(notdir $@).log || { grep -E -- '-USER(ERROR|FATAL):' $(BUILD)/verilator-$(notdir $@).log || \
+	    tail -30 $(BUILD)/verilator-$(notdir $@).log; exit 1; }
 	@$(call core_meta_write,$(SIM_CORE),$(BUILD)/verilator/$(notdir $@)/meta.txt)
 
 sim: $(SIM_BIN)
@@ -208,7 +209,7 @@ $(BIN)/rtl-$(1): $(if $(4),$(4),tests/rtl/test_$(2).cpp) $(RTL_SRC) $(RTL_INC) $
 	  -y rtl -y tb/tops --top-module $(2) $(3) -Mdir $(BUILD)/verilator/$(1) -o $(abspath $(BIN))/rtl-$(1) \
 	  $(wildcard rtl/$(2).sv tb/tops/$(2).sv) $(abspath $(if $(4),$(4),tests/rtl/test_$(2).cpp)) $(abspath $(EVAL_OBJ)) $(abspath $(GOLDEN_LIB)) \
 	  -CFLAGS "$(VL_CFLAGS)" -LDFLAGS "$(VL_LDFLAGS)" > $(BUILD)/verilator-$(1).log || \
-	  { tail -30 $(BUILD)/verilator-$(1).log; exit 1; }; \
+	  { grep -E -- '-USER(ERROR|FATAL):' $(BUILD)/verilator-$(1).log || tail -30 $(BUILD)/verilator-$(1).log; exit 1; }; \
 	  echo "time: build rtl-$(1) $$$$(( $$$$(date +%s) - s )) s"
 endef
 
@@ -338,7 +339,7 @@ unit-test: $(BIN)/unit-tests golden
 # `make regress` (constrained-random regression), `make fuzz` (bad input), `make coverage`,
 # `make bench`: included here, after every variable and the rtl_test macro are defined.
 -include tests/regress.mk tests/fuzz.mk tests/coverage.mk bench/bench.mk tests/mutate/mutate.mk
--include tests/icarus.mk tests/fusesoc.mk
+-include tests/icarus.mk tests/fusesoc.mk tests/params.mk
 
 # `make test`: lint and every binary of the GoogleTest suites built $(JOBS) at a time, the suites
 # run one after another, then TEST_EXTRA in two streams (scripts/test-extra.sh): the targets of

@@ -83,6 +83,16 @@ module sgm_axi #(
   output logic              irq_o
 );
 
+  // ------------------------------------------------------------ parameter checks
+  // An illegal parameter value stops elaboration with a message naming it ($error in
+  // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
+  // so its builds, of legal parameters only, leave the checks out).
+`ifndef __ICARUS__
+  if (!(ADDR_W >= 7 && ADDR_W <= 32)) begin : g_bad_addr_w
+    $error("sgm_axi: ADDR_W = %0d: ADDR_W must be from 7 to 32 (the registers span byte offsets 0x00 .. 0x4C)", ADDR_W);
+  end
+`endif
+
   // ------------------------------------------------------------ register map
   // Offsets, field positions, masks, reset values and the build's constant registers:
   // rtl/sgm_regmap.svh, generated from regmap/sgm_regmap.def (`make regmap`). The reset

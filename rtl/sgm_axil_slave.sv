@@ -53,6 +53,16 @@ module sgm_axil_slave #(
   input  wire               reg_rerr_i     // the read address is not a register (SLVERR)
 );
 
+  // ------------------------------------------------------------ parameter checks
+  // An illegal parameter value stops elaboration with a message naming it ($error in
+  // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
+  // so its builds, of legal parameters only, leave the checks out).
+`ifndef __ICARUS__
+  if (!(ADDR_W >= 3 && ADDR_W <= 32)) begin : g_bad_addr_w
+    $error("sgm_axil_slave: ADDR_W = %0d: ADDR_W must be from 3 to 32 (byte addresses, bits [1:0] ignored)", ADDR_W);
+  end
+`endif
+
   localparam logic [1:0] RESP_OKAY   = 2'b00;
   localparam logic [1:0] RESP_SLVERR = 2'b10;
 

@@ -96,6 +96,28 @@ module sgm_census_unit #(
   output logic             valid_o
 );
 
+  // ------------------------------------------------------------ parameter checks
+  // An illegal parameter value stops elaboration with a message naming it ($error in
+  // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
+  // so its builds, of legal parameters only, leave the checks out).
+`ifndef __ICARUS__
+  if (!(CENSUS_H == 5 || CENSUS_H == 9)) begin : g_bad_census_h
+    $error("sgm_census_unit: CENSUS_H = %0d: CENSUS_H must be 5 (the 9x5 census) or 9 (the 9x9)", CENSUS_H);
+  end
+  if (!(MAX_WIDTH >= 16)) begin : g_bad_max_width
+    $error("sgm_census_unit: MAX_WIDTH = %0d: MAX_WIDTH must be at least 16 (frames are 16 or more pixels wide)", MAX_WIDTH);
+  end
+  if (!(CW >= $clog2(MAX_WIDTH + 1))) begin : g_bad_cw
+    $error("sgm_census_unit: CW = %0d: CW must hold MAX_WIDTH = %0d (at least $clog2(MAX_WIDTH + 1) bits)", CW, MAX_WIDTH);
+  end
+  if (!(RW >= $clog2(10 + CENSUS_H - 1 + LANES))) begin : g_bad_rw
+    $error("sgm_census_unit: RW = %0d: RW must hold the rows of a 9-row frame, its census flush rows and a row before it (at least $clog2(10 + CENSUS_H - 1 + LANES) = %0d bits)", RW, $clog2(10 + CENSUS_H - 1 + LANES));
+  end
+  if (!(LANES >= 1)) begin : g_bad_lanes
+    $error("sgm_census_unit: LANES = %0d: LANES must be at least 1", LANES);
+  end
+`endif
+
   localparam int LATENCY /*verilator public*/ = 5;
   localparam int RX = 4;                // window columns dx = -RX .. RX
   localparam int RY = (CENSUS_H - 1) / 2;  // window rows dy = -RY .. RY (2 / 4)
@@ -271,7 +293,7 @@ module sgm_census_unit #(
 
   // ------------------------------------------------------------ s4: rank's two weighted counts
   // rank = ones1 + 2 ones2 (sgm_popcount): the popcount with its final adder
-  // in one slot was the 5-lane core's critical path at 6b1d454 (9.4 ns on ECP5).
+  // in one slot would be the 5-lane core's critical path (9.4 ns on ECP5).
   logic [RKW-1:0] ones1, ones1_4q;
   logic [RKW-2:0] ones2, ones2_4q;
   logic [6*(((NB + 2) / 3 + 5) / 6)-1:0] rank_groups;  // sgm_popcount's group counts: not used here

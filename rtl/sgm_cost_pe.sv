@@ -16,7 +16,7 @@
 // Latency: 3 enabled cycles. Stage A registers the rank difference (signed),
 // the Hamming distance as the popcount's group counts (sgm_popcount groups_o:
 // the xor, the full adders and the 6:3 counters are the whole stage; with the
-// group sums behind them it was the LFE5U-85F five-lane core's critical path,
+// group sums behind them it would be the LFE5U-85F five-lane core's critical path,
 // 7.7 to 8.7 ns) and the out-of-image flag of the slot. Stage B selects by
 // mode_i, which belongs to stage B's slot (the slot entered one enabled cycle
 // earlier), and registers the three operands of the cost: the Hamming distance
@@ -52,6 +52,19 @@ module sgm_cost_pe #(
   output logic [CBITS-1:0]  cost_o
 );
 
+  // ------------------------------------------------------------ parameter checks
+  // An illegal parameter value stops elaboration with a message naming it ($error in
+  // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
+  // so its builds, of legal parameters only, leave the checks out).
+`ifndef __ICARUS__
+  if (!(NB == 44 || NB == 80)) begin : g_bad_nb
+    $error("sgm_cost_pe: NB = %0d: NB must be 44 or 80 (9 CENSUS_H - 1 census bits, CENSUS_H 5 or 9)", NB);
+  end
+  if (!(AD_TERM == 0 || AD_TERM == 1)) begin : g_bad_ad_term
+    $error("sgm_cost_pe: AD_TERM = %0d: AD_TERM must be 0 or 1", AD_TERM);
+  end
+`endif
+
   // The Hamming distance as the popcount's group counts (hamming = the weight-1
   // groups + 2 the weight-2 groups): stage A registers them, stage B sums them.
   localparam int G = ((NB + 2) / 3 + 5) / 6;  // groups per weight (sgm_popcount's G)
@@ -84,7 +97,7 @@ module sgm_cost_pe #(
   // (below 2^CBITS: see the header). AD > T iff gray_R < gray_L - T or gray_R >
   // gray_L + T: the caller's gray_L -+ T make both tests one comparison each,
   // beside the differences rather than behind them (the difference, then its
-  // comparison with T, was the LFE5U-85F five-lane core's critical path at
+  // comparison with T, would be the LFE5U-85F five-lane core's critical path at
   // 8.1 ns).
   logic [CBITS-1:0] term_q;
   if (AD_TERM != 0) begin : g_ad

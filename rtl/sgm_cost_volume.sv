@@ -63,6 +63,28 @@ module sgm_cost_volume #(
   output logic             valid_o
 );
 
+  // ------------------------------------------------------------ parameter checks
+  // An illegal parameter value stops elaboration with a message naming it ($error in
+  // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
+  // so its builds, of legal parameters only, leave the checks out).
+`ifndef __ICARUS__
+  if (!(D >= 2 && D <= 256)) begin : g_bad_d
+    $error("sgm_cost_volume: D = %0d: D must be from 2 to 256", D);
+  end
+  if (!(CW >= 1)) begin : g_bad_cw
+    $error("sgm_cost_volume: CW = %0d: CW must be at least 1", CW);
+  end
+  if (!(NB == 44 || NB == 80)) begin : g_bad_nb
+    $error("sgm_cost_volume: NB = %0d: NB must be 44 or 80 (9 CENSUS_H - 1 census bits, CENSUS_H 5 or 9)", NB);
+  end
+  if (!(LANES >= 1)) begin : g_bad_lanes
+    $error("sgm_cost_volume: LANES = %0d: LANES must be at least 1", LANES);
+  end
+  if (!(AD_TERM == 0 || AD_TERM == 1)) begin : g_bad_ad_term
+    $error("sgm_cost_volume: AD_TERM = %0d: AD_TERM must be 0 or 1", AD_TERM);
+  end
+`endif
+
   localparam int LATENCY /*verilator public*/ = 4;
   localparam int GW = AD_TERM != 0 ? 8 : 0;  // the gray in the delay line
   localparam int EW = NB + RKW + GW;  // delay line entry: {gray, rank, census}

@@ -15,6 +15,19 @@ module sgm_delay #(
   output logic [WIDTH-1:0] q_o
 );
 
+  // ------------------------------------------------------------ parameter checks
+  // An illegal parameter value stops elaboration with a message naming it ($error in
+  // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
+  // so its builds, of legal parameters only, leave the checks out).
+`ifndef __ICARUS__
+  if (!(WIDTH >= 1)) begin : g_bad_width
+    $error("sgm_delay: WIDTH = %0d: WIDTH must be at least 1", WIDTH);
+  end
+  if (!(DEPTH >= 1)) begin : g_bad_depth
+    $error("sgm_delay: DEPTH = %0d: DEPTH must be at least 1", DEPTH);
+  end
+`endif
+
   // One packed shift register, newest bundle in the low WIDTH bits. (Icarus 11
   // does not propagate a word of an unpacked array written in a for loop to a
   // continuous assignment.)

@@ -18,7 +18,7 @@
 //   P0    input registers (pixel, position, frame-pixel flag)
 //   P1    gray read of the P0 pixel (the block RAM's read register)
 //   P2    the gray registered again (the block RAM's clock-to-out, 4.3 ns on
-//         ECP5, in front of the step was the 5-lane core's critical path at
+//         ECP5, in front of the step would be the 5-lane core's critical path at
 //         108.9 MHz)
 //   W     a window along the stream, w[0] the newest; the pixel leaving is
 //         x = w[3], with x+1 .. x+3 in w[2] .. w[0]; x-1 and x-2 take part
@@ -30,7 +30,7 @@
 //   max   the maxima of the step candidates (one compare-select level on the
 //         pair maxima), the
 //         drops and x's fields, registered (the maxima and the comparison in
-//         one slot were the 5-lane core's critical path at 97.4 MHz)
+//         one slot would be the 5-lane core's critical path at 97.4 MHz)
 //   dec   the snapping decision (step comparisons), registered
 //   out   the selected disparity, output registers.
 // Parameters: DW disparity width (4 fractional bits), MAX_WIDTH, CW column /
@@ -72,6 +72,28 @@ module sgm_edge_snap #(
   output logic [RW-1:0] row_o,
   output logic          out_valid_o
 );
+
+  // ------------------------------------------------------------ parameter checks
+  // An illegal parameter value stops elaboration with a message naming it ($error in
+  // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
+  // so its builds, of legal parameters only, leave the checks out).
+`ifndef __ICARUS__
+  if (!(DW >= 5)) begin : g_bad_dw
+    $error("sgm_edge_snap: DW = %0d: DW must be at least 5 (4 fractional bits)", DW);
+  end
+  if (!(MAX_WIDTH >= 16)) begin : g_bad_max_width
+    $error("sgm_edge_snap: MAX_WIDTH = %0d: MAX_WIDTH must be at least 16 (frames are 16 or more pixels wide)", MAX_WIDTH);
+  end
+  if (!(CW >= $clog2(MAX_WIDTH + 1))) begin : g_bad_cw
+    $error("sgm_edge_snap: CW = %0d: CW must hold MAX_WIDTH = %0d (at least $clog2(MAX_WIDTH + 1) bits)", CW, MAX_WIDTH);
+  end
+  if (!(RW >= 4)) begin : g_bad_rw
+    $error("sgm_edge_snap: RW = %0d: RW must be at least 4 (a 9-row frame and its flush rows)", RW);
+  end
+  if (!(GRAY_ROWS >= 4 && (GRAY_ROWS & (GRAY_ROWS - 1)) == 0)) begin : g_bad_gray_rows
+    $error("sgm_edge_snap: GRAY_ROWS = %0d: GRAY_ROWS must be a power of two >= 4", GRAY_ROWS);
+  end
+`endif
 
   localparam int LATENCY_ROWS /*verilator public*/ = 0;
   localparam int LATENCY      /*verilator public*/ = 10;
@@ -126,7 +148,7 @@ module sgm_edge_snap #(
   // continues the row of n-1, else 0 (step(n) is 0 then, and n-1 is another
   // row's). Computed from w[0] and w[1] and shifted with them, so that the
   // maxima of the max stage are one compare-select level each (two levels
-  // there were the 5-lane core's critical path on ECP5, 8.0 ns at 124.5 MHz).
+  // there would be the 5-lane core's critical path on ECP5, 8.0 ns at 124.5 MHz).
   // wpm_q[j] is pm of w[j + 1].
   logic [4*9-1:0]   wpm_q;
 

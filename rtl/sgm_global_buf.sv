@@ -3,7 +3,7 @@
 // sgm_global_buf: a net of very high fan-out onto the FPGA's clock network.
 //
 // The pipeline enable of sgm_top reaches every flip-flop of the datapath
-// (about 64,000 at D = 64 with six lanes). Routed through the fabric it was the
+// (about 64,000 at D = 64 with six lanes). Routed through the fabric it is the
 // most congested net of the ECP5 place and route (router2's congestion map of
 // D = 64 at six lanes, synth/README.md, "Place and route"). With the macro
 // SGM_ECP5_GLOBAL defined (the ECP5 flow, synth/pnr.mk PNR_DEFINES) the net

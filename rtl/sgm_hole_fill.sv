@@ -17,7 +17,7 @@
 //     ends the run ("none" for a run reaching the end of the row).
 // At input slot (x, y + 1): read pixel (x, y); the slot after the next: read
 // its run-table entry (the pixel word registered once more in between: the
-// pixel memory's clock-to-out in front of the run table's address was the
+// pixel memory's clock-to-out in front of the run table's address would be the
 // 5-lane core's critical path on ECP5); then the entry is registered again and
 // the fill decided. The run table's writes are registered one slot (written at
 // the slot after their pixel), so that the read of row y's last pixel, which
@@ -65,6 +65,25 @@ module sgm_hole_fill #(
   output logic [RW-1:0] row_o,
   output logic          out_valid_o
 );
+
+  // ------------------------------------------------------------ parameter checks
+  // An illegal parameter value stops elaboration with a message naming it ($error in
+  // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
+  // so its builds, of legal parameters only, leave the checks out).
+`ifndef __ICARUS__
+  if (!(DW >= 5)) begin : g_bad_dw
+    $error("sgm_hole_fill: DW = %0d: DW must be at least 5 (4 fractional bits)", DW);
+  end
+  if (!(MAX_WIDTH >= 16)) begin : g_bad_max_width
+    $error("sgm_hole_fill: MAX_WIDTH = %0d: MAX_WIDTH must be at least 16 (frames are 16 or more pixels wide)", MAX_WIDTH);
+  end
+  if (!(CW >= $clog2(MAX_WIDTH + 1))) begin : g_bad_cw
+    $error("sgm_hole_fill: CW = %0d: CW must hold MAX_WIDTH = %0d (at least $clog2(MAX_WIDTH + 1) bits)", CW, MAX_WIDTH);
+  end
+  if (!(RW >= 4)) begin : g_bad_rw
+    $error("sgm_hole_fill: RW = %0d: RW must be at least 4 (a 9-row frame and its flush row)", RW);
+  end
+`endif
 
   localparam int LATENCY_ROWS /*verilator public*/ = 1;
   localparam int LATENCY      /*verilator public*/ = 5;

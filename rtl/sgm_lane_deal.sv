@@ -52,6 +52,37 @@ module sgm_lane_deal #(
   output logic             active_o   // the lane has started (any row)
 );
 
+  // ------------------------------------------------------------ parameter checks
+  // An illegal parameter value stops elaboration with a message naming it ($error in
+  // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
+  // so its builds, of legal parameters only, leave the checks out).
+`ifndef __ICARUS__
+  if (!(WIDTH >= 1)) begin : g_bad_width
+    $error("sgm_lane_deal: WIDTH = %0d: WIDTH must be at least 1", WIDTH);
+  end
+  if (!(LANES >= 1)) begin : g_bad_lanes
+    $error("sgm_lane_deal: LANES = %0d: LANES must be at least 1", LANES);
+  end
+  if (!(SKEW >= 1)) begin : g_bad_skew
+    $error("sgm_lane_deal: SKEW = %0d: SKEW must be at least 1", SKEW);
+  end
+  if (!(LANE_LEAD >= 1 && LANE_LEAD >= LANES - 1)) begin : g_bad_lane_lead
+    $error("sgm_lane_deal: LANE_LEAD = %0d: LANE_LEAD must be at least max(1, LANES - 1) (LANES = %0d)", LANE_LEAD, LANES);
+  end
+  if (!(ROWS >= 2 && ROWS >= 2 * LANES - 2 && (ROWS & (ROWS - 1)) == 0)) begin : g_bad_rows
+    $error("sgm_lane_deal: ROWS = %0d: ROWS must be a power of two >= max(2, 2 LANES - 2) (LANES = %0d)", ROWS, LANES);
+  end
+  if (!(MAX_WIDTH >= 2)) begin : g_bad_max_width
+    $error("sgm_lane_deal: MAX_WIDTH = %0d: MAX_WIDTH must be at least 2 (no frame's column 0 is its last)", MAX_WIDTH);
+  end
+  if (!(XW >= $clog2(MAX_WIDTH + 1))) begin : g_bad_xw
+    $error("sgm_lane_deal: XW = %0d: XW must hold MAX_WIDTH = %0d (at least $clog2(MAX_WIDTH + 1) bits)", XW, MAX_WIDTH);
+  end
+  if (!(YW >= 2)) begin : g_bad_yw
+    $error("sgm_lane_deal: YW = %0d: YW must be at least 2", YW);
+  end
+`endif
+
   localparam int BW  = $clog2(ROWS);
   localparam int AW  = $clog2(ROWS * MAX_WIDTH);
   localparam int WW  = $clog2(LANES * SKEW + 1);  // start countdown (rounds)

@@ -44,6 +44,37 @@ module sgm_lane_timing #(
   output logic [RW-1:0] rd_row_o
 );
 
+  // ------------------------------------------------------------ parameter checks
+  // An illegal parameter value stops elaboration with a message naming it ($error in
+  // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
+  // so its builds, of legal parameters only, leave the checks out).
+`ifndef __ICARUS__
+  if (!(LANES >= 2)) begin : g_bad_lanes
+    $error("sgm_lane_timing: LANES = %0d: LANES must be at least 2 (one lane has no lane timing)", LANES);
+  end
+  if (!(LR_WAIT >= 1)) begin : g_bad_lr_wait
+    $error("sgm_lane_timing: LR_WAIT = %0d: LR_WAIT must be at least 1", LR_WAIT);
+  end
+  if (!(LR_LAG_MAX >= 0)) begin : g_bad_lr_lag_max
+    $error("sgm_lane_timing: LR_LAG_MAX = %0d: LR_LAG_MAX must be at least 0", LR_LAG_MAX);
+  end
+  if (!(MIN_FRAME_WIDTH >= 16)) begin : g_bad_min_frame_width
+    $error("sgm_lane_timing: MIN_FRAME_WIDTH = %0d: MIN_FRAME_WIDTH must be at least 16 (frames are 16 or more pixels wide)", MIN_FRAME_WIDTH);
+  end
+  if (!(CENSUS_LATENCY >= 1)) begin : g_bad_census_latency
+    $error("sgm_lane_timing: CENSUS_LATENCY = %0d: CENSUS_LATENCY must be at least 1", CENSUS_LATENCY);
+  end
+  if (!(CENSUS_RY >= 0)) begin : g_bad_census_ry
+    $error("sgm_lane_timing: CENSUS_RY = %0d: CENSUS_RY must be at least 0", CENSUS_RY);
+  end
+  if (!(XW >= $clog2(MIN_FRAME_WIDTH + 1))) begin : g_bad_xw
+    $error("sgm_lane_timing: XW = %0d: XW must hold MIN_FRAME_WIDTH = %0d", XW, MIN_FRAME_WIDTH);
+  end
+  if (!(RW >= 2)) begin : g_bad_rw
+    $error("sgm_lane_timing: RW = %0d: RW must be at least 2", RW);
+  end
+`endif
+
   localparam int LAGW      = $clog2(LR_LAG_MAX + 1);
   localparam int LAG_TERMS = (LR_WAIT - 1) / MIN_FRAME_WIDTH;
 

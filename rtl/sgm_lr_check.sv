@@ -12,7 +12,7 @@
 //   S side    s_i, col_i, row_i, last_i, valid_i (+ width_i, height_i): the
 //             slot stream; last_i flags the last column of a row, decided by
 //             the source a slot or more earlier (a register here: the column
-//             compare in front of the row tail's selects was the LFE5U-85F
+//             compare in front of the row tail's selects would be the LFE5U-85F
 //             five-lane core's critical path at 104.6 MHz). It also drives the
 //             output timing.
 //   WTA side  d_i, disp_i, unique_i with their own position wta_col_i / wta_row_i /
@@ -60,7 +60,7 @@
 //   R1o the memory's output register
 //   R2  xr = x - d; read dr_mem[bank (y-1) % 2][xr] when x >= d
 //   R2o the memory's output register (the block RAM's clock-to-out in front of
-//       the comparison was the 5-lane core's critical path at 101.8 MHz)
+//       the comparison would be the 5-lane core's critical path at 101.8 MHz)
 //   R3  valid = (!check_en || (x >= d && |dR - d| <= tol)) && unique; output registers.
 // Order of memory accesses (slot = S-side slot, a write at slot t is visible
 // to reads at slots > t):
@@ -142,6 +142,40 @@ module sgm_lr_check #(
   output logic             out_valid_o   // the slot carries a pixel of the frame
 );
 
+  // ------------------------------------------------------------ parameter checks
+  // An illegal parameter value stops elaboration with a message naming it ($error in
+  // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
+  // so its builds, of legal parameters only, leave the checks out).
+`ifndef __ICARUS__
+  if (!(D >= 16 && D <= 256 && (D & (D - 1)) == 0)) begin : g_bad_d
+    $error("sgm_lr_check: D = %0d: D must be a power of two from 16 to 256", D);
+  end
+  if (!(DW == $clog2(D) + 4)) begin : g_bad_dw
+    $error("sgm_lr_check: DW = %0d: DW must be $clog2(D) + 4 = %0d (the disparity and 4 fractional bits)", DW, $clog2(D) + 4);
+  end
+  if (!(MAX_WIDTH >= D && MAX_WIDTH >= 16)) begin : g_bad_max_width
+    $error("sgm_lr_check: MAX_WIDTH = %0d: MAX_WIDTH must be at least max(D, 16) (D = %0d)", MAX_WIDTH, D);
+  end
+  if (!(CW >= $clog2(MAX_WIDTH + 1))) begin : g_bad_cw
+    $error("sgm_lr_check: CW = %0d: CW must hold MAX_WIDTH = %0d (at least $clog2(MAX_WIDTH + 1) bits)", CW, MAX_WIDTH);
+  end
+  if (!(RW >= 2)) begin : g_bad_rw
+    $error("sgm_lr_check: RW = %0d: RW must be at least 2", RW);
+  end
+  if (!(SW >= 1)) begin : g_bad_sw
+    $error("sgm_lr_check: SW = %0d: SW must be at least 1", SW);
+  end
+  if (!(LANES >= 1)) begin : g_bad_lanes
+    $error("sgm_lr_check: LANES = %0d: LANES must be at least 1", LANES);
+  end
+  if (!(ROW_BANKS >= 2 && (ROW_BANKS & (ROW_BANKS - 1)) == 0)) begin : g_bad_row_banks
+    $error("sgm_lr_check: ROW_BANKS = %0d: ROW_BANKS must be a power of two >= 2", ROW_BANKS);
+  end
+  if (!(UNIQUENESS == 0 || UNIQUENESS == 1)) begin : g_bad_uniqueness
+    $error("sgm_lr_check: UNIQUENESS = %0d: UNIQUENESS must be 0 or 1", UNIQUENESS);
+  end
+`endif
+
   localparam int BW  = $clog2(ROW_BANKS);    // bank bits (row mod ROW_BANKS)
   localparam int MW  = ROW_BANKS * MAX_WIDTH; // words per memory
   localparam int MAW = $clog2(MW);
@@ -217,8 +251,8 @@ module sgm_lr_check #(
   // ------------------------------------------------------------ row tail
   // width - (D - 1) registered with each slot, used from the next one on:
   // width_i is constant within a frame and the first slot of a row is never
-  // its last (width >= 16); the compare behind a subtractor was the 5-lane
-  // core's critical path at c9253c6 (8.8 ns on ECP5). The last column comes
+  // its last (width >= 16); the compare behind a subtractor would be the 5-lane
+  // core's critical path (8.8 ns on ECP5). The last column comes
   // with the slot (last_i).
   logic [CW-1:0] wmd_q;
   always_ff @(posedge clk_i) begin
@@ -241,7 +275,7 @@ module sgm_lr_check #(
   // is written at once (drw_data_q), entries 1 .. D-2 go to the shift register.
   // Loading from darg_p rather than from narg at the last column keeps the
   // diagonal's compare chain out of the tail's input selects (the LFE5U-85F
-  // five-lane fifth-path build's critical path at 28efeba, 8.4 ns).
+  // five-lane fifth-path build's critical path otherwise, 8.4 ns).
   wire tail_first = tail_cnt_p == LD'(D - 1);
 
   for (genvar k = 0; k < D - 1; k++) begin : g_tail

@@ -24,7 +24,7 @@
 // at bit b let z = #{e in C : bit b of v_e = 0}; if k < z the result has bit
 // b = 0 and C keeps those entries, else bit b = 1, k -= z and C keeps the
 // entries with bit b = 1. The stages carry m = 2 k + 1 (m = n at the start, so
-// no (n - 1) / 2 behind the count: it was the five-lane core's critical path
+// no (n - 1) / 2 behind the count: it would be the five-lane core's critical path
 // on the LFE5U-85F at 8.0 ns): k >= z iff m > 2 z, and k -= z is m -= 2 z.
 // No comparators and no sorting: per bit one 25-input
 // popcount, a 6-bit compare / subtract and 25 AND-ORs. Entry bits travel as
@@ -52,7 +52,7 @@
 // pixel (in_valid_i, stored with it: a slot of an earlier frame still in
 // flight after a frame switch may have a position inside the new frame).
 // Latency: LATENCY_ROWS * width + LATENCY slots (pixel (x, y) leaves 2 DW + 4
-// slots after input slot (x + 2, y + 2), one more than before stage 0b).
+// slots after input slot (x + 2, y + 2), stage 0b included).
 // Throughput: one pixel per enabled slot.
 module sgm_median5x5 #(
   parameter int DW        /*verilator public*/ = 8,
@@ -77,6 +77,25 @@ module sgm_median5x5 #(
   output logic [RW-1:0] row_o,
   output logic          out_valid_o
 );
+
+  // ------------------------------------------------------------ parameter checks
+  // An illegal parameter value stops elaboration with a message naming it ($error in
+  // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
+  // so its builds, of legal parameters only, leave the checks out).
+`ifndef __ICARUS__
+  if (!(DW >= 5)) begin : g_bad_dw
+    $error("sgm_median5x5: DW = %0d: DW must be at least 5 (4 fractional bits)", DW);
+  end
+  if (!(MAX_WIDTH >= 16)) begin : g_bad_max_width
+    $error("sgm_median5x5: MAX_WIDTH = %0d: MAX_WIDTH must be at least 16 (frames are 16 or more pixels wide)", MAX_WIDTH);
+  end
+  if (!(CW >= $clog2(MAX_WIDTH + 1))) begin : g_bad_cw
+    $error("sgm_median5x5: CW = %0d: CW must hold MAX_WIDTH = %0d (at least $clog2(MAX_WIDTH + 1) bits)", CW, MAX_WIDTH);
+  end
+  if (!(RW >= 4)) begin : g_bad_rw
+    $error("sgm_median5x5: RW = %0d: RW must be at least 4 (a 9-row frame and its flush rows)", RW);
+  end
+`endif
 
   localparam int LATENCY_ROWS /*verilator public*/ = 2;
   localparam int LATENCY      /*verilator public*/ = 2 * DW + 6;
@@ -166,7 +185,7 @@ module sgm_median5x5 #(
   // Centre of the shifted window and its column masks.
   // The wrap test and height + k are registered in stage 0, so the row tests
   // below are comparisons of y0 with registers, no adder in front of them (the
-  // wrap test, y0 - wrap and the comparisons behind it were the LFE5U-85F
+  // wrap test, y0 - wrap and the comparisons behind it would be the LFE5U-85F
   // five-lane core's critical path at 8.4 ns): row ycb = y0 - wrap, so ycb >= 2
   // iff y0 >= 2 + wrap, ycb < height + k iff y0 < height + k + wrap.
   wire             wrap = wrap0_r;

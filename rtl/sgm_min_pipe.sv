@@ -26,6 +26,22 @@ module sgm_min_pipe #(
   output logic [W-1:0]   min_o      // LATENCY slots later
 );
 
+  // ------------------------------------------------------------ parameter checks
+  // An illegal parameter value stops elaboration with a message naming it ($error in
+  // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
+  // so its builds, of legal parameters only, leave the checks out).
+`ifndef __ICARUS__
+  if (!(N >= 1)) begin : g_bad_n
+    $error("sgm_min_pipe: N = %0d: N must be at least 1", N);
+  end
+  if (!(W >= 1)) begin : g_bad_w
+    $error("sgm_min_pipe: W = %0d: W must be at least 1", W);
+  end
+  if (!(IN_REG == 0 || IN_REG == 1)) begin : g_bad_in_reg
+    $error("sgm_min_pipe: IN_REG = %0d: IN_REG must be 0 or 1", IN_REG);
+  end
+`endif
+
   localparam int P = ARITY ** LEVELS;  // leaves of the complete tree
 
   // Level l holds P / 4^l values (padded with all ones, which never win);

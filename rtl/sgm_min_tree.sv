@@ -19,6 +19,22 @@ module sgm_min_tree #(
   output logic [W-1:0]   min_o
 );
 
+  // ------------------------------------------------------------ parameter checks
+  // An illegal parameter value stops elaboration with a message naming it ($error in
+  // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
+  // so its builds, of legal parameters only, leave the checks out).
+`ifndef __ICARUS__
+  if (!(N >= 1)) begin : g_bad_n
+    $error("sgm_min_tree: N = %0d: N must be at least 1", N);
+  end
+  if (!(W >= 1)) begin : g_bad_w
+    $error("sgm_min_tree: W = %0d: W must be at least 1", W);
+  end
+  if (!(ARITY == 3 || ARITY == 4)) begin : g_bad_arity
+    $error("sgm_min_tree: ARITY = %0d: ARITY must be 3 or 4", ARITY);
+  end
+`endif
+
   // Nodes of a complete ARITY-ary tree over P = ARITY^LEVELS leaves, heap
   // order: node 0 is the root, node n has children A n + 1 .. A n + A, leaves
   // are I .. I+P-1 with I = (P-1)/(A-1) inner nodes. Missing leaves hold all

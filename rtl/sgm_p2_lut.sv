@@ -31,6 +31,19 @@ module sgm_p2_lut #(
   output logic [NPORTS*PW-1:0]  p2r_o
 );
 
+  // ------------------------------------------------------------ parameter checks
+  // An illegal parameter value stops elaboration with a message naming it ($error in
+  // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
+  // so its builds, of legal parameters only, leave the checks out).
+`ifndef __ICARUS__
+  if (!(PW >= 1)) begin : g_bad_pw
+    $error("sgm_p2_lut: PW = %0d: PW must be at least 1", PW);
+  end
+  if (!(NPORTS >= 1)) begin : g_bad_nports
+    $error("sgm_p2_lut: NPORTS = %0d: NPORTS must be at least 1", NPORTS);
+  end
+`endif
+
   logic [PW-1:0] table_q [0:255];
 
   logic          busy_q;

@@ -136,6 +136,49 @@ module sgm_path_engine #(
   output logic                valid_o
 );
 
+  // ------------------------------------------------------------ parameter checks
+  // An illegal parameter value stops elaboration with a message naming it ($error in
+  // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
+  // so its builds, of legal parameters only, leave the checks out).
+`ifndef __ICARUS__
+  if (!(D >= 2 && D <= 256)) begin : g_bad_d
+    $error("sgm_path_engine: D = %0d: D must be from 2 to 256", D);
+  end
+  if (!(LW >= CW)) begin : g_bad_lw
+    $error("sgm_path_engine: LW = %0d: LW must be at least CW = %0d (the path cost holds the matching cost)", LW, CW);
+  end
+  if (!(LW >= PW)) begin : g_bad_lw_2
+    $error("sgm_path_engine: LW = %0d: LW must be at least PW = %0d (the path cost holds the penalties)", LW, PW);
+  end
+  if (!(PW >= 1)) begin : g_bad_pw
+    $error("sgm_path_engine: PW = %0d: PW must be at least 1", PW);
+  end
+  if (!(MAX_WIDTH >= MIN_WIDTH)) begin : g_bad_max_width
+    $error("sgm_path_engine: MAX_WIDTH = %0d: MAX_WIDTH must be at least the narrowest frame, MIN_WIDTH = LANES SKEW + 1 = %0d", MAX_WIDTH, MIN_WIDTH);
+  end
+  if (!(XW >= $clog2(MAX_WIDTH + 1))) begin : g_bad_xw
+    $error("sgm_path_engine: XW = %0d: XW must hold MAX_WIDTH = %0d (at least $clog2(MAX_WIDTH + 1) bits)", XW, MAX_WIDTH);
+  end
+  if (!(YW >= 2)) begin : g_bad_yw
+    $error("sgm_path_engine: YW = %0d: YW must be at least 2", YW);
+  end
+  if (!(RIGHT_PATH == 0 || RIGHT_PATH == 1)) begin : g_bad_right_path
+    $error("sgm_path_engine: RIGHT_PATH = %0d: RIGHT_PATH must be 0 or 1", RIGHT_PATH);
+  end
+  if (!(EDGE_RESET == 0 || EDGE_RESET == 1)) begin : g_bad_edge_reset
+    $error("sgm_path_engine: EDGE_RESET = %0d: EDGE_RESET must be 0 or 1", EDGE_RESET);
+  end
+  if (!(GRAY_LEAD == 0 || GRAY_LEAD == 1)) begin : g_bad_gray_lead
+    $error("sgm_path_engine: GRAY_LEAD = %0d: GRAY_LEAD must be 0 or 1", GRAY_LEAD);
+  end
+  if (!(COL_LEAD >= 3)) begin : g_bad_col_lead
+    $error("sgm_path_engine: COL_LEAD = %0d: COL_LEAD must be at least 3", COL_LEAD);
+  end
+  if (!(LANES >= 1)) begin : g_bad_lanes
+    $error("sgm_path_engine: LANES = %0d: LANES must be at least 1", LANES);
+  end
+`endif
+
   localparam int LWORD = D * LW;  // {Lr(D-1) .. Lr(0)} of one path
   localparam int AW    = $clog2(MAX_WIDTH);
   localparam int K     = LANES;

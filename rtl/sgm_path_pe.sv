@@ -46,6 +46,25 @@ module sgm_path_pe #(
   output logic [LW-1:0] lr_o
 );
 
+  // ------------------------------------------------------------ parameter checks
+  // An illegal parameter value stops elaboration with a message naming it ($error in
+  // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
+  // so its builds, of legal parameters only, leave the checks out).
+`ifndef __ICARUS__
+  if (!(LW >= CW)) begin : g_bad_lw
+    $error("sgm_path_pe: LW = %0d: LW must be at least CW = %0d (the path cost holds the matching cost)", LW, CW);
+  end
+  if (!(LW >= PW)) begin : g_bad_lw_2
+    $error("sgm_path_pe: LW = %0d: LW must be at least PW = %0d (the path cost holds the penalties)", LW, PW);
+  end
+  if (!(PW >= 1)) begin : g_bad_pw
+    $error("sgm_path_pe: PW = %0d: PW must be at least 1", PW);
+  end
+  if (!(CUTS >= 0 && CUTS <= 3)) begin : g_bad_cuts
+    $error("sgm_path_pe: CUTS = %0d: CUTS must be from 0 to 3 (a mask of two registers)", CUTS);
+  end
+`endif
+
   // One bit of headroom over LW for the penalised terms.
   localparam int EW = LW + 1;
 

@@ -49,6 +49,28 @@ module sgm_path_ring #(
   output logic [LW-1:0]   min_o
 );
 
+  // ------------------------------------------------------------ parameter checks
+  // An illegal parameter value stops elaboration with a message naming it ($error in
+  // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
+  // so its builds, of legal parameters only, leave the checks out).
+`ifndef __ICARUS__
+  if (!(D >= 2 && D <= 256)) begin : g_bad_d
+    $error("sgm_path_ring: D = %0d: D must be from 2 to 256", D);
+  end
+  if (!(LW >= CW)) begin : g_bad_lw
+    $error("sgm_path_ring: LW = %0d: LW must be at least CW = %0d (the path cost holds the matching cost)", LW, CW);
+  end
+  if (!(LW >= PW)) begin : g_bad_lw_2
+    $error("sgm_path_ring: LW = %0d: LW must be at least PW = %0d (the path cost holds the penalties)", LW, PW);
+  end
+  if (!(PW >= 1)) begin : g_bad_pw
+    $error("sgm_path_ring: PW = %0d: PW must be at least 1", PW);
+  end
+  if (!(LANES >= 1)) begin : g_bad_lanes
+    $error("sgm_path_ring: LANES = %0d: LANES must be at least 1", LANES);
+  end
+`endif
+
   localparam int ARITY = 4;  // inputs of a tree node (sgm_min_tree, N = ARITY)
 
   localparam int LEVELS = ($clog2(D) + 1) / 2;  // ceil(log4 D) = ceil(ceil(log2 D) / 2)

@@ -17,7 +17,7 @@
 // sgm_census_unit), and the group counts they are the sums of (groups_o:
 // count = sum of the G weight-1 groups + 2 sum of the G weight-2 groups), which
 // sgm_cost_pe registers instead: the xor, the full adders and the counters are
-// then its whole stage A (the group sums behind them were the LFE5U-85F
+// then its whole stage A (the group sums behind them would be the LFE5U-85F
 // five-lane core's critical path at 7.7 to 8.7 ns).
 //
 // Parameters: N input bits (>= 2); CNT_W = $clog2(N + 1) count bits;
@@ -35,6 +35,16 @@ module sgm_popcount #(
   // Group g of weight 1 at [3g +: 3], of weight 2 at [3(G + g) +: 3] (0 .. 6 each).
   output logic [6*G-1:0]   groups_o
 );
+
+  // ------------------------------------------------------------ parameter checks
+  // An illegal parameter value stops elaboration with a message naming it ($error in
+  // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
+  // so its builds, of legal parameters only, leave the checks out).
+`ifndef __ICARUS__
+  if (!(N >= 2)) begin : g_bad_n
+    $error("sgm_popcount: N = %0d: N must be at least 2", N);
+  end
+`endif
 
   // {carry, sum} of three bits.
   function automatic [1:0] fa(input [2:0] v);

@@ -115,6 +115,43 @@ module sgm_right_path #(
   output logic [D*L5W-1:0] l5w_o
 );
 
+  // ------------------------------------------------------------ parameter checks
+  // An illegal parameter value stops elaboration with a message naming it ($error in
+  // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
+  // so its builds, of legal parameters only, leave the checks out).
+`ifndef __ICARUS__
+  if (!(D >= 2 && D <= 256)) begin : g_bad_d
+    $error("sgm_right_path: D = %0d: D must be from 2 to 256", D);
+  end
+  if (!(LW >= CW)) begin : g_bad_lw
+    $error("sgm_right_path: LW = %0d: LW must be at least CW = %0d (the path cost holds the matching cost)", LW, CW);
+  end
+  if (!(LW >= PW)) begin : g_bad_lw_2
+    $error("sgm_right_path: LW = %0d: LW must be at least PW = %0d (the path cost holds the penalties)", LW, PW);
+  end
+  if (!(PW >= 1)) begin : g_bad_pw
+    $error("sgm_right_path: PW = %0d: PW must be at least 1", PW);
+  end
+  if (!(BLOCK >= 2 && (BLOCK & (BLOCK - 1)) == 0)) begin : g_bad_block
+    $error("sgm_right_path: BLOCK = %0d: BLOCK must be a power of two >= 2", BLOCK);
+  end
+  if (!(XW >= $clog2(BLOCK + 1))) begin : g_bad_xw
+    $error("sgm_right_path: XW = %0d: XW must hold BLOCK = %0d (the next row's column of a late pass start)", XW, BLOCK);
+  end
+  if (!(LANES >= 1)) begin : g_bad_lanes
+    $error("sgm_right_path: LANES = %0d: LANES must be at least 1", LANES);
+  end
+  if (!(SIDE_W >= 1)) begin : g_bad_side_w
+    $error("sgm_right_path: SIDE_W = %0d: SIDE_W must be at least 1", SIDE_W);
+  end
+  if (!(L5_LAG >= 2 && L5_LAG <= 3 * LANES + 2)) begin : g_bad_l5_lag
+    $error("sgm_right_path: L5_LAG = %0d: L5_LAG must be from 2 to 3 LANES + 2 (LANES = %0d)", L5_LAG, LANES);
+  end
+  if (!(EDGE_RESET == 0 || EDGE_RESET == 1)) begin : g_bad_edge_reset
+    $error("sgm_right_path: EDGE_RESET = %0d: EDGE_RESET must be 0 or 1", EDGE_RESET);
+  end
+`endif
+
   localparam int K    = LANES;
   localparam int LB   = $clog2(BLOCK);
   localparam int M    = DLY + 1;                       // words per lane

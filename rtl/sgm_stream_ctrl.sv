@@ -135,6 +135,52 @@ module sgm_stream_ctrl #(
                                              // cycle (counts every event, even a bit already set)
 );
 
+  // ------------------------------------------------------------ parameter checks
+  // An illegal parameter value stops elaboration with a message naming it ($error in
+  // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
+  // so its builds, of legal parameters only, leave the checks out).
+`ifndef __ICARUS__
+  if (!(MIN_WIDTH >= 16)) begin : g_bad_min_width
+    $error("sgm_stream_ctrl: MIN_WIDTH = %0d: MIN_WIDTH must be at least 16 (frames are 16 or more pixels wide)", MIN_WIDTH);
+  end
+  if (!(MAX_WIDTH >= MIN_WIDTH)) begin : g_bad_max_width
+    $error("sgm_stream_ctrl: MAX_WIDTH = %0d: MAX_WIDTH must be at least MIN_WIDTH = %0d", MAX_WIDTH, MIN_WIDTH);
+  end
+  if (!(MAX_HEIGHT >= 9)) begin : g_bad_max_height
+    $error("sgm_stream_ctrl: MAX_HEIGHT = %0d: MAX_HEIGHT must be at least 9 (the narrowest frame has 9 rows)", MAX_HEIGHT);
+  end
+  if (!(NB == 44 || NB == 80)) begin : g_bad_nb
+    $error("sgm_stream_ctrl: NB = %0d: NB must be 44 or 80 (9 CENSUS_H - 1 census bits, CENSUS_H 5 or 9)", NB);
+  end
+  if (!(XW >= $clog2(MAX_WIDTH + 1))) begin : g_bad_xw
+    $error("sgm_stream_ctrl: XW = %0d: XW must hold MAX_WIDTH = %0d (at least $clog2(MAX_WIDTH + 1) bits)", XW, MAX_WIDTH);
+  end
+  if (!(YW >= $clog2(MAX_HEIGHT + 16))) begin : g_bad_yw
+    $error("sgm_stream_ctrl: YW = %0d: YW must hold MAX_HEIGHT = %0d and the flush rows (at least $clog2(MAX_HEIGHT + 16) bits)", YW, MAX_HEIGHT);
+  end
+  if (!(PW >= 1)) begin : g_bad_pw
+    $error("sgm_stream_ctrl: PW = %0d: PW must be at least 1", PW);
+  end
+  if (!(DW >= 5 && DW <= 15)) begin : g_bad_dw
+    $error("sgm_stream_ctrl: DW = %0d: DW must be from 5 to 15 (4 fractional bits; the output word has 15 data bits)", DW);
+  end
+  if (!(FIFO_DEPTH >= 2)) begin : g_bad_fifo_depth
+    $error("sgm_stream_ctrl: FIFO_DEPTH = %0d: FIFO_DEPTH must be at least 2", FIFO_DEPTH);
+  end
+  if (!(UNIQUENESS == 0 || UNIQUENESS == 1)) begin : g_bad_uniqueness
+    $error("sgm_stream_ctrl: UNIQUENESS = %0d: UNIQUENESS must be 0 or 1", UNIQUENESS);
+  end
+  if (!(AD_TERM == 0 || AD_TERM == 1)) begin : g_bad_ad_term
+    $error("sgm_stream_ctrl: AD_TERM = %0d: AD_TERM must be 0 or 1", AD_TERM);
+  end
+  if (!(RIGHT_PATH == 0 || RIGHT_PATH == 1)) begin : g_bad_right_path
+    $error("sgm_stream_ctrl: RIGHT_PATH = %0d: RIGHT_PATH must be 0 or 1", RIGHT_PATH);
+  end
+  if (!(EDGE_RESET == 0 || EDGE_RESET == 1)) begin : g_bad_edge_reset
+    $error("sgm_stream_ctrl: EDGE_RESET = %0d: EDGE_RESET must be 0 or 1", EDGE_RESET);
+  end
+`endif
+
   typedef enum logic [2:0] {IDLE, FILL, RUN, PAD, FLUSH} state_e;
   state_e state_q;
 
@@ -166,7 +212,7 @@ module sgm_stream_ctrl #(
   // or 2; 3 is not a mode; uniqueness ratio 0 .. 99; Cmax of the mode (NB, or 2 NB
   // unified) + (W T) >> 3 within the cost word; no lever the build lacks) is done as the word is written and kept with it, so
   // that the start-of-frame decision reads one flag (its comparisons behind the
-  // entry's distributed RAM were the 5-lane core's critical path at 95.8 MHz).
+  // entry's distributed RAM would be the 5-lane core's critical path at 95.8 MHz).
   // The AD term's largest value (W T) >> 3 added to the mode's Cmax stays within
   // the cost word (the golden model's Params::validate, costLimit).
   localparam int CBITS = $clog2(2 * NB + 1);
@@ -242,7 +288,7 @@ module sgm_stream_ctrl #(
 
   // Row and column ends as flags kept beside the positions, so that no
   // comparison with the configuration sits between the positions and the FSM
-  // or the FIFO (the 5-lane core's critical path at 7d29a88). wm2_q and hm1_q
+  // or the FIFO (otherwise the 5-lane core's critical path). wm2_q and hm1_q
   // follow width_o / height_o one cycle later: those change only in IDLE, and
   // the first slot comes after FILL. last_col_q: x_q == width - 1, kept
   // exact on every slot (width >= MIN_WIDTH >= 16, so 0 is never the last

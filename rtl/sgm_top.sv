@@ -8,7 +8,8 @@
 //   -> sgm_cost_volume (D PEs) -> sgm_path_engine (4 paths, S) -> sgm_wta
 //   -> sgm_lr_check -> sgm_hole_fill -> sgm_edge_snap -> sgm_median5x5 -> sgm_stream_ctrl -> m_axis
 //
-// Parameters: D disparities (16, 32, 64, 128), MAX_WIDTH, MAX_HEIGHT (public to
+// Parameters: D disparities (a power of two from 16 to 256; built and tested at 16, 32,
+// 64, 128), MAX_WIDTH (>= MIN_FRAME_WIDTH), MAX_HEIGHT (>= 9) (public to
 // the Verilator testbenches, which read the build's limits from the model),
 // CENSUS_H census window height: 5 (9x5, ours, the default) or 9 (9x9, the
 // paper's); every dependent width follows from it (census bits NB 44 / 80,
@@ -68,8 +69,8 @@ module sgm_top #(
   // 4K slots later than a census behind the deal would give them: its 4 columns
   // of lag cost K slots each in a lane); LR_LAG = 2K - 3 + ceil(LR_WAIT / W) per
   // frame, at most LR_LAG_MAX. LR_WAIT's constant is the cost volume's latency
-  // (3 when it was derived; 4 since the AD term's stage: each slot more there
-  // is a slot later for every write).
+  // (4, with the AD term's stage: each slot more there is a slot later for every
+  // write).
   localparam int COST_LATENCY = 4,  // sgm_cost_volume LATENCY
   // The fifth path: RP_LATENCY bounds sgm_right_path's LATENCY (K (4B + 1 +
   // ceil(5 / K)) + 1 <= K (4B + 6) + 1) for the row counts below.
@@ -141,6 +142,40 @@ module sgm_top #(
   // The build's narrowest frame (MIN_FRAME_WIDTH, a constant): sgm_axi's MIN_WIDTH.
   output logic [XW-1:0] min_width_o
 );
+
+  // ------------------------------------------------------------ parameter checks
+  // An illegal parameter value stops elaboration with a message naming it ($error in
+  // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
+  // so its builds, of legal parameters only, leave the checks out).
+`ifndef __ICARUS__
+  if (!(D >= 16 && D <= 256 && (D & (D - 1)) == 0)) begin : g_bad_d
+    $error("sgm_top: D = %0d: D must be a power of two from 16 to 256", D);
+  end
+  if (!(MAX_WIDTH >= MIN_FRAME_WIDTH)) begin : g_bad_max_width
+    $error("sgm_top: MAX_WIDTH = %0d: MAX_WIDTH must be at least the narrowest frame, MIN_FRAME_WIDTH = %0d (max(D, 16, LANES SKEW + 1))", MAX_WIDTH, MIN_FRAME_WIDTH);
+  end
+  if (!(MAX_HEIGHT >= 9)) begin : g_bad_max_height
+    $error("sgm_top: MAX_HEIGHT = %0d: MAX_HEIGHT must be at least 9 (the narrowest frame has 9 rows)", MAX_HEIGHT);
+  end
+  if (!(CENSUS_H == 5 || CENSUS_H == 9)) begin : g_bad_census_h
+    $error("sgm_top: CENSUS_H = %0d: CENSUS_H must be 5 (the 9x5 census) or 9 (the 9x9)", CENSUS_H);
+  end
+  if (!(LANES >= 1)) begin : g_bad_lanes
+    $error("sgm_top: LANES = %0d: LANES must be at least 1", LANES);
+  end
+  if (!(UNIQUENESS == 0 || UNIQUENESS == 1)) begin : g_bad_uniqueness
+    $error("sgm_top: UNIQUENESS = %0d: UNIQUENESS must be 0 or 1", UNIQUENESS);
+  end
+  if (!(AD_TERM == 0 || AD_TERM == 1)) begin : g_bad_ad_term
+    $error("sgm_top: AD_TERM = %0d: AD_TERM must be 0 or 1", AD_TERM);
+  end
+  if (!(EDGE_RESET == 0 || EDGE_RESET == 1)) begin : g_bad_edge_reset
+    $error("sgm_top: EDGE_RESET = %0d: EDGE_RESET must be 0 or 1", EDGE_RESET);
+  end
+  if (!(RIGHT_BLOCK == 0 || (RIGHT_BLOCK >= 2 && (RIGHT_BLOCK & (RIGHT_BLOCK - 1)) == 0))) begin : g_bad_right_block
+    $error("sgm_top: RIGHT_BLOCK = %0d: RIGHT_BLOCK must be 0 (no fifth path) or a power of two >= 2", RIGHT_BLOCK);
+  end
+`endif
 
   assign min_width_o = XW'(MIN_FRAME_WIDTH);
 

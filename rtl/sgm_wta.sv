@@ -13,13 +13,13 @@
 //
 // Structure (one register stage per slot, all stages advance only when en_i):
 //   T0   the D/2 comparisons of the tree's first level, registered with S (the
-//        first tree stage from the path engine's registers was the 5-lane core's
+//        first tree stage from the path engine's registers would be the 5-lane core's
 //        critical path, 10.0 ns on ECP5; a register behind every level instead
 //        would cost the LUT6 that merges two levels of 2:1 selects on xc7)
 //   T1 .. T(TREE_STAGES-1)  binary comparator tree: T1 selects level 1 by T0's
 //        registered comparisons and compares and selects level 2, each stage
 //        after it one level (a comparison and a select: two levels per stage
-//        were the 5-lane D = 16 core's critical path on ECP5 with -abc9, 8.4 ns,
+//        would be the 5-lane D = 16 core's critical path on ECP5 with -abc9, 8.4 ns,
 //        118.5 MHz; 123.3 MHz with one). A node
 //        is {b, a, m, d}: the candidate's cost m, its index d and the costs of
 //        its neighbours a = S(d-1), b = S(d+1), carried along so that the
@@ -38,7 +38,7 @@
 //   P    den = a + b - 2m, |num| = |a - b|, refine flag; dividend
 //        N = 16 |num| + den and divisor V = 2 den of the quotient q.
 //   Q3 .. Q0  restoring division, one quotient bit per slot, 3 down to 0 (q < 16
-//        because N <= 17 den; two bits per slot were 10.5 ns on ECP5); after
+//        because N <= 17 den; two bits per slot would take 10.5 ns on ECP5); after
 //        Q0 disp = 16 d* +- q without an adder (q < 16: 16 d* + q = {d*, q},
 //        16 d* - q = {d* - 1, 16 - q} for q > 0, d* - 1 computed in Q3);
 //        output registers. Beside them the uniqueness product
@@ -51,7 +51,7 @@
 // unique_o is constant 1 and uniq_i is ignored (sgm_stream_ctrl drops frames
 // that ask for a ratio). The latency is the same.
 //
-// Parameters: D disparities (power of two, 16 .. 128), SW width of S,
+// Parameters: D disparities (a power of two from 16 to 256), SW width of S,
 // CW column bits, RW row bits of the slot position (passed through),
 // UNIQUENESS (1: the uniqueness test is built, 0: not).
 // Latency: LATENCY = TREE_STAGES + 5 slots (D = 16: 9, 32: 10, 64: 11, 128: 12): the
@@ -87,6 +87,28 @@ module sgm_wta #(
   output logic [RW-1:0]    row_o,
   output logic             valid_o
 );
+
+  // ------------------------------------------------------------ parameter checks
+  // An illegal parameter value stops elaboration with a message naming it ($error in
+  // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
+  // so its builds, of legal parameters only, leave the checks out).
+`ifndef __ICARUS__
+  if (!(D >= 16 && D <= 256 && (D & (D - 1)) == 0)) begin : g_bad_d
+    $error("sgm_wta: D = %0d: D must be a power of two from 16 to 256", D);
+  end
+  if (!(SW >= 1)) begin : g_bad_sw
+    $error("sgm_wta: SW = %0d: SW must be at least 1", SW);
+  end
+  if (!(CW >= 1)) begin : g_bad_cw
+    $error("sgm_wta: CW = %0d: CW must be at least 1", CW);
+  end
+  if (!(RW >= 1)) begin : g_bad_rw
+    $error("sgm_wta: RW = %0d: RW must be at least 1", RW);
+  end
+  if (!(UNIQUENESS == 0 || UNIQUENESS == 1)) begin : g_bad_uniqueness
+    $error("sgm_wta: UNIQUENESS = %0d: UNIQUENESS must be 0 or 1", UNIQUENESS);
+  end
+`endif
 
   localparam int UF = UNIQUENESS != 0 ? 3 : 0;  // uniqueness fields of a node
   localparam int NW = (3 + UF) * SW + LD;  // tree node {exl, exf, sec, b, a, m, d} ({b, a, m, d} without them)

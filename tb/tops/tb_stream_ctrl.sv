@@ -36,6 +36,19 @@ module tb_stream_ctrl #(
   output logic        en_o
 );
 
+  // ------------------------------------------------------------ parameter checks
+  // An illegal parameter value stops elaboration with a message naming it ($error in
+  // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
+  // so its builds, of legal parameters only, leave the checks out).
+`ifndef __ICARUS__
+  if (!(LAT >= 1)) begin : g_bad_lat
+    $error("tb_stream_ctrl: LAT = %0d: LAT must be at least 1", LAT);
+  end
+  if (!(FILL_CYCLES >= 0 && FILL_CYCLES <= 255)) begin : g_bad_fill_cycles
+    $error("tb_stream_ctrl: FILL_CYCLES = %0d: FILL_CYCLES must be from 0 to 255 (an 8-bit count)", FILL_CYCLES);
+  end
+`endif
+
   logic [XW-1:0] width;
   logic [YW-1:0] height;
   logic          lut_start;
