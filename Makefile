@@ -36,6 +36,10 @@ TB_HDR     := $(wildcard tb/*.hpp)
 # figures, OpenCV reference, reports) shared by sgm-eval, the tests and the harness.
 EVAL_SRC   := $(filter-out tools/sgm_eval.cpp,$(wildcard tools/*.cpp))
 EVAL_OBJ   := $(patsubst %.cpp,$(OBJ)/%.o,$(EVAL_SRC))
+# The report helpers (JSON writer and reader, number formatter, meta.txt reader)
+# the summary programs of synth/ link without the rest of the evaluation library.
+REPORT_SRC := tools/report_json.cpp tools/report_util.cpp tools/json_read.cpp
+REPORT_HDR := tools/report_json.hpp tools/report_util.hpp tools/json_read.hpp tools/video_formats.hpp
 TEST_SRC   := $(wildcard tests/*.cpp)
 TEST_OBJ   := $(patsubst %.cpp,$(OBJ)/%.o,$(TEST_SRC))
 
@@ -81,6 +85,10 @@ TEST_EXTRA := sim-ci eval-ci
 -include tools/pool.mk
 # `make pnr`, `make pnr-ci`: place and route on ECP5 (synth/pnr.mk).
 -include synth/pnr.mk
+# `make datasheet`, `make datasheet-ci`: docs/datasheet.md from the JSON reports (tools/datasheet.mk).
+-include tools/datasheet.mk
+# `make format`, `make format-check`: clang-format (scripts/format.mk).
+-include scripts/format.mk
 
 # ---------------------------------------------------------------- golden model
 $(OBJ)/%.o: %.cpp $(GOLDEN_HDR) $(wildcard tools/*.hpp tests/*.hpp) | check-tools
