@@ -528,6 +528,7 @@ void targetJson(JsonWriter &j, const Target &t, const std::vector<Loop> &loops) 
   j.key("seconds").real(t.seconds, 0);
   j.key("yosys").string(metaGet(t.meta, "yosys"));
   j.key("rtl_commit").string(metaGet(t.meta, "rtl_commit"));
+  j.key("date").string(metaGet(t.meta, "date"));  // of the Yosys run (meta.txt)
   j.key("stages").beginArray();
   for (const Stage &st : t.stages) {
     j.beginObject();
