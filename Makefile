@@ -71,6 +71,8 @@ help:
 	@echo "make fuzz          seeded random-corruption fuzzing of image loading and argument parsing"
 	@echo "make coverage      line and toggle coverage of rtl/ -> build/coverage/"
 	@echo "make mutate        plant each bug of tests/mutate/mutations.txt in a copy of rtl/, run the tests -> build/mutate/ (MUTATE_ONLY=id,id)"
+	@echo "make datasheet     docs/datasheet.md (DATASHEET=...) from the measured JSON reports under build/"
+	@echo "make format        clang-format every C++ file (.clang-format); make format-check lists the ones that differ"
 	@echo "make test          everything CI runs (lint, unit tests, RTL fixtures, synth-ci, regress-ci, fuzz-ci, mutate-ci)"
 	@echo "make clean         remove build/"
 
