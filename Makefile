@@ -37,6 +37,10 @@ TB_HDR     := $(wildcard tb/*.hpp)
 # figures, OpenCV reference, reports) shared by sgm-eval, the tests and the harness.
 EVAL_SRC   := $(filter-out tools/sgm_eval.cpp,$(wildcard tools/*.cpp))
 EVAL_OBJ   := $(patsubst %.cpp,$(OBJ)/%.o,$(EVAL_SRC))
+# The report helpers (JSON writer and reader, number formatter, meta.txt reader)
+# the summary programs of synth/ link without the rest of the evaluation library.
+REPORT_SRC := tools/report_json.cpp tools/report_util.cpp tools/json_read.cpp
+REPORT_HDR := tools/report_json.hpp tools/report_util.hpp tools/json_read.hpp tools/video_formats.hpp
 TEST_SRC   := $(wildcard tests/*.cpp)
 TEST_OBJ   := $(patsubst %.cpp,$(OBJ)/%.o,$(TEST_SRC))
 
@@ -72,6 +76,8 @@ help:
 	@echo "make fuzz          seeded random-corruption fuzzing of image loading and argument parsing"
 	@echo "make coverage      line and toggle coverage of rtl/ -> build/coverage/"
 	@echo "make mutate        plant each bug of tests/mutate/mutations.txt in a copy of rtl/, run the tests -> build/mutate/ (MUTATE_ONLY=id,id)"
+	@echo "make datasheet     docs/datasheet.md (DATASHEET=...) from the measured JSON reports under build/"
+	@echo "make format        clang-format every C++ file (.clang-format); make format-check lists the ones that differ"
 	@echo "make test          everything CI runs (lint, unit tests, RTL fixtures, synth-ci, regress-ci, fuzz-ci, mutate-ci)"
 	@echo "make clean         remove build/"
 
@@ -88,6 +94,10 @@ TEST_EXTRA := build-defaults-check sim-ci eval-ci
 -include synth/pnr.mk
 # `make regmap`, `make regmap-check`: the register map from its one description (regmap/regmap.mk).
 include regmap/regmap.mk
+# `make datasheet`, `make datasheet-ci`: docs/datasheet.md from the JSON reports (tools/datasheet.mk).
+include tools/datasheet.mk
+# `make format`, `make format-check`: clang-format (scripts/format.mk).
+include scripts/format.mk
 
 # ---------------------------------------------------------------- golden model
 # Each object depends on the headers it includes: the compiler writes them into its .d

@@ -17,6 +17,8 @@
 #include "report_json.hpp"
 #include "report_pool.hpp"
 #include "report_table.hpp"
+#include "report_util.hpp"
+#include "video_formats.hpp"
 
 #include "sgm/cli_args.hpp"
 #include "sgm/image_io.hpp"
@@ -47,19 +49,6 @@ const char* kUsage =
     "usage: sgm-bench formats --source IMAGE --out DIR\n"
     "       sgm-bench report --data DIR --bench DIR [--repeats N] [--pool DIR]\n";
 
-// The paper's Table II formats plus 1080p30; paperMhz is the paper's clock
-// (it runs at 9 cycles per pixel), 0 where the paper has no column.
-struct VideoFormat {
-  const char* name;
-  int width, height, fps;
-  double paperMhz;
-};
-const VideoFormat kFormats[] = {
-    {"450x375p30", 450, 375, 30, 45.6},  {"450x375p60", 450, 375, 60, 91.1},
-    {"640x480p30", 640, 480, 30, 82.9},  {"640x480p60", 640, 480, 60, 165.9},
-    {"1280x720p30", 1280, 720, 30, 248.8}, {"1920x1080p30", 1920, 1080, 30, 0},
-};
-
 // The simulated frame sizes (one per distinct width x height).
 std::string frameName(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
 
@@ -76,12 +65,6 @@ const OpenCvMode kOpenCvModes[] = {
     {"opencv-hh", "OpenCV MODE_HH", cv::StereoSGBM::MODE_HH},
     {"opencv-3way", "OpenCV MODE_SGBM_3WAY", cv::StereoSGBM::MODE_SGBM_3WAY},
 };
-
-std::string fmt(double v, int decimals = 2) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
-}
 
 // A simulator report (sgm-sim --out DIR writes DIR/report.json).
 struct SimReport {
@@ -110,7 +93,7 @@ int commandFormats(const CliArgs& args) {
   fs::create_directories(out);
   std::vector<std::pair<std::string, cv::Mat>> files;
   std::map<std::string, bool> done;
-  for (const VideoFormat& f : kFormats) {
+  for (const VideoFormat& f : kVideoFormats) {
     const std::string name = frameName(f.width, f.height);
     if (done[name]) continue;
     done[name] = true;
@@ -126,13 +109,6 @@ int commandFormats(const CliArgs& args) {
   writePngs(files);
   std::printf("sgm-bench: wrote %zu format images in %s/\n", files.size(), out.c_str());
   return 0;
-}
-
-std::string readText(const std::string& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  return line;
 }
 
 // One Verilator build option set, run BENCH_REPEATS times on Cones in
@@ -152,7 +128,7 @@ SimVariant readSimVariant(const fs::path& dir) {
   v.name = dir.filename().string();
   const fs::path flags = dir / "flags.txt";
   if (!fs::exists(flags)) throw Error("missing '" + flags.string() + "' (run `make bench`, not sgm-bench alone)");
-  v.flags = readText(flags.string());
+  v.flags = readFirstLine(flags.string());
   for (const auto& entry : fs::directory_iterator(dir)) {
     if (!entry.is_directory()) continue;  // flags.txt and the runs' logs sit beside the run directories
     const SimReport run = readSimReport(entry.path().string());
@@ -243,19 +219,19 @@ BenchData measure(const std::string& data, const std::string& bench, int repeats
   }
   std::sort(b.simVariants.begin(), b.simVariants.end(),
             [](const SimVariant& x, const SimVariant& y) { return x.name < y.name; });
-  for (const VideoFormat& f : kFormats) {  // the frame sizes of BENCH_FRAMES
+  for (const VideoFormat& f : kVideoFormats) {  // the frame sizes of BENCH_FRAMES
     const std::string name = frameName(f.width, f.height);
     if (!b.formats.count(name) && fs::exists(bench + "/formats/" + name + "/report.json"))
       b.formats.emplace(name, readSimReport(bench + "/formats/" + name));
   }
   if (b.formats.empty()) throw Error("no video-format frame simulated under '" + bench + "/formats' (run `make bench`)");
-  b.maxWidth = std::stoi(readText(bench + "/max_width.txt"));
+  b.maxWidth = std::stoi(readFirstLine(bench + "/max_width.txt"));
   return b;
 }
 
 double clockMhz(const SimReport& frame, int fps) { return frame.number("cycles") * fps / 1e6; }
 
-std::string optional(const std::optional<double>& v) { return v ? fmt(*v) : "-"; }
+std::string optional(const std::optional<double>& v) { return v ? fixed(*v, 2) : "-"; }
 
 // The pool's means in report order: groups, halves, sets.
 std::vector<PoolMean> allMeans(const PoolReport& p) {
@@ -283,11 +259,11 @@ std::string poolSection(const BenchData& b) {
      << "| means | scenes | ours | four-path | OpenCV strict | OpenCV valid only | OpenCV density |\n"
         "|---|---:|---:|---:|---:|---:|---:|\n";
   for (const PoolMean& m : allMeans(p))
-    md << "| " << m.name << " | " << m.scenes << " | **" << fmt(m.ours) << "** | " << optional(m.today) << " | "
+    md << "| " << m.name << " | " << m.scenes << " | **" << fixed(m.ours, 2) << "** | " << optional(m.today) << " | "
        << optional(m.opencvStrict) << " | " << optional(m.opencvValid) << " | " << optional(m.opencvDensity) << " |\n";
   if (p.worstRegression)
     md << "\nWorst change against the four-path preset: " << p.worstScene << " " << (*p.worstRegression >= 0 ? "+" : "")
-       << fmt(*p.worstRegression) << " points. Per scene: build/eval/pool.md (`make eval-pool`).\n";
+       << fixed(*p.worstRegression, 2) << " points. Per scene: build/eval/pool.md (`make eval-pool`).\n";
   md << "\n### The core on pool scenes (`BENCH_POOL_SCENES`, D = 128 build)\n\n";
   if (b.poolRtl.empty()) {
     md << "Not simulated in this run (BENCH_POOL_SCENES empty or POOL absent).\n";
@@ -298,9 +274,9 @@ std::string poolSection(const BenchData& b) {
     const PoolRow* row = poolRow(p, scene);
     md << "| " << scene << " | " << r.at("width") << "x" << r.at("height") << " | " << r.at("disparities") << " | "
        << (r.flag("bit_exact") ? "yes" : "NO (" + r.at("mismatches") + " px, first " + r.at("first_mismatch") + ")")
-       << " | " << fmt(r.number("cycles_per_pixel"), 4) << " | ";
+       << " | " << fixed(r.number("cycles_per_pixel"), 4) << " | ";
     if (row && std::to_string(row->disparities) == r.at("disparities"))
-      md << fmt(strictFigure(row->set, row->ours)) << (isKittiSet(row->set) ? " (D1)" : " (bad-1.0)");
+      md << fixed(strictFigure(row->set, row->ours), 2) << (isKittiSet(row->set) ? " (D1)" : " (bad-1.0)");
     else
       md << "- (the pool runs it at D = " << (row ? std::to_string(row->disparities) : std::string("?")) << ")";
     md << " |\n";
@@ -322,10 +298,10 @@ std::string markdown(const BenchData& b) {
   const std::map<std::string, double> paper = tableMethods(b.d)[3].paper;  // the Rank SAD row
   for (const std::string& s : b.scenes) {
     const SimReport& r = b.rtl.at(s);
-    md << "| " << s << " | **" << fmt(b.figures.at("rtl").at(s).errNonocc) << "** | "
+    md << "| " << s << " | **" << fixed(b.figures.at("rtl").at(s).errNonocc, 2) << "** | "
        << (r.flag("bit_exact") ? "yes" : "NO (" + r.at("mismatches") + " px)") << " | "
-       << (paper.count(s) ? fmt(paper.at(s), 1) : "-") << " | " << (kGoals.count(s) ? fmt(kGoals.at(s), 1) : "-");
-    for (const OpenCvMode& m : kOpenCvModes) md << " | " << fmt(b.figures.at(m.key).at(s).errNonocc);
+       << (paper.count(s) ? fixed(paper.at(s), 1) : "-") << " | " << (kGoals.count(s) ? fixed(kGoals.at(s), 1) : "-");
+    for (const OpenCvMode& m : kOpenCvModes) md << " | " << fixed(b.figures.at(m.key).at(s).errNonocc, 2);
     md << " |\n";
   }
   md << "\n## Every figure per scene\n\n| scene | method | nonocc | all | disc | density |\n|---|---|---|---|---|---|\n";
@@ -334,8 +310,8 @@ std::string markdown(const BenchData& b) {
   for (const std::string& s : b.scenes)
     for (const auto& [key, label] : methods) {
       const ErrorFigures& f = b.figures.at(key).at(s);
-      md << "| " << s << " | " << label << " | " << fmt(f.errNonocc) << " | " << fmt(f.errAll) << " | "
-         << optional(f.errDisc) << " | " << fmt(f.density) << " |\n";
+      md << "| " << s << " | " << label << " | " << fixed(f.errNonocc, 2) << " | " << fixed(f.errAll, 2) << " | "
+         << optional(f.errDisc) << " | " << fixed(f.density, 2) << " |\n";
     }
   md << "\nSawtooth has no Middlebury masks here, so its nonocc mask is derived from the ground truth and it has no "
         "disc figure; Aloe (OpenCV's copy, downscaled 4x) has no masks either.\n";
@@ -344,8 +320,8 @@ std::string markdown(const BenchData& b) {
      << "| scene | size | golden ms | OpenCV MODE_SGBM ms | ratio golden/OpenCV |\n|---|---|---|---|---|\n";
   for (const std::string& s : b.scenes) {
     const BenchResult& r = b.speed.at(s);
-    md << "| " << s << " | " << r.width << "x" << r.height << " | " << fmt(r.goldenMs, 1) << " | "
-       << fmt(r.opencvMs(), 1) << " (" << r.opencvInput() << ") | " << fmt(r.ratio()) << " |\n";
+    md << "| " << s << " | " << r.width << "x" << r.height << " | " << fixed(r.goldenMs, 1) << " | "
+       << fixed(r.opencvMs(), 1) << " (" << r.opencvInput() << ") | " << fixed(r.ratio(), 2) << " |\n";
   }
   const BenchResult& any = b.speed.begin()->second;
   md << "\nMedian of " << any.repeats << " interleaved rounds after a warm-up. The golden model uses "
@@ -356,16 +332,16 @@ std::string markdown(const BenchData& b) {
      << "| scene | size | cycles/pixel | latency (cycles) | sim cycles/s |\n|---|---|---|---|---|\n";
   for (const std::string& s : b.scenes) {
     const SimReport& r = b.rtl.at(s);
-    md << "| " << s << " | " << r.at("width") << "x" << r.at("height") << " | " << fmt(r.number("cycles_per_pixel"), 4)
-       << " | " << r.at("latency_cycles") << " | " << fmt(r.number("sim_cycles_per_second"), 0) << " |\n";
+    md << "| " << s << " | " << r.at("width") << "x" << r.at("height") << " | " << fixed(r.number("cycles_per_pixel"), 4)
+       << " | " << r.at("latency_cycles") << " | " << fixed(r.number("sim_cycles_per_second"), 0) << " |\n";
   }
   md << "\n## Simulation speed by Verilator build options (Cones, one frame)\n\n"
      << "| variant | Verilator options | runs | cycles/s (median) | min .. max | frames/s | seconds per frame "
         "|\n|---|---|---|---|---|---|---|\n";
   for (const SimVariant& v : b.simVariants) {
-    md << "| " << v.name << " | `" << v.flags << "` | " << v.cyclesPerSecond.size() << " | " << fmt(v.median(), 0) << " | "
-       << fmt(v.min(), 0) << " .. " << fmt(v.max(), 0) << " | " << fmt(v.median() / v.cyclesPerFrame, 3) << " | "
-       << fmt(v.cyclesPerFrame / v.median(), 2) << " |\n";
+    md << "| " << v.name << " | `" << v.flags << "` | " << v.cyclesPerSecond.size() << " | " << fixed(v.median(), 0) << " | "
+       << fixed(v.min(), 0) << " .. " << fixed(v.max(), 0) << " | " << fixed(v.median() / v.cyclesPerFrame, 3) << " | "
+       << fixed(v.cyclesPerFrame / v.median(), 2) << " |\n";
   }
   md << "\nMedian of interleaved rounds (one run of each variant per round); where two variants' ranges overlap, "
         "this machine does not tell them apart. Every run is also a bit-exact check against the golden model. "
@@ -374,15 +350,15 @@ std::string markdown(const BenchData& b) {
   md << "\n## Clock needed per video format (the paper's Table II)\n\n"
      << "| format | cycles per frame (simulated) | cycles/pixel | our clock (MHz) | paper's clock (MHz, 9 cycles/pixel) "
         "|\n|---|---|---|---|---|\n";
-  for (const VideoFormat& f : kFormats) {
+  for (const VideoFormat& f : kVideoFormats) {
     if (!b.formats.count(frameName(f.width, f.height))) {
       md << "| " << f.name << " | not simulated in this run (BENCH_FRAMES) | | | |\n";
       continue;
     }
     const SimReport& r = b.formats.at(frameName(f.width, f.height));
-    md << "| " << f.name << " | " << r.at("cycles") << " | " << fmt(r.number("cycles_per_pixel"), 4) << " | "
-       << fmt(clockMhz(r, f.fps), 1) << " | "
-       << (f.paperMhz > 0 ? fmt(f.paperMhz, 1) : fmt(9.0 * f.width * f.height * f.fps / 1e6, 1) + " (derived)")
+    md << "| " << f.name << " | " << r.at("cycles") << " | " << fixed(r.number("cycles_per_pixel"), 4) << " | "
+       << fixed(clockMhz(r, f.fps), 1) << " | "
+       << (f.paperMhz > 0 ? fixed(f.paperMhz, 1) : fixed(9.0 * f.width * f.height * f.fps / 1e6, 1) + " (derived)")
        << " |\n";
   }
   md << "\nCycles per frame are from the first input to the last output beat of one frame, including the flush "
@@ -512,7 +488,7 @@ std::string json(const BenchData& b) {
     j.endObject();
   }
   j.key("formats").beginArray();
-  for (const VideoFormat& f : kFormats) {
+  for (const VideoFormat& f : kVideoFormats) {
     if (!b.formats.count(frameName(f.width, f.height))) continue;  // not in BENCH_FRAMES
     const SimReport& r = b.formats.at(frameName(f.width, f.height));
     j.beginObject();

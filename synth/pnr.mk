@@ -198,9 +198,9 @@ pnr-summary: $(PNR_SUMMARY) | pnr-tools
 pnr-clean:
 	rm -rf $(PNR_DIR)
 
-$(PNR_SUMMARY): synth/pnr_summary.cpp tools/report_json.cpp tools/report_json.hpp | check-tools
+$(PNR_SUMMARY): synth/pnr_summary.cpp $(REPORT_SRC) $(REPORT_HDR) | check-tools
 	@mkdir -p $(dir $@)
-	$(CXX) -std=c++17 -O2 -Wall -Wextra -Igolden -Itools -o $@ synth/pnr_summary.cpp tools/report_json.cpp
+	$(CXX) -std=c++17 -O2 -Wall -Wextra -Igolden -Itools -o $@ synth/pnr_summary.cpp $(REPORT_SRC)
 
 # Synthesis of one configuration: the hierarchical netlist of the whole core.
 $(PNR_CFG)/synth/done: $(PNR_DEPS) | pnr-tools

@@ -12,176 +12,34 @@
 // comes from report.json: utilisation (TRELLIS_COMB, TRELLIS_FF, DP16KD,
 // MULT18X18D), fmax (achieved) and the critical path. --check CONFIG/RUN fails
 // (exit 1, the reason on stderr) unless that run is done and reports an fmax.
+#include "json_read.hpp"
 #include "report_json.hpp"
+#include "report_util.hpp"
+#include "video_formats.hpp"
+
 #include "sgm/params.hpp"
 
 #include <algorithm>
-#include <cctype>
-#include <cstdio>
-#include <dirent.h>
-#include <fstream>
+#include <cstdlib>
 #include <iostream>
 #include <map>
 #include <memory>
 #include <sstream>
 #include <string>
 #include <utility>
-#include <sys/stat.h>
 #include <vector>
 
 namespace {
 
 using sgm::Error;
+using sgm::eval::fixed;
+using sgm::eval::isFile;
+using sgm::eval::Json;
 using sgm::eval::JsonWriter;
-
-// ------------------------------------------------------------------ JSON reader
-// Just enough of JSON for nextpnr's report: objects, arrays, strings (escapes
-// kept as the character after the backslash, \uXXXX as '?'), numbers, literals.
-struct Json {
-  enum Kind { Null, Bool, Number, String, Array, Object } kind = Null;
-  double number = 0;
-  std::string text;
-  std::vector<Json> items;
-  std::vector<std::pair<std::string, Json>> members;
-
-  const Json* get(const std::string& key) const {
-    for (const auto& m : members)
-      if (m.first == key) return &m.second;
-    return nullptr;
-  }
-};
-
-class JsonParser {
- public:
-  JsonParser(const std::string& text, const std::string& name) : s_(text), name_(name) {}
-  Json parse() {
-    Json v = value();
-    skip();
-    if (i_ != s_.size()) fail("trailing characters");
-    return v;
-  }
-
- private:
-  [[noreturn]] void fail(const std::string& what) {
-    throw Error(name_ + ": JSON: " + what + " at offset " + std::to_string(i_));
-  }
-  void skip() {
-    while (i_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[i_]))) ++i_;
-  }
-  char peek() {
-    skip();
-    if (i_ >= s_.size()) fail("unexpected end");
-    return s_[i_];
-  }
-  void expect(char c) {
-    if (peek() != c) fail(std::string("expected '") + c + "'");
-    ++i_;
-  }
-  std::string str() {
-    expect('"');
-    std::string out;
-    while (i_ < s_.size() && s_[i_] != '"') {
-      if (s_[i_] == '\\' && i_ + 1 < s_.size()) {
-        ++i_;
-        if (s_[i_] == 'u') { out += '?'; i_ += 4; }
-        else out += s_[i_] == 'n' ? '\n' : s_[i_] == 't' ? '\t' : s_[i_];
-        ++i_;
-      } else {
-        out += s_[i_++];
-      }
-    }
-    if (i_ >= s_.size()) fail("unterminated string");
-    ++i_;
-    return out;
-  }
-  Json value() {
-    Json v;
-    const char c = peek();
-    if (c == '{') {
-      v.kind = Json::Object;
-      ++i_;
-      if (peek() == '}') { ++i_; return v; }
-      for (;;) {
-        std::string k = str();
-        expect(':');
-        v.members.emplace_back(std::move(k), value());
-        if (peek() == ',') { ++i_; continue; }
-        expect('}');
-        return v;
-      }
-    }
-    if (c == '[') {
-      v.kind = Json::Array;
-      ++i_;
-      if (peek() == ']') { ++i_; return v; }
-      for (;;) {
-        v.items.push_back(value());
-        if (peek() == ',') { ++i_; continue; }
-        expect(']');
-        return v;
-      }
-    }
-    if (c == '"') { v.kind = Json::String; v.text = str(); return v; }
-    for (const char* lit : {"true", "false", "null"}) {
-      if (s_.compare(i_, std::string(lit).size(), lit) == 0) {
-        i_ += std::string(lit).size();
-        v.kind = lit[0] == 'n' ? Json::Null : Json::Bool;
-        v.number = lit[0] == 't';
-        return v;
-      }
-    }
-    const char* begin = s_.c_str() + i_;
-    char* end = nullptr;
-    v.number = std::strtod(begin, &end);
-    if (end == begin) fail("unexpected character");
-    v.kind = Json::Number;
-    i_ += static_cast<size_t>(end - begin);
-    return v;
-  }
-
-  const std::string& s_;
-  std::string name_;
-  size_t i_ = 0;
-};
-
-// ------------------------------------------------------------------ helpers
-bool isFile(const std::string& p) {
-  struct stat st;
-  return stat(p.c_str(), &st) == 0 && S_ISREG(st.st_mode);
-}
-std::vector<std::string> listDir(const std::string& p) {
-  std::vector<std::string> out;
-  if (DIR* d = opendir(p.c_str())) {
-    while (dirent* e = readdir(d)) {
-      const std::string n = e->d_name;
-      if (n[0] != '.') out.push_back(n);
-    }
-    closedir(d);
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
-std::string readFile(const std::string& p) {
-  std::ifstream f(p);
-  if (!f) throw Error(p + ": cannot read");
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
-std::map<std::string, std::string> readMeta(const std::string& p) {
-  std::map<std::string, std::string> kv;
-  std::istringstream in(readFile(p));
-  for (std::string line; std::getline(in, line);) {
-    const auto eq = line.find('=');
-    if (eq != std::string::npos) kv[line.substr(0, eq)] = line.substr(eq + 1);
-  }
-  return kv;
-}
-std::string fixed(double v, int decimals) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
-}
+using sgm::eval::kVideoFormats;
+using sgm::eval::listDir;
+using sgm::eval::neededMhz;
+using sgm::eval::VideoFormat;
 
 // The RTL module of a source location "rtl/sgm_path_pe.sv:43.24-43.35" (one
 // module per file, named after it); empty for Yosys' own techmap files.
@@ -230,10 +88,8 @@ long used(const Json& util, const char* type, long* available) {
 Run readRun(const std::string& dir, const std::string& name) {
   Run r;
   r.name = name;
-  r.meta = readMeta(dir + "/meta.txt");
-  const std::string reportPath = dir + "/report.json";
-  const std::string text = readFile(reportPath);
-  const Json report = JsonParser(text, reportPath).parse();
+  r.meta = sgm::eval::readMeta(dir + "/meta.txt", /*required=*/true);
+  const Json report = sgm::eval::readJsonFile(dir + "/report.json");
   if (const Json* util = report.get("utilization")) {
     r.lut4 = used(*util, "TRELLIS_COMB", &r.lut4Avail);
     r.ff = used(*util, "TRELLIS_FF", &r.ffAvail);
@@ -284,24 +140,6 @@ Run readRun(const std::string& dir, const std::string& name) {
     }
   }
   return r;
-}
-
-// ------------------------------------------------------------------ video formats
-// The paper's Table II (its clock at 9 cycles per pixel) and the HD formats
-// this core aims at; paperMhz 0 where the paper has no column. Active pixels only.
-struct VideoFormat {
-  const char* name;
-  int width, height, fps;
-  double paperMhz;
-};
-const VideoFormat kFormats[] = {
-    {"450x375p30", 450, 375, 30, 45.6},    {"450x375p60", 450, 375, 60, 91.1},
-    {"640x480p30", 640, 480, 30, 82.9},    {"640x480p60", 640, 480, 60, 165.9},
-    {"1280x720p30", 1280, 720, 30, 248.8}, {"1280x720p60", 1280, 720, 60, 0},
-    {"1920x1080p30", 1920, 1080, 30, 0},   {"1920x1080p60", 1920, 1080, 60, 0},
-};
-double neededMhz(const VideoFormat& f, double cpp) {
-  return double(f.width) * f.height * f.fps * cpp / 1e6;
 }
 
 std::string meta(const Run& r, const char* key) {
@@ -396,7 +234,7 @@ void writeSummary(const std::string& root, const std::vector<Run>& allRuns, doub
     j.key("rtl_commit").string(meta(r, "rtl_commit"));
     j.key("date").string(meta(r, "date"));
     j.key("formats").beginArray();
-    for (const VideoFormat& f : kFormats) {
+    for (const VideoFormat& f : kVideoFormats) {
       j.beginObject();
       j.key("format").string(f.name);
       j.key("needed_mhz").real(neededMhz(f, cpp));
@@ -474,7 +312,7 @@ void writeSummary(const std::string& root, const std::vector<Run>& allRuns, doub
   md << "\n|---|---|---|";
   for (size_t i = 0; i < runs.size(); ++i) md << "---|";
   md << "\n";
-  for (const VideoFormat& f : kFormats) {
+  for (const VideoFormat& f : kVideoFormats) {
     md << "| " << f.name << " | " << (f.paperMhz > 0 ? fixed(f.paperMhz, 1) : std::string("-")) << " | "
        << fixed(neededMhz(f, cpp), 1) << " |";
     for (const Run& r : runs) {

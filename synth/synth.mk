@@ -98,9 +98,9 @@ synth-flat:       $(SYNTH_OUT)/xc7-flat/done
 synth-clean:
 	rm -rf $(SYNTH_DIR)
 
-$(SYNTH_SUMMARY): synth/synth_summary.cpp | check-tools
+$(SYNTH_SUMMARY): synth/synth_summary.cpp $(REPORT_SRC) $(REPORT_HDR) | check-tools
 	@mkdir -p $(dir $@)
-	$(CXX) -std=c++17 -O2 -Wall -Wextra -o $@ $<
+	$(CXX) -std=c++17 -O2 -Wall -Wextra -Igolden -Itools -o $@ synth/synth_summary.cpp $(REPORT_SRC)
 
 # $(call synth_yosys,TARGET,SCRIPT,ENV): run SCRIPT for TARGET into $(@D), with the
 # configuration in the environment, then write $(@D)/meta.txt and the stamp.

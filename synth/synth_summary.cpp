@@ -13,10 +13,12 @@
 // buffers (sgm_path_engine mem45 / mem90 / mem135) were mapped to block RAM
 // only, and `check` found no problem; --check ice40-loop-d<D> fails unless that
 // loop harness was routed and both nextpnr-ice40 and icetime gave an fmax.
+#include "report_json.hpp"
+#include "report_util.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <dirent.h>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -24,7 +26,6 @@
 #include <set>
 #include <sstream>
 #include <string>
-#include <sys/stat.h>
 #include <vector>
 
 namespace {
@@ -41,44 +42,15 @@ constexpr int kLw = 9;  // path-cost width of the core = ceil(log2(Lmax + 1)), L
 long eq7Bits(long d, long w) { return (d + 5) * (3 * w + 1) * kLw; }
 
 // ------------------------------------------------------------------ helpers
-bool isDir(const std::string &p) {
-  struct stat st;
-  return stat(p.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
-}
-bool isFile(const std::string &p) {
-  struct stat st;
-  return stat(p.c_str(), &st) == 0 && S_ISREG(st.st_mode);
-}
-std::vector<std::string> listDir(const std::string &p) {
-  std::vector<std::string> out;
-  if (DIR *d = opendir(p.c_str())) {
-    while (dirent *e = readdir(d)) {
-      std::string n = e->d_name;
-      if (n != "." && n != "..") out.push_back(n);
-    }
-    closedir(d);
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
-std::vector<std::string> readLines(const std::string &p) {
-  std::vector<std::string> out;
-  std::ifstream f(p);
-  std::string l;
-  while (std::getline(f, l)) out.push_back(l);
-  return out;
-}
-std::map<std::string, std::string> readMeta(const std::string &p) {
-  std::map<std::string, std::string> m;
-  for (auto &l : readLines(p)) {
-    auto eq = l.find('=');
-    if (eq != std::string::npos) m[l.substr(0, eq)] = l.substr(eq + 1);
-  }
-  return m;
-}
+using sgm::eval::fixed;
+using sgm::eval::isFile;
+using sgm::eval::JsonWriter;
+using sgm::eval::listDir;
+using sgm::eval::readLines;
+using sgm::eval::readMeta;
+bool isDir(const std::string &p) { return sgm::eval::isDirectory(p); }
 std::string metaGet(const std::map<std::string, std::string> &m, const std::string &k) {
-  auto it = m.find(k);
-  return it == m.end() ? std::string() : it->second;
+  return sgm::eval::metaValue(m, k);
 }
 long toLong(const std::string &s, long dflt = 0) {
   try { return std::stol(s); } catch (...) { return dflt; }
@@ -93,32 +65,6 @@ std::string baseName(const std::string &mod) {
 }
 bool startsWith(const std::string &s, const std::string &p) { return s.compare(0, p.size(), p) == 0; }
 
-std::string jsonStr(const std::string &s) {
-  std::string o = "\"";
-  for (char c : s) {
-    switch (c) {
-      case '"': o += "\\\""; break;
-      case '\\': o += "\\\\"; break;
-      case '\n': o += "\\n"; break;
-      case '\t': o += "\\t"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) {
-          char b[8];
-          std::snprintf(b, sizeof b, "\\u%04x", c);
-          o += b;
-        } else {
-          o += c;
-        }
-    }
-  }
-  return o + "\"";
-}
-std::string jsonNum(double v, int prec = 1) {
-  if (std::isnan(v)) return "null";
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*f", prec, v);
-  return b;
-}
 // 31495 -> "31,495"
 std::string grouped(long v) {
   std::string s = std::to_string(v < 0 ? -v : v), o;
@@ -130,12 +76,6 @@ std::string grouped(long v) {
   if (v < 0) o += '-';
   return std::string(o.rbegin(), o.rend());
 }
-std::string fixed(double v, int prec) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*f", prec, v);
-  return b;
-}
-
 // ------------------------------------------------------------------ cell classes
 enum class Tech { Xilinx, Ice40, Generic };
 
@@ -509,114 +449,152 @@ bool loadLoop(const std::string &dir, Loop &l) {
 }
 
 // ------------------------------------------------------------------ JSON
-std::string countsJson(const Counts &c, Tech tech, const std::string &ind) {
-  std::ostringstream o;
-  bool x = tech == Tech::Xilinx, i = tech == Tech::Ice40;
-  o << ind << "\"lut\": " << (tech == Tech::Generic ? "null" : std::to_string(c.lut)) << ",\n";
-  o << ind << "\"ff\": " << c.ff << ",\n";
-  o << ind << "\"bram18\": " << (x ? std::to_string(c.bram18) : "null") << ",\n";
-  o << ind << "\"bram36\": " << (x ? std::to_string(c.bram36) : "null") << ",\n";
-  if (x) o << ind << "\"ramb8\": " << c.bram9 << ",\n";
-  if (i) o << ind << "\"sb_ram40_4k\": " << c.bram4 << ",\n";
-  o << ind << "\"bram_kbit\": " << c.bramKbit << ",\n";
-  o << ind << "\"lutram\": " << (x ? std::to_string(c.lutram) : "null") << ",\n";
-  o << ind << "\"srl\": " << (x ? std::to_string(c.srl) : "null") << ",\n";
-  o << ind << "\"slice_luts\": " << (x ? std::to_string(c.sliceLuts()) : "null") << ",\n";
-  o << ind << "\"dsp\": " << (tech == Tech::Generic ? "null" : std::to_string(c.dsp)) << ",\n";
-  o << ind << "\"carry\": " << (tech == Tech::Generic ? "null" : std::to_string(c.carry)) << ",\n";
-  o << ind << "\"cells\": " << c.total;
-  return o.str();
+// A count only the given technologies have (null for the others).
+void countOrNull(JsonWriter &j, const char *key, bool has, long value) {
+  j.key(key);
+  has ? j.integer(value) : j.null();
+}
+
+void countsJson(JsonWriter &j, const Counts &c, Tech tech) {
+  const bool x = tech == Tech::Xilinx, i = tech == Tech::Ice40, mapped = tech != Tech::Generic;
+  countOrNull(j, "lut", mapped, c.lut);
+  j.key("ff").integer(c.ff);
+  countOrNull(j, "bram18", x, c.bram18);
+  countOrNull(j, "bram36", x, c.bram36);
+  if (x) j.key("ramb8").integer(c.bram9);
+  if (i) j.key("sb_ram40_4k").integer(c.bram4);
+  j.key("bram_kbit").integer(c.bramKbit);
+  countOrNull(j, "lutram", x, c.lutram);
+  countOrNull(j, "srl", x, c.srl);
+  countOrNull(j, "slice_luts", x, c.sliceLuts());
+  countOrNull(j, "dsp", mapped, c.dsp);
+  countOrNull(j, "carry", mapped, c.carry);
+  j.key("cells").integer(c.total);
+}
+
+void targetJson(JsonWriter &j, const Target &t, const std::vector<Loop> &loops) {
+  j.beginObject();
+  j.key("target").string(t.target);
+  j.key("config").string(t.config);
+  j.key("d").integer(t.d);
+  j.key("max_width").integer(t.w);
+  j.key("max_height").integer(t.h);
+  j.key("census").string(t.census);
+  j.key("pixels_per_clock").integer(1);
+  countsJson(j, t.total, t.tech);
+  if (t.tech == Tech::Xilinx) {
+    j.key("lut_by_size").beginObject();
+    for (auto &kv : t.total.lutBySize) j.key("LUT" + std::to_string(kv.first)).integer(kv.second);
+    j.endObject();
+    j.key("muxf").integer(t.total.muxf);
+  }
+  if (t.tech == Tech::Generic) j.key("memories").integer(t.total.mems);
+  long memBits = 0;
+  for (auto &m : t.memories) memBits += m.bits();
+  j.key("memory_bits").integer(memBits);
+  countOrNull(j, "logic_levels", t.ltp.length >= 0, t.ltp.length);
+  j.key("logic_levels_path").beginObject();
+  j.key("stage").string(t.ltpStage);
+  j.key("from").string(t.ltp.from);
+  j.key("to").string(t.ltp.to);
+  j.endObject();
+  // iCE40: the routed loop harness of the same D if there is one, else the smallest D.
+  double fmax = NAN;
+  long fmaxD = 0;
+  if (t.tech == Tech::Ice40)
+    for (auto &l : loops)
+      if (!std::isnan(l.fmaxNextpnr) && (std::isnan(fmax) || l.d == t.d)) {
+        fmax = l.fmaxNextpnr;
+        fmaxD = l.d;
+      }
+  j.key("fmax_mhz").real(fmax, 2);
+  if (t.tech == Tech::Ice40) {
+    j.key("fmax_source");
+    fmaxD ? j.string("ice40-loop-d" + std::to_string(fmaxD)) : j.null();
+  }
+  if (t.tech == Tech::Xilinx) j.key("lut_per_pixel_per_clock").integer(t.total.sliceLuts());
+  j.key("path_buffers").beginObject();
+  j.key("bits").integer(t.pbBits);
+  j.key("eq7_bits").integer(eq7Bits(t.d, t.w));
+  j.key("bram18").integer(t.pbBram18);
+  j.key("bram36").integer(t.pbBram36);
+  j.key("ramb8").integer(t.pbBram9);
+  j.key("sb_ram40_4k").integer(t.pbBram4);
+  j.key("bram_kbit").integer(t.pbBramKbit);
+  j.key("lutram").integer(t.pbLutram);
+  j.key("in_block_ram").boolean(t.pbInBram);
+  j.endObject();
+  j.key("check_problems").integer(t.checkProblems);
+  j.key("seconds").real(t.seconds, 0);
+  j.key("yosys").string(metaGet(t.meta, "yosys"));
+  j.key("rtl_commit").string(metaGet(t.meta, "rtl_commit"));
+  j.key("date").string(metaGet(t.meta, "date"));  // of the Yosys run (meta.txt)
+  j.key("stages").beginArray();
+  for (const Stage &st : t.stages) {
+    j.beginObject();
+    j.key("name").string(st.name);
+    j.key("instances").integer(st.instances);
+    countsJson(j, st.counts, t.tech);
+    j.key("logic_levels").integer(st.ltp.length);
+    j.key("seconds").real(st.seconds, 1);
+    j.endObject();
+  }
+  j.endArray();
+  j.key("memory_list").beginArray();
+  for (const Memory &me : t.memories) {
+    j.beginObject();
+    j.key("stage").string(me.stage);
+    j.key("name").string(me.name);
+    j.key("width").integer(me.width);
+    j.key("depth").integer(me.depth);
+    j.key("instances").integer(me.instances);
+    j.key("bits").integer(me.bits());
+    j.key("cells").beginObject();
+    for (auto &c : me.cells) j.key(c.first).integer(c.second);
+    j.endObject();
+    j.endObject();
+  }
+  j.endArray();
+  j.endObject();
+}
+
+void loopJson(JsonWriter &j, const Loop &l) {
+  j.beginObject();
+  j.key("target").string("ice40-loop");
+  j.key("config").string("loop-d" + std::to_string(l.d));
+  j.key("d").integer(l.d);
+  j.key("max_width").null();
+  j.key("pixels_per_clock").integer(1);
+  j.key("device").string(metaGet(l.meta, "device"));
+  j.key("lut").integer(l.lut);
+  j.key("ff").integer(l.ff);
+  j.key("carry").integer(l.carry);
+  j.key("lc").integer(l.lc);
+  j.key("lc_available").integer(l.lcTotal);
+  j.key("fmax_mhz").real(l.fmaxNextpnr, 2);
+  j.key("fmax_icetime_mhz").real(l.fmaxIcetime, 2);
+  j.key("icetime_logic_levels").integer(l.icetimeLevels);
+  j.key("seconds").real(l.seconds, 0);
+  j.endObject();
 }
 
 void writeJson(const std::string &path, const std::vector<Target> &ts, const std::vector<Loop> &loops) {
-  std::ofstream o(path);
-  o << "{\n  \"paper\": {\"device\": \"xc6slx150\", \"lut\": " << kPaperLut << ", \"ff\": " << kPaperFf
-    << ", \"sram_kbyte\": " << jsonNum(kPaperSramKB, 0) << ", \"pixels_per_clock\": " << jsonNum(kPaperPixelsPerClock, 4)
-    << ", \"lut_per_pixel_per_clock\": " << jsonNum(kPaperLut / kPaperPixelsPerClock, 0) << "},\n";
-  o << "  \"results\": [\n";
-  for (size_t k = 0; k < ts.size(); ++k) {
-    const Target &t = ts[k];
-    const std::string I = "      ";
-    o << "    {\n";
-    o << I << "\"target\": " << jsonStr(t.target) << ",\n";
-    o << I << "\"config\": " << jsonStr(t.config) << ",\n";
-    o << I << "\"d\": " << t.d << ",\n" << I << "\"max_width\": " << t.w << ",\n" << I << "\"max_height\": " << t.h << ",\n";
-    o << I << "\"census\": " << jsonStr(t.census) << ",\n";
-    o << I << "\"pixels_per_clock\": 1,\n";
-    o << countsJson(t.total, t.tech, I) << ",\n";
-    if (t.tech == Tech::Xilinx) {
-      o << I << "\"lut_by_size\": {";
-      bool first = true;
-      for (auto &kv : t.total.lutBySize) {
-        o << (first ? "" : ", ") << "\"LUT" << kv.first << "\": " << kv.second;
-        first = false;
-      }
-      o << "},\n";
-      o << I << "\"muxf\": " << t.total.muxf << ",\n";
-    }
-    if (t.tech == Tech::Generic) o << I << "\"memories\": " << t.total.mems << ",\n";
-    long memBits = 0;
-    for (auto &m : t.memories) memBits += m.bits();
-    o << I << "\"memory_bits\": " << memBits << ",\n";
-    o << I << "\"logic_levels\": " << (t.ltp.length >= 0 ? std::to_string(t.ltp.length) : "null") << ",\n";
-    o << I << "\"logic_levels_path\": {\"stage\": " << jsonStr(t.ltpStage) << ", \"from\": " << jsonStr(t.ltp.from)
-      << ", \"to\": " << jsonStr(t.ltp.to) << "},\n";
-    // iCE40: the routed loop harness of the same D if there is one, else the smallest D.
-    double fmax = NAN;
-    long fmaxD = 0;
-    if (t.tech == Tech::Ice40)
-      for (auto &l : loops)
-        if (!std::isnan(l.fmaxNextpnr) && (std::isnan(fmax) || l.d == t.d)) {
-          fmax = l.fmaxNextpnr;
-          fmaxD = l.d;
-        }
-    o << I << "\"fmax_mhz\": " << jsonNum(fmax, 2) << ",\n";
-    if (t.tech == Tech::Ice40) o << I << "\"fmax_source\": " << (fmaxD ? jsonStr("ice40-loop-d" + std::to_string(fmaxD)) : "null") << ",\n";
-    if (t.tech == Tech::Xilinx)
-      o << I << "\"lut_per_pixel_per_clock\": " << t.total.sliceLuts() << ",\n";
-    o << I << "\"path_buffers\": {\"bits\": " << t.pbBits << ", \"eq7_bits\": " << eq7Bits(t.d, t.w)
-      << ", \"bram18\": " << t.pbBram18 << ", \"bram36\": " << t.pbBram36 << ", \"ramb8\": " << t.pbBram9
-      << ", \"sb_ram40_4k\": " << t.pbBram4 << ", \"bram_kbit\": " << t.pbBramKbit << ", \"lutram\": " << t.pbLutram
-      << ", \"in_block_ram\": " << (t.pbInBram ? "true" : "false") << "},\n";
-    o << I << "\"check_problems\": " << t.checkProblems << ",\n";
-    o << I << "\"seconds\": " << jsonNum(t.seconds, 0) << ",\n";
-    o << I << "\"yosys\": " << jsonStr(metaGet(t.meta, "yosys")) << ",\n";
-    o << I << "\"rtl_commit\": " << jsonStr(metaGet(t.meta, "rtl_commit")) << ",\n";
-    o << I << "\"stages\": [\n";
-    for (size_t s = 0; s < t.stages.size(); ++s) {
-      const Stage &st = t.stages[s];
-      o << I << "  {\"name\": " << jsonStr(st.name) << ", \"instances\": " << st.instances << ",\n";
-      o << countsJson(st.counts, t.tech, I + "   ") << ",\n";
-      o << I << "   \"logic_levels\": " << st.ltp.length << ", \"seconds\": " << jsonNum(st.seconds, 1) << "}"
-        << (s + 1 < t.stages.size() ? "," : "") << "\n";
-    }
-    o << I << "],\n";
-    o << I << "\"memory_list\": [\n";
-    for (size_t m = 0; m < t.memories.size(); ++m) {
-      const Memory &me = t.memories[m];
-      o << I << "  {\"stage\": " << jsonStr(me.stage) << ", \"name\": " << jsonStr(me.name) << ", \"width\": " << me.width
-        << ", \"depth\": " << me.depth << ", \"instances\": " << me.instances << ", \"bits\": " << me.bits()
-        << ", \"cells\": {";
-      bool first = true;
-      for (auto &c : me.cells) {
-        o << (first ? "" : ", ") << jsonStr(c.first) << ": " << c.second;
-        first = false;
-      }
-      o << "}}" << (m + 1 < t.memories.size() ? "," : "") << "\n";
-    }
-    o << I << "]\n";
-    o << "    }" << (k + 1 < ts.size() || !loops.empty() ? "," : "") << "\n";
-  }
-  for (size_t k = 0; k < loops.size(); ++k) {
-    const Loop &l = loops[k];
-    o << "    {\"target\": \"ice40-loop\", \"config\": " << jsonStr("loop-d" + std::to_string(l.d)) << ", \"d\": " << l.d
-      << ", \"max_width\": null, \"pixels_per_clock\": 1, \"device\": " << jsonStr(metaGet(l.meta, "device"))
-      << ", \"lut\": " << l.lut << ", \"ff\": " << l.ff << ", \"carry\": " << l.carry << ", \"lc\": " << l.lc
-      << ", \"lc_available\": " << l.lcTotal << ", \"fmax_mhz\": " << jsonNum(l.fmaxNextpnr, 2)
-      << ", \"fmax_icetime_mhz\": " << jsonNum(l.fmaxIcetime, 2) << ", \"icetime_logic_levels\": " << l.icetimeLevels
-      << ", \"seconds\": " << jsonNum(l.seconds, 0) << "}" << (k + 1 < loops.size() ? "," : "") << "\n";
-  }
-  o << "  ]\n}\n";
+  JsonWriter j;
+  j.beginObject();
+  j.key("paper").beginObject();
+  j.key("device").string("xc6slx150");
+  j.key("lut").integer(kPaperLut);
+  j.key("ff").integer(kPaperFf);
+  j.key("sram_kbyte").real(kPaperSramKB, 0);
+  j.key("pixels_per_clock").real(kPaperPixelsPerClock, 4);
+  j.key("lut_per_pixel_per_clock").real(kPaperLut / kPaperPixelsPerClock, 0);
+  j.endObject();
+  j.key("results").beginArray();
+  for (const Target &t : ts) targetJson(j, t, loops);
+  for (const Loop &l : loops) loopJson(j, l);
+  j.endArray();
+  j.endObject();
+  sgm::eval::writeTextFile(path, j.str());
 }
 
 // ------------------------------------------------------------------ Markdown

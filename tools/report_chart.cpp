@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "report_chart.hpp"
+#include "report_util.hpp"
 
 #include <opencv2/imgproc.hpp>
 
@@ -43,12 +44,6 @@ struct Layout {
   double yStep = 1;  // grid spacing (%)
   int legendX = 0;
 };
-
-std::string fmt(double v, int decimals) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
-}
 
 // Text rotated 90 degrees counter-clockwise, reading bottom to top, centred on x,
 // its lower end at bottomY. Drawn darkest-wins so it sits on a light background.
@@ -107,7 +102,7 @@ void drawAxes(cv::Mat& img, const Layout& l, const std::string& label = "error i
   for (double v = 0; v <= l.yMax + 1e-9; v += l.yStep) {
     const int y = yPixel(l, v);
     cv::line(img, {l.plot.x, y}, {l.plot.br().x, y}, v == 0 ? kAxis : kGrid, 1);
-    const std::string label = fmt(v, 0);
+    const std::string label = fixed(v, 0);
     int base = 0;
     const cv::Size size = cv::getTextSize(label, kFont, 0.5, 1, &base);
     drawText(img, label, {l.plot.x - 10 - size.width, y + size.height / 2}, 0.5, kAxis);
@@ -173,7 +168,7 @@ void drawGroup(cv::Mat& img, const Layout& l, const TableReport& r, const std::s
                        yPixel(l, 0) - yPixel(l, value));
     if (s.paper) hatchedBar(img, bar, methodColor(s.method));
     else cv::rectangle(img, bar, methodColor(s.method), cv::FILLED);
-    verticalText(img, fmt(value, 1), (left + right) / 2, bar.y - 4, 0.4, s.paper ? kMuted : kBlack);
+    verticalText(img, fixed(value, 1), (left + right) / 2, bar.y - 4, 0.4, s.paper ? kMuted : kBlack);
   }
   drawClusterLabels(img, l, r.methods, slots, x0, barWidth);
 }
@@ -226,7 +221,7 @@ void drawLegend(cv::Mat& img, const Layout& l, const TableReport& r) {
 void drawTitle(cv::Mat& img, const TableReport& r, const std::string& title) {
   drawText(img, title, {90, 42}, 0.95, kBlack, 2);
   drawText(img,
-       "error in non-occluded regions (%, delta = " + fmt(r.delta, 0) + " px, invalid = error), D = " +
+       "error in non-occluded regions (%, delta = " + fixed(r.delta, 0) + " px, invalid = error), D = " +
            std::to_string(r.disparities) + ".  Solid: ours.  Hatched: the paper's figure.",
        {90, 76}, 0.55, kMuted);
 }
@@ -278,7 +273,7 @@ cv::Mat poolChart(const PoolReport& r, const std::string& title) {
   top = top * 1.15 + 0.5;
   l.yStep = niceStep(top);
   l.yMax = std::max(l.yStep, std::ceil(top / l.yStep) * l.yStep);
-  drawAxes(img, l, "error (%): bad-" + fmt(r.options.delta, 1) + " nonocc / KITTI D1");
+  drawAxes(img, l, "error (%): bad-" + fixed(r.options.delta, 1) + " nonocc / KITTI D1");
   std::string previousSet = "\x01";
   for (int i = 0; i < int(r.rows.size()); ++i) {
     const PoolRow& row = r.rows[size_t(i)];
@@ -297,7 +292,7 @@ cv::Mat poolChart(const PoolReport& r, const std::string& title) {
       const cv::Rect bar(left, yPixel(l, *v), std::max(1, right - left), yPixel(l, 0) - yPixel(l, *v));
       if (bars[k].hatched) hatchedBar(img, bar, bars[k].color);
       else cv::rectangle(img, bar, bars[k].color, cv::FILLED);
-      verticalText(img, fmt(*v, 1), (left + right) / 2, bar.y - 3, 0.35, kBlack);
+      verticalText(img, fixed(*v, 1), (left + right) / 2, bar.y - 3, 0.35, kBlack);
     }
     int base = 0;
     const int textWidth = cv::getTextSize(row.scene, kFont, 0.45, 1, &base).width;
@@ -313,7 +308,7 @@ cv::Mat poolChart(const PoolReport& r, const std::string& title) {
   }
   drawText(img, title, {90, 42}, 0.95, kBlack, 2);
   drawText(img,
-           "error (%): Middlebury bad-" + fmt(r.options.delta, 1) +
+           "error (%): Middlebury bad-" + fixed(r.options.delta, 1) +
                " non-occluded, KITTI D1 (> 3 px and > 5 %), over pixels with ground truth; D = ndisp per scene",
            {90, 72}, 0.55, kMuted);
   drawText(img, "ours: " + goldenParamsText(r.options.params), {90, 96}, 0.42, kMuted);

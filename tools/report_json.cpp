@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "report_json.hpp"
 
+#include "json_read.hpp"
+#include "report_util.hpp"
+
 #include "sgm/params.hpp"
 
 #include <cctype>
@@ -84,11 +87,13 @@ JsonWriter& JsonWriter::key(const std::string& name) {
 
 JsonWriter& JsonWriter::string(const std::string& text) { return raw(jsonEscape(text)); }
 
-JsonWriter& JsonWriter::real(double value) {
+JsonWriter& JsonWriter::real(double value) { return real(value, 3); }
+
+JsonWriter& JsonWriter::real(double value, int decimals) {
   if (!std::isfinite(value)) return null();
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.3f", value);
-  return raw(std::string(buf) == "-0.000" ? "0.000" : buf);
+  const std::string text = fixed(value, decimals);
+  // -0.000 (a negative value that rounds to zero) prints as 0.000.
+  return raw(text.find_first_not_of("-0.") == std::string::npos && text[0] == '-' ? text.substr(1) : text);
 }
 
 JsonWriter& JsonWriter::real(const std::optional<double>& value) { return value ? real(*value) : null(); }
@@ -126,59 +131,13 @@ void writeTextFile(const std::string& path, const std::string& text) {
 namespace sgm::eval {
 
 std::map<std::string, std::string> readFlatJson(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error("cannot open '" + path + "'");
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  size_t i = 0;
-  const auto fail = [&](const char* what) -> Error {
-    return Error("'" + path + "' is not a flat JSON object: " + what + " at byte " + std::to_string(i));
-  };
-  const auto skipSpace = [&] {
-    while (i < text.size() && std::isspace((unsigned char)text[i])) ++i;
-  };
-  const auto readString = [&]() {
-    if (text[i] != '"') throw fail("expected a string");
-    std::string s;
-    for (++i; i < text.size() && text[i] != '"'; ++i) {
-      if (text[i] == '\\') {
-        if (++i >= text.size()) break;
-        const char c = text[i];
-        s += c == 'n' ? '\n' : c == 't' ? '\t' : c;
-      } else {
-        s += text[i];
-      }
-    }
-    if (i >= text.size()) throw fail("unterminated string");
-    ++i;
-    return s;
-  };
+  const Json doc = readJsonFile(path);
+  if (!doc.isObject()) throw Error("'" + path + "' is not a flat JSON object: the document is not an object");
   std::map<std::string, std::string> out;
-  skipSpace();
-  if (i >= text.size() || text[i++] != '{') throw fail("expected '{'");
-  for (;;) {
-    skipSpace();
-    if (i < text.size() && text[i] == '}') break;
-    if (i >= text.size()) throw fail("unexpected end");
-    const std::string key = readString();
-    skipSpace();
-    if (i >= text.size() || text[i++] != ':') throw fail("expected ':'");
-    skipSpace();
-    if (i >= text.size()) throw fail("unexpected end");
-    if (text[i] == '"') {
-      out[key] = readString();
-    } else {
-      const size_t start = i;
-      while (i < text.size() && (std::isalnum((unsigned char)text[i]) || std::strchr("+-.", text[i]))) ++i;
-      if (i == start) throw fail("nested or empty value");
-      out[key] = text.substr(start, i - start);
-    }
-    skipSpace();
-    if (i < text.size() && text[i] == ',') {
-      ++i;
-      continue;
-    }
-    skipSpace();
-    if (i >= text.size() || text[i] != '}') throw fail("expected ',' or '}'");
+  for (const auto& [key, value] : doc.members) {
+    if (value.isObject() || value.isArray())
+      throw Error("'" + path + "' is not a flat JSON object: nested value at key '" + key + "'");
+    out[key] = value.text;  // strings decoded, numbers and literals as written
   }
   return out;
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// Minimal hand-written JSON output (no JSON library in the project) and an
-// all-or-nothing text file writer, shared by the table and bench reports.
+// Minimal hand-written JSON output (no JSON library in the project; the reader
+// is json_read.hpp) and an all-or-nothing text file writer, shared by the
+// table, pool, bench, synthesis and place-and-route reports.
 #pragma once
 
 #include <map>
@@ -22,7 +23,8 @@ class JsonWriter {
   JsonWriter& key(const std::string& name);  // next value belongs to this key
 
   JsonWriter& string(const std::string& text);
-  JsonWriter& real(double value);
+  JsonWriter& real(double value);               // 3 decimals
+  JsonWriter& real(double value, int decimals);  // that many decimals
   JsonWriter& real(const std::optional<double>& value);  // null when empty
   JsonWriter& integer(long value);
   JsonWriter& boolean(bool value);

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "report_pool.hpp"
+#include "report_util.hpp"
 
 #include "report_json.hpp"
 #include "report_table.hpp"
@@ -51,13 +52,7 @@ std::map<std::string, char> poolHalves(const std::string& root) {
 
 namespace {
 
-std::string fixed2(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f", v);
-  return buf;
-}
-
-std::string cell(const std::optional<double>& v) { return v ? fixed2(*v) : "-"; }
+std::string cell(const std::optional<double>& v) { return v ? fixed(*v, 2) : "-"; }
 
 const char* measureName(const std::string& set) { return isKittiSet(set) ? "d1" : "bad_nonocc"; }
 
@@ -152,7 +147,7 @@ PoolReport computePool(const std::vector<Scene>& scenes, const PoolOptions& opti
 namespace {
 
 std::string meanRow(const PoolMean& m) {
-  return "| " + m.name + " | " + std::to_string(m.scenes) + " | " + fixed2(m.ours) + " | " + cell(m.today) + " | " +
+  return "| " + m.name + " | " + std::to_string(m.scenes) + " | " + fixed(m.ours, 2) + " | " + cell(m.today) + " | " +
          cell(m.opencvStrict) + " | " + cell(m.opencvValid) + " | " + cell(m.opencvDensity) + " |\n";
 }
 
@@ -200,7 +195,7 @@ void writeMeans(JsonWriter& j, const std::vector<PoolMean>& means) {
 }  // namespace
 
 std::string poolMarkdown(const PoolReport& r) {
-  const std::string delta = fixed2(r.options.delta);
+  const std::string delta = fixed(r.options.delta, 2);
   std::string md =
       "# SGM golden model on the scene pool\n\n"
       "Measure: Middlebury scenes bad-" + delta + " (|d - gt| > " + delta +
@@ -218,9 +213,9 @@ std::string poolMarkdown(const PoolReport& r) {
         "|---|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const PoolRow& row : r.rows) {
     md += "| " + row.scene + " | " + row.set + " | " + row.half + " | " + std::to_string(row.disparities) + " | " +
-          fixed2(strictFigure(row.set, row.ours)) + " | " +
+          fixed(strictFigure(row.set, row.ours), 2) + " | " +
           cell(row.today ? std::optional<double>(strictFigure(row.set, *row.today)) : std::nullopt) + " | " +
-          fixed2(row.ours.errAll) + " | " +
+          fixed(row.ours.errAll, 2) + " | " +
           cell(row.opencv ? std::optional<double>(strictFigure(row.set, *row.opencv)) : std::nullopt) + " | " +
           cell(row.opencv ? std::optional<double>(validFigure(row.set, *row.opencv)) : std::nullopt) + " | " +
           cell(row.opencv ? std::optional<double>(row.opencv->density) : std::nullopt) + " |\n";
@@ -230,7 +225,7 @@ std::string poolMarkdown(const PoolReport& r) {
         meansTable("Means per cross-validation half", r.halves);
   if (r.worstRegression)
     md += "Worst change of a scene vs today: " + r.worstScene + " " + (*r.worstRegression >= 0 ? "+" : "") +
-          fixed2(*r.worstRegression) + " points.\n\n";
+          fixed(*r.worstRegression, 2) + " points.\n\n";
   md += "![pool chart](pool.png)\n";
   return md;
 }
@@ -242,12 +237,12 @@ std::string poolSummary(const PoolReport& r) {
       char line[200];
       std::snprintf(line, sizeof line, "%-14s %2d scenes  ours %6.2f%%", m.name.c_str(), m.scenes, m.ours);
       text += line;
-      if (m.today) text += "  today " + fixed2(*m.today) + "%";
-      if (m.opencvStrict) text += "  opencv strict " + fixed2(*m.opencvStrict) + "%  valid " + fixed2(*m.opencvValid) +
-                                  "% (density " + fixed2(*m.opencvDensity) + "%)";
+      if (m.today) text += "  today " + fixed(*m.today, 2) + "%";
+      if (m.opencvStrict) text += "  opencv strict " + fixed(*m.opencvStrict, 2) + "%  valid " + fixed(*m.opencvValid, 2) +
+                                  "% (density " + fixed(*m.opencvDensity, 2) + "%)";
       text += "\n";
     }
-  if (r.worstRegression) text += "worst change vs today: " + r.worstScene + " " + fixed2(*r.worstRegression) + " points\n";
+  if (r.worstRegression) text += "worst change vs today: " + r.worstScene + " " + fixed(*r.worstRegression, 2) + " points\n";
   return text;
 }
 

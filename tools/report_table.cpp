@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "report_table.hpp"
+#include "report_util.hpp"
 
 #include "report_json.hpp"
 
@@ -98,13 +99,7 @@ std::vector<std::string> columnOrder(const std::vector<Scene>& scenes) {
 
 // ------------------------------------------------------------------ markdown
 
-std::string fixed(double v, int decimals = 2) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
-}
-
-std::string optFixed(const std::optional<double>& v) { return v ? fixed(*v) : "-"; }
+std::string optFixed(const std::optional<double>& v) { return v ? fixed(*v, 2) : "-"; }
 
 std::string titleCase(std::string name) {
   if (!name.empty()) name[0] = char(std::toupper((unsigned char)name[0]));
@@ -138,7 +133,7 @@ std::optional<double> paperFigure(const Method& m, const std::string& scene) {
 }
 
 std::string comparisonCell(const std::optional<double>& our, const std::optional<double>& paper) {
-  std::string cell = our ? fixed(*our) : "-";
+  std::string cell = our ? fixed(*our, 2) : "-";
   if (paper) cell += " (" + fixed(*paper, 1) + ")";
   return cell;
 }
@@ -155,8 +150,8 @@ std::string table1Row(const TableReport& r, const Method& m) {
 std::string figuresRow(const std::string& scene, const Method& m, const ErrorFigures* f) {
   std::string row = "| " + scene + " | `" + m.key + "` | ";
   if (!f) return row + "- | - | - | - | - |\n";
-  return row + fixed(f->errNonocc) + " | " + fixed(f->errAll) + " | " + optFixed(f->errDisc) + " | " +
-         fixed(f->density) + " | " + fixed(f->errNonoccValid) + " |\n";
+  return row + fixed(f->errNonocc, 2) + " | " + fixed(f->errAll, 2) + " | " + optFixed(f->errDisc) + " | " +
+         fixed(f->density, 2) + " | " + fixed(f->errNonoccValid, 2) + " |\n";
 }
 
 std::string perSceneMarkdown(const TableReport& r) {

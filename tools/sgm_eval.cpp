@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // sgm-eval: accuracy of the golden model (and OpenCV StereoSGBM) on the
 // Middlebury scenes: the paper's eq. (5) error ratio, Table I, timing.
+#include "datasheet.hpp"
 #include "eval_lib.hpp"
 #include "report_bench.hpp"
 #include "report_chart.hpp"
@@ -34,6 +35,8 @@ const char* kUsage =
     "                                                      without one): Middlebury bad-1 nonocc, KITTI D1,\n"
     "                                                      per-set means, OpenCV strict and valid-only, \"today\"\n"
     "                                                      (the four-path preset) beside -> pool.md, pool.json, pool.png\n"
+    "       sgm-eval datasheet [--build DIR] [--out FILE]  the datasheet from the measured JSON reports under\n"
+    "                                                      DIR (default build) -> FILE (default docs/datasheet.md)\n"
     "pipeline options: --d D --p1 N --p2 N --mode M --subpixel on|off --lr TOL|off --fill on|off\n"
     "                  --snap on|off --median on|off --census 9x5|9x9 --p2-mode knee|paper\n"
     "                  --weights 3232|equal --uniqueness U (%, 0 off) --ad-weight W (0 off .. 15)\n"
@@ -185,6 +188,18 @@ int commandPool(const CliArgs& args) {
   return 0;
 }
 
+int commandDatasheet(const CliArgs& args) {
+  const std::string build = args.text("build", "build");
+  const std::string out = args.text("out", "docs/datasheet.md");
+  if (build.empty() || out.empty()) throw Error("empty --build or --out");
+  const std::string md = eval::datasheetMarkdown(build);
+  const std::filesystem::path parent = std::filesystem::path(out).parent_path();
+  if (!parent.empty()) std::filesystem::create_directories(parent);
+  eval::writeTextFile(out, md);
+  std::cout << "sgm-eval datasheet: wrote " << out << " from the reports under " << build << "/\n";
+  return 0;
+}
+
 struct Command {
   const char* name;
   int (*run)(const CliArgs&);
@@ -201,6 +216,7 @@ std::vector<Command> commands() {
       {"table", commandTable, {"data", "out", "d", "delta", "scenes"}},
       {"bench", commandBench, {"data", "out", "scene", "repeats"}},
       {"pool", commandPool, poolOptions},
+      {"datasheet", commandDatasheet, {"build", "out"}},
   };
 }
 
@@ -208,7 +224,7 @@ std::vector<Command> commands() {
 
 int main(int argc, char** argv) {
   try {
-    if (argc < 2) throw Error("missing command: run, table, bench or pool (see --help)");
+    if (argc < 2) throw Error("missing command: run, table, bench, pool or datasheet (see --help)");
     if (std::string(argv[1]) == "--help") {
       std::cout << kUsage;
       return 0;
