@@ -132,7 +132,7 @@ golden: $(BIN)/sgm-golden $(BIN)/sgm-eval
 #          [RIGHT_BLOCK=64 [RIGHT_WEIGHT=]] [MAX_HEIGHT=1024] [UNIQUENESS=1] [AD_TERM=1] [EDGE_RESET=1]
 # The program is sim/sgm_sim.cpp; CENSUS sets the core's census window (-GCENSUS_H),
 # PRESET=paper implies CENSUS=9x9 and runs sgm-sim --preset paper. LANES = K row lanes
-# (-GLANES, docs/reschedule.md; also taken by make synth). RIGHT_BLOCK = B builds the
+# (-GLANES, docs/lanes.md; also taken by make synth). RIGHT_BLOCK = B builds the
 # fifth path in blocks of B (-GRIGHT_BLOCK; 0: none; default 64, 0 with PRESET=paper or
 # four-path); the build runs its defaults (sgm::buildDefaults: with the fifth path ours in
 # its blocks, without it the four-path preset); RIGHT_WEIGHT = W5 sets the weight
@@ -241,7 +241,7 @@ $(eval $(call rtl_test,top-d128,sgm_top,-GD=128 -GMAX_WIDTH=256 -GMAX_HEIGHT=64 
 # Aloe in the paper preset at D = 64.
 $(eval $(call rtl_test,top-d16-9x9,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GCENSUS_H=9 -GRIGHT_BLOCK=0 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,top-d64-9x9,sgm_top,-GD=64 -GMAX_WIDTH=512 -GMAX_HEIGHT=384 -GCENSUS_H=9 -GRIGHT_BLOCK=0 -CFLAGS -DSGM_D=64))
-# K row lanes (docs/reschedule.md): the whole core at 2 lanes (9x5) and 3 lanes (9x9). The
+# K row lanes (docs/lanes.md): the whole core at 2 lanes (9x5) and 3 lanes (9x9). The
 # 3-lane build has its rotating delays as register chains (SGM_DELAY_CHAIN, the form the ECP5
 # flow builds, rtl/sgm_delay_ram.sv); every other build has them in distributed RAM.
 $(eval $(call rtl_test,top-d16-k2,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GLANES=2 -GRIGHT_BLOCK=0 -CFLAGS -DSGM_D=16))
@@ -261,7 +261,7 @@ $(eval $(call rtl_test,axi-d16-rb16,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=
 $(BIN)/rtl-axi-d16 $(BIN)/rtl-axi-d16-lean $(BIN)/rtl-axi-d16-rb16: sw/sgm_driver.cpp $(wildcard sw/include/*.h*)
 $(eval $(call rtl_test,path-engine-d16,sgm_path_engine,-GD=16 -GMAX_WIDTH=128 -GXW=8 -GYW=8 -GEDGE_RESET=1 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,path-engine-d64,sgm_path_engine,-GD=64 -GMAX_WIDTH=512 -GXW=10 -GYW=10 -GGRAY_LEAD=0 -GEDGE_RESET=1 -CFLAGS -DSGM_D=64 -CFLAGS -DSGM_YW=10))
-# The engine in lane order (docs/reschedule.md): K row lanes, SKEW columns apart.
+# The engine in lane order (docs/lanes.md): K row lanes, SKEW columns apart.
 $(eval $(call rtl_test,path-engine-d16-k2,sgm_path_engine,-GD=16 -GMAX_WIDTH=128 -GXW=8 -GYW=8 -GLANES=2 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,path-engine-d16-k5,sgm_path_engine,-GD=16 -GMAX_WIDTH=128 -GXW=8 -GYW=8 -GLANES=5 -GEDGE_RESET=1 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,path-engine-d64-k6,sgm_path_engine,-GD=64 -GMAX_WIDTH=512 -GXW=10 -GYW=10 -GLANES=6 -GEDGE_RESET=1 -CFLAGS -DSGM_D=64 -CFLAGS -DSGM_YW=10))
@@ -271,7 +271,7 @@ $(eval $(call rtl_test,right-path-d16-b8,sgm_right_path,-GD=16 -GBLOCK=8 -GXW=8 
 $(eval $(call rtl_test,right-path-d16-b4-k2,sgm_right_path,-GD=16 -GBLOCK=4 -GXW=8 -GSIDE_W=16 -GLANES=2 -GEDGE_RESET=1 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,right-path-d16-b16-k3,sgm_right_path,-GD=16 -GBLOCK=16 -GXW=8 -GSIDE_W=16 -GLANES=3 -GL5_LAG=11 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,right-path-d64-b32-k6,sgm_right_path,-GD=64 -GBLOCK=32 -GXW=8 -GSIDE_W=16 -GLANES=6 -GL5_LAG=7 -GEDGE_RESET=1 -CFLAGS -DSGM_D=64))
-# The 0 degree loop alone at LANES = 1 (the single-lane core) and with 2, 3, 4, 6 row lanes (docs/reschedule.md);
+# The 0 degree loop alone at LANES = 1 (the single-lane core) and with 2, 3, 4, 6 row lanes (docs/lanes.md);
 # 12 lanes at D = 16 put several registers at one boundary (more lanes than loop units);
 # D = 32 pads the tree's 64 leaves (D = 16 and 64 fill theirs).
 $(eval $(call rtl_test,path-ring-d16,sgm_path_ring,-GD=16 -CFLAGS -DSGM_D=16))
@@ -287,7 +287,7 @@ $(eval $(call rtl_test,wta-d16-lean,sgm_wta,-GD=16 -GUNIQUENESS=0))
 $(eval $(call rtl_test,lr-check-d16,sgm_lr_check,-GD=16 -GMAX_WIDTH=128))
 $(eval $(call rtl_test,lr-check-d64,sgm_lr_check,-GD=64 -GMAX_WIDTH=128))
 $(eval $(call rtl_test,lr-check-d16-lean,sgm_lr_check,-GD=16 -GMAX_WIDTH=128 -GUNIQUENESS=0))
-# The check with lanes (docs/reschedule.md): S and WTA sides in lane order, the read side in raster order.
+# The check with lanes (docs/lanes.md): S and WTA sides in lane order, the read side in raster order.
 $(eval $(call rtl_test,lr-lanes-d16-k1,sgm_lr_check,-GD=16 -GMAX_WIDTH=128 -GRW=8 -GLANES=1 -GROW_BANKS=4,tests/rtl/test_sgm_lr_check_lanes.cpp))
 $(eval $(call rtl_test,lr-lanes-d16-k3,sgm_lr_check,-GD=16 -GMAX_WIDTH=128 -GRW=8 -GLANES=3 -GROW_BANKS=8,tests/rtl/test_sgm_lr_check_lanes.cpp))
 $(eval $(call rtl_test,lr-lanes-d64-k6,sgm_lr_check,-GD=64 -GMAX_WIDTH=256 -GRW=9 -GLANES=6 -GROW_BANKS=16,tests/rtl/test_sgm_lr_check_lanes.cpp))
@@ -301,12 +301,12 @@ $(eval $(call rtl_test,census-lanes-k6,sgm_census_unit,-GMAX_WIDTH=64 -GCW=8 -GR
 $(eval $(call rtl_test,cost-volume-d16,sgm_cost_volume,--top-module tb_cost_front tb/tops/tb_cost_front.sv -GD=16 -GMAX_WIDTH=128 -GCW=8 -GRW=8))
 $(eval $(call rtl_test,cost-volume-d64,sgm_cost_volume,--top-module tb_cost_front tb/tops/tb_cost_front.sv -GD=64 -GMAX_WIDTH=512 -GCW=10 -GRW=9))
 $(eval $(call rtl_test,cost-volume-d16-lean,sgm_cost_volume,--top-module tb_cost_front tb/tops/tb_cost_front.sv -GD=16 -GMAX_WIDTH=128 -GCW=8 -GRW=8 -GAD_TERM=0))
-# Rows dealt to lanes from the stream controller's raster (docs/reschedule.md): LANE_LEAD = max(1, K - 1) and ROWS >= max(2, 2K - 2) rows (a power of two).
+# Rows dealt to lanes from the stream controller's raster (docs/lanes.md): LANE_LEAD = max(1, K - 1) and ROWS >= max(2, 2K - 2) rows (a power of two).
 $(eval $(call rtl_test,lane-deal-k1,sgm_lane_deal,-GLANES=1 -GLANE_LEAD=1 -GROWS=2))
 $(eval $(call rtl_test,lane-deal-k2,sgm_lane_deal,-GLANES=2 -GLANE_LEAD=1 -GROWS=2))
 $(eval $(call rtl_test,lane-deal-k3,sgm_lane_deal,-GLANES=3 -GLANE_LEAD=2 -GROWS=4))
 $(eval $(call rtl_test,lane-deal-k6,sgm_lane_deal,-GLANES=6 -GLANE_LEAD=5 -GROWS=16))
-# The volume in lane order (docs/reschedule.md): the right delay line's taps K slots apart.
+# The volume in lane order (docs/lanes.md): the right delay line's taps K slots apart.
 $(eval $(call rtl_test,cost-lanes-d16-k1,sgm_cost_volume,-GD=16 -GCW=8 -GLANES=1,tests/rtl/test_sgm_cost_volume_lanes.cpp))
 $(eval $(call rtl_test,cost-lanes-d16-k3,sgm_cost_volume,-GD=16 -GCW=8 -GLANES=3,tests/rtl/test_sgm_cost_volume_lanes.cpp))
 $(eval $(call rtl_test,cost-lanes-d64-k6,sgm_cost_volume,-GD=64 -GCW=8 -GLANES=6,tests/rtl/test_sgm_cost_volume_lanes.cpp))

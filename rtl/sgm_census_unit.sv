@@ -9,7 +9,7 @@
 // active_i = 0 marks a slot without a position (a lane still waiting for its start
 // at a frame's beginning): it writes nothing and gives valid_o = 0 (pix_i, col_i,
 // row_i don't care).
-// Slot order: K = LANES row lanes (docs/reschedule.md, tb/lane_schedule.hpp): slot
+// Slot order: K = LANES row lanes (docs/lanes.md, tb/lane_schedule.hpp): slot
 // K n + k belongs to lane k, each lane a virtual raster of its own rows (consecutive
 // active slots of a lane are consecutive positions of its rows; the row after y in
 // a lane is y + K), and every column is visited in row order with the slots of

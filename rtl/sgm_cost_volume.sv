@@ -14,7 +14,7 @@
 // Delay line: tap d holds the right census/rank of the slot d K slots earlier
 // (K = LANES), which is right pixel x - d of the same row whenever x - d >= 0
 // (the slots of a lane are consecutive positions of its rows, flush slots
-// included, and lane k has every K-th slot: docs/reschedule.md; K = 1 is the
+// included, and lane k has every K-th slot: docs/lanes.md; K = 1 is the
 // raster). Entries from another row or frame are only reached when col - d <
 // 0, where the PE outputs Cmax.
 //

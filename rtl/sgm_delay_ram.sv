@@ -10,7 +10,7 @@
 // Why: Yosys maps a register chain of three or more slots to one SRL16E per bit
 // on xc7 (a LUT each), a memory to RAM32M, which keeps 8 bits of a rotating
 // delay in 4 LUTs (its write port reads at the same pointer): half the slice
-// LUTs (synth/README.md). On ECP5 the memory becomes DPR16X4 (4 bits each),
+// LUTs (docs/notes/synthesis-log.md). On ECP5 the memory becomes DPR16X4 (4 bits each),
 // which takes six LUT positions (two slices of RAM, the write port's slice)
 // for 4 bits: there a register chain is the cheaper form, since a flip-flop
 // fed by a flip-flop takes no LUT position. Defining SGM_DELAY_CHAIN (the

@@ -5,7 +5,7 @@
 // The pipeline enable of sgm_top reaches every flip-flop of the datapath
 // (about 64,000 at D = 64 with six lanes). Routed through the fabric it is the
 // most congested net of the ECP5 place and route (router2's congestion map of
-// D = 64 at six lanes, synth/README.md, "Place and route"). With the macro
+// D = 64 at six lanes, docs/notes/synthesis-log.md, "Place and route"). With the macro
 // SGM_ECP5_GLOBAL defined (the ECP5 flow, synth/pnr.mk PNR_DEFINES) the net
 // goes through a DCCA, the ECP5 clock-network buffer, and nextpnr routes it on
 // one of the global networks that reach every slice; otherwise (simulation, the

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 `default_nettype none
-// sgm_lane_deal: deals a raster slot stream to K row lanes (docs/reschedule.md).
+// sgm_lane_deal: deals a raster slot stream to K row lanes (docs/lanes.md).
 // Every slot writes its payload into a ring of ROWS rows (bank = row mod ROWS,
 // address = column) and reads one back for the lane of the slot: slot K n + k
 // belongs to lane k, lane k holds the rows y with (y + LANE_LEAD) mod K == k in
@@ -10,7 +10,7 @@
 // LANE_LEAD, each idle (valid_o = 0, column 0) until its start. LANE_LEAD must
 // be large enough that a position is read after the raster wrote it, and ROWS
 // that it is read before the raster overwrites it (tests/rtl/test_tb_lane_deal.cpp
-// checks both for its builds; docs/reschedule.md derives them).
+// checks both for its builds; docs/lanes.md derives them).
 //
 // Inputs per slot (en_i): the raster position col_i / row_i (rows < 0 wrap in
 // YW bits, consecutive slots are consecutive positions within a frame) and its

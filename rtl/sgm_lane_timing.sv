@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 `default_nettype none
 // sgm_lane_timing: the frame-relative positions sgm_top needs with K > 1 row
-// lanes (docs/reschedule.md, docs/rtl.md "Lanes: the slot schedule"):
+// lanes (docs/lanes.md, docs/rtl.md "Lanes: the slot schedule"):
 //
 //   rd_col_o /   the LR check's read position: the raster census position (the
 //   rd_row_o     centre a census unit in raster order would output for this

@@ -26,7 +26,7 @@
 // rd_row_i - 1) and the outputs follow its timing. With one lane the top
 // connects the S-side position (the order of accesses below).
 //
-// Lanes (LANES = K, docs/reschedule.md): the S and WTA sides may come in the
+// Lanes (LANES = K, docs/lanes.md): the S and WTA sides may come in the
 // slot order of K row lanes (slot K n + k belongs to lane k, each lane a raster
 // of its own rows); the diagonal array and the row tail are then per lane: the
 // state a slot continues is the one its lane left K slots earlier (the

@@ -3,7 +3,7 @@
 // sgm_min_pipe: pipelined minimum of N unsigned values, a tree of 4-input
 // nodes (sgm_min_tree, N = ARITY = 4) with a register after every level, so
 // that one stage holds one node (six comparator chains side by side and a
-// 4:1 select, docs/reschedule.md). The minima of the 45, 90 and 135 degree
+// 4:1 select, docs/lanes.md). The minima of the 45, 90 and 135 degree
 // paths (sgm_path_engine), which are needed only a row later. IN_REG = 1
 // registers the values first (where the schedule has a slot to spare: the
 // values come from registers that also feed the path memories, and the route

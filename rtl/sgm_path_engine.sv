@@ -4,7 +4,7 @@
 // (docs/algorithm.md section 5) at one pixel per slot, D sub-PEs per path.
 //
 // Slots: LANES = K lanes share the engine slot by slot (slot K n + k belongs
-// to lane k, docs/reschedule.md). Each lane is a virtual raster of its own
+// to lane k, docs/lanes.md). Each lane is a virtual raster of its own
 // (docs/rtl.md): consecutive slots of a lane are consecutive positions, rows
 // < 0 and >= height carry no pixel; lane k holds rows k, k + K, k + 2K, ...
 // and runs SKEW columns behind lane k - 1 (lane 0 one group of rows later
@@ -48,7 +48,7 @@
 // (x - 1, M135), at least W - 6 - MIN_LATENCY slots after its minimum
 // (W >= MIN_WIDTH); with K lanes lane 0 reads lane K - 1 of the previous
 // group, K (W - 2 - (K - 1) SKEW) + 1 slots after its writes: W >= MIN_WIDTH
-// = K SKEW + 1 (9 .. 11 at K = 1, 19 at D = 64 and K = 6; docs/reschedule.md).
+// = K SKEW + 1 (9 .. 11 at K = 1, 19 at D = 64 and K = 6; docs/lanes.md).
 //
 // Parameters: D disparities, CW cost width, LW path-cost width (Cmax + P2'max
 // must fit), PW penalty width, MAX_WIDTH, XW column bits, YW row bits, GRAY_LEAD

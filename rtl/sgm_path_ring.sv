@@ -6,12 +6,12 @@
 // with LANES registers in the loop.
 //
 // LANES = K: K independent pixel streams (lanes) share the PEs and the tree by
-// time multiplexing, slot K t + k belonging to lane k (docs/reschedule.md), so
+// time multiplexing, slot K t + k belonging to lane k (docs/lanes.md), so
 // the recursion of each lane may take K slots. The loop's logic is cut into K
 // pipeline stages. Its units are the three parts of the sub-PE (sgm_path_pe:
 // two carry chains each) and the levels of the minimum tree, built of 4-input
 // nodes (six comparator chains side by side and a 4:1 select), U = 3 +
-// ceil(log4 D) units of about equal delay on ECP5 (synth/README.md, "the loop
+// ceil(log4 D) units of about equal delay on ECP5 (docs/notes/synthesis-log.md, "the loop
 // alone"). Inner register j = 1 .. K - 1 sits after unit round(j U / K)
 // (counted from 1; none before the first unit); a boundary inside the sub-PE
 // takes at most one, and any further register placed there joins the loop

@@ -15,7 +15,7 @@
 // paper's); every dependent width follows from it (census bits NB 44 / 80,
 // line buffers 4 / 8 lines per image, rank, popcounts, Cmax 88 / 160, costs
 // CBITS 7 / 8 bits, LW, SW, the path-buffer word). LANES = K row lanes
-// (docs/reschedule.md, docs/rtl.md "Lanes"): 1 is the raster schedule; K > 1
+// (docs/lanes.md, docs/rtl.md "Lanes"): 1 is the raster schedule; K > 1
 // deals the input's gray pairs to K row lanes that share the census units, the
 // cost volume, the path engine (K cycles for the 0 degree loop), the WTA and
 // the LR check's S side, and the LR check's memories restore raster order for
@@ -54,7 +54,7 @@ module sgm_top #(
   parameter int RIGHT_BLOCK /*verilator public*/ = 64,  // the fifth path's block B (a power of two >= 2), 0: not built
   parameter int EDGE_RESET /*verilator public*/ = 1,  // the path restart at strong edges is built (0: not)
   localparam int XW        = $clog2(MAX_WIDTH + 1),
-  // Lanes (docs/reschedule.md "The top's wiring at K lanes"). The engine's
+  // Lanes (docs/lanes.md "The top's wiring at K lanes"). The engine's
   // SKEW (sgm_path_engine owns the formula; mirrored here for the deal, checked
   // by every lane build's whole-core test) and the narrowest frame it allows.
   localparam int SKEW       = 1 + (5 + ($clog2(D) + 1) / 2 + LANES - 1) / LANES,
@@ -65,7 +65,7 @@ module sgm_top #(
   // read of left pixel (x, y) needs (its WTA result, dR of the diagonal, or of
   // the row tail the lane writes during the first D columns of its next row) is
   // written (2K - 3) W + LR_WAIT slots or less after that position passed
-  // (x, y + 1) (derivation in docs/reschedule.md; the lanes' census outputs come
+  // (x, y + 1) (derivation in docs/lanes.md; the lanes' census outputs come
   // 4K slots later than a census behind the deal would give them: its 4 columns
   // of lag cost K slots each in a lane); LR_LAG = 2K - 3 + ceil(LR_WAIT / W) per
   // frame, at most LR_LAG_MAX. LR_WAIT's constant is the cost volume's latency
@@ -297,7 +297,7 @@ module sgm_top #(
   // ------------------------------------------------------------ lanes
   // The slot stream of the census units: with one lane the stream controller's
   // raster itself; with K lanes sgm_lane_deal deals the raster's gray pairs to
-  // the K row lanes (docs/reschedule.md "The deal in front of the census"):
+  // the K row lanes (docs/lanes.md "The deal in front of the census"):
   // its frame starts at the frame's first slot (0, 0), lanes LANE_LEAD = K - 1
   // rows ahead of the raster's row 0, its ring DEAL_ROWS >= 2K - 2 rows (a power
   // of two: 2, 4, 16 at K = 2, 3, 6). The
@@ -594,7 +594,7 @@ module sgm_top #(
   // census position LR_LAG rows back (sgm_lane_timing; the frame's LR_LAG taken at its
   // first centre, so that slots of the frame before still in flight keep theirs),
   // registered; the memories then hold LR_BANKS rows: the lanes write row y + B
-  // after the read side has read row y when B >= LR_LAG + 1 (docs/reschedule.md),
+  // after the read side has read row y when B >= LR_LAG + 1 (docs/lanes.md),
   // one row spare.
   localparam int LR_BANKS = LANES == 1 ? 2 : 1 << $clog2(LR_LAG_MAX + 2);
   logic [DW-1:0] lr_disp;

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # Measures golden-model option sets on the scene pool and on the four Table I scenes,
-# one line per option set (docs/accuracy-pool.md):
+# one line per option set (docs/notes/accuracy-pool.md):
 #   options | Middlebury A | B | all | KITTI A | B | all | worst change vs today | cones teddy venus sawtooth
 # Usage: scripts/pool-sweep.sh POOL DATA 'OPTIONS' ['OPTIONS' ...]   ('' = the defaults; "today" = the four-path preset, the defaults before issue 15)
 # Needs build/bin/sgm-eval (make golden). Golden model only (--opencv off).

@@ -8,7 +8,7 @@
 // each), a CCU2C that nextpnr adds in front of it (the constant carry-in) and
 // one behind it (a comparison's result is the carry-out, which reaches the
 // fabric only through another CCU2C): a 9-bit comparison packs into about 15
-// LUT positions, as LUT logic into about 11.5 (synth/README.md, "What the
+// LUT positions, as LUT logic into about 11.5 (docs/notes/synthesis-log.md, "What the
 // slices hold").
 //
 // The comparison is the ripple x < y from the least significant bit:

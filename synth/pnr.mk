@@ -16,7 +16,7 @@
 #                       and PNR_RIGHT_BLOCK, the core's RIGHT_BLOCK, default 0: the P&R
 #                       builds are four-path cores unless asked, because the fifth path does
 #                       not fit beside the D = 64 six-lane core on the LFE5U-85F; sgm_top's
-#                       own default is 64, docs/accuracy-pool.md "Clock (decision)"),
+#                       own default is 64, docs/notes/accuracy-pool.md "Clock (decision)"),
 #                       and PNR_EDGE_RESET, the core's EDGE_RESET, default 1 with the fifth
 #                       path (the default build) and 0 without it (a four-path build resets
 #                       to the four-path preset, which leaves the restart off); PNR_MAX_HEIGHT
@@ -32,14 +32,14 @@
 # scripts changed (after changing an option here, `make pnr-clean`).
 PNR_D            ?= 64
 # 1024: the largest MAX_WIDTH whose memories fit the 208 EBR of the LFE5U-85F
-# at D = 64 (synth/README.md, "Place and route").
+# at D = 64 (docs/notes/synthesis-log.md, "Place and route").
 PNR_MAX_WIDTH    ?= 1024
 PNR_MAX_HEIGHT   ?= $(call core_default,MAX_HEIGHT)
 PNR_CENSUS_H     ?= $(call core_default,CENSUS_H)
 # Six lanes: the 0 degree recursion gets six slots, which is what a 125 MHz clock
 # at D = 64 needs (docs/rtl.md, the loop alone in `make pnr-loop`); one lane
 # (the paper's schedule, one slot) routed at 26.6 MHz at D = 16 on LFE5U-45F-6
-# (synth/README.md, "Place and route").
+# (docs/notes/synthesis-log.md, "Place and route").
 PNR_LANES        ?= 6
 PNR_UNIQUENESS   ?= 1
 PNR_AD_TERM      ?= 1
@@ -75,7 +75,7 @@ PNR_FLAGS        ?=
 # build that routed: router2 diverged (least overuse 20,948 wires), router1 ran
 # for hours. The electrostatic placer (`--placer static`) places it in 12 min
 # and router1 routes that placement in 42 min (86.1 MHz at speed 8, RTL f324b09,
-# 2026-11-27, synth/README.md). At D = 16 HeAP routes faster circuits (five
+# 2026-11-27, docs/notes/synthesis-log.md). At D = 16 HeAP routes faster circuits (five
 # lanes, LFE5U-45F-8: 124.4 MHz against 117.9 with the static placer), so only
 # `make pnr` uses it.
 PNR_FULL_FLAGS   ?= --placer static $(PNR_FLAGS)
@@ -84,7 +84,7 @@ PNR_FULL_FLAGS   ?= --placer static $(PNR_FLAGS)
 # LUT4s however little of it the function needs; without wide LUTs abc packs the
 # logic into LUT4s itself: 25 % fewer TRELLIS_COMB cells on the whole core at
 # D = 16 (23,254 -> 17,334, measured 2026-11-24), which is what lets D = 64 fit
-# the LFE5U-85F (synth/README.md, "Place and route").
+# the LFE5U-85F (docs/notes/synthesis-log.md, "Place and route").
 # -abc9: abc maps the LUTs knowing the delays of the carry chains and flip-flops
 # around them (timing-aware), instead of minimising LUT depth alone. 5-lane D = 16
 # on LFE5U-45F-8: 118.5 MHz at 20,412 TRELLIS_COMB against 112.0 MHz at 19,946
@@ -96,24 +96,24 @@ PNR_CI_FLAGS     ?= --no-tmdriv --router router2
 # SGM_DELAY_CHAIN: sgm_delay_ram's rotating delays as register chains. On ECP5 a
 # DPR16X4 (4 bits of distributed RAM) takes six LUT positions and a flip-flop
 # fed by a flip-flop none, so the chains free LUT positions for the logic at the
-# price of flip-flops, of which the core used less than half (synth/README.md,
+# price of flip-flops, of which the core used less than half (docs/notes/synthesis-log.md,
 # "What the slices hold").
 # SGM_ECP5_GLOBAL: the pipeline enable through a DCCA onto a global network
 # (rtl/sgm_global_buf.sv). Routed through the fabric, the enable (a flip-flop
 # driving every flip-flop of the datapath) was the most congested net of D = 64
 # at six lanes (router2's congestion map: 1,151 overused wires, the next net
 # 411); at D = 16 with five lanes it is neutral (124.4 MHz against 123.7 on
-# LFE5U-45F-8, measured 2026-11-27; synth/README.md).
+# LFE5U-45F-8, measured 2026-11-27; docs/notes/synthesis-log.md).
 PNR_DEFINES      ?= SGM_DELAY_CHAIN SGM_ECP5_GLOBAL
 # Comparisons of at most this many bits as LUT logic instead of carry chains
 # (synth/ecp5_cmp_lut.v; 0: all to carry chains). A carry chain costs nextpnr-ecp5
 # a CCU2C in front (the constant carry-in) and, for a comparison, one behind (the
 # carry-out reaches the fabric only through a CCU2C): a 9-bit comparison packs
-# into about 15 LUT positions as a chain, 11.5 as LUT logic (synth/README.md).
+# into about 15 LUT positions as a chain, 11.5 as LUT logic (docs/notes/synthesis-log.md).
 # It is what lets D = 64 at six lanes fit the LFE5U-85F (75 % instead of 88 %
 # TRELLIS_COMB), at a price in clock: abc maps a sub-PE's comparison to seven LUT4
 # levels, so the 5-lane D = 16 core routes at 112.7 MHz instead of 121.3 (edc75f0;
-# 112.0 at 305b236 with the lane control's cuts, synth/README.md).
+# 112.0 at 305b236 with the lane control's cuts, docs/notes/synthesis-log.md).
 PNR_CMP_LUT      ?= 12
 # Source files whose comparisons stay carry chains despite PNR_CMP_LUT (with every
 # module inside them; synth/ecp5_cmp.tcl, checked by `make ecp5-cmp-check`). In a
@@ -123,7 +123,7 @@ PNR_CMP_LUT      ?= 12
 # D = 16 core routes at 130.0 MHz (three seeds, LFE5U-85F-8) instead of 121.5, for
 # 1.6 % more TRELLIS_COMB. Not in builds without it: the four-path build routes
 # worse with them (121.5 MHz against 133.3), and D = 64 at six lanes packs to 93 %
-# with them (synth/README.md, "Carry chains in the rings").
+# with them (docs/notes/synthesis-log.md, "Carry chains in the rings").
 PNR_CMP_CHAIN    ?= $(if $(filter-out 0,$(PNR_RIGHT_BLOCK)),sgm_path_ring.sv)
 # Cycles per pixel for the video-format table: the largest cycles_per_pixel of
 # build/bench/report.json when `make bench` has run, otherwise this figure
@@ -261,7 +261,7 @@ $(PNR_RUN)/done: $(PNR_CFG)/synth/done | pnr-tools
 # `make pnr-loop`: the 0 degree recursion alone (synth/sgm_path_loop.sv, the loop
 # harness of `make synth`) placed and routed on the same device and speed, once per
 # LANES = K: the loop with K registers in it, i.e. the clock the planned row-lane
-# schedule could reach with K lanes (docs/reschedule.md). K = 1 is today's loop.
+# schedule could reach with K lanes (docs/lanes.md). K = 1 is today's loop.
 PNR_LOOP_D     ?= 64
 PNR_LOOP_LANES ?= 1 2 3 4
 PNR_LOOP_CFG    = $(PNR_DIR)/loop-d$(PNR_LOOP_D)-k$(PNR_LOOP_K)

@@ -14,7 +14,7 @@
 // sets the clock; the shift register and the reduction are registered and
 // add no path to the loop.
 //
-// LANES = K > 1 measures the loop of the planned re-schedule (docs/reschedule.md):
+// LANES = K > 1 measures the loop of the planned re-schedule (docs/lanes.md):
 // K independent pixel streams (row lanes) share the PEs and the tree, so the
 // recursion may take K clocks, and the ring has K registers in the loop (its
 // header says where). LANES = 1 is the core's loop today (one register, after

@@ -159,7 +159,7 @@ $(SYNTH_LOOP)/done: synth/sgm_path_loop.sv synth/ice40_loop.tcl rtl/sgm_path_pe.
 	@touch $@
 
 # What the two build-time levers cost (synth/levers.tcl): each module alone at D, one lane,
-# plain synth_ecp5 -abc9, with the lever built and not; the table in summary.md (synth/README.md,
+# plain synth_ecp5 -abc9, with the lever built and not; the table in summary.md (docs/notes/synthesis-log.md,
 # "The build-time levers").
 SYNTH_LEVERS_DIR = $(SYNTH_DIR)/levers-d$(D)
 .PHONY: synth-levers
@@ -180,7 +180,7 @@ synth-levers: synth/levers.tcl $(RTL_SRC) | check-tools
 	@cat $(SYNTH_LEVERS_DIR)/summary.md
 
 # What the fifth path costs (synth/levers.tcl): sgm_right_path alone at D, plain synth_ecp5
-# -abc9, for each block x lanes of SYNTH_RIGHT_PATH; the table in summary.md (synth/README.md,
+# -abc9, for each block x lanes of SYNTH_RIGHT_PATH; the table in summary.md (docs/notes/synthesis-log.md,
 # "The fifth path").
 SYNTH_RIGHT_PATH ?= 64x1 32x6
 SYNTH_RP_DIR = $(SYNTH_DIR)/right-path-d$(D)

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The slot order of K row lanes (docs/reschedule.md): slot K n + k belongs to
+// The slot order of K row lanes (docs/lanes.md): slot K n + k belongs to
 // lane k; lane k holds the rows y with (y + leadRows) mod K == k, each lane a
 // virtual raster of its own rows (consecutive slots of a lane are consecutive
 // positions, rows < 0 and >= height carry no pixel), and lane k runs `skew`

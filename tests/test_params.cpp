@@ -104,7 +104,7 @@ TEST(ParamsTest, DefaultParamsKeepsTheModeAndPostProcessing) {
   EXPECT_TRUE(base.subpixel);
   EXPECT_EQ(base.lrTolerance, 1);
   EXPECT_TRUE(base.fill);
-  EXPECT_FALSE(base.snap);  // issue 15: off in the pool's pick (docs/accuracy-pool.md)
+  EXPECT_FALSE(base.snap);  // issue 15: off in the pool's pick (docs/notes/accuracy-pool.md)
   EXPECT_TRUE(base.median);
   EXPECT_TRUE(sgm::isHardwareMode(base.mode)) << "Params{} is the hardware default";
   // ... with the measured penalties of its own mode.

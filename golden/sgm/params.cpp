@@ -90,7 +90,7 @@ const std::vector<std::string>& presetNames() {
 
 Params presetParams(const std::string& name) {
   if (name == "default") return Params{};
-  if (name == "four-path") {  // the defaults before issue 15 (measured in docs/accuracy-pool.md, "today")
+  if (name == "four-path") {  // the defaults before issue 15 (measured in docs/notes/accuracy-pool.md, "today")
     Params p;
     p.p1 = 18, p.p2 = 100;
     p.snap = true;

@@ -103,7 +103,7 @@ struct EdgeReset {
   bool operator!=(const EdgeReset& o) const { return !(*this == o); }
 };
 
-// The defaults (issue 15, docs/accuracy-pool.md: chosen on half A of the scene pool,
+// The defaults (issue 15, docs/notes/accuracy-pool.md: chosen on half A of the scene pool,
 // reported on half B): the four paths with a fifth from the right in blocks of 64,
 // the AD term, the uniqueness ratio, the path restart at strong edges, no edge snapping. The preset "four-path" is the
 // former defaults, for builds without these levers (sgm_top RIGHT_BLOCK = 0, ...).
@@ -131,7 +131,7 @@ struct Params {
   int rightPathWeight = 4;  // its weight in S, 0..kMaxRightPathWeight; 0 = off
   int rightPathBlock = 64;  // per block of this many pixels with one block of look-ahead; 0 = whole row
   // The path restart at strong edges (in the core with sgm_top EDGE_RESET = 1): T 40, R 6,
-  // every path but 90 degrees (docs/accuracy-pool.md, "The path restart at strong edges").
+  // every path but 90 degrees (docs/notes/accuracy-pool.md, "The path restart at strong edges").
   EdgeReset edgeReset{40, 6, {1, 1, 0, 1, 1}};
   // Golden-only experiments (issue 15, docs/algorithm.md section 12): NOT in the RTL,
   // every one off by default, so Params{} and the presets stay bit-exact with the core.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// sgm_census_unit with K row lanes (LANES, docs/reschedule.md) against the golden
+// sgm_census_unit with K row lanes (LANES, docs/lanes.md) against the golden
 // sgm::censusTransform (docs/algorithm.md section 2). Frames are streamed slot by
 // slot in the lane order of tb/lane_schedule.hpp (slot K n + k of a frame belongs
 // to lane k, lane k holds the rows y with (y + lead) mod K == k and starts `skew`

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// sgm_cost_volume in lane order (docs/reschedule.md) against the golden
+// sgm_cost_volume in lane order (docs/lanes.md) against the golden
 // sgm::computeCost (docs/algorithm.md section 3), the module itself (9x5 census):
 // the left and right census of the golden model are streamed in the slot order
 // of K row lanes (tb/lane_schedule.hpp), with random idle cycles and frames of

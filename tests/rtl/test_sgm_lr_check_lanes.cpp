@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// sgm_lr_check with K lanes (docs/reschedule.md) against the golden
+// sgm_lr_check with K lanes (docs/lanes.md) against the golden
 // sgm::selectDisparity (docs/algorithm.md section 7): the S side and the WTA side (its golden result,
 // `lag` slots later) in the slot order of K row lanes (tb/lane_schedule.hpp),
 // the read side in raster order far enough behind that every word of a row is
