@@ -254,7 +254,7 @@ std::string poolSection(const BenchData& b) {
   md << "\n## Scene pool (`make eval-pool`: golden model = the core, each scene at its `ndisp`)\n\n"
      << "Middlebury: bad-1.0 over the non-occluded pixels; KITTI: D1 (error > 3 px and > 5 %); invalid = error. "
         "`four-path`: the preset of the core without the fifth path, the AD term and the uniqueness ratio "
-        "(docs/accuracy-pool.md). OpenCV StereoSGBM strict (invalid = error) and on its valid pixels only, "
+        "(docs/notes/accuracy-pool.md). OpenCV StereoSGBM strict (invalid = error) and on its valid pixels only, "
         "with its density.\n\n"
      << "| means | scenes | ours | four-path | OpenCV strict | OpenCV valid only | OpenCV density |\n"
         "|---|---:|---:|---:|---:|---:|---:|\n";

@@ -234,7 +234,7 @@ define pnr_route
 	 over=$$(awk '/Device utilisation/ { u = 1 } u && /%$$/ && $$NF + 0 > 100 { sub(/^Info:[ \t]*/, ""); gsub(/[ \t]+/, " "); print }' $(@D)/pack.log); \
 	 if [ -n "$$over" ]; then echo "pnr: the design does not fit $(PNR_DEVNAME) after packing ($(@D)/pack.log):"; \
 	   echo "$$over" | sed 's/^/  /'; \
-	   $(if $(filter-out 0,$(PNR_RIGHT_BLOCK)),echo "  PNR_RIGHT_BLOCK=0 builds the core without the fifth path (synth/README.md, \"The default core on the LFE5U-85F\")";) \
+	   $(if $(filter-out 0,$(PNR_RIGHT_BLOCK)),echo "  PNR_RIGHT_BLOCK=0 builds the core without the fifth path (synth/README.md, \"Conclusions\")";) \
 	   exit 1; fi; \
 	 flock $(PNR_LOCK) timeout $(PNR_TIMEOUT) nice -n $(PNR_NICE) $(PNR_NEXTPNR) --$(PNR_DEVICE) --package $(PNR_PACKAGE) \
 	   --speed $(PNR_SPEED) --json $(1)/synth/netlist.json --lpf-allow-unconstrained --freq $(PNR_FREQ) \

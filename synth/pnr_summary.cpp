@@ -294,7 +294,7 @@ void writeSummary(const std::string& root, const std::vector<Run>& allRuns, doub
     md << "\n## The 0 degree loop alone (`make pnr-loop`)\n\n"
        << "synth/sgm_path_loop.sv: the recursion of the 0 degree path (D sub-PEs and the minimum tree) with "
           "LANES registers in the loop, the clock a schedule of LANES interleaved row lanes could reach "
-          "(docs/reschedule.md); LANES = 1 is the core's loop as it is.\n\n"
+          "(docs/lanes.md); LANES = 1 is the core's loop as it is.\n\n"
        << "| run | device | speed | D | LANES | LUT4 | FF | fmax (MHz) | target (MHz) | critical path | P&R (s) |\n"
        << "|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Run& r : loops)

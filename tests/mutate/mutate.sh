@@ -178,7 +178,7 @@ for d in obj lib; do [[ -d build/$d ]] && { rm -rf "$tree/build/$d"; cp -a "buil
 mkdir -p "$tree/build/verilator"
 declare -A needed=()
 for i in "${selected[@]}"; do
-  [[ -z "${equivs[$i]}" ]] && for t in ${tests_of[$(basename "${files[$i]}" .sv)]}; do needed[$t]=1; done
+  [[ -z "${equivs[$i]}" ]] && for t in $(tests_of_file "${files[$i]}"); do needed[$t]=1; done
 done
 for t in "${!needed[@]}"; do
   mdir="build/verilator/${t#rtl-}"
