@@ -60,7 +60,7 @@ help:
 	@echo "                   options: D=64 MAX_WIDTH=1280 STALL=0.3 FRAMES=2 SEED=1 TRACE=1"
 	@echo "                   PRESET=paper: the paper's system (9x9 census core, unified, P2'/dI, equal weights)"
 	@echo "                   CENSUS=9x9|9x5 builds that census window (PRESET=paper implies 9x9)"
-	@echo "make lint          verilator --lint-only -Wall on every RTL module"
+	@echo "make lint          SPDX lines, the register map against its description, clang-format, verilator --lint-only -Wall on every RTL module"
 	@echo "make rtl-tests     every verilated GoogleTest fixture (modules and the whole core)"
 	@echo "make eval          Table I and full-pipeline accuracy on DATA=$(DATA) -> build/eval/"
 	@echo "make eval-pool     accuracy on the scene pool POOL=$(POOL) at each scene's ndisp, OpenCV beside -> build/eval/pool.*"
@@ -324,6 +324,7 @@ rtl-tests: $(RTL_TEST_BINS)
 lint: | check-tools
 	@scripts/spdx-check.sh
 	@$(MAKE) --no-print-directory regmap-check
+	@scripts/format-check.sh $(CLANG_FORMAT)
 	@for m in $(RTL_MODULES); do \
 	  $(VERILATOR) --lint-only -Wall $(VLT) -Irtl --top-module $$m rtl/$$m.sv || exit 1; \
 	done; echo "lint: $(words $(RTL_MODULES)) modules clean"

