@@ -144,14 +144,14 @@ SimVariant readSimVariant(const fs::path& dir) {
 struct BenchData {
   std::vector<std::string> scenes;
   std::map<std::string, Scene> sceneData;
-  std::map<std::string, SimReport> rtl;                                      // scene -> sgm-sim report
-  std::map<std::string, std::map<std::string, ErrorFigures>> figures;       // method -> scene -> figures
-  std::map<std::string, BenchResult> speed;                                  // scene -> golden vs OpenCV
-  std::vector<SimVariant> simVariants;                                       // by name (cones)
-  std::map<std::string, SimReport> formats;                                  // WxH -> report
+  std::map<std::string, SimReport> rtl;                                // scene -> sgm-sim report
+  std::map<std::string, std::map<std::string, ErrorFigures>> figures;  // method -> scene -> figures
+  std::map<std::string, BenchResult> speed;                            // scene -> golden vs OpenCV
+  std::vector<SimVariant> simVariants;                                 // by name (cones)
+  std::map<std::string, SimReport> formats;                            // WxH -> report
   int d = 64, maxWidth = 0;
-  std::optional<PoolReport> pool;                                            // --pool: the golden model on the pool
-  std::map<std::string, SimReport> poolRtl;                                  // pool scene -> sgm-sim report
+  std::optional<PoolReport> pool;            // --pool: the golden model on the pool
+  std::map<std::string, SimReport> poolRtl;  // pool scene -> sgm-sim report
 };
 
 ErrorFigures rtlFigures(const SimReport& r) {
@@ -172,12 +172,14 @@ void measurePool(const std::string& pool, const std::string& bench, BenchData& b
   if (scenes.empty()) throw Error("no scenes (left.png, right.png, gt.png) under --pool '" + pool + "'");
   PoolOptions options;  // the hardware defaults, D per scene
   options.halves = poolHalves(pool);
-  std::fprintf(stderr, "sgm-bench: the scene pool (%zu scenes): golden model, four-path preset, OpenCV\n", scenes.size());
+  std::fprintf(stderr, "sgm-bench: the scene pool (%zu scenes): golden model, four-path preset, OpenCV\n",
+               scenes.size());
   b.pool = computePool(scenes, options);
   const std::string rtl = bench + "/pool-rtl";
   if (fs::is_directory(rtl))
     for (const auto& entry : fs::directory_iterator(rtl))
-      if (entry.is_directory()) b.poolRtl.emplace(entry.path().filename().string(), readSimReport(entry.path().string()));
+      if (entry.is_directory())
+        b.poolRtl.emplace(entry.path().filename().string(), readSimReport(entry.path().string()));
 }
 
 BenchData measure(const std::string& data, const std::string& bench, int repeats, const std::string& pool) {
@@ -209,8 +211,8 @@ BenchData measure(const std::string& data, const std::string& bench, int repeats
     b.figures["rtl"][name] = rtlFigures(b.rtl.at(name));
     b.figures["golden"][name] = evaluate(toFloat(runPipeline(scene.left, scene.right, params)), scene);
     for (const OpenCvMode& m : kOpenCvModes)
-      b.figures[m.key][name] =
-          evaluate(runOpenCvSgbm(scene.leftColor, scene.rightColor, opencvDisparities(b.d), m.mode), scene);
+      b.figures[m.key][name] = evaluate(
+          runOpenCvSgbm(scene.leftColor, scene.rightColor, opencvDisparities(b.d), m.mode), scene);
     b.speed[name] = runBench(scene, repeats);
   }
   for (const auto& entry : fs::directory_iterator(bench + "/simspeed")) {
@@ -224,7 +226,8 @@ BenchData measure(const std::string& data, const std::string& bench, int repeats
     if (!b.formats.count(name) && fs::exists(bench + "/formats/" + name + "/report.json"))
       b.formats.emplace(name, readSimReport(bench + "/formats/" + name));
   }
-  if (b.formats.empty()) throw Error("no video-format frame simulated under '" + bench + "/formats' (run `make bench`)");
+  if (b.formats.empty())
+    throw Error("no video-format frame simulated under '" + bench + "/formats' (run `make bench`)");
   b.maxWidth = std::stoi(readFirstLine(bench + "/max_width.txt"));
   return b;
 }
@@ -332,16 +335,17 @@ std::string markdown(const BenchData& b) {
      << "| scene | size | cycles/pixel | latency (cycles) | sim cycles/s |\n|---|---|---|---|---|\n";
   for (const std::string& s : b.scenes) {
     const SimReport& r = b.rtl.at(s);
-    md << "| " << s << " | " << r.at("width") << "x" << r.at("height") << " | " << fixed(r.number("cycles_per_pixel"), 4)
-       << " | " << r.at("latency_cycles") << " | " << fixed(r.number("sim_cycles_per_second"), 0) << " |\n";
+    md << "| " << s << " | " << r.at("width") << "x" << r.at("height") << " | "
+       << fixed(r.number("cycles_per_pixel"), 4) << " | " << r.at("latency_cycles") << " | "
+       << fixed(r.number("sim_cycles_per_second"), 0) << " |\n";
   }
   md << "\n## Simulation speed by Verilator build options (Cones, one frame)\n\n"
      << "| variant | Verilator options | runs | cycles/s (median) | min .. max | frames/s | seconds per frame "
         "|\n|---|---|---|---|---|---|---|\n";
   for (const SimVariant& v : b.simVariants) {
-    md << "| " << v.name << " | `" << v.flags << "` | " << v.cyclesPerSecond.size() << " | " << fixed(v.median(), 0) << " | "
-       << fixed(v.min(), 0) << " .. " << fixed(v.max(), 0) << " | " << fixed(v.median() / v.cyclesPerFrame, 3) << " | "
-       << fixed(v.cyclesPerFrame / v.median(), 2) << " |\n";
+    md << "| " << v.name << " | `" << v.flags << "` | " << v.cyclesPerSecond.size() << " | " << fixed(v.median(), 0)
+       << " | " << fixed(v.min(), 0) << " .. " << fixed(v.max(), 0) << " | " << fixed(v.median() / v.cyclesPerFrame, 3)
+       << " | " << fixed(v.cyclesPerFrame / v.median(), 2) << " |\n";
   }
   md << "\nMedian of interleaved rounds (one run of each variant per round); where two variants' ranges overlap, "
         "this machine does not tell them apart. Every run is also a bit-exact check against the golden model. "
@@ -552,7 +556,8 @@ int commandReport(const CliArgs& args) {
   for (const auto& [scene, r] : b.rtl) allExact = allExact && r.flag("bit_exact");
   for (const auto& [name, r] : b.formats) allExact = allExact && r.flag("bit_exact");
   for (const auto& [name, r] : b.poolRtl) allExact = allExact && r.flag("bit_exact");
-  if (!allExact) std::fprintf(stderr, "sgm-bench: error: the RTL output differs from the golden model (see report.md)\n");
+  if (!allExact)
+    std::fprintf(stderr, "sgm-bench: error: the RTL output differs from the golden model (see report.md)\n");
   return allExact ? 0 : 1;
 }
 

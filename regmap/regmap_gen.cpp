@@ -168,8 +168,8 @@ void check() {
       const uint64_t top = (uint64_t(1) << f.width) - 1;
       if (f.defaultValue > top || f.fourPathValue > top) die(where + ": a default does not fit the field");
       if (f.minValue > f.maxValue || f.maxValue > top) die(where + ": legal range outside the field");
-      if (isConfiguration(r) && f.access == Access::kRW && (f.defaultValue < f.minValue || f.defaultValue > f.maxValue) &&
-          !(f.defaultValue == 0 && !f.needs.empty()))
+      if (isConfiguration(r) && f.access == Access::kRW &&
+          (f.defaultValue < f.minValue || f.defaultValue > f.maxValue) && !(f.defaultValue == 0 && !f.needs.empty()))
         die(where + ": default outside the legal range");
     }
     for (const Value& v : r.values) {
@@ -229,7 +229,8 @@ std::string cHeader() {
         o << "#define " << p << "_FOUR_PATH " << f.fourPathValue << "u\n";
       }
       for (const Value& v : r.values)
-        if (v.field == f.name) o << "#define " << p << "_" << v.name << " " << v.value << "u /* " << v.description << " */\n";
+        if (v.field == f.name)
+          o << "#define " << p << "_" << v.name << " " << v.value << "u /* " << v.description << " */\n";
     }
     o << "#define SGM_" << r.name << "_MASK " << hex32(readMask(r)) << "\n";
     if (isConfiguration(r)) {
@@ -240,7 +241,8 @@ std::string cHeader() {
     }
   }
   o << "\n/* ---- constants */\n";
-  for (const Constant& c : constants) o << "#define SGM_" << c.name << " " << c.value << "u /* " << c.description << " */\n";
+  for (const Constant& c : constants)
+    o << "#define SGM_" << c.name << " " << c.value << "u /* " << c.description << " */\n";
   o << "\n#endif /* SGM_REGS_H */\n";
   return o.str();
 }
@@ -271,7 +273,8 @@ std::string svHeader() {
     o << "localparam logic [31:0] " << r.name << "_MASK = 32'h" << hexPlain(readMask(r), 8).substr(2) << ";\n";
     if (isConfiguration(r)) {
       o << "localparam logic [31:0] " << r.name << "_RESET /*verilator public*/ = FULL_DEFAULTS ? 32'h"
-        << hexPlain(resetValue(r, false), 8).substr(2) << " : 32'h" << hexPlain(resetValue(r, true), 8).substr(2) << ";\n";
+        << hexPlain(resetValue(r, false), 8).substr(2) << " : 32'h" << hexPlain(resetValue(r, true), 8).substr(2)
+        << ";\n";
     }
     if (isBuildConstant(r)) {
       // {reserved zeros, the highest field, ..., the lowest}
@@ -293,7 +296,8 @@ std::string svHeader() {
     }
   }
   o << "\n";
-  for (const Constant& c : constants) o << "localparam int " << c.name << " = " << c.value << ";  // " << c.description << "\n";
+  for (const Constant& c : constants)
+    o << "localparam int " << c.name << " = " << c.value << ";  // " << c.description << "\n";
   o << "\nfunction automatic logic reg_defined(input logic [ADDR_W-1:0] a);\n  case (a)\n";
   for (size_t i = 0; i < registers.size(); ++i)
     o << (i % 4 == 0 ? "    " : " ") << "ADDR_" << registers[i].name << (i + 1 < registers.size() ? "," : ":")

@@ -46,7 +46,6 @@ const char* kUsage =
     "stalls the output with probability P per cycle; --frames N sends the pair N times back\n"
     "to back. TRACE=1 (at build and run time) writes build/trace/sgm_top.fst.\n";
 
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -67,19 +66,22 @@ int main(int argc, char** argv) {
     build.edgeReset = Vsgm_top_sgm_top::EDGE_RESET != 0;
     const Params params = args.pipelineParams(buildDefaults(build, SGM_D));  // the build's defaults, then the options
     if (params.disparities != SGM_D)
-      throw Error("this simulator is built for D=" + std::to_string(SGM_D) + " (make sim D=" +
-                  std::to_string(params.disparities) + " builds another)");
+      throw Error("this simulator is built for D=" + std::to_string(SGM_D) +
+                  " (make sim D=" + std::to_string(params.disparities) + " builds another)");
     const CensusWindow built = kCensusH == 9 ? CensusWindow::k9x9 : CensusWindow::k9x5;
     if (params.census != built)
       throw Error(std::string("this simulator is built for the ") + censusWindowName(built) + " census, not " +
                   censusWindowName(params.census) + " (make sim CENSUS=" + censusWindowName(params.census) +
                   " builds that one)");
-    if (!isHardwareMode(params.mode)) throw Error("cost mode " + std::string(costModeName(params.mode)) + " is software only");
+    if (!isHardwareMode(params.mode))
+      throw Error("cost mode " + std::string(costModeName(params.mode)) + " is software only");
     if (params.p2 > 255) throw Error("P2'=" + std::to_string(params.p2) + " exceeds the core's 8-bit input");
-    if (params.lrTolerance > 7) throw Error("LR tolerance " + std::to_string(params.lrTolerance) + " exceeds the core's 3-bit input");
+    if (params.lrTolerance > 7)
+      throw Error("LR tolerance " + std::to_string(params.lrTolerance) + " exceeds the core's 3-bit input");
     if (params.experimental())
-      throw Error("--right-path without --right-block, --subpixel-fit linear, --mgm, --median-gate, --p1-paths "
-                  "and --snap-edge are golden-only experiments, not in the core");
+      throw Error(
+          "--right-path without --right-block, --subpixel-fit linear, --mgm, --median-gate, --p1-paths "
+          "and --snap-edge are golden-only experiments, not in the core");
     if (params.edgeReset.threshold && !Vsgm_top_sgm_top::EDGE_RESET)
       throw Error("this simulator is built without the path restart (sgm_top EDGE_RESET = 0): give --edge-reset 0");
     if (params.rightPathWeight && params.rightPathBlock != kRightBlock)
@@ -103,10 +105,11 @@ int main(int argc, char** argv) {
     checkInput(scene.left, scene.right, params);
     const int w = scene.left.cols, h = scene.left.rows;
     if (w > SGM_MAX_WIDTH)
-      throw Error("width " + std::to_string(w) + " exceeds this simulator's MAX_WIDTH=" + std::to_string(SGM_MAX_WIDTH) +
-                  " (make sim MAX_WIDTH=" + std::to_string(w) + " builds another)");
+      throw Error("width " + std::to_string(w) + " exceeds this simulator's MAX_WIDTH=" +
+                  std::to_string(SGM_MAX_WIDTH) + " (make sim MAX_WIDTH=" + std::to_string(w) + " builds another)");
     constexpr int kMinWidth = Vsgm_top_sgm_top::MIN_FRAME_WIDTH;  // max(D, 16), more with many lanes
-    if (w < kMinWidth) throw Error("width " + std::to_string(w) + " is below the core's minimum " + std::to_string(kMinWidth));
+    if (w < kMinWidth)
+      throw Error("width " + std::to_string(w) + " is below the core's minimum " + std::to_string(kMinWidth));
     if (h > SGM_MAX_HEIGHT)
       throw Error("height " + std::to_string(h) + " exceeds MAX_HEIGHT=" + std::to_string(SGM_MAX_HEIGHT));
 
@@ -117,7 +120,9 @@ int main(int argc, char** argv) {
     const auto start = std::chrono::steady_clock::now();
     const bool tty = isatty(fileno(stderr));
     const std::vector<tb::FrameOutput> outputs = core.run(inputs, [&](uint64_t done, uint64_t total) {
-      if (tty) std::fprintf(stderr, "\rsgm-sim: %3d%% of %llu output pixels", int(100 * done / total), (unsigned long long)total);
+      if (tty)
+        std::fprintf(stderr, "\rsgm-sim: %3d%% of %llu output pixels", int(100 * done / total),
+                     (unsigned long long)total);
     });
     if (tty) std::fprintf(stderr, "\r%60s\r", "");
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -201,16 +206,18 @@ int main(int argc, char** argv) {
     if (ec || !std::filesystem::is_directory(out)) throw Error("cannot create output directory '" + out + "'");
     writeFiles(files);
 
-    std::printf("sgm-sim: %s %dx%d D=%d mode=%s census=%s preset=%s (P1 %d, P2' %d, P2 %s, weights %s), %d frame(s), stall %.2f\n",
-                scene.name.c_str(), w, h, params.disparities, costModeName(params.mode),
-                censusWindowName(params.census), presetName(params).c_str(), params.p1, params.p2,
-                p2ModeName(params.p2Mode), pathWeightingName(params.weights), frames, stall);
+    std::printf(
+        "sgm-sim: %s %dx%d D=%d mode=%s census=%s preset=%s (P1 %d, P2' %d, P2 %s, weights %s), %d frame(s), stall %.2f\n",
+        scene.name.c_str(), w, h, params.disparities, costModeName(params.mode), censusWindowName(params.census),
+        presetName(params).c_str(), params.p1, params.p2, p2ModeName(params.p2Mode), pathWeightingName(params.weights),
+        frames, stall);
     std::printf("sgm-sim: bit-exact %s: %.2f%% of %ld pixels match the golden model%s%s\n", mismatches ? "NO" : "yes",
                 100.0 * double(pixels * frames - mismatches) / double(pixels * frames), pixels * frames,
                 firstMismatch.empty() ? "" : "; ", firstMismatch.c_str());
-    std::printf("sgm-sim: %llu cycles for the frame, %.4f cycles/pixel (latency %lld cycles), %.0f simulated cycles/s\n",
-                (unsigned long long)cycles, double(cycles) / double(pixels), (long long)(cycles) - pixels,
-                double(core.top().cycles()) / seconds);
+    std::printf(
+        "sgm-sim: %llu cycles for the frame, %.4f cycles/pixel (latency %lld cycles), %.0f simulated cycles/s\n",
+        (unsigned long long)cycles, double(cycles) / double(pixels), (long long)(cycles)-pixels,
+        double(core.top().cycles()) / seconds);
     if (figures)
       std::printf("sgm-sim: bad-1.0 nonocc %.2f%%, all %.2f%%, density %.2f%%\n", figures->errNonocc, figures->errAll,
                   figures->density);

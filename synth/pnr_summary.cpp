@@ -129,8 +129,10 @@ Run readRun(const std::string& dir, const std::string& name) {
         const Json* type = seg.get("type");
         const Json* delay = seg.get("delay");
         const double ns = delay ? delay->number : 0;
-        if (type && type->text == "routing") r.pathRoutingNs += ns;
-        else r.pathLogicNs += ns;
+        if (type && type->text == "routing")
+          r.pathRoutingNs += ns;
+        else
+          r.pathLogicNs += ns;
         if (type && type->text == "logic") ++r.pathLogicCells;
         if (const Json* sources = seg.get("sources"))
           for (const Json& src : sources->items) addUnique(r.pathModules, sourceModule(src.text));
@@ -199,8 +201,7 @@ void writeCriticalPath(JsonWriter& j, const Run& r) {
 // Runs of the loop harness (`make pnr-loop`, meta kind=loop) and of the whole core.
 bool isLoopRun(const Run& r) { return meta(r, "kind") == "loop"; }
 
-void writeSummary(const std::string& root, const std::vector<Run>& allRuns, double cpp,
-                  const std::string& cppSource) {
+void writeSummary(const std::string& root, const std::vector<Run>& allRuns, double cpp, const std::string& cppSource) {
   std::vector<Run> runs, loops;
   for (const Run& r : allRuns) (isLoopRun(r) ? loops : runs).push_back(r);
   JsonWriter j;
@@ -284,10 +285,9 @@ void writeSummary(const std::string& root, const std::vector<Run>& allRuns, doub
     return s.empty() ? s : s + ")";
   };
   for (const Run& r : runs)
-    md << "| " << r.name << flagsOf(r)
-       << " | " << meta(r, "device") << "-" << meta(r, "package") << " | " << meta(r, "speed")
-       << " | " << meta(r, "d") << " | " << meta(r, "max_width") << " | " << r.lut4 << " / " << r.lut4Avail
-       << " | " << r.ff << " / " << r.ffAvail << " | " << r.ebr << " / " << r.ebrAvail << " | " << r.dsp
+    md << "| " << r.name << flagsOf(r) << " | " << meta(r, "device") << "-" << meta(r, "package") << " | "
+       << meta(r, "speed") << " | " << meta(r, "d") << " | " << meta(r, "max_width") << " | " << r.lut4 << " / "
+       << r.lut4Avail << " | " << r.ff << " / " << r.ffAvail << " | " << r.ebr << " / " << r.ebrAvail << " | " << r.dsp
        << " | **" << fixed(r.fmax, 1) << "** | " << meta(r, "target_mhz") << " | " << pathText(r) << " | "
        << meta(r, "pnr_seconds") << " |\n";
   if (!loops.empty()) {
@@ -337,10 +337,14 @@ int main(int argc, char** argv) {
     for (int i = 2; i < argc; ++i) {
       const std::string a = argv[i];
       if (i + 1 >= argc) throw Error("pnr-summary: " + a + " needs a value");
-      if (a == "--cycles-per-pixel") cpp = std::atof(argv[++i]);
-      else if (a == "--cpp-source") cppSource = argv[++i];
-      else if (a == "--check") checks.push_back(argv[++i]);
-      else throw Error("pnr-summary: unknown option " + a);
+      if (a == "--cycles-per-pixel")
+        cpp = std::atof(argv[++i]);
+      else if (a == "--cpp-source")
+        cppSource = argv[++i];
+      else if (a == "--check")
+        checks.push_back(argv[++i]);
+      else
+        throw Error("pnr-summary: unknown option " + a);
     }
     if (!(cpp >= 1.0)) throw Error("pnr-summary: --cycles-per-pixel must be a number >= 1");
     std::vector<Run> runs;
@@ -353,10 +357,11 @@ int main(int argc, char** argv) {
     std::cout << "pnr-summary: " << runs.size() << " run(s) -> " << root << "/summary.json, summary.md\n";
     for (const auto& c : checks) {
       const auto it = std::find_if(runs.begin(), runs.end(), [&](const Run& r) { return r.name == c; });
-      if (it == runs.end()) throw Error("pnr-summary: --check " + c + ": no routed run (missing done stamp or report.json)");
+      if (it == runs.end())
+        throw Error("pnr-summary: --check " + c + ": no routed run (missing done stamp or report.json)");
       if (!(it->fmax > 0)) throw Error("pnr-summary: --check " + c + ": nextpnr reported no fmax");
-      std::cout << "pnr-summary: " << c << " routed, fmax " << fixed(it->fmax, 1) << " MHz, " << it->lut4
-                << " LUT4, " << it->ff << " FF, " << it->ebr << " EBR\n";
+      std::cout << "pnr-summary: " << c << " routed, fmax " << fixed(it->fmax, 1) << " MHz, " << it->lut4 << " LUT4, "
+                << it->ff << " FF, " << it->ebr << " EBR\n";
     }
   } catch (const std::exception& e) {
     std::cerr << e.what() << "\n";

@@ -53,10 +53,18 @@ std::string metaGet(const std::map<std::string, std::string> &m, const std::stri
   return sgm::eval::metaValue(m, k);
 }
 long toLong(const std::string &s, long dflt = 0) {
-  try { return std::stol(s); } catch (...) { return dflt; }
+  try {
+    return std::stol(s);
+  } catch (...) {
+    return dflt;
+  }
 }
 double toDouble(const std::string &s, double dflt = NAN) {
-  try { return std::stod(s); } catch (...) { return dflt; }
+  try {
+    return std::stod(s);
+  } catch (...) {
+    return dflt;
+  }
 }
 // The part after the last backslash: $paramod$<hash>\sgm_wta -> sgm_wta.
 std::string baseName(const std::string &mod) {
@@ -88,10 +96,9 @@ Tech techOf(const std::string &target) {
 // LUT6 sites a distributed-RAM primitive occupies.
 int lutramLuts(const std::string &t) {
   static const std::map<std::string, int> k = {
-      {"RAM16X1S", 1},  {"RAM16X1D", 2},  {"RAM32X1S", 1},   {"RAM32X1D", 2},    {"RAM64X1S", 1},
-      {"RAM64X1D", 2},  {"RAM128X1S", 2}, {"RAM128X1D", 4},  {"RAM256X1S", 4},   {"RAM256X1D", 8},
-      {"RAM512X1S", 8}, {"RAM32M", 4},    {"RAM64M", 4},     {"RAM32M16", 8},    {"RAM64M8", 8},
-      {"RAM32X16DR8", 8}, {"RAM64X8SW", 8}};
+      {"RAM16X1S", 1},  {"RAM16X1D", 2},  {"RAM32X1S", 1},  {"RAM32X1D", 2},    {"RAM64X1S", 1},  {"RAM64X1D", 2},
+      {"RAM128X1S", 2}, {"RAM128X1D", 4}, {"RAM256X1S", 4}, {"RAM256X1D", 8},   {"RAM512X1S", 8}, {"RAM32M", 4},
+      {"RAM64M", 4},    {"RAM32M16", 8},  {"RAM64M8", 8},   {"RAM32X16DR8", 8}, {"RAM64X8SW", 8}};
   auto it = k.find(t);
   return it == k.end() ? 0 : it->second;
 }
@@ -164,10 +171,14 @@ struct Counts {
     int kb = bramKbitOf(t);
     if (kb) {
       bramKbit += n * kb;
-      if (kb == 36) bram36 += n;
-      else if (kb == 18) bram18 += n;
-      else if (kb == 9) bram9 += n;
-      else if (kb == 4) bram4 += n;
+      if (kb == 36)
+        bram36 += n;
+      else if (kb == 18)
+        bram18 += n;
+      else if (kb == 9)
+        bram9 += n;
+      else if (kb == 4)
+        bram4 += n;
     }
   }
   void add(Tech tech, const Counts &o, long times) {
@@ -386,8 +397,9 @@ bool loadTarget(const std::string &root, const std::string &config, const std::s
     }
     t.stages.push_back(s);
   }
-  std::sort(t.stages.begin(), t.stages.end(),
-            [](const Stage &a, const Stage &b) { return a.counts.sliceLuts() * a.instances > b.counts.sliceLuts() * b.instances; });
+  std::sort(t.stages.begin(), t.stages.end(), [](const Stage &a, const Stage &b) {
+    return a.counts.sliceLuts() * a.instances > b.counts.sliceLuts() * b.instances;
+  });
 
   // Path buffers.
   int found = 0;
@@ -654,7 +666,8 @@ void writeMarkdown(const std::string &path, const std::vector<Target> &ts, const
     const std::string levers = std::string(metaGet(f.meta, "uniqueness") == "0" ? ", UNIQUENESS = 0" : "") +
                                (metaGet(f.meta, "ad_term") == "0" ? ", AD_TERM = 0" : "") +
                                (!rightBlock.empty() && rightBlock != "0" ? ", RIGHT_BLOCK = " + rightBlock : "");
-    o << "## D = " << f.d << ", MAX_WIDTH = " << f.w << ", census " << f.census << levers << " (MAX_HEIGHT = " << f.h << ")\n\n";
+    o << "## D = " << f.d << ", MAX_WIDTH = " << f.w << ", census " << f.census << levers << " (MAX_HEIGHT = " << f.h
+      << ")\n\n";
     o << "| | paper, Table III (xc6slx150) |";
     for (auto *c : cols) o << " " << c->target << " (this core, census " << c->census << ") |";
     o << "\n| --- | --- |";
@@ -667,7 +680,9 @@ void writeMarkdown(const std::string &path, const std::vector<Target> &ts, const
     };
     auto na = std::string("n/a");
     row("slice LUTs (logic + memory + SRL)", grouped(kPaperLut), [&](const Target &t) {
-      return t.tech == Tech::Xilinx ? "**" + grouped(t.total.sliceLuts()) + "**" : t.tech == Tech::Ice40 ? grouped(t.total.lut) + " LUT4" : na;
+      return t.tech == Tech::Xilinx  ? "**" + grouped(t.total.sliceLuts()) + "**"
+             : t.tech == Tech::Ice40 ? grouped(t.total.lut) + " LUT4"
+                                     : na;
     });
     row("LUTs as logic (LUT1..6)", "", [&](const Target &t) {
       if (t.tech != Tech::Xilinx) return t.tech == Tech::Ice40 ? grouped(t.total.lut) : na;
@@ -712,9 +727,8 @@ void writeMarkdown(const std::string &path, const std::vector<Target> &ts, const
              std::to_string(t.total.bram4) + " RAM)";
     });
     row("pixels per clock", "1/9", [&](const Target &) { return std::string("1"); });
-    row("LUTs per (pixel/clock)", grouped(static_cast<long>(kPaperLut / kPaperPixelsPerClock)), [&](const Target &t) {
-      return t.tech == Tech::Xilinx ? grouped(t.total.sliceLuts()) : na;
-    });
+    row("LUTs per (pixel/clock)", grouped(static_cast<long>(kPaperLut / kPaperPixelsPerClock)),
+        [&](const Target &t) { return t.tech == Tech::Xilinx ? grouped(t.total.sliceLuts()) : na; });
     row("bar: at most 31,495 LUTs at 1 pixel/clock", "", [&](const Target &t) {
       if (t.tech != Tech::Xilinx) return std::string("");
       long l = t.total.sliceLuts();
@@ -736,13 +750,18 @@ void writeMarkdown(const std::string &path, const std::vector<Target> &ts, const
     for (auto *c : cols) {
       if (c->tech == Tech::Generic) continue;
       std::string blocks;
-      if (c->tech == Tech::Ice40) blocks = std::to_string(c->pbBram4) + " SB_RAM40_4K";
-      else if (c->target == "xc6s") blocks = std::to_string(c->pbBram18) + " RAMB16 + " + std::to_string(c->pbBram9) + " RAMB8";
-      else blocks = std::to_string(c->pbBram18) + " RAMB18 + " + std::to_string(c->pbBram36) + " RAMB36";
+      if (c->tech == Tech::Ice40)
+        blocks = std::to_string(c->pbBram4) + " SB_RAM40_4K";
+      else if (c->target == "xc6s")
+        blocks = std::to_string(c->pbBram18) + " RAMB16 + " + std::to_string(c->pbBram9) + " RAMB8";
+      else
+        blocks = std::to_string(c->pbBram18) + " RAMB18 + " + std::to_string(c->pbBram36) + " RAMB36";
       long e = eq7Bits(c->d, c->w);
-      o << "| " << c->target << " | " << grouped(c->pbBits) << " | " << grouped(e) << " | " << fixed(double(c->pbBits) / e, 3)
-        << " | " << blocks << " | " << grouped(c->pbBramKbit) << " Kbit (" << fixed(100.0 * c->pbBits / (c->pbBramKbit * 1024.0 > 0 ? c->pbBramKbit * 1024.0 : 1), 0)
-        << " % used) | " << (c->pbInBram ? "yes" : "**NO**") << (c->pbLutram ? " (" + std::to_string(c->pbLutram) + " LUTRAM LUTs)" : "") << " |\n";
+      o << "| " << c->target << " | " << grouped(c->pbBits) << " | " << grouped(e) << " | "
+        << fixed(double(c->pbBits) / e, 3) << " | " << blocks << " | " << grouped(c->pbBramKbit) << " Kbit ("
+        << fixed(100.0 * c->pbBits / (c->pbBramKbit * 1024.0 > 0 ? c->pbBramKbit * 1024.0 : 1), 0) << " % used) | "
+        << (c->pbInBram ? "yes" : "**NO**") << (c->pbLutram ? " (" + std::to_string(c->pbLutram) + " LUTRAM LUTs)" : "")
+        << " |\n";
     }
     o << "\n";
 
@@ -759,10 +778,10 @@ void writeMarkdown(const std::string &path, const std::vector<Target> &ts, const
                              ? std::to_string(s.counts.bram18 * n) + " / " + std::to_string(s.counts.bram9 * n)
                              : std::to_string(s.counts.bram18 * n) + " / " + std::to_string(s.counts.bram36 * n);
         o << "| " << stageShort(s.name) << " | " << n << " | " << grouped(sl) << " | "
-          << fixed(c->total.sliceLuts() ? 100.0 * sl / c->total.sliceLuts() : 0.0, 1) << " % | " << grouped(s.counts.lut * n)
-          << " | " << grouped(s.counts.lutram * n) << " | " << grouped(s.counts.srl * n) << " | " << grouped(s.counts.ff * n)
-          << " | " << br << " | " << grouped(s.counts.carry * n) << " | " << s.ltp.length << " | "
-          << (std::isnan(s.seconds) ? na : fixed(s.seconds, 0)) << " |\n";
+          << fixed(c->total.sliceLuts() ? 100.0 * sl / c->total.sliceLuts() : 0.0, 1) << " % | "
+          << grouped(s.counts.lut * n) << " | " << grouped(s.counts.lutram * n) << " | " << grouped(s.counts.srl * n)
+          << " | " << grouped(s.counts.ff * n) << " | " << br << " | " << grouped(s.counts.carry * n) << " | "
+          << s.ltp.length << " | " << (std::isnan(s.seconds) ? na : fixed(s.seconds, 0)) << " |\n";
       }
       o << "\n(block RAM column: " << (c->target == "xc6s" ? "RAMB16 / RAMB8" : "RAMB18 / RAMB36")
         << "; levels: longest LUT/carry/mux path inside the stage)\n\n";
@@ -777,15 +796,15 @@ void writeMarkdown(const std::string &path, const std::vector<Target> &ts, const
         std::string cells;
         for (auto &kv : m.cells) cells += (cells.empty() ? "" : ", ") + std::to_string(kv.second) + " " + kv.first;
         if (cells.empty()) cells = "flip-flops / logic";
-        o << "| " << stageShort(m.stage) << " | " << m.name << " | " << m.depth << " x " << m.width << " | " << m.instances
-          << " | " << grouped(m.bits()) << " | " << cells << " |\n";
+        o << "| " << stageShort(m.stage) << " | " << m.name << " | " << m.depth << " x " << m.width << " | "
+          << m.instances << " | " << grouped(m.bits()) << " | " << cells << " |\n";
       }
       o << "\n";
     }
     for (auto *c : cols)
       if (c->tech == Tech::Xilinx && !c->ltp.from.empty())
-        o << "Longest path (" << c->target << ", " << c->ltp.length << " cells, in " << c->ltpStage << "): `" << c->ltp.from
-          << "` -> `" << c->ltp.to << "`.\n\n";
+        o << "Longest path (" << c->target << ", " << c->ltp.length << " cells, in " << c->ltpStage << "): `"
+          << c->ltp.from << "` -> `" << c->ltp.to << "`.\n\n";
     for (auto *c : cols)
       if (c->checkProblems != 0)
         o << "**`check` reported " << c->checkProblems << " problem(s) for " << c->target << "**: see " << c->dir
@@ -802,9 +821,9 @@ void writeMarkdown(const std::string &path, const std::vector<Target> &ts, const
     o << "| D | device | LCs | LUT4 / FF / carry | fmax (nextpnr, routed) | fmax (icetime) | icetime levels | run time |\n";
     o << "| --- | --- | --- | --- | --- | --- | --- | --- |\n";
     for (auto &l : loops)
-      o << "| " << l.d << " | " << metaGet(l.meta, "device") << " | " << l.lc << " / " << l.lcTotal << " | " << l.lut << " / " << l.ff
-        << " / " << l.carry << " | **" << fixed(l.fmaxNextpnr, 1) << " MHz** | " << fixed(l.fmaxIcetime, 1) << " MHz | "
-        << l.icetimeLevels << " | " << fixed(l.seconds, 0) << " s |\n";
+      o << "| " << l.d << " | " << metaGet(l.meta, "device") << " | " << l.lc << " / " << l.lcTotal << " | " << l.lut
+        << " / " << l.ff << " / " << l.carry << " | **" << fixed(l.fmaxNextpnr, 1) << " MHz** | "
+        << fixed(l.fmaxIcetime, 1) << " MHz | " << l.icetimeLevels << " | " << fixed(l.seconds, 0) << " s |\n";
     o << "\n";
   }
 }
@@ -820,7 +839,8 @@ int main(int argc, char **argv) {
   std::vector<std::string> checks;
   for (int i = 2; i < argc; ++i) {
     std::string a = argv[i];
-    if (a == "--check" && i + 1 < argc) checks.push_back(argv[++i]);
+    if (a == "--check" && i + 1 < argc)
+      checks.push_back(argv[++i]);
     else {
       std::cerr << "synth-summary: unknown argument " << a << "\n";
       return 2;
@@ -828,7 +848,8 @@ int main(int argc, char **argv) {
   }
   std::vector<Target> targets;
   std::vector<Loop> loops;
-  static const std::regex cfgRe(R"(d[0-9]+-w[0-9]+(-h[0-9]+)?(-c9x[0-9]+)?(-k[0-9]+)?(-u[0-9]+)?(-ad[0-9]+)?(-rb[0-9]+)?(-er[0-9]+)?)");
+  static const std::regex cfgRe(
+      R"(d[0-9]+-w[0-9]+(-h[0-9]+)?(-c9x[0-9]+)?(-k[0-9]+)?(-u[0-9]+)?(-ad[0-9]+)?(-rb[0-9]+)?(-er[0-9]+)?)");
   static const std::regex loopRe(R"(ice40-loop-d[0-9]+)");
   for (auto &cfg : listDir(root)) {
     std::string p = root + "/" + cfg;
@@ -879,7 +900,8 @@ int main(int argc, char **argv) {
                 << "not found among the inferred memories (renamed, or no longer inferred as memories)\n";
       rc = 1;
     } else if (t->tech == Tech::Generic) {
-      std::cerr << "synth-summary: FAIL: " << c << ": the generic target does not map memories; check an xc7, xc6s or ice40 result\n";
+      std::cerr << "synth-summary: FAIL: " << c
+                << ": the generic target does not map memories; check an xc7, xc6s or ice40 result\n";
       rc = 1;
     } else if (!t->pbInBram) {
       std::cerr << "synth-summary: FAIL: " << c << ": the path buffers are not (only) in block RAM: "
@@ -887,9 +909,9 @@ int main(int argc, char **argv) {
                 << " LUTs of distributed RAM (a memory with neither went to flip-flops)\n";
       rc = 1;
     } else {
-      std::cout << "synth-summary: " << c << ": path buffers in block RAM (" << t->pbBram18 << " x 18K + " << t->pbBram36
-                << " x 36K + " << t->pbBram9 << " x 9K), " << t->total.sliceLuts() << " slice LUTs, " << t->total.ff
-                << " FFs\n";
+      std::cout << "synth-summary: " << c << ": path buffers in block RAM (" << t->pbBram18 << " x 18K + "
+                << t->pbBram36 << " x 36K + " << t->pbBram9 << " x 9K), " << t->total.sliceLuts() << " slice LUTs, "
+                << t->total.ff << " FFs\n";
     }
     if (t->checkProblems != 0) {
       std::cerr << "synth-summary: FAIL: " << c << ": `check` reported " << t->checkProblems << " problem(s), see "

@@ -89,8 +89,10 @@ class AxilChecker {
     bool waiting = false;
     Payload held{0, 0, 0};
     void observe(AxilChecker& c, const char* name, bool valid, bool ready, const Payload& now) {
-      if (waiting && !valid) c.fail(name, "VALID dropped before its handshake");
-      else if (waiting && !(now == held)) c.fail(name, "payload changed while VALID was high and READY low");
+      if (waiting && !valid)
+        c.fail(name, "VALID dropped before its handshake");
+      else if (waiting && !(now == held))
+        c.fail(name, "payload changed while VALID was high and READY low");
       waiting = valid && !ready;
       held = now;
     }

@@ -23,8 +23,8 @@ namespace sgm::tb {
 struct StallProfile {
   enum class Kind { kRandom, kBursts, kToggle };
   Kind kind = Kind::kRandom;
-  double probability = 0;      // kRandom: a cycle stalls; kBursts: a burst starts on a cycle
-  int burstMin = 0, burstMax = 0;  // kBursts: burst length in cycles
+  double probability = 0;                         // kRandom: a cycle stalls; kBursts: a burst starts on a cycle
+  int burstMin = 0, burstMax = 0;                 // kBursts: burst length in cycles
   StallProfile(double p = 0) : probability(p) {}  // NOLINT: implicit on purpose
   static StallProfile bursts(double start, int minCycles, int maxCycles) {
     StallProfile s(start);
@@ -39,9 +39,12 @@ struct StallProfile {
   }
   std::string describe() const {
     std::ostringstream text;
-    if (kind == Kind::kToggle) text << "toggle";
-    else if (kind == Kind::kBursts) text << "bursts " << burstMin << ".." << burstMax << "@" << probability;
-    else text << probability;
+    if (kind == Kind::kToggle)
+      text << "toggle";
+    else if (kind == Kind::kBursts)
+      text << "bursts " << burstMin << ".." << burstMax << "@" << probability;
+    else
+      text << probability;
     return text.str();
   }
 };
@@ -155,14 +158,14 @@ class AxisSink {
 
 // The beats of one well-formed frame from a left/right gray pair (row-major,
 // width x height bytes each).
-inline std::vector<Beat> frameBeats(const uint8_t* left, const uint8_t* right, int width, int height,
-                                    size_t leftStride, size_t rightStride) {
+inline std::vector<Beat> frameBeats(const uint8_t* left, const uint8_t* right, int width, int height, size_t leftStride,
+                                    size_t rightStride) {
   std::vector<Beat> beats;
   beats.reserve(size_t(width) * height);
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x)
-      beats.push_back(Beat{uint16_t(left[y * leftStride + x] | right[y * rightStride + x] << 8), x == 0 && y == 0,
-                           x == width - 1});
+      beats.push_back(
+          Beat{uint16_t(left[y * leftStride + x] | right[y * rightStride + x] << 8), x == 0 && y == 0, x == width - 1});
   return beats;
 }
 

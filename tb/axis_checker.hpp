@@ -38,8 +38,10 @@ class AxisChecker {
   // One cycle, before the clock edge: tvalid, tready and the beat on the bus.
   // Returns true when a beat is transferred.
   bool observe(uint64_t cycle, bool valid, bool ready, const Beat& beat) {
-    if (waiting_ && !valid) fail(cycle, "tvalid dropped before its handshake");
-    else if (waiting_ && !(beat == held_)) fail(cycle, "tdata/tuser/tlast changed while tvalid was high and tready low");
+    if (waiting_ && !valid)
+      fail(cycle, "tvalid dropped before its handshake");
+    else if (waiting_ && !(beat == held_))
+      fail(cycle, "tdata/tuser/tlast changed while tvalid was high and tready low");
     const bool fire = valid && ready;
     waiting_ = valid && !ready;
     held_ = beat;

@@ -56,8 +56,8 @@ struct FrameInput {
   long resetAfterBeats = -1;
   // >= 0: presented on cfg_mode_i instead of the code of params.mode (3, the unused encoding).
   int modeCode = -1;
-  int uniqueCode = -1;  // when >= 0, replaces cfg_unique_i (an out-of-range ratio on purpose)
-  int adWeightCode = -1;  // when >= 0, replaces cfg_ad_weight_i (an AD term that leaves the cost word)
+  int uniqueCode = -1;       // when >= 0, replaces cfg_unique_i (an out-of-range ratio on purpose)
+  int adWeightCode = -1;     // when >= 0, replaces cfg_ad_weight_i (an AD term that leaves the cost word)
   int rightWeightCode = -1;  // when >= 0, replaces cfg_right_weight_i (a fifth-path weight out of range)
   int resetLengthCode = -1;  // when >= 0, replaces cfg_reset_len_i (a restart of length 0)
   // The configuration is out of range: the core drops the frame whole (no output,
@@ -66,7 +66,7 @@ struct FrameInput {
 };
 
 struct FrameOutput {
-  DisparityMap map;          // what the core produced
+  DisparityMap map;           // what the core produced
   uint64_t firstInCycle = 0;  // cycle of the frame's first input handshake
   uint64_t lastOutCycle = 0;  // cycle of its last output handshake
   unsigned errors = 0;        // error_o when the frame was done
@@ -144,15 +144,16 @@ class CoreHarness {
 
  private:
   static std::vector<Beat> inputBeats(const FrameInput& f) {
-    return f.rawBeats.empty() ? frameBeats(f.left.data, f.right.data, f.left.cols, f.left.rows, f.left.step, f.right.step)
-                              : f.rawBeats;
+    return f.rawBeats.empty()
+               ? frameBeats(f.left.data, f.right.data, f.left.cols, f.left.rows, f.left.step, f.right.step)
+               : f.rawBeats;
   }
 
   // Frames [begin, end); the last one may reset the core.
   void runSegment(const std::vector<FrameInput>& frames, size_t begin, size_t end, std::vector<FrameOutput>& out,
                   const std::function<void(uint64_t, uint64_t)>& progress) {
     const bool resets = frames[end - 1].resetAfterBeats >= 0;
-    const size_t owing = resets ? end - 1 : end;  // frames [begin, owing) produce output
+    const size_t owing = resets ? end - 1 : end;         // frames [begin, owing) produce output
     std::vector<size_t> firstBeat, outFirst, beatCount;  // per frame, counted from the segment start
     size_t inputCount = 0, outputCount = 0;
     // The first frame's configuration before any of its beats (a presenter may take cycles).
@@ -207,7 +208,8 @@ class CoreHarness {
       if (progress && (top_.cycles() & 0xfffff) == 0) progress(sink_.beats().size() - sinkStart, outputCount);
     }
     for (size_t k = begin; k < owing; ++k)
-      if (!frames[k].dropped) out[k].map = decode(sinkStart + outFirst[k - begin], frames[k].left.cols, frames[k].left.rows);
+      if (!frames[k].dropped)
+        out[k].map = decode(sinkStart + outFirst[k - begin], frames[k].left.cols, frames[k].left.rows);
     if (resets) {
       top_->s_tvalid_i = 0;
       top_.reset();
@@ -240,8 +242,10 @@ class CoreHarness {
  private:
   void present(const FrameInput& f) {
     if (presenter_) return presenter_(f.params, f.left.size());
-    if constexpr (HasConfigPorts<Model>::value) presentPorts(f);
-    else throw Error("the model has no cfg_*_i ports: set a presenter");
+    if constexpr (HasConfigPorts<Model>::value)
+      presentPorts(f);
+    else
+      throw Error("the model has no cfg_*_i ports: set a presenter");
   }
 
   // modeCode / uniqueCode, when set, replace the mode's encoding / the uniqueness

@@ -97,8 +97,10 @@ class DisparityStageTest : public ::testing::Test {
 
   static DisparityMap expected(const Frame& f) {
     if (!f.enable) return f.map;
-    if constexpr (kReadsGray) return Stage::golden(f.map, f.gray);
-    else return Stage::golden(f.map);
+    if constexpr (kReadsGray)
+      return Stage::golden(f.map, f.gray);
+    else
+      return Stage::golden(f.map);
   }
 
   static std::string describe(const Frame& f) {
@@ -230,7 +232,9 @@ class DisparityStageTest : public ::testing::Test {
     std::vector<Frame> out;
     for (int x0 : {0, (w - kMaxWidth) / 2, w - kMaxWidth}) {
       const cv::Rect r(x0, 0, kMaxWidth, m.disp.rows);
-      out.push_back({{m.disp(r).clone(), m.valid(r).clone()}, true, name + " columns " + std::to_string(x0) + "..",
+      out.push_back({{m.disp(r).clone(), m.valid(r).clone()},
+                     true,
+                     name + " columns " + std::to_string(x0) + "..",
                      gray.empty() ? cv::Mat() : gray(r).clone()});
     }
     return out;
@@ -322,8 +326,7 @@ class DisparityStageTest : public ::testing::Test {
     if (const std::string why = conesMissing(); !why.empty()) GTEST_SKIP() << why;
     Top top(topName("cones"));
     runFrames(top,
-              tiles(conesStages(d).*Stage::kConesInput,
-                    "cones D=" + std::to_string(d) + " " + Stage::kConesInputName,
+              tiles(conesStages(d).*Stage::kConesInput, "cones D=" + std::to_string(d) + " " + Stage::kConesInputName,
                     kReadsGray ? conesGray("left") : cv::Mat()),
               700 + d);
   }

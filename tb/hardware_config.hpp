@@ -27,9 +27,9 @@ struct HardwareConfig {
   bool subpixel = false, lrEnable = false;
   int lrTolerance = 0;
   bool fill = false, snap = false, median = false;
-  bool p2Paper = false;       // cfg_p2_mode_i: 0 knee, 1 paper (P2'/dI)
-  bool weightsEqual = false;  // cfg_weights_i: 0 = 3,2,3,2, 1 = equal
-  int uniqueness = 0;         // cfg_unique_i: ratio in %, 0 = off
+  bool p2Paper = false;         // cfg_p2_mode_i: 0 knee, 1 paper (P2'/dI)
+  bool weightsEqual = false;    // cfg_weights_i: 0 = 3,2,3,2, 1 = equal
+  int uniqueness = 0;           // cfg_unique_i: ratio in %, 0 = off
   int adWeight = 0, adCap = 0;  // cfg_ad_weight_i, cfg_ad_cap_i: the AD term
   int rightWeight = 0;          // cfg_right_weight_i: the fifth path's W5 (its block is the build's RIGHT_BLOCK)
   // cfg_reset_t_i, cfg_reset_len_i, cfg_reset_paths_i: the path restart at strong edges

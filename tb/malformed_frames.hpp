@@ -22,10 +22,9 @@ enum class Malformation {
   kFewLines,        // the frame stops after fewer than H lines
 };
 
-constexpr Malformation kAllMalformations[] = {Malformation::kLongLine,    Malformation::kBeyondMaxWidth,
-                                              Malformation::kMissingLast, Malformation::kEarlyLast,
-                                              Malformation::kStartInside, Malformation::kStrayStart,
-                                              Malformation::kFewLines};
+constexpr Malformation kAllMalformations[] = {
+    Malformation::kLongLine,    Malformation::kBeyondMaxWidth, Malformation::kMissingLast, Malformation::kEarlyLast,
+    Malformation::kStartInside, Malformation::kStrayStart,     Malformation::kFewLines};
 
 // error_o bits (sgm_stream_ctrl).
 constexpr unsigned kErrorLastEarly = 1u << 0, kErrorLastMissing = 1u << 1, kErrorStartInside = 1u << 2;
@@ -57,7 +56,9 @@ struct MalformedFrames {
 inline MalformedFrames malform(const FrameInput& frame, Malformation kind, int maxWidth, unsigned at, unsigned extra) {
   const int w = frame.left.cols, h = frame.left.rows;
   const std::vector<Beat> good = frameBeats(frame.left.data, frame.right.data, w, h, frame.left.step, frame.right.step);
-  const auto line = [&](int y) { return std::vector<Beat>(good.begin() + size_t(y) * w, good.begin() + size_t(y + 1) * w); };
+  const auto line = [&](int y) {
+    return std::vector<Beat>(good.begin() + size_t(y) * w, good.begin() + size_t(y + 1) * w);
+  };
   const int row = int(at % unsigned(h));
   const size_t cut = 1 + at % (good.size() - 1);  // 1 .. W H - 1 beats kept
   MalformedFrames m{{frame}, {0}, std::string(malformationName(kind))};

@@ -13,8 +13,10 @@ namespace sgm::tb {
 
 template <typename Port>
 inline uint32_t wordOf(const Port& port, int index) {
-  if constexpr (sizeof(Port) <= 8) return uint32_t(uint64_t(port) >> (32 * index));
-  else return port[index];
+  if constexpr (sizeof(Port) <= 8)
+    return uint32_t(uint64_t(port) >> (32 * index));
+  else
+    return port[index];
 }
 
 template <typename Port>

@@ -37,8 +37,8 @@ constexpr int kMinHeight = 9;
 struct Frame {
   tb::FrameInput input;
   unsigned expectedErrors = 0;
-  bool good = true;  // compared with the golden model
-  std::string text;  // one-line description
+  bool good = true;             // compared with the golden model
+  std::string text;             // one-line description
   synth::SyntheticScene scene;  // ground truth of a good frame
 };
 
@@ -112,7 +112,8 @@ std::string paramText(const Params& p) {
 
 // Which of the 3 x 2 x 2 x 2 x 2 x 2 switch combinations a parameter set is.
 int paramCombination(const Params& p) {
-  return (((tb::hardwareModeCode(p.mode) * 2 + p.subpixel) * 2 + (p.lrTolerance >= 0)) * 4 + p.fill * 2 + p.median) * 2 +
+  return (((tb::hardwareModeCode(p.mode) * 2 + p.subpixel) * 2 + (p.lrTolerance >= 0)) * 4 + p.fill * 2 + p.median) *
+             2 +
          p.snap;
 }
 
@@ -136,7 +137,8 @@ Case drawCase(uint64_t master, uint64_t index, int maxHeight) {
   const auto text = [](const std::string& name, const tb::StallProfile& p) {
     return name == "light" || name == "heavy" ? name + " " + p.describe() : name == "none" ? name : p.describe();
   };
-  c.stallText = "stalls: source " + text(c.sourceStalls, c.stalls.sourceIdle) + ", sink " + text(c.sinkStalls, c.stalls.sinkBusy);
+  c.stallText = "stalls: source " + text(c.sourceStalls, c.stalls.sourceIdle) + ", sink " +
+                text(c.sinkStalls, c.stalls.sinkBusy);
   const double pick = rng.real();
   const int before = rng.uniform(0, 2);
   for (int i = 0; i < before; ++i) c.frames.push_back(goodFrame(rng, maxHeight));
@@ -156,18 +158,21 @@ Case drawCase(uint64_t master, uint64_t index, int maxHeight) {
   } else {
     Frame base = goodFrame(rng, maxHeight);
     auto kind = tb::kAllMalformations[rng.uniform(0, int(std::size(tb::kAllMalformations)) - 1)];
-    if (kind == tb::Malformation::kLongLine && base.input.left.cols == kMaxWidth) kind = tb::Malformation::kBeyondMaxWidth;
+    if (kind == tb::Malformation::kLongLine && base.input.left.cols == kMaxWidth)
+      kind = tb::Malformation::kBeyondMaxWidth;
     // Where it breaks (malform() reduces `at` to a line or a cut): often at the
     // edges, a one-beat frame (at 0), one beat short (W H - 2), a line boundary.
     const int w = base.input.left.cols, h = base.input.left.rows;
     const double where = rng.real();
-    const unsigned at = where < 0.2 ? 0u : where < 0.35 ? unsigned(w * h - 2)
-                      : where < 0.5 ? unsigned(w * rng.uniform(1, h - 1) - 1) : unsigned(rng.next());
+    const unsigned at = where < 0.2    ? 0u
+                        : where < 0.35 ? unsigned(w * h - 2)
+                        : where < 0.5  ? unsigned(w * rng.uniform(1, h - 1) - 1)
+                                       : unsigned(rng.next());
     const tb::MalformedFrames bad = tb::malform(base.input, kind, kMaxWidth, at, unsigned(rng.next()));
     c.kind = std::string("malformed ") + tb::malformationName(kind);
     for (size_t k = 0; k < bad.frames.size(); ++k)
-      c.frames.push_back(Frame{bad.frames[k], bad.errors[k], false,
-                               (k ? "rest of the frame, " : bad.description + ", ") + base.text, {}});
+      c.frames.push_back(Frame{
+          bad.frames[k], bad.errors[k], false, (k ? "rest of the frame, " : bad.description + ", ") + base.text, {}});
     c.frames.push_back(goodFrame(rng, maxHeight));
   }
   return c;
@@ -223,7 +228,8 @@ std::string runCase(const Case& c, Totals& totals) {
     }
     const std::string mismatch = checkGoodFrame(f.input, outputs[k]);
     if (!mismatch.empty()) return where + mismatch;
-    totals.badNonocc += eval::evaluate(eval::toFloat(outputs[k].map), synth::toEvalScene(f.scene, "synthetic")).errNonocc;
+    totals.badNonocc +=
+        eval::evaluate(eval::toFloat(outputs[k].map), synth::toEvalScene(f.scene, "synthetic")).errNonocc;
     ++totals.goodFrames;
     totals.pixels += long(f.input.left.total());
     totals.combinations.insert(paramCombination(f.input.params));

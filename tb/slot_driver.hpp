@@ -110,8 +110,8 @@ class SlotDriver {
     size_t i = 0;
     while (now[i] == held_[i]) ++i;
     [&] {
-      FAIL() << where() << ": outputs changed while en_i = 0 (output word " << i << ": " << held_[i] << " -> "
-             << now[i] << ", cycle " << top_.cycles() << ")";
+      FAIL() << where() << ": outputs changed while en_i = 0 (output word " << i << ": " << held_[i] << " -> " << now[i]
+             << ", cycle " << top_.cycles() << ")";
     }();
     return false;
   }

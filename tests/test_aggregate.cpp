@@ -17,9 +17,7 @@ using sgm::CostVolume;
 using sgm::PathVolume;
 constexpr uint16_t S = sgm::kPathSentinel;
 
-std::vector<int> lrAt(const PathVolume& v, int x, int y) {
-  return std::vector<int>(v.at(x, y), v.at(x, y) + v.depth);
-}
+std::vector<int> lrAt(const PathVolume& v, int x, int y) { return std::vector<int>(v.at(x, y), v.at(x, y) + v.depth); }
 
 void setCost(CostVolume& v, int x, int y, std::initializer_list<int> c) {
   int d = 0;
@@ -46,10 +44,10 @@ TEST(P2Table, DocumentedExample) {
   const sgm::P2Table t = sgm::makeP2Table(7, 100);
   EXPECT_EQ(t[0], 100);
   EXPECT_EQ(t[1], 80);
-  EXPECT_EQ(t[2], 66);   // floor(400 / 6)
-  EXPECT_EQ(t[3], 57);   // floor(400 / 7)
-  EXPECT_EQ(t[53], 7);   // floor(400 / 57) = 7
-  EXPECT_EQ(t[54], 7);   // max(P1, 6)
+  EXPECT_EQ(t[2], 66);  // floor(400 / 6)
+  EXPECT_EQ(t[3], 57);  // floor(400 / 7)
+  EXPECT_EQ(t[53], 7);  // floor(400 / 57) = 7
+  EXPECT_EQ(t[54], 7);  // max(P1, 6)
   EXPECT_EQ(t[255], 7);
 }
 
@@ -147,7 +145,7 @@ TEST(PathCost, HandExampleOneRow) {
   setCost(c, 1, 0, {6, 0, 8});
   setCost(c, 2, 0, {4, 7, 1});
   const PathVolume l0 = sgm::pathCost(c, gray, 0, 3, 100);
-  EXPECT_EQ(lrAt(l0, 0, 0), (std::vector<int>{0, 5, 9}));   // path start
+  EXPECT_EQ(lrAt(l0, 0, 0), (std::vector<int>{0, 5, 9}));  // path start
   // x=1, m=0, jump 100: d0 min(0, 8) = 0 -> 6; d1 min(5, 3, 12) = 3 -> 3; d2 min(9, 8) = 8 -> 16.
   EXPECT_EQ(lrAt(l0, 1, 0), (std::vector<int>{6, 3, 16}));
   // x=2, m=3, dI=20, jump 3+5=8: d0 min(6, 6, 8) = 6 -> 4+6-3 = 7; d1 min(3, ...) = 3 -> 7;
@@ -221,9 +219,9 @@ TEST(PathCost, HandExampleTwoByTwoAllPathsAndSum) {
 
   // S = 3 L0 + 2 L45 + 3 L90 + 2 L135 (section 5).
   const PathVolume s = sgm::aggregateCost(c, gray, 3, 100);
-  EXPECT_EQ(lrAt(s, 0, 0), (V{0, 50, 90}));       // (3+2+3+2) x row0
-  EXPECT_EQ(lrAt(s, 1, 0), (V{0, 59, 114}));      // 3 x [0,8,17] + (2+3+2) x row0
-  EXPECT_EQ(lrAt(s, 0, 1), (V{60, 15, 120}));     // (3+2) x row1 + (3+2) x afterRow0
+  EXPECT_EQ(lrAt(s, 0, 0), (V{0, 50, 90}));    // (3+2+3+2) x row0
+  EXPECT_EQ(lrAt(s, 1, 0), (V{0, 59, 114}));   // 3 x [0,8,17] + (2+3+2) x row0
+  EXPECT_EQ(lrAt(s, 0, 1), (V{60, 15, 120}));  // (3+2) x row1 + (3+2) x afterRow0
   // 3 x [9,0,11] + 2 x afterRow0 + 3 x afterRow0 + 2 x row1 = [27,0,33] + [30,15,80] + [12,0,16];
   // four different Lr here, so a weight on the wrong path shows.
   EXPECT_EQ(lrAt(s, 1, 1), (V{69, 15, 129}));

@@ -49,7 +49,7 @@ TEST(CensusBitIndex, RowMajorOrder) {
   EXPECT_EQ(censusBitIndex(-4, 2), 35);  // 36 - 1
   EXPECT_EQ(censusBitIndex(0, 2), 39);   // 40 - 1
   EXPECT_EQ(censusBitIndex(-2, -1), 11);
-  EXPECT_EQ(censusBitIndex(3, 1), 33);   // 34 - 1
+  EXPECT_EQ(censusBitIndex(3, 1), 33);  // 34 - 1
 }
 
 TEST(CensusBitIndex, BijectionOntoZeroTo43) {

@@ -24,8 +24,8 @@ namespace {
 using sgm::test::ChildResult;
 using sgm::test::dirEntries;
 using sgm::test::shiftedPair;
-using sgm::test::texture;
 using sgm::test::textLines;
+using sgm::test::texture;
 
 // ------------------------------------------------------------------ CliArgs in-process
 
@@ -140,7 +140,9 @@ TEST(CliArgs, RealOption) {
 
 TEST(CliArgs, OneLineEscapesControlCharacters) {
   EXPECT_EQ(sgm::oneLine("plain text"), "plain text");
-  EXPECT_EQ(sgm::oneLine("a\nb\tc\rd\x01" "e\x7f"), "a\\nb\\tc\\rd\\x01e\\x7f");
+  EXPECT_EQ(sgm::oneLine("a\nb\tc\rd\x01"
+                         "e\x7f"),
+            "a\\nb\\tc\\rd\\x01e\\x7f");
   const std::string cut = sgm::oneLine(std::string(100000, 'x'));
   EXPECT_LT(cut.size(), 5000u);
   EXPECT_EQ(cut.substr(cut.size() - 3), "...");
@@ -201,7 +203,8 @@ TEST_F(SgmGoldenCli, TruncatedJpeg) {
   expectOneLineError(run("sgm-golden", {in("cut.jpg"), in("right.png")}), "sgm-golden", "cut.jpg");
   // Inside the scan data: libjpeg would decode it with made-up pixels and a warning.
   writeRaw("cut2.jpg", jpeg.substr(0, jpeg.size() * 3 / 4));
-  expectOneLineError(run("sgm-golden", {in("left.png"), in("cut2.jpg")}), "sgm-golden", "'" + in("cut2.jpg") + "': truncated");
+  expectOneLineError(run("sgm-golden", {in("left.png"), in("cut2.jpg")}), "sgm-golden",
+                     "'" + in("cut2.jpg") + "': truncated");
 }
 
 TEST_F(SgmGoldenCli, HeaderAnnouncingAHugeImage) {
@@ -267,9 +270,12 @@ TEST_F(SgmGoldenCli, UnsupportedDisparityCount) {
 
 TEST_F(SgmGoldenCli, BadOptionValues) {
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
-      {{"--p1", "abc"}, "--p1"},         {{"--p2", "-5"}, "--p2"},
-      {{"--mode", "census"}, "census"},  {{"--subpixel", "maybe"}, "--subpixel"},
-      {{"--lr", "x"}, "--lr"},           {{"--median", "2"}, "--median"},
+      {{"--p1", "abc"}, "--p1"},
+      {{"--p2", "-5"}, "--p2"},
+      {{"--mode", "census"}, "census"},
+      {{"--subpixel", "maybe"}, "--subpixel"},
+      {{"--lr", "x"}, "--lr"},
+      {{"--median", "2"}, "--median"},
       {{"--p1", "50", "--p2", "10"}, "P2'"},
       {{"--d", "4", "--lr", "9"}, "LR tolerance"},
       {{"--d"}, "needs a value"},
@@ -294,8 +300,7 @@ TEST_F(SgmGoldenCli, UnknownOptionAndWrongArgumentCount) {
                      "unknown option --frobnicate");
   expectOneLineError(run("sgm-golden", {in("left.png")}), "sgm-golden", "two images");
   expectOneLineError(run("sgm-golden", {}), "sgm-golden", "two images");
-  expectOneLineError(run("sgm-golden", {in("left.png"), in("right.png"), in("left.png")}), "sgm-golden",
-                     "two images");
+  expectOneLineError(run("sgm-golden", {in("left.png"), in("right.png"), in("left.png")}), "sgm-golden", "two images");
 }
 
 TEST_F(SgmGoldenCli, UnwritableOutputLeavesNoFile) {
@@ -386,7 +391,8 @@ class SgmEvalCli : public CliTest {
   void expectErrorInEveryCommand(const std::string& data, const std::string& needle) {
     for (const std::string command : {"run", "table", "bench", "pool"}) {
       SCOPED_TRACE(command);
-      std::vector<std::string> args = {command, command == "pool" ? "--pool" : "--data", data, "--out", out_ + "/report"};
+      std::vector<std::string> args = {command, command == "pool" ? "--pool" : "--data", data, "--out",
+                                       out_ + "/report"};
       if (command == "run") args.resize(3);
       if (command == "bench") args.insert(args.end(), {"--scene", "synthetic"});
       expectOneLineError(run("sgm-eval", args), "sgm-eval", needle);
@@ -450,7 +456,8 @@ TEST_F(SgmEvalCli, BadSceneImagesInEveryCommand) {
 }
 
 TEST_F(SgmEvalCli, SceneSmallerThanTheWindow) {
-  const std::string data = makeScene("synthetic", texture(8, 8, 1), texture(8, 8, 2), cv::Mat(8, 8, CV_8UC1, cv::Scalar(4)));
+  const std::string data = makeScene("synthetic", texture(8, 8, 1), texture(8, 8, 2),
+                                     cv::Mat(8, 8, CV_8UC1, cv::Scalar(4)));
   expectOneLineError(run("sgm-eval", {"run", "--data", data}), "sgm-eval", "smaller than the 9x9 minimum frame");
 }
 

@@ -39,8 +39,8 @@ cv::Mat randomImage(int w, int h, unsigned seed, int lo = 0, int hi = 255) {
 
 TEST(CensusCost, ModesOnHandPairs) {
   // Bits 0..43 of the 44-bit signature; 43 (offset (4,2)) is the last one.
-  const Census left = censusOf({0, 1, 2, 40});      // rank 4
-  const Census right = censusOf({1, 2, 3, 4, 43});  // rank 5; xor = {0,3,4,40,43}
+  const Census left = censusOf({0, 1, 2, 40});                     // rank 4
+  const Census right = censusOf({1, 2, 3, 4, 43});                 // rank 5; xor = {0,3,4,40,43}
   EXPECT_EQ(sgm::censusCost(CostMode::kRt, left, right), 1);       // |4 - 5|
   EXPECT_EQ(sgm::censusCost(CostMode::kRsad, left, right), 5);     // |xor|
   EXPECT_EQ(sgm::censusCost(CostMode::kUnified, left, right), 6);  // 1 + 5
@@ -84,15 +84,14 @@ TEST(ComputeCost, MatchOutsideRightImageCostsMax) {
   const struct {
     CostMode mode;
     int expected;
-  } cases[] = {{CostMode::kRt, 44},  {CostMode::kRsad, 44}, {CostMode::kUnified, 88},
+  } cases[] = {{CostMode::kRt, 44},   {CostMode::kRsad, 44}, {CostMode::kUnified, 88},
                {CostMode::kSad, 255}, {CostMode::kBt, 255},  {CostMode::kSadRt, 44}};
   for (const auto& c : cases) {
     const CostVolume v = sgm::computeCost(l, r, c.mode, 9);
     for (int y = 0; y < v.height; ++y)
       for (int x = 0; x < 8; ++x)
         for (int d = x + 1; d < 9; ++d)
-          ASSERT_EQ(v.at(x, y)[d], c.expected)
-              << sgm::costModeName(c.mode) << " x=" << x << " y=" << y << " d=" << d;
+          ASSERT_EQ(v.at(x, y)[d], c.expected) << sgm::costModeName(c.mode) << " x=" << x << " y=" << y << " d=" << d;
   }
 }
 
@@ -103,7 +102,7 @@ TEST(ComputeCost, VolumeShapeAndLayout) {
   EXPECT_EQ(v.height, 11);
   EXPECT_EQ(v.depth, 7);
   EXPECT_EQ(v.data.size(), size_t(13 * 11 * 7));
-  EXPECT_EQ(v.at(1, 0) - v.at(0, 0), 7);        // pixel-major, disparities adjacent
+  EXPECT_EQ(v.at(1, 0) - v.at(0, 0), 7);  // pixel-major, disparities adjacent
   EXPECT_EQ(v.at(0, 1) - v.at(0, 0), 13 * 7);
 }
 

@@ -70,9 +70,9 @@ TEST(WinnerTakeAll, TiesGoToTheSmallestDisparity) {
 // ------------------------------------------------------------------ sub-pixel
 
 TEST(SubpixelOffset, HandExamples) {
-  EXPECT_EQ(sgm::subpixelOffset(5, 0, 5), 0);     // symmetric
-  EXPECT_EQ(sgm::subpixelOffset(4, 4, 4), 0);     // den = 0
-  EXPECT_EQ(sgm::subpixelOffset(10, 0, 0), 8);    // vertex half a pixel towards b
+  EXPECT_EQ(sgm::subpixelOffset(5, 0, 5), 0);   // symmetric
+  EXPECT_EQ(sgm::subpixelOffset(4, 4, 4), 0);   // den = 0
+  EXPECT_EQ(sgm::subpixelOffset(10, 0, 0), 8);  // vertex half a pixel towards b
   EXPECT_EQ(sgm::subpixelOffset(0, 0, 10), -8);
   // a > b: the vertex lies towards d+1 -> positive. (6-4)/(2*6)*16 = 2.67 -> 3.
   EXPECT_EQ(sgm::subpixelOffset(6, 2, 4), 3);
@@ -181,12 +181,12 @@ TEST(FillHoles, BackgroundSideBordersAndEmptyRows) {
   const int X = 999;  // value of an invalid pixel, far from every neighbour: background rule
   const DisparityMap in = makeMap(
       {
-          {X, 48, X, X, 32, X},     // both sides -> smaller; borders -> the one side
-          {X, X, X, X, X, X},       // no valid pixel: stays invalid
-          {1, 2, 3, 4, 5, 6},       // all valid: unchanged
-          {X, X, X, X, X, 80},      // only a right neighbour
-          {16, X, 64, X, X, 16},    // left 16 / right 64 -> 16; left 64 / right 16 -> 16
-          {0, X, 40, X, X, X},      // a valid d = 0 is a real neighbour (0 < 40)
+          {X, 48, X, X, 32, X},   // both sides -> smaller; borders -> the one side
+          {X, X, X, X, X, X},     // no valid pixel: stays invalid
+          {1, 2, 3, 4, 5, 6},     // all valid: unchanged
+          {X, X, X, X, X, 80},    // only a right neighbour
+          {16, X, 64, X, X, 16},  // left 16 / right 64 -> 16; left 64 / right 16 -> 16
+          {0, X, 40, X, X, X},    // a valid d = 0 is a real neighbour (0 < 40)
       },
       {
           {0, 1, 0, 0, 1, 0},
@@ -223,12 +223,12 @@ TEST(FillHoles, KeepsAnOwnDisparityThatAgreesWithANeighbour) {
   // nearest valid pixel on either side, else they take the smaller neighbour.
   const DisparityMap in = makeMap(
       {
-          {160, 176, 150, 320},   // 176: 16 from 160 (kept); 150: 10 from 160 (kept)
-          {160, 177, 143, 320},   // 177: 17 from 160, far from 320 -> 160; 143 likewise
-          {160, 310, 336, 320},   // 310 / 336: within 16 of the right neighbour 320
-          {160, 304, 90, 320},    // 304 is 16 from 320 (kept), 90 agrees with neither
-          {999, 40, 999, 999},    // no left neighbour for x=0; 999 agrees with nothing
-          {30, 999, 999, 999},    // only a left neighbour
+          {160, 176, 150, 320},  // 176: 16 from 160 (kept); 150: 10 from 160 (kept)
+          {160, 177, 143, 320},  // 177: 17 from 160, far from 320 -> 160; 143 likewise
+          {160, 310, 336, 320},  // 310 / 336: within 16 of the right neighbour 320
+          {160, 304, 90, 320},   // 304 is 16 from 320 (kept), 90 agrees with neither
+          {999, 40, 999, 999},   // no left neighbour for x=0; 999 agrees with nothing
+          {30, 999, 999, 999},   // only a left neighbour
       },
       {
           {1, 0, 0, 1},
@@ -264,10 +264,10 @@ TEST(SnapEdges, MovesADropOntoTheStrongestIntensityStep) {
   const std::vector<int> ones(8, 1);
   const DisparityMap in = makeMap({d, d, d, d}, {ones, ones, ones, ones});
   const cv::Mat g = grayRow({
-      {10, 10, 10, 90, 90, 90, 90, 90},   // step at k=3 (80): pixels 3..5 take 160
-      {10, 10, 10, 10, 50, 50, 50, 50},   // step at k=4: pixels 4..5
-      {10, 10, 10, 10, 10, 10, 90, 90},   // step at k=6 = e+1: nothing moves
-      {90, 10, 10, 10, 10, 10, 10, 10},   // step at k=1 is out of reach: all steps 0 -> k=6
+      {10, 10, 10, 90, 90, 90, 90, 90},  // step at k=3 (80): pixels 3..5 take 160
+      {10, 10, 10, 10, 50, 50, 50, 50},  // step at k=4: pixels 4..5
+      {10, 10, 10, 10, 10, 10, 90, 90},  // step at k=6 = e+1: nothing moves
+      {90, 10, 10, 10, 10, 10, 10, 10},  // step at k=1 is out of reach: all steps 0 -> k=6
   });
   const DisparityMap out = sgm::snapEdges(in, g);
   EXPECT_EQ(dispRow(out, 0), (V{640, 640, 640, 160, 160, 160, 160, 160}));
@@ -290,14 +290,18 @@ TEST(SnapEdges, OnlyDropsOfMoreThanTwoPixelsBetweenValidPixels) {
   const cv::Mat g = grayRow(std::vector<std::vector<int>>(6, {0, 0, 0, 200, 200, 200}));  // step at k=3
   const DisparityMap in = makeMap(
       {
-          {200, 200, 200, 200, 200, 168},   // drop of exactly 32: not an edge
-          {200, 200, 200, 200, 200, 167},   // 33: edge, pixels 3..4 take 167
-          {200, 200, 200, 200, 200, 100},   // e+1 invalid: not an edge
-          {200, 200, 200, 200, 200, 100},   // e invalid: not an edge
-          {200, 200, 200, 200, 200, 100},   // pixel 3 invalid: keeps its value
-          {100, 100, 100, 200, 200, 200},   // a rise: untouched
+          {200, 200, 200, 200, 200, 168},  // drop of exactly 32: not an edge
+          {200, 200, 200, 200, 200, 167},  // 33: edge, pixels 3..4 take 167
+          {200, 200, 200, 200, 200, 100},  // e+1 invalid: not an edge
+          {200, 200, 200, 200, 200, 100},  // e invalid: not an edge
+          {200, 200, 200, 200, 200, 100},  // pixel 3 invalid: keeps its value
+          {100, 100, 100, 200, 200, 200},  // a rise: untouched
       },
-      {{1, 1, 1, 1, 1, 1}, {1, 1, 1, 1, 1, 1}, {1, 1, 1, 1, 1, 0}, {1, 1, 1, 1, 0, 1}, {1, 1, 1, 0, 1, 1},
+      {{1, 1, 1, 1, 1, 1},
+       {1, 1, 1, 1, 1, 1},
+       {1, 1, 1, 1, 1, 0},
+       {1, 1, 1, 1, 0, 1},
+       {1, 1, 1, 0, 1, 1},
        {1, 1, 1, 1, 1, 1}});
   const DisparityMap out = sgm::snapEdges(in, g);
   EXPECT_EQ(dispRow(out, 0), (V{200, 200, 200, 200, 200, 168}));
@@ -346,8 +350,8 @@ TEST(Median5x5, FullWindowAndClippedBorders) {
 // The one-row cases below get two invalid rows underneath, so that row 0 is
 // not one of the last two rows (which pass through); invalid pixels never count.
 TEST(Median5x5, EvenCountTakesTheLowerMedian) {
-  const DisparityMap out =
-      sgm::median5x5(makeMap({{10, 40, 20, 30}, {0, 0, 0, 0}, {0, 0, 0, 0}}, {{1, 1, 1, 1}, {0, 0, 0, 0}, {0, 0, 0, 0}}));
+  const DisparityMap out = sgm::median5x5(
+      makeMap({{10, 40, 20, 30}, {0, 0, 0, 0}, {0, 0, 0, 0}}, {{1, 1, 1, 1}, {0, 0, 0, 0}, {0, 0, 0, 0}}));
   // x=0: {10,40,20} -> 20; x=1: {10,20,30,40} -> 20; x=2: same -> 20; x=3: {40,20,30} -> 30.
   EXPECT_EQ(dispRow(out, 0), (V{20, 20, 20, 30}));
 }

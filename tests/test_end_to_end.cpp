@@ -50,8 +50,7 @@ TEST_P(Middlebury, ErrNonoccBelowTheBar) {
   const auto [bar, set] = GetParam();
   const std::string root = dataDir();
   const std::string dir = root + "/" + bar.name;
-  if (root.empty() || !fs::exists(dir + "/left.png") || !fs::exists(dir + "/right.png") ||
-      !fs::exists(dir + "/gt.png"))
+  if (root.empty() || !fs::exists(dir + "/left.png") || !fs::exists(dir + "/right.png") || !fs::exists(dir + "/gt.png"))
     GTEST_SKIP() << "Middlebury data not found at '" << (root.empty() ? "(SGM_DATA unset)" : dir)
                  << "'; set DATA=/path/to/middlebury (make unit-test passes it as SGM_DATA)";
 
@@ -96,9 +95,9 @@ std::pair<cv::Mat, cv::Mat> randomDotPair(int w, int h, int shift, unsigned seed
 }
 
 struct DotFigures {
-  double exactPct = 0;     // valid and exactly shift * 16
-  double halfPixelPct = 0; // valid and within half a pixel of shift (rounds to shift)
-  double rawWtaPct = 0;    // argmin_d S == shift (computed here from S)
+  double exactPct = 0;      // valid and exactly shift * 16
+  double halfPixelPct = 0;  // valid and within half a pixel of shift (rounds to shift)
+  double rawWtaPct = 0;     // argmin_d S == shift (computed here from S)
 };
 
 // Figures over the pixels with x >= D + 4 (the left border has no match).
@@ -125,8 +124,7 @@ DotFigures randomDotFigures(const sgm::Params& params, int shift) {
 
 void printDot(const std::string& what, const DotFigures& f) {
   std::cout << "[ figures  ] random dot d=7, " << what << ": " << std::fixed << std::setprecision(2) << f.exactPct
-            << "% exactly 7 px, " << f.halfPixelPct << "% within 0.5 px, raw WTA " << f.rawWtaPct << "%"
-            << std::endl;
+            << "% exactly 7 px, " << f.halfPixelPct << "% within 0.5 px, raw WTA " << f.rawWtaPct << "%" << std::endl;
 }
 
 class RandomDot : public testing::TestWithParam<sgm::CostMode> {};

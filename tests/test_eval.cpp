@@ -125,12 +125,12 @@ TEST(ErrorMap, Colours) {
   EXPECT_EQ(e.at<cv::Vec3b>(0, 0), cv::Vec3b(0, 160, 0));   // correct
   EXPECT_EQ(e.at<cv::Vec3b>(0, 2), cv::Vec3b(0, 0, 255));   // wrong
   EXPECT_EQ(e.at<cv::Vec3b>(0, 3), cv::Vec3b(255, 64, 0));  // invalid
-  const cv::Vec3b dimmed = e.at<cv::Vec3b>(0, 4);            // wrong, occluded: red halved
+  const cv::Vec3b dimmed = e.at<cv::Vec3b>(0, 4);           // wrong, occluded: red halved
   EXPECT_EQ(dimmed[0], 0);
   EXPECT_EQ(dimmed[1], 0);
   EXPECT_NEAR(dimmed[2], 127.5, 0.5);
-  EXPECT_EQ(e.at<cv::Vec3b>(1, 0), cv::Vec3b(0, 0, 0));     // gt unknown
-  EXPECT_EQ(e.at<cv::Vec3b>(1, 4), cv::Vec3b(0, 0, 0));     // not in `all`
+  EXPECT_EQ(e.at<cv::Vec3b>(1, 0), cv::Vec3b(0, 0, 0));  // gt unknown
+  EXPECT_EQ(e.at<cv::Vec3b>(1, 4), cv::Vec3b(0, 0, 0));  // not in `all`
 }
 
 // ------------------------------------------------------------------ deriveNonOccluded

@@ -43,7 +43,7 @@ std::pair<sgm::DisparityMap, cv::Mat> randomMapAndGray(unsigned seed, int w, int
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
       m.disp.at<uint16_t>(y, x) = uint16_t(rng() % 1024), m.valid.at<uint8_t>(y, x) = uint8_t(rng() % 4 != 0),
-      gray.at<uint8_t>(y, x) = uint8_t(rng() % 256);
+                             gray.at<uint8_t>(y, x) = uint8_t(rng() % 256);
   return {m, gray};
 }
 
@@ -55,7 +55,7 @@ TEST(Experiments, OffByDefaultAndNotInAnyPreset) {
   EXPECT_NE(q, p);
   EXPECT_EQ(sgm::presetName(q), "custom");
   EXPECT_TRUE(q.experimental());  // the fifth path over the whole row: golden-only
-  q.rightPathBlock = 64;           // in blocks it is in the core (sgm_top RIGHT_BLOCK)
+  q.rightPathBlock = 64;          // in blocks it is in the core (sgm_top RIGHT_BLOCK)
   EXPECT_FALSE(q.experimental());
   sgm::Params g = p;  // the gated median and per-path P1: golden-only
   g.medianGate = 32;
@@ -118,7 +118,8 @@ TEST(RightPath, BlocksAreTheRowCutOneBlockAhead) {
       sgm::addRightPath(c.at(0, 0), gray.ptr<uint8_t>(0), cut, nd, p1, table, 1, whole.data());
       for (int x = x0; x < std::min(w, x0 + block); ++x)
         for (int d = 0; d < nd; ++d)
-          ASSERT_EQ(sum[size_t(x) * nd + d], whole[size_t(x) * nd + d]) << "block " << block << " x " << x << " d " << d;
+          ASSERT_EQ(sum[size_t(x) * nd + d], whole[size_t(x) * nd + d])
+              << "block " << block << " x " << x << " d " << d;
     }
   }
   std::vector<uint16_t> row(size_t(w) * nd, 0), wide(size_t(w) * nd, 0);
@@ -192,7 +193,8 @@ TEST(EdgeReset, MatchesItsDefinitionOnEveryPath) {
     uint16_t minPrev = 0;
     for (int x = start; x >= x0; --x) {
       bool edge = false;
-      for (int k = 0; k < length && restart && x + k + 1 <= start; ++k) edge = edge || dI(x + k, y, x + k + 1, y) >= threshold;
+      for (int k = 0; k < length && restart && x + k + 1 <= start; ++k)
+        edge = edge || dI(x + k, y, x + k + 1, y) >= threshold;
       const uint16_t m = x == start || edge ? sgm::pathStart(c.at(x, y), nd, cur.data() + 1)
                                             : sgm::pathStep(c.at(x, y), prev.data() + 1, minPrev, nd, p1,
                                                             table[size_t(dI(x, y, x + 1, y))], cur.data() + 1);
@@ -201,8 +203,8 @@ TEST(EdgeReset, MatchesItsDefinitionOnEveryPath) {
     }
   };
   int restarted = 0;
-  for (const std::array<int, 5> paths : {std::array<int, 5>{1, 1, 1, 1, 1}, std::array<int, 5>{0, 1, 0, 1, 0},
-                                          std::array<int, 5>{1, 0, 1, 0, 1}})
+  for (const std::array<int, 5> paths :
+       {std::array<int, 5>{1, 1, 1, 1, 1}, std::array<int, 5>{0, 1, 0, 1, 0}, std::array<int, 5>{1, 0, 1, 0, 1}})
     for (const int block : {0, 4}) {
       sgm::EdgeReset reset;
       reset.threshold = threshold, reset.length = length, reset.paths = paths;
@@ -213,7 +215,8 @@ TEST(EdgeReset, MatchesItsDefinitionOnEveryPath) {
       for (int i = 0; i < sgm::kPathCount; ++i) {
         const PathVolume l = forward(i, paths[size_t(i)] != 0);
         restarted += l.data != forward(i, false).data;
-        for (size_t j = 0; j < l.data.size(); ++j) expected.data[j] = uint16_t(expected.data[j] + weight[i] * l.data[j]);
+        for (size_t j = 0; j < l.data.size(); ++j)
+          expected.data[j] = uint16_t(expected.data[j] + weight[i] * l.data[j]);
       }
       for (int y = 0; y < h; ++y) {
         // Blocks [jB, (j + 1)B), the last one [(m - 1)B, W); each block's pass starts one block to its right.
@@ -230,15 +233,17 @@ TEST(EdgeReset, MatchesItsDefinitionOnEveryPath) {
         for (int x = 0; x < w; ++x)
           for (int d = 0; d < nd; ++d)
             ASSERT_EQ(s.at(x, y)[d], expected.at(x, y)[d])
-                << "paths " << paths[0] << paths[1] << paths[2] << paths[3] << paths[4] << " block " << block << " (x, y) ("
-                << x << ", " << y << ") d " << d;
+                << "paths " << paths[0] << paths[1] << paths[2] << paths[3] << paths[4] << " block " << block
+                << " (x, y) (" << x << ", " << y << ") d " << d;
     }
   EXPECT_GT(restarted, 0);  // the scene has strong steps: the restart changes the paths
   // Off (threshold 0) is the plain aggregation whatever the other fields say.
   sgm::EdgeReset off;
   off.length = 7;
-  EXPECT_EQ(sgm::aggregateCost(c, gray, p1, p2, sgm::P2Mode::kKnee, sgm::PathWeighting::k3232, 2, false, 4, nullptr, off).data,
-            sgm::aggregateCost(c, gray, p1, p2, sgm::P2Mode::kKnee, sgm::PathWeighting::k3232, 2, false, 4).data);
+  EXPECT_EQ(
+      sgm::aggregateCost(c, gray, p1, p2, sgm::P2Mode::kKnee, sgm::PathWeighting::k3232, 2, false, 4, nullptr, off)
+          .data,
+      sgm::aggregateCost(c, gray, p1, p2, sgm::P2Mode::kKnee, sgm::PathWeighting::k3232, 2, false, 4).data);
 }
 
 // MGM on a 2 x 2 volume with D = 1: every step term is 0 (one disparity), so Lr = C
@@ -290,7 +295,7 @@ TEST(LinearSubpixel, HandCases) {
   EXPECT_EQ(sgm::subpixelOffsetLinear(30, 10, 20), 4);
   EXPECT_EQ(sgm::subpixelOffsetLinear(10, 10, 30), -8);  // a = m: half a pixel
   EXPECT_EQ(sgm::subpixelOffsetLinear(25, 10, 25), 0);
-  EXPECT_EQ(sgm::subpixelOffsetLinear(10, 10, 10), 0);   // flat: no offset
+  EXPECT_EQ(sgm::subpixelOffsetLinear(10, 10, 10), 0);  // flat: no offset
   // V: (13 - 10) / (2 * 13) * 16 = 1.85 -> 2; the parabola: (13 - 10) / (2 * 23) * 16 = 1.04 -> 1.
   EXPECT_EQ(sgm::subpixelOffsetLinear(13, 0, 10), 2);
   EXPECT_EQ(sgm::subpixelOffset(13, 0, 10), 1);
@@ -376,11 +381,12 @@ TEST(SnapEdge, GateLeavesWeakEdgesAndZeroIsThePlainSnap) {
   const int w = 8;
   sgm::DisparityMap in{cv::Mat(2, w, CV_16UC1), cv::Mat(2, w, CV_8UC1, cv::Scalar(1))};
   cv::Mat gray(2, w, CV_8UC1);
-  const int d[w] = {640, 640, 640, 640, 640, 640, 160, 160};  // a drop between x = 5 and 6
+  const int d[w] = {640, 640, 640, 640, 640, 640, 160, 160};   // a drop between x = 5 and 6
   const int steps[2][w] = {{10, 10, 10, 90, 90, 90, 90, 90},   // strongest step 80 at k = 3
                            {10, 10, 10, 10, 10, 10, 10, 10}};  // no step: the edge stays at k = 6
   for (int y = 0; y < 2; ++y)
-    for (int x = 0; x < w; ++x) in.disp.at<uint16_t>(y, x) = uint16_t(d[x]), gray.at<uint8_t>(y, x) = uint8_t(steps[y][x]);
+    for (int x = 0; x < w; ++x)
+      in.disp.at<uint16_t>(y, x) = uint16_t(d[x]), gray.at<uint8_t>(y, x) = uint8_t(steps[y][x]);
   const auto row0 = [](const sgm::DisparityMap& m) {
     std::vector<int> v;
     for (int x = 0; x < m.disp.cols; ++x) v.push_back(m.disp.at<uint16_t>(0, x));
@@ -404,8 +410,8 @@ sgm::CliArgs pipelineCli(std::vector<std::string> args) {
 }
 
 TEST(Experiments, OptionsAndRanges) {
-  const sgm::Params p = pipelineCli({"prog", "--right-path", "3", "--right-block", "48", "--uniqueness", "10", "--ad-weight",
-                                     "8", "--ad-cap", "16", "--subpixel-fit", "linear"})
+  const sgm::Params p = pipelineCli({"prog", "--right-path", "3", "--right-block", "48", "--uniqueness", "10",
+                                     "--ad-weight", "8", "--ad-cap", "16", "--subpixel-fit", "linear"})
                             .pipelineParams();
   EXPECT_EQ(p.rightPathWeight, 3);
   EXPECT_EQ(p.rightPathBlock, 48);
@@ -414,8 +420,9 @@ TEST(Experiments, OptionsAndRanges) {
   EXPECT_EQ(p.adCap, 16);
   EXPECT_TRUE(p.linearSubpixel);
   EXPECT_FALSE(p.mgm);
-  const sgm::Params q =
-      pipelineCli({"prog", "--median-gate", "40", "--p1-paths", "200,100,150,50,100", "--snap-edge", "96"}).pipelineParams();
+  const sgm::Params q = pipelineCli(
+                            {"prog", "--median-gate", "40", "--p1-paths", "200,100,150,50,100", "--snap-edge", "96"})
+                            .pipelineParams();
   EXPECT_EQ(q.medianGate, 40);
   EXPECT_EQ(q.snapEdge, 96);
   EXPECT_EQ(q.p1PathPercent, (std::array<int, 5>{200, 100, 150, 50, 100}));
@@ -425,8 +432,9 @@ TEST(Experiments, OptionsAndRanges) {
     const sgm::CliArgs cli = pipelineCli({"prog", "--p1-paths", list});
     expectError([&] { cli.pipelineParams(); }, {"--p1-paths expects five percentages"});
   }
-  const sgm::Params e =
-      pipelineCli({"prog", "--edge-reset", "48", "--edge-reset-len", "4", "--edge-reset-paths", "0,0,0,1,1"}).pipelineParams();
+  const sgm::Params e = pipelineCli(
+                            {"prog", "--edge-reset", "48", "--edge-reset-len", "4", "--edge-reset-paths", "0,0,0,1,1"})
+                            .pipelineParams();
   EXPECT_EQ(e.edgeReset.threshold, 48);
   EXPECT_EQ(e.edgeReset.length, 4);
   EXPECT_EQ(e.edgeReset.paths, (std::array<int, 5>{0, 0, 0, 1, 1}));

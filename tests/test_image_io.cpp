@@ -318,8 +318,11 @@ TEST(WriteFiles, AllOrNothingWithTextAndImages) {
   TempDir dir;
   fs::create_directory(dir / "blocked.json");
   const std::string png = sgm::encodePng(cv::Mat(3, 3, CV_8UC1, cv::Scalar(7)), dir / "a.png");
-  expectError([&] { sgm::writeFiles({{dir / "a.png", png}, {dir / "b.txt", "text"}, {dir / "blocked.json", "{}"}}); },
-              {"blocked.json"});
+  expectError(
+      [&] {
+        sgm::writeFiles({{dir / "a.png", png}, {dir / "b.txt", "text"}, {dir / "blocked.json", "{}"}});
+      },
+      {"blocked.json"});
   EXPECT_EQ(dir.entries(), (std::set<std::string>{"blocked.json"}));
   sgm::writeFiles({{dir / "a.png", png}, {dir / "b.txt", "text"}});
   EXPECT_EQ(dir.entries(), (std::set<std::string>{"a.png", "b.txt", "blocked.json"}));

@@ -159,8 +159,8 @@ TEST(P2Forms, PaperIsP2OverDeltaClampedAtP1) {
   EXPECT_EQ(t[1], 100);
   EXPECT_EQ(t[2], 50);
   EXPECT_EQ(t[3], 33);
-  EXPECT_EQ(t[14], 7);   // floor(100 / 14) = 7
-  EXPECT_EQ(t[15], 7);   // max(P1, 6)
+  EXPECT_EQ(t[14], 7);  // floor(100 / 14) = 7
+  EXPECT_EQ(t[15], 7);  // max(P1, 6)
   EXPECT_EQ(t[255], 7);
   for (int k = 1; k < 256; ++k) EXPECT_LE(t[k], t[k - 1]);
 }

@@ -143,19 +143,20 @@ TEST(ParamsTest, PenaltyLimitKeepsTheWeightedSumInSixteenBits) {
   EXPECT_EQ(sgm::kPathWeightSum, 10);
   EXPECT_EQ(sgm::kMaxPenalty, 6000);
   for (CostMode m : sgm::allCostModes())
-    EXPECT_LT(sgm::kPathWeightSum * (sgm::maxCost(m, sgm::CensusWindow::k9x9) + sgm::kMaxPenalty), 65536) << sgm::costModeName(m);
+    EXPECT_LT(sgm::kPathWeightSum * (sgm::maxCost(m, sgm::CensusWindow::k9x9) + sgm::kMaxPenalty), 65536)
+        << sgm::costModeName(m);
 }
 
 // largestAdCap: hand-checked values, and for every hardware mode, census and weight it is
 // the largest cap validate() accepts (cap + 1 is refused unless already at kMaxAdCap).
 TEST(ParamsTest, LargestAdCapIsTheLargestCapValidateAccepts) {
   using sgm::CensusWindow;
-  EXPECT_EQ(sgm::largestAdCap(CostMode::kRsad, CensusWindow::k9x5, 15), 44);     // 44 + 82 = 126 <= 127; 45: 128
-  EXPECT_EQ(sgm::largestAdCap(CostMode::kUnified, CensusWindow::k9x5, 15), 21);  // 88 + 39 = 127; 22: 88 + 41
+  EXPECT_EQ(sgm::largestAdCap(CostMode::kRsad, CensusWindow::k9x5, 15), 44);           // 44 + 82 = 126 <= 127; 45: 128
+  EXPECT_EQ(sgm::largestAdCap(CostMode::kUnified, CensusWindow::k9x5, 15), 21);        // 88 + 39 = 127; 22: 88 + 41
   EXPECT_EQ(sgm::largestAdCap(CostMode::kRt, CensusWindow::k9x5, 1), sgm::kMaxAdCap);  // 44 + 31 fits
-  EXPECT_EQ(sgm::largestAdCap(CostMode::kRt, CensusWindow::k9x9, 8), 175);       // 80 + 175 = 255
+  EXPECT_EQ(sgm::largestAdCap(CostMode::kRt, CensusWindow::k9x9, 8), 175);             // 80 + 175 = 255
   EXPECT_EQ(sgm::largestAdCap(CostMode::kRsad, CensusWindow::k9x5, 0), sgm::kMaxAdCap);  // off: any cap
-  EXPECT_EQ(sgm::largestAdCap(CostMode::kSad, CensusWindow::k9x5, 8), -1);        // Cmax 255 > 127
+  EXPECT_EQ(sgm::largestAdCap(CostMode::kSad, CensusWindow::k9x5, 8), -1);               // Cmax 255 > 127
   for (const CensusWindow census : {CensusWindow::k9x5, CensusWindow::k9x9})
     for (const CostMode m : {CostMode::kRt, CostMode::kRsad, CostMode::kUnified})
       for (int w = 1; w <= sgm::kMaxAdWeight; ++w) {
@@ -193,9 +194,7 @@ TEST(CostModes, NamesRoundTripAndUnknownThrows) {
 
 cv::Mat gray(int w, int h) { return cv::Mat(h, w, CV_8UC1, cv::Scalar(7)); }
 
-TEST(CheckInput, AcceptsTheSmallestImage) {
-  EXPECT_NO_THROW(sgm::checkInput(gray(9, 9), gray(9, 9), Params{}));
-}
+TEST(CheckInput, AcceptsTheSmallestImage) { EXPECT_NO_THROW(sgm::checkInput(gray(9, 9), gray(9, 9), Params{})); }
 
 TEST(CheckInput, SizeMismatch) {
   expectError([] { sgm::checkInput(gray(20, 16), gray(21, 16), Params{}); }, {"size mismatch", "20x16", "21x16"});

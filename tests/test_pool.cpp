@@ -163,12 +163,11 @@ TEST(PoolSplit, AlternatesWithinEachSetByName) {
   const std::vector<std::string> names = {"wood1", "aloe", "kitti_b", "baby1", "map", "kitti_a", "barn1", "cloth1"};
   const std::vector<std::string> sets = {"m06", "m06", "kitti", "m06", "m01", "kitti", "m01", "m06"};
   // m06 sorted: aloe A, baby1 B, cloth1 A, wood1 B; m01: barn1 A, map B; kitti: kitti_a A, kitti_b B.
-  EXPECT_EQ(sgm::eval::crossValidationHalves(names, sets),
-            (std::vector<char>{'B', 'A', 'B', 'B', 'B', 'A', 'A', 'A'}));
+  EXPECT_EQ(sgm::eval::crossValidationHalves(names, sets), (std::vector<char>{'B', 'A', 'B', 'B', 'B', 'A', 'A', 'A'}));
 }
 
-PoolRow row(const std::string& scene, const std::string& set, char half, double ours, double today,
-            double opencvStrict, double opencvValid, double density) {
+PoolRow row(const std::string& scene, const std::string& set, char half, double ours, double today, double opencvStrict,
+            double opencvValid, double density) {
   PoolRow r;
   r.scene = scene, r.set = set, r.half = half;
   const bool kitti = sgm::eval::isKittiSet(set);

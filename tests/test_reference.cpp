@@ -95,11 +95,10 @@ struct Reference {
 Reference referencePipeline(const cv::Mat& lm, const cv::Mat& rm, const sgm::Params& p) {
   const Img l = fromMat(lm), r = fromMat(rm);
   const int w = l.w, h = l.h, nd = p.disparities;
-  Reference ref{w, h, nd, std::vector<int>(size_t(w) * h * nd), std::vector<int>(size_t(w) * h * nd, 0),
-                {}, {}, {}, {}, {}, {}, {}};
-  const int cmax = p.mode == CostMode::kUnified ? 88
-                   : p.mode == CostMode::kSad || p.mode == CostMode::kBt ? 255
-                                                                         : 44;
+  Reference ref{
+      w,  h,  nd, std::vector<int>(size_t(w) * h * nd), std::vector<int>(size_t(w) * h * nd, 0), {}, {}, {}, {},
+      {}, {}, {}};
+  const int cmax = p.mode == CostMode::kUnified ? 88 : p.mode == CostMode::kSad || p.mode == CostMode::kBt ? 255 : 44;
   // Section 3: C(p, d).
   std::vector<std::vector<bool>> cl, cr;
   for (int y = 0; y < h; ++y)
@@ -262,8 +261,7 @@ std::pair<cv::Mat, cv::Mat> testPair(int w, int h, unsigned seed) {
 std::vector<int> flat(const cv::Mat& m) {
   std::vector<int> v;
   for (int y = 0; y < m.rows; ++y)
-    for (int x = 0; x < m.cols; ++x)
-      v.push_back(m.depth() == CV_16U ? m.at<uint16_t>(y, x) : m.at<uint8_t>(y, x));
+    for (int x = 0; x < m.cols; ++x) v.push_back(m.depth() == CV_16U ? m.at<uint16_t>(y, x) : m.at<uint8_t>(y, x));
   return v;
 }
 
@@ -324,12 +322,14 @@ TEST_P(ReferenceModel, GoldenMatchesTheNaiveContract) {
   EXPECT_TRUE(cost == ref.cost) << "cost: " << firstDiff(cost, ref.cost, c.w, c.d);
   const std::vector<int> sum(st.aggregated.data.begin(), st.aggregated.data.end());
   EXPECT_TRUE(sum == ref.sum) << "S: " << firstDiff(sum, ref.sum, c.w, c.d);
-  EXPECT_TRUE(flat(st.selected.disp) == ref.selDisp) << "selected: " << firstDiff(flat(st.selected.disp), ref.selDisp, c.w);
+  EXPECT_TRUE(flat(st.selected.disp) == ref.selDisp)
+      << "selected: " << firstDiff(flat(st.selected.disp), ref.selDisp, c.w);
   EXPECT_TRUE(flat(st.selected.valid) == ref.selValid)
       << "selected valid: " << firstDiff(flat(st.selected.valid), ref.selValid, c.w);
   EXPECT_TRUE(flat(st.filled.disp) == ref.fillDisp) << "filled: " << firstDiff(flat(st.filled.disp), ref.fillDisp, c.w);
   EXPECT_TRUE(flat(st.filled.valid) == ref.fillValid);
-  EXPECT_TRUE(flat(st.snapped.disp) == ref.snapDisp) << "snapped: " << firstDiff(flat(st.snapped.disp), ref.snapDisp, c.w);
+  EXPECT_TRUE(flat(st.snapped.disp) == ref.snapDisp)
+      << "snapped: " << firstDiff(flat(st.snapped.disp), ref.snapDisp, c.w);
   EXPECT_TRUE(flat(st.result.disp) == ref.outDisp) << "result: " << firstDiff(flat(st.result.disp), ref.outDisp, c.w);
   EXPECT_TRUE(flat(st.result.valid) == ref.outValid);
 
@@ -358,16 +358,16 @@ const Case kCases[] = {
     {CostMode::kSadRt, 41, 23, 16, 7, 100, 1, true, true, true},
     {CostMode::kUnified, 37, 19, 8, 3, 40, 0, false, true, true},
     {CostMode::kRsad, 37, 19, 8, 0, 0, -1, true, false, false},
-    {CostMode::kUnified, 12, 10, 20, 7, 100, 2, true, true, true},        // D > W
-    {CostMode::kUnified, 9, 9, 2, 7, 100, 1, true, true, true},          // smallest image and D
+    {CostMode::kUnified, 12, 10, 20, 7, 100, 2, true, true, true},  // D > W
+    {CostMode::kUnified, 9, 9, 2, 7, 100, 1, true, true, true},     // smallest image and D
     // Largest penalties (P1 = P2' = kMaxPenalty): S <= 10 (88 + 6000) = 60880. The map
     // comes out too smooth for a drop of more than 2 px, so snap is off here; the other
     // D >= 16 cases with snap on check that some pixel snaps.
     {CostMode::kUnified, 50, 12, 32, 6000, 6000, 1, true, true, true, false},
     {CostMode::kRt, 50, 12, 32, 1, 6000, 3, true, false, true},
-    {CostMode::kRsad, 70, 14, 24, 10, 200, 1, true, true, true},          // several 16-lane median blocks
-    {CostMode::kRsad, 41, 23, 16, 7, 100, 1, true, true, true, false},   // fill without snap
-    {CostMode::kRsad, 41, 23, 16, 7, 100, -1, false, false, false, true}, // snap alone
+    {CostMode::kRsad, 70, 14, 24, 10, 200, 1, true, true, true},           // several 16-lane median blocks
+    {CostMode::kRsad, 41, 23, 16, 7, 100, 1, true, true, true, false},     // fill without snap
+    {CostMode::kRsad, 41, 23, 16, 7, 100, -1, false, false, false, true},  // snap alone
 };
 
 INSTANTIATE_TEST_SUITE_P(Cases, ReferenceModel, testing::ValuesIn(kCases),

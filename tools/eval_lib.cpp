@@ -119,8 +119,8 @@ void useMasksIn(const std::string& dir, Scene& s) {
 
 }  // namespace
 
-Scene makeScene(const std::string& name, const cv::Mat& leftColor, const cv::Mat& rightColor,
-                const cv::Mat& gtRaw, double gtScale) {
+Scene makeScene(const std::string& name, const cv::Mat& leftColor, const cv::Mat& rightColor, const cv::Mat& gtRaw,
+                double gtScale) {
   Scene s;
   s.name = name;
   s.leftColor = leftColor;
@@ -241,8 +241,8 @@ cv::Mat toFloat(const DisparityMap& map) {
 
 cv::Mat runOpenCvSgbm(const cv::Mat& left, const cv::Mat& right, int disparities, int mode) {
   const int block = 3, cn = left.channels();
-  auto sgbm = cv::StereoSGBM::create(0, disparities, block, 8 * cn * block * block, 32 * cn * block * block,
-                                     1, 0, 10, 100, 32, mode);
+  auto sgbm = cv::StereoSGBM::create(0, disparities, block, 8 * cn * block * block, 32 * cn * block * block, 1, 0, 10,
+                                     100, 32, mode);
   cv::Mat raw;
   sgbm->compute(left, right, raw);
   cv::Mat out(raw.size(), CV_32FC1);
@@ -261,7 +261,9 @@ cv::Mat errorMap(const cv::Mat& disp, const Scene& scene, double delta) {
       const float g = scene.gt.at<float>(y, x), d = disp.at<float>(y, x);
       if (!scene.all.at<uint8_t>(y, x) || g <= 0) continue;
       const bool occluded = !scene.nonocc.at<uint8_t>(y, x);
-      cv::Vec3b c = d < 0 ? cv::Vec3b(255, 64, 0) : std::fabs(d - g) > delta ? cv::Vec3b(0, 0, 255) : cv::Vec3b(0, 160, 0);
+      cv::Vec3b c = d < 0                      ? cv::Vec3b(255, 64, 0)
+                    : std::fabs(d - g) > delta ? cv::Vec3b(0, 0, 255)
+                                               : cv::Vec3b(0, 160, 0);
       if (occluded) c = c / 2;  // occluded pixels dimmed
       out.at<cv::Vec3b>(y, x) = c;
     }
@@ -287,10 +289,12 @@ std::string pixels(float v) {
 
 cv::Mat sideBySide(const Scene& scene, const cv::Mat& disp, float maxDisparity, double delta) {
   cv::Mat left;
-  if (scene.leftColor.channels() == 3) left = scene.leftColor.clone();
-  else cv::cvtColor(scene.left, left, cv::COLOR_GRAY2BGR);
-  const std::vector<cv::Mat> parts = {left, colorizeDisparity(scene.gt, maxDisparity), colorizeDisparity(disp, maxDisparity),
-                                      errorMap(disp, scene, delta)};
+  if (scene.leftColor.channels() == 3)
+    left = scene.leftColor.clone();
+  else
+    cv::cvtColor(scene.left, left, cv::COLOR_GRAY2BGR);
+  const std::vector<cv::Mat> parts = {left, colorizeDisparity(scene.gt, maxDisparity),
+                                      colorizeDisparity(disp, maxDisparity), errorMap(disp, scene, delta)};
   const int w = left.cols, h = left.rows;
   // Text and bar sizes follow the panel width (Middlebury: about 450 px).
   const double font = std::clamp(w / 750.0, 0.35, 0.8);
@@ -308,7 +312,8 @@ cv::Mat sideBySide(const Scene& scene, const cv::Mat& disp, float maxDisparity, 
   // Disparity colour bar under the ground truth and the result (their common scale).
   const cv::Rect bar(w + w / 8, titleH + h + pad, 2 * w - w / 4, barH);
   cv::Mat ramp(1, bar.width, CV_8UC1);
-  for (int x = 0; x < bar.width; ++x) ramp.at<uint8_t>(0, x) = uint8_t(std::lround(255.0 * x / std::max(1, bar.width - 1)));
+  for (int x = 0; x < bar.width; ++x)
+    ramp.at<uint8_t>(0, x) = uint8_t(std::lround(255.0 * x / std::max(1, bar.width - 1)));
   cv::Mat rampColor;
   cv::applyColorMap(ramp, rampColor, cv::COLORMAP_JET);
   cv::resize(rampColor, out(bar), bar.size(), 0, 0, cv::INTER_NEAREST);
@@ -322,9 +327,8 @@ cv::Mat sideBySide(const Scene& scene, const cv::Mat& disp, float maxDisparity, 
   drawCentredText(out, "disparity (px); black: none", bar.x + bar.width / 2, bar.y + bar.height + pad + line * 3 / 2,
                   font * 0.8, muted);
   // Error map legend (errorMap's colours; occluded pixels are drawn at half brightness).
-  const std::pair<cv::Scalar, std::string> keys[] = {{cv::Scalar(0, 160, 0), "within"},
-                                                     {cv::Scalar(0, 0, 255), "beyond"},
-                                                     {cv::Scalar(255, 64, 0), "invalid"}};
+  const std::pair<cv::Scalar, std::string> keys[] = {
+      {cv::Scalar(0, 160, 0), "within"}, {cv::Scalar(0, 0, 255), "beyond"}, {cv::Scalar(255, 64, 0), "invalid"}};
   int x = 3 * w + pad;
   const int y = titleH + h + pad;
   for (const auto& [color, label] : keys) {

@@ -20,10 +20,10 @@ struct Scene {
   cv::Mat left, right;            // 8-bit gray (sgm::toGray)
   cv::Mat gt;                     // CV_32F disparity in px, 0 = unknown
   double gtScale = 1;
-  cv::Mat nonocc, all, disc;      // CV_8U masks (255 / 128 / 0); disc may be empty
-  bool nonoccDerived = false;     // true when nonocc was derived from gt
-  int ndisp = 0;                  // meta.txt `ndisp:` (the D to run it with), 0 = not given
-  std::string set;                // meta.txt `set:` (e.g. middlebury2006, kitti2015), "" = not given
+  cv::Mat nonocc, all, disc;   // CV_8U masks (255 / 128 / 0); disc may be empty
+  bool nonoccDerived = false;  // true when nonocc was derived from gt
+  int ndisp = 0;               // meta.txt `ndisp:` (the D to run it with), 0 = not given
+  std::string set;             // meta.txt `set:` (e.g. middlebury2006, kitti2015), "" = not given
   bool hasGroundTruth() const { return !gt.empty(); }
 };
 
@@ -49,8 +49,8 @@ Scene loadScene(const std::string& dir, double scaleOverride = 0);
 // truth (CV_8U or CV_16U, 0 = unknown; may be empty: no figures then) and its
 // scale. Masks are derived from the ground truth (all = known gt, nonocc as
 // deriveNonOccluded, no disc).
-Scene makeScene(const std::string& name, const cv::Mat& leftColor, const cv::Mat& rightColor,
-                const cv::Mat& gtRaw, double gtScale);
+Scene makeScene(const std::string& name, const cv::Mat& leftColor, const cv::Mat& rightColor, const cv::Mat& gtRaw,
+                double gtScale);
 
 // Reads a scene from explicit files; gtPath may be empty. A missing
 // gtScale (<= 0) is read from meta.txt beside the ground truth, else 1.
@@ -77,11 +77,11 @@ cv::Mat deriveNonOccluded(const cv::Mat& gtRaw, double scale);
 std::vector<std::string> listScenes(const std::string& root);
 
 struct ErrorFigures {
-  double errNonocc = 0;      // % of nonocc pixels with |d - gt| > delta or invalid
-  double errAll = 0;         // same over `all`
+  double errNonocc = 0;           // % of nonocc pixels with |d - gt| > delta or invalid
+  double errAll = 0;              // same over `all`
   std::optional<double> errDisc;  // same over disc == 255, when the scene has a disc mask
-  double density = 0;        // % of `all` pixels that are valid
-  double errNonoccValid = 0; // % of valid nonocc pixels with |d - gt| > delta
+  double density = 0;             // % of `all` pixels that are valid
+  double errNonoccValid = 0;      // % of valid nonocc pixels with |d - gt| > delta
   // The KITTI D1 measure over `all` (every pixel with known gt): an error when
   // |d - gt| > kD1Pixels and > kD1Fraction * gt. d1All counts invalid output as an
   // error; d1Valid is over the valid pixels only.

@@ -90,8 +90,8 @@ std::string benchJson(const BenchResult& b) {
 }
 
 std::string benchText(const BenchResult& b) {
-  std::string out = "scene " + b.scene + " " + std::to_string(b.width) + "x" + std::to_string(b.height) + ", D=" +
-                    std::to_string(b.disparities) + ", median of " + std::to_string(b.repeats) +
+  std::string out = "scene " + b.scene + " " + std::to_string(b.width) + "x" + std::to_string(b.height) +
+                    ", D=" + std::to_string(b.disparities) + ", median of " + std::to_string(b.repeats) +
                     " interleaved runs after one warm-up; golden threads " + std::to_string(b.goldenThreads) +
                     ", OpenCV threads " + std::to_string(b.opencvThreads) + "\n";
   out += line("golden model (toGray + runPipeline, Params{}): %9.2f ms", b.goldenMs);

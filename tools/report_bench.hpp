@@ -21,9 +21,9 @@ struct BenchResult {
   double opencvColorMs = 0;  // median: MODE_SGBM, blockSize 3, on the colour pair
   double opencvGrayMs = 0;   // median: same on the gray pair (already converted)
 
-  double opencvMs() const;   // the faster OpenCV variant (the harder comparison)
+  double opencvMs() const;          // the faster OpenCV variant (the harder comparison)
   std::string opencvInput() const;  // "gray" or "color": which variant that is
-  double ratio() const;      // goldenMs / opencvMs()
+  double ratio() const;             // goldenMs / opencvMs()
 };
 
 // The median of the values (0 when there are none).

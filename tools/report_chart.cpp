@@ -12,8 +12,7 @@
 
 namespace sgm::eval {
 
-void drawText(cv::Mat& img, const std::string& s, cv::Point org, double scale, const cv::Scalar& color,
-              int thickness) {
+void drawText(cv::Mat& img, const std::string& s, cv::Point org, double scale, const cv::Scalar& color, int thickness) {
   cv::putText(img, s, org, cv::FONT_HERSHEY_SIMPLEX, scale, color, thickness, cv::LINE_AA);
 }
 
@@ -26,13 +25,12 @@ void drawCentredText(cv::Mat& img, const std::string& s, int x, int y, double sc
 
 namespace {
 
-const cv::Scalar kWhite(255, 255, 255), kBlack(0, 0, 0), kAxis(60, 60, 60), kGrid(225, 225, 225),
-    kMuted(110, 110, 110);
+const cv::Scalar kWhite(255, 255, 255), kBlack(0, 0, 0), kAxis(60, 60, 60), kGrid(225, 225, 225), kMuted(110, 110, 110);
 constexpr int kFont = cv::FONT_HERSHEY_SIMPLEX;
 
 // Bar colours (BGR): Table I rows, full pipeline rows, OpenCV rows.
 const cv::Scalar kPalette[] = {
-    {180, 119, 31}, {14, 127, 255}, {44, 160, 44}, {40, 39, 214}, {189, 103, 148}, {75, 86, 140},
+    {180, 119, 31},  {14, 127, 255}, {44, 160, 44},  {40, 39, 214},   {189, 103, 148}, {75, 86, 140},
     {194, 119, 227}, {34, 189, 188}, {207, 190, 23}, {150, 150, 150}, {70, 70, 70},
 };
 
@@ -57,8 +55,8 @@ void verticalText(cv::Mat& img, const std::string& s, int x, int bottomY, double
   where &= cv::Rect(0, 0, img.cols, img.rows);
   if (where.empty()) return;
   cv::Mat dst = img(where);
-  cv::min(dst, strip(cv::Rect(where.x - (x - strip.cols / 2), where.y - (bottomY - strip.rows), where.width,
-                              where.height)),
+  cv::min(dst,
+          strip(cv::Rect(where.x - (x - strip.cols / 2), where.y - (bottomY - strip.rows), where.width, where.height)),
           dst);
 }
 
@@ -94,9 +92,7 @@ Layout makeLayout(const TableReport& r, cv::Size canvas) {
   return l;
 }
 
-int yPixel(const Layout& l, double value) {
-  return l.plot.br().y - int(std::lround(value / l.yMax * l.plot.height));
-}
+int yPixel(const Layout& l, double value) { return l.plot.br().y - int(std::lround(value / l.yMax * l.plot.height)); }
 
 void drawAxes(cv::Mat& img, const Layout& l, const std::string& label = "error in non-occluded regions (%)") {
   for (double v = 0; v <= l.yMax + 1e-9; v += l.yStep) {
@@ -166,8 +162,10 @@ void drawGroup(cv::Mat& img, const Layout& l, const TableReport& r, const std::s
     const int left = int(std::lround(x0 + s.x * barWidth)), right = int(std::lround(x0 + (s.x + 1) * barWidth));
     const cv::Rect bar(left, yPixel(l, value), std::max(1, right - left - (s.paper ? 1 : 0)),
                        yPixel(l, 0) - yPixel(l, value));
-    if (s.paper) hatchedBar(img, bar, methodColor(s.method));
-    else cv::rectangle(img, bar, methodColor(s.method), cv::FILLED);
+    if (s.paper)
+      hatchedBar(img, bar, methodColor(s.method));
+    else
+      cv::rectangle(img, bar, methodColor(s.method), cv::FILLED);
     verticalText(img, fixed(value, 1), (left + right) / 2, bar.y - 4, 0.4, s.paper ? kMuted : kBlack);
   }
   drawClusterLabels(img, l, r.methods, slots, x0, barWidth);
@@ -221,9 +219,9 @@ void drawLegend(cv::Mat& img, const Layout& l, const TableReport& r) {
 void drawTitle(cv::Mat& img, const TableReport& r, const std::string& title) {
   drawText(img, title, {90, 42}, 0.95, kBlack, 2);
   drawText(img,
-       "error in non-occluded regions (%, delta = " + fixed(r.delta, 0) + " px, invalid = error), D = " +
-           std::to_string(r.disparities) + ".  Solid: ours.  Hatched: the paper's figure.",
-       {90, 76}, 0.55, kMuted);
+           "error in non-occluded regions (%, delta = " + fixed(r.delta, 0) + " px, invalid = error), D = " +
+               std::to_string(r.disparities) + ".  Solid: ours.  Hatched: the paper's figure.",
+           {90, 76}, 0.55, kMuted);
 }
 
 // ------------------------------------------------------------------ pool chart
@@ -290,8 +288,10 @@ cv::Mat poolChart(const PoolReport& r, const std::string& title) {
       const int left = int(std::lround(span.start + 0.1 * span.size() + k * barWidth));
       const int right = int(std::lround(span.start + 0.1 * span.size() + (k + 1) * barWidth));
       const cv::Rect bar(left, yPixel(l, *v), std::max(1, right - left), yPixel(l, 0) - yPixel(l, *v));
-      if (bars[k].hatched) hatchedBar(img, bar, bars[k].color);
-      else cv::rectangle(img, bar, bars[k].color, cv::FILLED);
+      if (bars[k].hatched)
+        hatchedBar(img, bar, bars[k].color);
+      else
+        cv::rectangle(img, bar, bars[k].color, cv::FILLED);
       verticalText(img, fixed(*v, 1), (left + right) / 2, bar.y - 3, 0.35, kBlack);
     }
     int base = 0;
@@ -301,8 +301,10 @@ cv::Mat poolChart(const PoolReport& r, const std::string& title) {
   int y = l.plot.y + 10;
   for (const PoolBar& b : bars) {
     const cv::Rect key(l.legendX, y, 22, 16);
-    if (b.hatched) hatchedBar(img, key, b.color);
-    else cv::rectangle(img, key, b.color, cv::FILLED);
+    if (b.hatched)
+      hatchedBar(img, key, b.color);
+    else
+      cv::rectangle(img, key, b.color, cv::FILLED);
     drawText(img, b.label, {l.legendX + 32, y + 13}, 0.5, kBlack);
     y += 26;
   }

@@ -21,8 +21,7 @@ void drawCentredText(cv::Mat& img, const std::string& s, int x, int y, double sc
 // One group per scene, one solid bar per method (err_nonocc, %), the paper's
 // figure as a hatched bar right after ours where the paper has one; value
 // labels on the bars, axes, legend. BGR 8-bit.
-cv::Mat table1Chart(const TableReport& report,
-                    const std::string& title = "SGM golden model vs Yao & Cheng, Table I");
+cv::Mat table1Chart(const TableReport& report, const std::string& title = "SGM golden model vs Yao & Cheng, Table I");
 
 // pool.png: one group per scene (sorted by set), bars of the strict figure
 // (Middlebury bad-delta nonocc, KITTI D1): ours, today's defaults (when compared),

@@ -23,8 +23,8 @@ class JsonWriter {
   JsonWriter& key(const std::string& name);  // next value belongs to this key
 
   JsonWriter& string(const std::string& text);
-  JsonWriter& real(double value);               // 3 decimals
-  JsonWriter& real(double value, int decimals);  // that many decimals
+  JsonWriter& real(double value);                        // 3 decimals
+  JsonWriter& real(double value, int decimals);          // that many decimals
   JsonWriter& real(const std::optional<double>& value);  // null when empty
   JsonWriter& integer(long value);
   JsonWriter& boolean(bool value);

@@ -75,7 +75,8 @@ std::optional<PoolMean> meanOf(const std::string& name, const std::vector<PoolRo
   if (m.scenes == 0) return std::nullopt;
   m.ours /= m.scenes;
   if (todays == m.scenes) m.today = today / todays;
-  if (opencvs == m.scenes) m.opencvStrict = strict / opencvs, m.opencvValid = valid / opencvs, m.opencvDensity = density / opencvs;
+  if (opencvs == m.scenes)
+    m.opencvStrict = strict / opencvs, m.opencvValid = valid / opencvs, m.opencvDensity = density / opencvs;
   return m;
 }
 
@@ -92,7 +93,8 @@ void summarize(PoolReport& r) {
   for (const PoolRow& row : r.rows)
     if (std::find(sets.begin(), sets.end(), row.set) == sets.end()) sets.push_back(row.set);
   std::sort(sets.begin(), sets.end());
-  for (const std::string& set : sets) addMean(r.sets, meanOf(set, r.rows, [&](const PoolRow& x) { return x.set == set; }));
+  for (const std::string& set : sets)
+    addMean(r.sets, meanOf(set, r.rows, [&](const PoolRow& x) { return x.set == set; }));
   for (const std::string group : {"middlebury", "kitti"}) {
     addMean(r.groups, meanOf(group, r.rows, [&](const PoolRow& x) { return setGroup(x.set) == group; }));
     for (const char half : {'A', 'B'})
@@ -132,14 +134,15 @@ PoolReport computePool(const std::vector<Scene>& scenes, const PoolOptions& opti
       row.today = evaluate(toFloat(runPipeline(s.left, s.right, today)), s, options.delta);
     }
     if (options.opencv)
-      row.opencv = evaluate(runOpenCvSgbm(s.leftColor, s.rightColor, opencvDisparities(row.disparities),
-                                          cv::StereoSGBM::MODE_SGBM),
-                            s, options.delta);
+      row.opencv = evaluate(
+          runOpenCvSgbm(s.leftColor, s.rightColor, opencvDisparities(row.disparities), cv::StereoSGBM::MODE_SGBM), s,
+          options.delta);
     if (hook) hook(row, s, ours);
     r.rows.push_back(row);
   }
-  std::stable_sort(r.rows.begin(), r.rows.end(),
-                   [](const PoolRow& a, const PoolRow& b) { return std::tie(a.set, a.scene) < std::tie(b.set, b.scene); });
+  std::stable_sort(r.rows.begin(), r.rows.end(), [](const PoolRow& a, const PoolRow& b) {
+    return std::tie(a.set, a.scene) < std::tie(b.set, b.scene);
+  });
   summarize(r);
   return r;
 }
@@ -198,7 +201,8 @@ std::string poolMarkdown(const PoolReport& r) {
   const std::string delta = fixed(r.options.delta, 2);
   std::string md =
       "# SGM golden model on the scene pool\n\n"
-      "Measure: Middlebury scenes bad-" + delta + " (|d - gt| > " + delta +
+      "Measure: Middlebury scenes bad-" +
+      delta + " (|d - gt| > " + delta +
       " px) over the non-occluded pixels with known ground truth (the derived mask when a scene has no "
       "nonocc.png), invalid = error; KITTI scenes D1 (|d - gt| > 3 px and > 5 % of gt) over the pixels with "
       "ground truth, invalid = error. D = `ndisp` of each scene (" +
@@ -207,7 +211,8 @@ std::string poolMarkdown(const PoolReport& r) {
       "pair at D rounded up to 16; strict counts its invalid pixels as errors, valid only leaves them out, density "
       "= % of the pixels with ground truth that are valid. Half: the fixed cross-validation split (per set, "
       "scenes sorted by name alternate A, B).\n\n"
-      "Ours: " + goldenParamsText(r.options.params) + " (preset: " + presetName(r.options.params) + ").\n\n";
+      "Ours: " +
+      goldenParamsText(r.options.params) + " (preset: " + presetName(r.options.params) + ").\n\n";
   md += "| scene | set | half | D | ours | today | ours bad-" + delta +
         " (all gt) | OpenCV strict | OpenCV valid only | OpenCV density |\n"
         "|---|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
@@ -221,7 +226,8 @@ std::string poolMarkdown(const PoolReport& r) {
           cell(row.opencv ? std::optional<double>(row.opencv->density) : std::nullopt) + " |\n";
   }
   md += "\n(today: the four-path preset, the defaults before issue 15; only when ours are not it.)\n\n";
-  md += meansTable("Means per set", r.sets) + meansTable("Means per group (Middlebury: bad-" + delta + " nonocc; KITTI: D1)", r.groups) +
+  md += meansTable("Means per set", r.sets) +
+        meansTable("Means per group (Middlebury: bad-" + delta + " nonocc; KITTI: D1)", r.groups) +
         meansTable("Means per cross-validation half", r.halves);
   if (r.worstRegression)
     md += "Worst change of a scene vs today: " + r.worstScene + " " + (*r.worstRegression >= 0 ? "+" : "") +
@@ -238,11 +244,13 @@ std::string poolSummary(const PoolReport& r) {
       std::snprintf(line, sizeof line, "%-14s %2d scenes  ours %6.2f%%", m.name.c_str(), m.scenes, m.ours);
       text += line;
       if (m.today) text += "  today " + fixed(*m.today, 2) + "%";
-      if (m.opencvStrict) text += "  opencv strict " + fixed(*m.opencvStrict, 2) + "%  valid " + fixed(*m.opencvValid, 2) +
-                                  "% (density " + fixed(*m.opencvDensity, 2) + "%)";
+      if (m.opencvStrict)
+        text += "  opencv strict " + fixed(*m.opencvStrict, 2) + "%  valid " + fixed(*m.opencvValid, 2) +
+                "% (density " + fixed(*m.opencvDensity, 2) + "%)";
       text += "\n";
     }
-  if (r.worstRegression) text += "worst change vs today: " + r.worstScene + " " + fixed(*r.worstRegression, 2) + " points\n";
+  if (r.worstRegression)
+    text += "worst change vs today: " + r.worstScene + " " + fixed(*r.worstRegression, 2) + " points\n";
   return text;
 }
 

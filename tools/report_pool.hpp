@@ -38,7 +38,8 @@ struct PoolRow {
   char half = 'A';
   int disparities = 0;
   ErrorFigures ours;
-  std::optional<ErrorFigures> today;   // the four-path preset (the defaults before issue 15) at the same D, when ours are not it
+  std::optional<ErrorFigures>
+      today;  // the four-path preset (the defaults before issue 15) at the same D, when ours are not it
   std::optional<ErrorFigures> opencv;  // StereoSGBM MODE_SGBM at D rounded up to 16
 };
 
@@ -51,7 +52,7 @@ struct PoolMean {
 };
 
 struct PoolOptions {
-  Params params;              // D is replaced by each scene's ndisp
+  Params params;                 // D is replaced by each scene's ndisp
   int fallbackDisparities = 64;  // D of a scene whose meta.txt has no ndisp
   double delta = 1.0;
   bool opencv = true;
@@ -65,9 +66,9 @@ std::map<std::string, char> poolHalves(const std::string& root);
 
 struct PoolReport {
   PoolOptions options;
-  bool comparesToday = false;  // params are not the four-path preset: `today` is filled
-  std::vector<PoolRow> rows;   // sorted by set, then scene
-  std::vector<PoolMean> sets;  // one per set, sorted
+  bool comparesToday = false;    // params are not the four-path preset: `today` is filled
+  std::vector<PoolRow> rows;     // sorted by set, then scene
+  std::vector<PoolMean> sets;    // one per set, sorted
   std::vector<PoolMean> groups;  // "middlebury", "kitti" (those present)
   std::vector<PoolMean> halves;  // "middlebury A", "middlebury B", "kitti A", ...
   // Largest (ours - today) of the strict figure over the scenes, when comparing.

@@ -26,12 +26,9 @@ struct PaperRow {
 
 // Yao & Cheng, Table I: error matching ratios with different matching costs.
 const PaperRow kPaperTable1[] = {
-    {CostMode::kSad, "SAD", {9.1, 13.7, 4.8, 3.3}},
-    {CostMode::kBt, "BT", {7.7, 10.4, 4.0, 3.1}},
-    {CostMode::kRt, "Rank filter/AD", {7.5, 11.7, 3.1, 5.0}},
-    {CostMode::kRsad, "Rank SAD", {6.2, 9.9, 2.8, 2.5}},
-    {CostMode::kSadRt, "SAD+RT", {8.0, 12.6, 3.9, 3.4}},
-    {CostMode::kUnified, "RSAD+RT", {6.6, 11.1, 3.2, 3.8}},
+    {CostMode::kSad, "SAD", {9.1, 13.7, 4.8, 3.3}},           {CostMode::kBt, "BT", {7.7, 10.4, 4.0, 3.1}},
+    {CostMode::kRt, "Rank filter/AD", {7.5, 11.7, 3.1, 5.0}}, {CostMode::kRsad, "Rank SAD", {6.2, 9.9, 2.8, 2.5}},
+    {CostMode::kSadRt, "SAD+RT", {8.0, 12.6, 3.9, 3.4}},      {CostMode::kUnified, "RSAD+RT", {6.6, 11.1, 3.2, 3.8}},
 };
 
 // Penalties of the Table I rows on the paper's window (9x9, P2' / dI, equal
@@ -46,11 +43,11 @@ const PaperWindowPenalties kPaperWindowPenalties[] = {
     // Measured 2026-11-24 (sgm-eval run --preset paper --mode M --p1 N --p2 N --lr off --fill off
     // --snap off); mean nonocc of the four scenes. The hardware modes' optimum is at the RTL's
     // P2' limit (255), sad+rt's and bt's at the grid's 500.
-    {CostMode::kSad, 8, 255},    // 7.40
-    {CostMode::kBt, 20, 500},    // 7.80
-    {CostMode::kRt, 50, 255},    // 4.87
-    {CostMode::kRsad, 20, 255},  // 3.92
-    {CostMode::kSadRt, 20, 500}, // 4.79
+    {CostMode::kSad, 8, 255},       // 7.40
+    {CostMode::kBt, 20, 500},       // 7.80
+    {CostMode::kRt, 50, 255},       // 4.87
+    {CostMode::kRsad, 20, 255},     // 3.92
+    {CostMode::kSadRt, 20, 500},    // 4.79
     {CostMode::kUnified, 50, 255},  // 4.20
 };
 
@@ -190,17 +187,23 @@ std::string notesMarkdown(const TableReport& r) {
       "the 5x5 median stay as in `defaultParams` (on). The paper's figure is in parentheses.\n"
       "- **Full pipeline** (rows `full-*`): `defaultParams(mode)` as is (LR check, hole filling, sub-pixel, median; "
       "for `rsad` the defaults: the fifth path, the AD term, uniqueness 15, the path restart, no snapping; the other modes with edge "
-      "snapping, four paths) for each cost mode the hardware implements; `" + r.hardwareDefault +
+      "snapping, four paths) for each cost mode the hardware implements; `" +
+      r.hardwareDefault +
       "` is the hardware default (`Params{}.mode`); `full-four-path` is the `four-path` preset (the defaults before "
       "issue 15); `full-paper` is the `paper` preset (9x9, `unified`, P2' / dI, "
       "equal weights, LR check, sub-pixel, median, no filling, no snapping).\n"
       "- **OpenCV** rows: `cv::StereoSGBM` (settings of OpenCV's stereo_match sample) on the colour images, "
-      "same process, " + std::to_string(opencvDisparities(r.disparities)) + " disparities.\n"
+      "same process, " +
+      std::to_string(opencvDisparities(r.disparities)) +
+      " disparities.\n"
       "- Error = % of non-occluded pixels (`nonocc` mask, known ground truth) whose disparity is invalid or "
-      "differs from the ground truth by more than delta = " + fixed(r.delta, 1) + " px (the paper's eq. (5)). "
+      "differs from the ground truth by more than delta = " +
+      fixed(r.delta, 1) +
+      " px (the paper's eq. (5)). "
       "Mean = mean over the paper's four scenes.\n";
   for (const std::string& s : r.derivedNonocc)
-    md += "- " + titleCase(s) + ": no nonocc.png; the non-occluded mask was derived from the ground truth "
+    md += "- " + titleCase(s) +
+          ": no nonocc.png; the non-occluded mask was derived from the ground truth "
           "(`deriveNonOccluded`), so its figures are not exactly the Middlebury protocol.\n";
   for (const std::string& s : r.scenes)
     if (!r.present.count(s)) md += "- " + titleCase(s) + ": scene not found under the data directory (\"-\").\n";
@@ -271,8 +274,9 @@ void writeMethod(JsonWriter& j, const TableReport& r, const Method& m) {
 
 std::string goldenParamsText(const Params& p) {
   std::string text = std::string("mode ") + costModeName(p.mode) + ", census " + censusWindowName(p.census) + ", P2 " +
-                     p2ModeName(p.p2Mode) + ", weights " + pathWeightingName(p.weights) + ", P1=" + std::to_string(p.p1) +
-                     ", P2'=" + std::to_string(p.p2) + ", sub-pixel " + onOff(p.subpixel) + ", LR check " +
+                     p2ModeName(p.p2Mode) + ", weights " + pathWeightingName(p.weights) +
+                     ", P1=" + std::to_string(p.p1) + ", P2'=" + std::to_string(p.p2) + ", sub-pixel " +
+                     onOff(p.subpixel) + ", LR check " +
                      (p.lrTolerance < 0 ? std::string("off") : "tol " + std::to_string(p.lrTolerance)) + ", fill " +
                      onOff(p.fill) + ", snap " + onOff(p.snap) + ", median " + onOff(p.median) +
                      (p.uniqueness ? ", uniqueness " + std::to_string(p.uniqueness) : std::string()) +
@@ -281,20 +285,20 @@ std::string goldenParamsText(const Params& p) {
                      (p.rightPathWeight && p.rightPathBlock ? ", fifth path " + std::to_string(p.rightPathWeight) +
                                                                   " in blocks of " + std::to_string(p.rightPathBlock)
                                                             : std::string()) +
-                     (p.edgeReset.threshold ? ", path restart T " + std::to_string(p.edgeReset.threshold) + " R " +
-                                                  std::to_string(p.edgeReset.length) + " paths " +
-                                                  std::to_string(p.edgeReset.paths[0]) + std::to_string(p.edgeReset.paths[1]) +
-                                                  std::to_string(p.edgeReset.paths[2]) + std::to_string(p.edgeReset.paths[3]) +
-                                                  std::to_string(p.edgeReset.paths[4])
-                                            : std::string());
+                     (p.edgeReset.threshold
+                          ? ", path restart T " + std::to_string(p.edgeReset.threshold) + " R " +
+                                std::to_string(p.edgeReset.length) + " paths " + std::to_string(p.edgeReset.paths[0]) +
+                                std::to_string(p.edgeReset.paths[1]) + std::to_string(p.edgeReset.paths[2]) +
+                                std::to_string(p.edgeReset.paths[3]) + std::to_string(p.edgeReset.paths[4])
+                          : std::string());
   if (p.experimental())
     text += "; golden-only experiments (not in the RTL): right path " + std::to_string(p.rightPathWeight) +
-            (p.rightPathBlock ? " block " + std::to_string(p.rightPathBlock) : std::string()) +
-            ", sub-pixel fit " + (p.linearSubpixel ? "linear" : "parabola") + ", MGM " +
-            onOff(p.mgm) + ", median gate " + std::to_string(p.medianGate) + ", P1 per path " +
-            std::to_string(p.p1PathPercent[0]) + "," + std::to_string(p.p1PathPercent[1]) + "," +
-            std::to_string(p.p1PathPercent[2]) + "," + std::to_string(p.p1PathPercent[3]) + "," +
-            std::to_string(p.p1PathPercent[4]) + " %, snap edge " + std::to_string(p.snapEdge);
+            (p.rightPathBlock ? " block " + std::to_string(p.rightPathBlock) : std::string()) + ", sub-pixel fit " +
+            (p.linearSubpixel ? "linear" : "parabola") + ", MGM " + onOff(p.mgm) + ", median gate " +
+            std::to_string(p.medianGate) + ", P1 per path " + std::to_string(p.p1PathPercent[0]) + "," +
+            std::to_string(p.p1PathPercent[1]) + "," + std::to_string(p.p1PathPercent[2]) + "," +
+            std::to_string(p.p1PathPercent[3]) + "," + std::to_string(p.p1PathPercent[4]) + " %, snap edge " +
+            std::to_string(p.snapEdge);
   return text;
 }
 
@@ -322,7 +326,7 @@ void writeGoldenParamFields(JsonWriter& j, const Params& p) {
   j.key("p1_path_percent").beginArray();
   for (const int percent : p.p1PathPercent) j.integer(percent);
   j.endArray();
-  j.key("snap_edge").integer(p.snapEdge);  // 0: off (every drop snaps)
+  j.key("snap_edge").integer(p.snapEdge);              // 0: off (every drop snaps)
   j.key("edge_reset").integer(p.edgeReset.threshold);  // 0: off
   j.key("edge_reset_length").integer(p.edgeReset.length);
   j.key("edge_reset_paths").beginArray();
@@ -391,8 +395,8 @@ std::vector<Method> tableMethods(int disparities) {
     Params p = defaultParams(mode);
     p.disparities = disparities;
     p.validate();
-    Method m = goldenMethod(std::string("full-") + costModeName(mode),
-                            std::string("Full pipeline, ") + costLabel(mode), MethodKind::kFull, p);
+    Method m = goldenMethod(std::string("full-") + costModeName(mode), std::string("Full pipeline, ") + costLabel(mode),
+                            MethodKind::kFull, p);
     m.hardwareDefault = mode == Params{}.mode;
     methods.push_back(m);
   }
@@ -454,8 +458,8 @@ std::string table1Markdown(const TableReport& r) {
 
 std::string reportMarkdown(const TableReport& r) {
   std::string md = "# SGM golden model: accuracy report (D = " + std::to_string(r.disparities) + ")\n\n" +
-                   table1Markdown(r) + notesMarkdown(r) + "\n![Table I chart](table1.png)\n\n" +
-                   perSceneMarkdown(r) + "## Parameters\n\n| Key | Kind | Settings |\n|---|---|---|\n";
+                   table1Markdown(r) + notesMarkdown(r) + "\n![Table I chart](table1.png)\n\n" + perSceneMarkdown(r) +
+                   "## Parameters\n\n| Key | Kind | Settings |\n|---|---|---|\n";
   for (const Method& m : r.methods) md += paramsRow(r, m);
   return md;
 }
@@ -463,8 +467,10 @@ std::string reportMarkdown(const TableReport& r) {
 std::string reportJson(const TableReport& r) {
   JsonWriter j;
   j.beginObject();
-  if (r.delta == std::floor(r.delta)) j.key("delta").integer(long(r.delta));
-  else j.key("delta").real(r.delta);
+  if (r.delta == std::floor(r.delta))
+    j.key("delta").integer(long(r.delta));
+  else
+    j.key("delta").real(r.delta);
   j.key("disparities").integer(r.disparities);
   j.key("scenes").beginArray();
   for (const std::string& s : r.scenes) j.string(s);

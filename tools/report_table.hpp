@@ -24,8 +24,8 @@ struct Method {
   std::string key;    // stable identifier: "rsad", "full-unified", "opencv-hh", ...
   std::string label;  // for people: "Rank SAD", ...
   MethodKind kind = MethodKind::kTable1;
-  Params params;        // golden methods
-  int opencvMode = -1;  // OpenCV methods: cv::StereoSGBM::MODE_SGBM or MODE_HH
+  Params params;                        // golden methods
+  int opencvMode = -1;                  // OpenCV methods: cv::StereoSGBM::MODE_SGBM or MODE_HH
   std::map<std::string, double> paper;  // scene -> the paper's Table I figure (%), Table I rows only
   bool hardwareDefault = false;         // the full pipeline with Params{}.mode
 };
@@ -57,13 +57,13 @@ cv::Mat runMethod(const Method& method, const Scene& scene);
 struct TableReport {
   int disparities = 64;
   double delta = 1;
-  std::vector<std::string> scenes;          // columns: paper scenes, then extra ones (sorted)
-  std::set<std::string> present;            // scenes that were found and evaluated
-  std::set<std::string> derivedNonocc;      // nonocc mask derived from the ground truth
-  int opencvChannels = 3;                   // channels of the images given to OpenCV
+  std::vector<std::string> scenes;      // columns: paper scenes, then extra ones (sorted)
+  std::set<std::string> present;        // scenes that were found and evaluated
+  std::set<std::string> derivedNonocc;  // nonocc mask derived from the ground truth
+  int opencvChannels = 3;               // channels of the images given to OpenCV
   std::vector<Method> methods;
   std::map<std::string, std::map<std::string, ErrorFigures>> results;  // key -> scene -> figures
-  std::string hardwareDefault;              // key of the hardware-default full pipeline
+  std::string hardwareDefault;                                         // key of the hardware-default full pipeline
 
   const ErrorFigures* find(const std::string& key, const std::string& scene) const;
 };
@@ -72,8 +72,7 @@ struct TableReport {
 using ResultHook = std::function<void(const Method&, const Scene&, const cv::Mat& disparity)>;
 
 // Runs every method on every scene and evaluates it (nonocc, all, disc at delta).
-TableReport computeTable(const std::vector<Scene>& scenes, int disparities, double delta,
-                         const ResultHook& hook = {});
+TableReport computeTable(const std::vector<Scene>& scenes, int disparities, double delta, const ResultHook& hook = {});
 
 // The golden model's parameters for people, without D: "mode rsad, census 9x5, ...",
 // the golden-only experiments appended when any is on.

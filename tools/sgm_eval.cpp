@@ -96,7 +96,8 @@ std::vector<Scene> loadAll(const CliArgs& args, const std::string& option = "dat
   for (std::string name; std::getline(names, name, ',');) {
     const auto it = std::find_if(dirs.begin(), dirs.end(),
                                  [&](const std::string& d) { return std::filesystem::path(d).filename() == name; });
-    if (it == dirs.end()) throw Error("--scenes: scene '" + name + "' (left.png, right.png, gt.png) not found under '" + root + "'");
+    if (it == dirs.end())
+      throw Error("--scenes: scene '" + name + "' (left.png, right.png, gt.png) not found under '" + root + "'");
     scenes.push_back(eval::loadScene(*it));
   }
   if (scenes.empty()) throw Error("--scenes: empty list");
@@ -147,8 +148,8 @@ int commandTable(const CliArgs& args) {
   writeResults(out, files);
 
   std::cout << eval::table1Markdown(report);
-  std::cout << "wrote " << out << "/report.md, report.json, table1.png and " << sideBySides
-            << " side-by-side images (" << report.hardwareDefault << ")\n";
+  std::cout << "wrote " << out << "/report.md, report.json, table1.png and " << sideBySides << " side-by-side images ("
+            << report.hardwareDefault << ")\n";
   return 0;
 }
 
@@ -175,9 +176,9 @@ int commandPool(const CliArgs& args) {
   std::vector<Scene> scenes = loadAll(args, "pool");
   options.halves = eval::poolHalves(args.text("pool", ""));  // the split of the whole pool, whatever --scenes keeps
   if (!half.empty()) {
-    scenes.erase(std::remove_if(scenes.begin(), scenes.end(),
-                                [&](const Scene& s) { return options.halves[s.name] != half[0]; }),
-                 scenes.end());
+    scenes.erase(
+        std::remove_if(scenes.begin(), scenes.end(), [&](const Scene& s) { return options.halves[s.name] != half[0]; }),
+        scenes.end());
     if (scenes.empty()) throw Error("--half " + half + ": no scene of the selection is in that half");
   }
   const eval::PoolReport report = eval::computePool(scenes, options);

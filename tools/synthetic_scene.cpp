@@ -50,8 +50,10 @@ void placePlane(Layer& l, int w, int h, double lo, double hi, bool slanted, Rng&
 
 void randomTexture(Layer& l, Rng& rng) {
   const double pick = rng.real();
-  l.texture = pick < 0.5 ? Texture::kRandomDot : pick < 0.7 ? Texture::kGradient
-            : pick < 0.85 ? Texture::kFlat : Texture::kSaturated;
+  l.texture = pick < 0.5    ? Texture::kRandomDot
+              : pick < 0.7  ? Texture::kGradient
+              : pick < 0.85 ? Texture::kFlat
+                            : Texture::kSaturated;
   l.textureSeed = uint32_t(rng.next());
   l.dotSize = rng.chance(0.6) ? 1 : rng.uniform(2, 4);
   l.level = rng.chance(0.15) ? (rng.chance(0.5) ? 0 : 255) : rng.uniform(0, 255);

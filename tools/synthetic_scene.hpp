@@ -23,10 +23,10 @@ class Rng {
  public:
   explicit Rng(uint64_t seed) : state_(seed) {}
   uint64_t next();
-  int uniform(int lo, int hi);           // lo .. hi inclusive
+  int uniform(int lo, int hi);                // lo .. hi inclusive
   double real(double lo = 0, double hi = 1);  // [lo, hi)
   bool chance(double p) { return real() < p; }
-  double gaussian();                     // N(0, 1), Box-Muller
+  double gaussian();  // N(0, 1), Box-Muller
  private:
   uint64_t state_;
 };
@@ -44,13 +44,13 @@ const char* shapeName(Shape shape);
 // appears in the right view at x - disparity(x, y).
 struct Layer {
   Shape shape = Shape::kPlane;
-  double centreX = 0, centreY = 0;  // rectangle and disc
+  double centreX = 0, centreY = 0;       // rectangle and disc
   double halfWidth = 0, halfHeight = 0;  // rectangle half sizes; a disc's radius is halfWidth
-  double d0 = 0, dx = 0, dy = 0;    // disparity(x, y) = d0 + dx x + dy y (px), |dx| < 1
+  double d0 = 0, dx = 0, dy = 0;         // disparity(x, y) = d0 + dx x + dy y (px), |dx| < 1
   Texture texture = Texture::kRandomDot;
   uint32_t textureSeed = 0;
-  int dotSize = 1;                  // random-dot and saturated cell size (px)
-  int level = 128, contrast = 127;  // flat level; dot / gradient range around it
+  int dotSize = 1;                      // random-dot and saturated cell size (px)
+  int level = 128, contrast = 127;      // flat level; dot / gradient range around it
   double gradientX = 0, gradientY = 0;  // gradient slope (grey levels per px)
 
   bool contains(double x, double y) const;

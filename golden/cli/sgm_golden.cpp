@@ -66,10 +66,10 @@ int main(int argc, char** argv) {
                     {prefix + "_disp8.png", sgm::encodeDisparity8(map, params.disparities)},
                     {prefix + "_color.png", sgm::encodeDisparityColor(map, params.disparities)}});
     const double density = cv::countNonZero(map.valid) * 100.0 / double(map.valid.total());
-    std::printf("sgm-golden: %dx%d D=%d mode=%s census=%s preset=%s: %.1f ms, density %.2f%%, wrote %s_{disp16,disp8,color}.png\n",
-                left.cols, left.rows, params.disparities, sgm::costModeName(params.mode),
-                sgm::censusWindowName(params.census), sgm::presetName(params).c_str(), ms, density,
-                prefix.c_str());
+    std::printf(
+        "sgm-golden: %dx%d D=%d mode=%s census=%s preset=%s: %.1f ms, density %.2f%%, wrote %s_{disp16,disp8,color}.png\n",
+        left.cols, left.rows, params.disparities, sgm::costModeName(params.mode), sgm::censusWindowName(params.census),
+        sgm::presetName(params).c_str(), ms, density, prefix.c_str());
     return 0;
   } catch (const std::exception& e) {
     return sgm::reportError("sgm-golden", e);

@@ -75,10 +75,18 @@ class PathState {
 
   PathState(int width, int disparities, const cv::Mat& gray, int pathIndex, int p1, const P2Table& p2Table,
             bool mgm = false, const EdgeReset& edgeReset = EdgeReset{})
-      : width_(width), disparities_(disparities), gray_(gray), dir_(kPathDirections[pathIndex]),
-        perpendicular_(kMgmPerpendicular[pathIndex]), mgm_(mgm), p1_(p1), p2Table_(p2Table),
-        reset_(edgeReset.on(pathIndex) ? edgeReset : EdgeReset{0}), stride_(disparities + 2),
-        rows_(size_t(kRows) * width * stride_, kPathSentinel), mins_(size_t(kRows) * width, 0),
+      : width_(width),
+        disparities_(disparities),
+        gray_(gray),
+        dir_(kPathDirections[pathIndex]),
+        perpendicular_(kMgmPerpendicular[pathIndex]),
+        mgm_(mgm),
+        p1_(p1),
+        p2Table_(p2Table),
+        reset_(edgeReset.on(pathIndex) ? edgeReset : EdgeReset{0}),
+        stride_(disparities + 2),
+        rows_(size_t(kRows) * width * stride_, kPathSentinel),
+        mins_(size_t(kRows) * width, 0),
         since_(reset_.threshold ? size_t(kRows) * width : 0, 0) {}
 
   // Computes Lr(x, y, .) from C(x, y, .) and returns it (valid for kRows - 1 more rows).
@@ -202,8 +210,8 @@ void waitUntil(const std::atomic<int>& counter, int value) {
 }  // namespace
 
 void aggregateRows(int width, int height, int nd, const cv::Mat& gray, int p1, int p2, P2Mode p2Mode,
-                   PathWeighting weights, const CostRowFn& costRow, const SumRowFn& sink, int rightPathWeight,
-                   bool mgm, int rightPathBlock, const int* p1PathPercent, const EdgeReset& edgeReset) {
+                   PathWeighting weights, const CostRowFn& costRow, const SumRowFn& sink, int rightPathWeight, bool mgm,
+                   int rightPathBlock, const int* p1PathPercent, const EdgeReset& edgeReset) {
   const int* w = pathWeights(weights);
   // Each path's P1 and P2 table (the golden-only per-path P1; one P1 for all in the core).
   int pathP1[kPathCount + 1];
@@ -239,14 +247,13 @@ void aggregateRows(int width, int height, int nd, const cv::Mat& gray, int p1, i
       const uint16_t* l2 = paths[2].step(x, y, c);
       const uint16_t* l3 = paths[3].step(x, y, c);
       uint16_t* s = sum + size_t(x) * nd;
-      for (int d = 0; d < nd; ++d)
-        s[d] = uint16_t(w[0] * l0[d] + w[1] * l1[d] + w[2] * l2[d] + w[3] * l3[d]);
+      for (int d = 0; d < nd; ++d) s[d] = uint16_t(w[0] * l0[d] + w[1] * l1[d] + w[2] * l2[d] + w[3] * l3[d]);
       if (x == x0) afterFirst();
     }
   };
   runConcurrently({[&] {
                      for (int y = 0; y < height; ++y) {
-                       waitUntil(rightStarted, y);         // pixel (split, y-1) for 135 degrees
+                       waitUntil(rightStarted, y);            // pixel (split, y-1) for 135 degrees
                        waitUntil(rightRows, y - kSlots + 2);  // ring slots of row y - kSlots are free
                        columns(y, 0, split, [] {});
                        leftRows.store(y + 1, std::memory_order_release);
@@ -261,8 +268,8 @@ void aggregateRows(int width, int height, int nd, const cv::Mat& gray, int p1, i
                          rightStarted.store(y + 1, std::memory_order_release);
                        if (rightPathWeight)  // the whole row of C is in its slot now
                          addRightPath(costRing.data() + rowSize * (y % kSlots), gray.ptr<uint8_t>(y), width, nd,
-                                      pathP1[kPathCount], tables[kPathCount], rightPathWeight, sumRing.data() + rowSize * (y % kSlots), rightPathBlock,
-                                      edgeReset);
+                                      pathP1[kPathCount], tables[kPathCount], rightPathWeight,
+                                      sumRing.data() + rowSize * (y % kSlots), rightPathBlock, edgeReset);
                        sink(1, y, sumRing.data() + rowSize * (y % kSlots));
                        rightRows.store(y + 1, std::memory_order_release);
                      }

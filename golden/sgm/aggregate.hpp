@@ -23,12 +23,10 @@ P2Table makeP2Table(int p1, int p2, P2Mode mode = P2Mode::kKnee);
 struct PathDirection {
   int dx, dy, degrees;
 };
-constexpr PathDirection kPathDirections[kPathCount] = {
-    {-1, 0, 0}, {-1, -1, 45}, {0, -1, 90}, {1, -1, 135}};
+constexpr PathDirection kPathDirections[kPathCount] = {{-1, 0, 0}, {-1, -1, 45}, {0, -1, 90}, {1, -1, 135}};
 // Golden-only MGM (Params::mgm): the second, perpendicular causal neighbour of each
 // path (p + (dx, dy)): above for 0 degrees, above-right for 45, left for 90, above-left for 135.
-constexpr PathDirection kMgmPerpendicular[kPathCount] = {
-    {0, -1, 90}, {1, -1, 135}, {-1, 0, 0}, {-1, -1, 45}};
+constexpr PathDirection kMgmPerpendicular[kPathCount] = {{0, -1, 90}, {1, -1, 135}, {-1, 0, 0}, {-1, -1, 45}};
 
 // Sentinel for the missing neighbours Lr(p-r, -1) and Lr(p-r, D); larger than
 // any path cost, small enough that sentinel + P1 still fits in 16 bits.
@@ -38,8 +36,8 @@ constexpr uint16_t kPathSentinel = 0x7fff;
 //   out[d] = C(p,d) + min(prev[d], prev[d-1] + P1, prev[d+1] + P1, minPrev + P2r) - minPrev
 // prev points at Lr(p-r, 0); prev[-1] and prev[D] must hold kPathSentinel.
 // Returns min_d out[d].
-uint16_t pathStep(const uint8_t* cost, const uint16_t* prev, uint16_t minPrev, int disparities,
-                  int p1, int p2r, uint16_t* out);
+uint16_t pathStep(const uint8_t* cost, const uint16_t* prev, uint16_t minPrev, int disparities, int p1, int p2r,
+                  uint16_t* out);
 
 // At a path start (p - r outside the image) Lr(p, d) = C(p, d).
 uint16_t pathStart(const uint8_t* cost, int disparities, uint16_t* out);
@@ -57,10 +55,10 @@ PathVolume pathCost(const CostVolume& cost, const cv::Mat& grayLeft, int pathInd
 // (golden-only; nullptr = 100 each): P1 of each path (0, 45, 90, 135 degrees, the fifth)
 // in percent of p1, each path's P2r from its own P1. edgeReset (the path restart; threshold 0 =
 // off): the paths it marks start again (Lr = C) within `length` steps of a strong edge.
-PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1, int p2,
-                         P2Mode p2Mode = P2Mode::kKnee, PathWeighting weights = PathWeighting::k3232,
-                         int rightPathWeight = 0, bool mgm = false, int rightPathBlock = 0,
-                         const int* p1PathPercent = nullptr, const EdgeReset& edgeReset = EdgeReset{});
+PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1, int p2, P2Mode p2Mode = P2Mode::kKnee,
+                         PathWeighting weights = PathWeighting::k3232, int rightPathWeight = 0, bool mgm = false,
+                         int rightPathBlock = 0, const int* p1PathPercent = nullptr,
+                         const EdgeReset& edgeReset = EdgeReset{});
 
 // The streaming form used by the pipeline: rows in order, never more than a
 // few rows of C and S in memory, the work of each row split over two workers.
@@ -70,10 +68,10 @@ PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1
 // different workers possibly at the same time.
 using CostRowFn = std::function<void(int y, int x0, int x1, uint8_t* row)>;
 using SumRowFn = std::function<void(int worker, int y, const uint16_t* row)>;
-void aggregateRows(int width, int height, int disparities, const cv::Mat& grayLeft, int p1, int p2,
-                   P2Mode p2Mode, PathWeighting weights, const CostRowFn& costRow, const SumRowFn& sink,
-                   int rightPathWeight = 0, bool mgm = false, int rightPathBlock = 0,
-                   const int* p1PathPercent = nullptr, const EdgeReset& edgeReset = EdgeReset{});
+void aggregateRows(int width, int height, int disparities, const cv::Mat& grayLeft, int p1, int p2, P2Mode p2Mode,
+                   PathWeighting weights, const CostRowFn& costRow, const SumRowFn& sink, int rightPathWeight = 0,
+                   bool mgm = false, int rightPathBlock = 0, const int* p1PathPercent = nullptr,
+                   const EdgeReset& edgeReset = EdgeReset{});
 
 // The fifth path over one row: Lr for r = (1, 0), from x = W-1 down to 0,
 // added to sum (W x D) with the given weight. cost is the row of C, grayRow the row of

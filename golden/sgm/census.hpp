@@ -20,8 +20,10 @@ struct Census {
 
   bool bit(int k) const { return k < 64 ? (bits >> k) & 1 : (high >> (k - 64)) & 1; }
   void set(int k) {
-    if (k < 64) bits |= uint64_t(1) << k;
-    else high |= uint64_t(1) << (k - 64);
+    if (k < 64)
+      bits |= uint64_t(1) << k;
+    else
+      high |= uint64_t(1) << (k - 64);
   }
   int rank() const { return __builtin_popcountll(bits) + __builtin_popcountll(high); }
   bool operator==(const Census& o) const { return bits == o.bits && high == o.high; }

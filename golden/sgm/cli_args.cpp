@@ -8,8 +8,7 @@
 
 namespace sgm {
 
-CliArgs::CliArgs(int argc, char** argv, const std::set<std::string>& valueOptions,
-                 const std::set<std::string>& flags) {
+CliArgs::CliArgs(int argc, char** argv, const std::set<std::string>& valueOptions, const std::set<std::string>& flags) {
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg.size() > 2 && arg.compare(0, 2, "--") == 0) {
@@ -49,8 +48,7 @@ long CliArgs::integer(const std::string& name, long fallback, long min, long max
   if (s.empty() || *end != '\0' || errno == ERANGE)
     throw Error("option --" + name + " expects an integer, got '" + s + "'");
   if (v < min || v > max)
-    throw Error("option --" + name + "=" + s + " out of range " + std::to_string(min) + ".." +
-                std::to_string(max));
+    throw Error("option --" + name + "=" + s + " out of range " + std::to_string(min) + ".." + std::to_string(max));
   return v;
 }
 
@@ -63,8 +61,7 @@ double CliArgs::real(const std::string& name, double fallback, double min, doubl
   if (s.empty() || *end != '\0' || !std::isfinite(v))
     throw Error("option --" + name + " expects a number, got '" + s + "'");
   if (v < min || v > max)
-    throw Error("option --" + name + "=" + s + " out of range " + std::to_string(min) + ".." +
-                std::to_string(max));
+    throw Error("option --" + name + "=" + s + " out of range " + std::to_string(min) + ".." + std::to_string(max));
   return v;
 }
 
@@ -77,10 +74,10 @@ bool CliArgs::onOff(const std::string& name, bool fallback) const {
 }
 
 const std::set<std::string>& CliArgs::pipelineOptions() {
-  static const std::set<std::string> names = {"d",    "p1",   "p2",     "mode",   "subpixel", "lr",     "fill",
-                                              "snap", "median", "census", "p2-mode", "weights", "preset", "uniqueness",
-                                              "ad-weight", "ad-cap", "right-path", "right-block",
-                                              "edge-reset", "edge-reset-len", "edge-reset-paths",
+  static const std::set<std::string> names = {"d", "p1", "p2", "mode", "subpixel", "lr", "fill", "snap", "median",
+                                              "census", "p2-mode", "weights", "preset", "uniqueness", "ad-weight",
+                                              "ad-cap", "right-path", "right-block", "edge-reset", "edge-reset-len",
+                                              "edge-reset-paths",
                                               // golden-only experiments (not in the RTL)
                                               "subpixel-fit", "mgm", "median-gate", "p1-paths", "snap-edge"};
   return names;
@@ -101,8 +98,10 @@ Params CliArgs::pipelineParams(Params p) const {
   p.p1 = int(integer("p1", p.p1, 0, kMaxPenalty));
   p.p2 = int(integer("p2", p.p2, 0, kMaxPenalty));
   p.subpixel = onOff("subpixel", p.subpixel);
-  if (text("lr", "") == "off") p.lrTolerance = -1;
-  else p.lrTolerance = int(integer("lr", p.lrTolerance, 0, kMaxDisparities));
+  if (text("lr", "") == "off")
+    p.lrTolerance = -1;
+  else
+    p.lrTolerance = int(integer("lr", p.lrTolerance, 0, kMaxDisparities));
   p.fill = onOff("fill", p.fill);
   p.snap = onOff("snap", p.snap);
   p.median = onOff("median", p.median);
@@ -116,13 +115,13 @@ Params CliArgs::pipelineParams(Params p) const {
   p.snapEdge = int(integer("snap-edge", p.snapEdge, 0, 255));
   p.adWeight = int(integer("ad-weight", p.adWeight, 0, kMaxAdWeight));
   p.adCap = int(integer("ad-cap", p.adCap, 0, kMaxAdCap));
-  if (const std::string fit = text("subpixel-fit", p.linearSubpixel ? "linear" : "parabola"); fit == "linear" || fit == "parabola")
+  if (const std::string fit = text("subpixel-fit", p.linearSubpixel ? "linear" : "parabola");
+      fit == "linear" || fit == "parabola")
     p.linearSubpixel = fit == "linear";
   else
     throw Error("option --subpixel-fit expects parabola or linear, got '" + fit + "'");
   p.mgm = onOff("mgm", p.mgm);
-  if (has("p1-paths"))
-    p.p1PathPercent = perPath("p1-paths", kMinP1PathPercent, kMaxP1PathPercent, "five percentages");
+  if (has("p1-paths")) p.p1PathPercent = perPath("p1-paths", kMinP1PathPercent, kMaxP1PathPercent, "five percentages");
   p.edgeReset.threshold = int(integer("edge-reset", p.edgeReset.threshold, 0, 255));
   p.edgeReset.length = int(integer("edge-reset-len", p.edgeReset.length, 1, kMaxEdgeResetLength));
   if (has("edge-reset-paths")) p.edgeReset.paths = perPath("edge-reset-paths", 0, 1, "five flags");
@@ -130,7 +129,8 @@ Params CliArgs::pipelineParams(Params p) const {
   return p;
 }
 
-std::array<int, kPathCount + 1> CliArgs::perPath(const std::string& name, int min, int max, const std::string& what) const {
+std::array<int, kPathCount + 1> CliArgs::perPath(const std::string& name, int min, int max,
+                                                 const std::string& what) const {
   const std::string list = text(name, "");
   std::array<int, kPathCount + 1> values{};
   size_t at = 0;
@@ -154,9 +154,12 @@ std::string oneLine(const std::string& text) {
   for (const char c : text) {
     if (out.size() > kMaxLine) return out + "...";
     const auto u = static_cast<unsigned char>(c);
-    if (c == '\n') out += "\\n";
-    else if (c == '\r') out += "\\r";
-    else if (c == '\t') out += "\\t";
+    if (c == '\n')
+      out += "\\n";
+    else if (c == '\r')
+      out += "\\r";
+    else if (c == '\t')
+      out += "\\t";
     else if (u < 0x20 || u == 0x7f) {
       char hex[8];
       std::snprintf(hex, sizeof hex, "\\x%02x", u);

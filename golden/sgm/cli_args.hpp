@@ -17,8 +17,7 @@ namespace sgm {
 class CliArgs {
  public:
   // valueOptions take a value ("--d 64"); flags take none ("--help").
-  CliArgs(int argc, char** argv, const std::set<std::string>& valueOptions,
-          const std::set<std::string>& flags = {});
+  CliArgs(int argc, char** argv, const std::set<std::string>& valueOptions, const std::set<std::string>& flags = {});
 
   const std::vector<std::string>& positional() const { return positional_; }
   bool has(const std::string& name) const { return values_.count(name) || flags_.count(name); }

@@ -14,8 +14,7 @@ template <CostMode kMode>
 inline int censusCostOf(const Census& left, const Census& right) {
   if constexpr (kMode == CostMode::kRt) return std::abs(left.rank() - right.rank());
   if constexpr (kMode == CostMode::kRsad) return hammingDistance(left, right);
-  if constexpr (kMode == CostMode::kUnified)
-    return std::abs(left.rank() - right.rank()) + hammingDistance(left, right);
+  if constexpr (kMode == CostMode::kUnified) return std::abs(left.rank() - right.rank()) + hammingDistance(left, right);
 }
 
 }  // namespace
@@ -52,8 +51,8 @@ namespace {
 // contiguous.
 inline __attribute__((always_inline)) void censusCostKernel(CostMode mode, int cmax, const Census* left,
                                                             const uint64_t* rightBits, const uint64_t* rightHigh,
-                                                            const uint8_t* rightRank, int width, int x0, int x1,
-                                                            int nd, uint8_t* row) {
+                                                            const uint8_t* rightRank, int width, int x0, int x1, int nd,
+                                                            uint8_t* row) {
   const bool wide = rightHigh != nullptr;  // 9x9: bits 64..79 in a second word
   for (int x = x0; x < x1; ++x) {
     uint8_t* c = row + size_t(x) * nd;
@@ -83,11 +82,10 @@ inline __attribute__((always_inline)) void censusCostKernel(CostMode mode, int c
 
 // The same kernel built for x86-64 CPUs with a vector popcount, chosen at run
 // time; every other target (and x86-64 without it) runs the portable build.
-using CostKernel = void (*)(CostMode, int, const Census*, const uint64_t*, const uint64_t*, const uint8_t*, int,
-                            int, int, int, uint8_t*);
-void censusCostKernelPortable(CostMode mode, int cmax, const Census* left, const uint64_t* bits,
-                              const uint64_t* high, const uint8_t* rank, int width, int x0, int x1, int nd,
-                              uint8_t* row) {
+using CostKernel = void (*)(CostMode, int, const Census*, const uint64_t*, const uint64_t*, const uint8_t*, int, int,
+                            int, int, uint8_t*);
+void censusCostKernelPortable(CostMode mode, int cmax, const Census* left, const uint64_t* bits, const uint64_t* high,
+                              const uint8_t* rank, int width, int x0, int x1, int nd, uint8_t* row) {
   censusCostKernel(mode, cmax, left, bits, high, rank, width, x0, x1, nd, row);
 }
 #if defined(__x86_64__)
@@ -96,15 +94,15 @@ __attribute__((target("avx512f,avx512vl,avx512bw,avx512vpopcntdq"))) void census
     int width, int x0, int x1, int nd, uint8_t* row) {
   censusCostKernel(mode, cmax, left, bits, high, rank, width, x0, x1, nd, row);
 }
-const CostKernel kCostKernel =
-    __builtin_cpu_supports("avx512vpopcntdq") ? censusCostKernelVectorPopcount : censusCostKernelPortable;
+const CostKernel kCostKernel = __builtin_cpu_supports("avx512vpopcntdq") ? censusCostKernelVectorPopcount
+                                                                         : censusCostKernelPortable;
 #else
 const CostKernel kCostKernel = censusCostKernelPortable;
 #endif
 
 // sad+rt: eq. (2) with alpha = 0.2, the SAD mean rescaled to the rank range.
-void sadRtVolume(const std::vector<Census>& cl, const std::vector<Census>& cr,
-                 const std::vector<cv::Mat>& sadMean, CensusWindow census, CostVolume& vol) {
+void sadRtVolume(const std::vector<Census>& cl, const std::vector<Census>& cr, const std::vector<cv::Mat>& sadMean,
+                 CensusWindow census, CostVolume& vol) {
   const int bits = censusShape(census).bits;
   parallelFor(vol.height, [&](int y0, int y1) {
     for (int y = y0; y < y1; ++y) {
@@ -132,8 +130,8 @@ std::vector<cv::Mat> sadMeans(const cv::Mat& gl, const cv::Mat& gr, int disparit
       for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
           const int ad = x - d >= 0 ? std::abs(int(gl.at<uint8_t>(y, x)) - int(gr.at<uint8_t>(y, x - d))) : 0;
-          integral.at<int>(y + 1, x + 1) =
-              ad + integral.at<int>(y, x + 1) + integral.at<int>(y + 1, x) - integral.at<int>(y, x);
+          integral.at<int>(y + 1, x + 1) = ad + integral.at<int>(y, x + 1) + integral.at<int>(y + 1, x) -
+                                           integral.at<int>(y, x);
         }
       cv::Mat mean(h, w, CV_8UC1, cv::Scalar(255));
       for (int y = 0; y < h; ++y)
@@ -201,19 +199,19 @@ void censusCostRow(CostMode mode, CensusWindow census, const Census* left, const
     high[width - 1 - x] = right[x].high;
     rank[width - 1 - x] = uint8_t(right[x].rank());
   }
-  kCostKernel(mode, maxCost(mode, census), left, bits.data(), wide ? high.data() : nullptr, rank.data(), width, x0,
-              x1, nd, row);
+  kCostKernel(mode, maxCost(mode, census), left, bits.data(), wide ? high.data() : nullptr, rank.data(), width, x0, x1,
+              nd, row);
 }
 
-void addAdTerm(const cv::Mat& gl, const cv::Mat& gr, int y, int x0, int x1, int nd, int weight, int cap,
-               uint8_t* row) {
+void addAdTerm(const cv::Mat& gl, const cv::Mat& gr, int y, int x0, int x1, int nd, int weight, int cap, uint8_t* row) {
   const uint8_t* left = gl.ptr<uint8_t>(y);
   const uint8_t* right = gr.ptr<uint8_t>(y);
   const int largest = (weight * cap) >> kAdShift;
   for (int x = x0; x < x1; ++x) {
     uint8_t* c = row + size_t(x) * nd;
     for (int d = 0; d < nd; ++d) {
-      const int term = x - d < 0 ? largest : (weight * std::min(std::abs(int(left[x]) - int(right[x - d])), cap)) >> kAdShift;
+      const int term = x - d < 0 ? largest
+                                 : (weight * std::min(std::abs(int(left[x]) - int(right[x - d])), cap)) >> kAdShift;
       c[d] = uint8_t(c[d] + term);  // <= costLimit(census) <= 255 (Params::validate)
     }
   }
@@ -240,8 +238,7 @@ CostVolume computeCost(const cv::Mat& gl, const cv::Mat& gr, CostMode mode, int 
   parallelFor(gl.rows, [&](int y0, int y1) {
     for (int y = y0; y < y1; ++y) {
       const size_t first = size_t(y) * gl.cols;
-      censusCostRow(mode, census, cl.data() + first, cr.data() + first, gl.cols, 0, gl.cols, disparities,
-                    vol.at(0, y));
+      censusCostRow(mode, census, cl.data() + first, cr.data() + first, gl.cols, 0, gl.cols, disparities, vol.at(0, y));
     }
   });
   return vol;

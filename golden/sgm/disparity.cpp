@@ -93,8 +93,7 @@ DisparityMap selectDisparity(const PathVolume& s, const Params& params) {
   DisparityMap out{cv::Mat(s.height, s.width, CV_16UC1), cv::Mat(s.height, s.width, CV_8UC1)};
   parallelFor(s.height, [&](int y0, int y1) {
     RowSelector selector(s.width, s.depth, params);
-    for (int y = y0; y < y1; ++y)
-      selector.select(s.at(0, y), out.disp.ptr<uint16_t>(y), out.valid.ptr<uint8_t>(y));
+    for (int y = y0; y < y1; ++y) selector.select(s.at(0, y), out.disp.ptr<uint16_t>(y), out.valid.ptr<uint8_t>(y));
   });
   return out;
 }

@@ -87,8 +87,14 @@ std::optional<std::pair<long, long>> announcedSize(const std::string& b) {
     for (size_t at = 2; at + 4 <= n;) {
       if (uint8_t(b[at]) != 0xff) return std::nullopt;
       const int marker = uint8_t(b[at + 1]);
-      if (marker == 0xff) { ++at; continue; }                      // fill byte
-      if (marker == 0x01 || (marker >= 0xd0 && marker <= 0xd8)) { at += 2; continue; }  // no length
+      if (marker == 0xff) {
+        ++at;
+        continue;
+      }  // fill byte
+      if (marker == 0x01 || (marker >= 0xd0 && marker <= 0xd8)) {
+        at += 2;
+        continue;
+      }  // no length
       const bool frame = marker >= 0xc0 && marker <= 0xcf && marker != 0xc4 && marker != 0xc8 && marker != 0xcc;
       if (frame && at + 9 <= n) return std::make_pair(long(bigEndian(b, at + 7, 2)), long(bigEndian(b, at + 5, 2)));
       if (marker == 0xda || marker == 0xd9) return std::nullopt;  // scan or end before a frame header
@@ -134,8 +140,14 @@ bool jpegWithoutEnd(const std::string& b) {
   for (size_t at = 2; at + 4 <= b.size();) {
     if (uint8_t(b[at]) != 0xff) return false;  // broken marker structure: the decoder judges
     const int marker = uint8_t(b[at + 1]);
-    if (marker == 0xff) { ++at; continue; }
-    if (marker == 0x01 || (marker >= 0xd0 && marker <= 0xd8)) { at += 2; continue; }
+    if (marker == 0xff) {
+      ++at;
+      continue;
+    }
+    if (marker == 0x01 || (marker >= 0xd0 && marker <= 0xd8)) {
+      at += 2;
+      continue;
+    }
     if (marker == 0xd9) return false;
     if (marker == 0xda) return b.find("\xff\xd9", at + 2) == std::string::npos;
     at += 2 + bigEndian(b, at + 2, 2);
@@ -145,9 +157,8 @@ bool jpegWithoutEnd(const std::string& b) {
 
 void checkImageSize(const std::string& path, long w, long h) {
   if (w > kMaxImageSide || h > kMaxImageSide || w * h > kMaxImagePixels)
-    throw Error("image '" + path + "' is " + std::to_string(w) + "x" + std::to_string(h) +
-                ": too large (at most " + std::to_string(kMaxImageSide) + " px a side and " +
-                std::to_string(kMaxImagePixels) + " pixels)");
+    throw Error("image '" + path + "' is " + std::to_string(w) + "x" + std::to_string(h) + ": too large (at most " +
+                std::to_string(kMaxImageSide) + " px a side and " + std::to_string(kMaxImagePixels) + " pixels)");
 }
 
 std::string readBytes(const std::string& path) {
@@ -160,8 +171,8 @@ std::string readBytes(const std::string& path) {
   if (ec) throw Error("cannot read '" + path + "': " + ec.message());
   if (size == 0) throw Error("cannot read '" + path + "': file is empty");
   if (size > uintmax_t(kMaxImageFileBytes))
-    throw Error("cannot read '" + path + "': file of " + std::to_string(size) + " bytes is too large for an image (at most " +
-                std::to_string(kMaxImageFileBytes) + ")");
+    throw Error("cannot read '" + path + "': file of " + std::to_string(size) +
+                " bytes is too large for an image (at most " + std::to_string(kMaxImageFileBytes) + ")");
   std::ifstream in(path, std::ios::binary);
   std::string bytes(size_t(size), '\0');
   if (!in || !in.read(bytes.data(), std::streamsize(bytes.size())))
@@ -211,8 +222,7 @@ cv::Mat decode(const std::string& path) {
 }  // namespace
 
 cv::Mat toGray(const cv::Mat& image) {
-  if (image.depth() != CV_8U)
-    throw Error("unsupported image depth (8-bit gray or colour required)");
+  if (image.depth() != CV_8U) throw Error("unsupported image depth (8-bit gray or colour required)");
   if (image.channels() == 1) return image.clone();
   if (image.channels() != 3)
     throw Error("unsupported image with " + std::to_string(image.channels()) +
@@ -246,8 +256,7 @@ cv::Mat readSingleChannel(const std::string& path) {
   const cv::Mat image = decode(path);
   if (image.channels() != 1 || (image.depth() != CV_8U && image.depth() != CV_16U))
     throw Error("unsupported image '" + path + "': " + std::to_string(image.channels()) + " channel(s) of " +
-                describeDepth(image.depth()) +
-                " samples (one 8- or 16-bit channel required)");
+                describeDepth(image.depth()) + " samples (one 8- or 16-bit channel required)");
   return image;
 }
 

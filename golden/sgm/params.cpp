@@ -14,12 +14,9 @@ struct ModeInfo {
   bool hardware;
 };
 constexpr ModeInfo kModes[] = {
-    {CostMode::kRt, "rt", 1, 0, true},
-    {CostMode::kRsad, "rsad", 1, 0, true},
-    {CostMode::kUnified, "unified", 2, 0, true},
-    {CostMode::kSad, "sad", 0, 255, false},
-    {CostMode::kBt, "bt", 0, 255, false},
-    {CostMode::kSadRt, "sad+rt", 1, 0, false},
+    {CostMode::kRt, "rt", 1, 0, true},           {CostMode::kRsad, "rsad", 1, 0, true},
+    {CostMode::kUnified, "unified", 2, 0, true}, {CostMode::kSad, "sad", 0, 255, false},
+    {CostMode::kBt, "bt", 0, 255, false},        {CostMode::kSadRt, "sad+rt", 1, 0, false},
 };
 
 const ModeInfo& info(CostMode mode) {
@@ -64,9 +61,7 @@ P2Mode parseP2Mode(const std::string& name) {
   throw Error("unknown P2 mode '" + name + "' (expected knee or paper)");
 }
 
-const char* pathWeightingName(PathWeighting weighting) {
-  return weighting == PathWeighting::kEqual ? "equal" : "3232";
-}
+const char* pathWeightingName(PathWeighting weighting) { return weighting == PathWeighting::kEqual ? "equal" : "3232"; }
 PathWeighting parsePathWeighting(const std::string& name) {
   if (name == "3232" || name == "3,2,3,2") return PathWeighting::k3232;
   if (name == "equal") return PathWeighting::kEqual;
@@ -75,12 +70,11 @@ PathWeighting parsePathWeighting(const std::string& name) {
 
 bool Params::operator==(const Params& o) const {
   return disparities == o.disparities && p1 == o.p1 && p2 == o.p2 && mode == o.mode && subpixel == o.subpixel &&
-         lrTolerance == o.lrTolerance && fill == o.fill && snap == o.snap && median == o.median &&
-         census == o.census && p2Mode == o.p2Mode && weights == o.weights && rightPathWeight == o.rightPathWeight &&
-         rightPathBlock == o.rightPathBlock &&
-         uniqueness == o.uniqueness && adWeight == o.adWeight && adCap == o.adCap && linearSubpixel == o.linearSubpixel &&
-         mgm == o.mgm && medianGate == o.medianGate && p1PathPercent == o.p1PathPercent && snapEdge == o.snapEdge &&
-         edgeReset == o.edgeReset;
+         lrTolerance == o.lrTolerance && fill == o.fill && snap == o.snap && median == o.median && census == o.census &&
+         p2Mode == o.p2Mode && weights == o.weights && rightPathWeight == o.rightPathWeight &&
+         rightPathBlock == o.rightPathBlock && uniqueness == o.uniqueness && adWeight == o.adWeight &&
+         adCap == o.adCap && linearSubpixel == o.linearSubpixel && mgm == o.mgm && medianGate == o.medianGate &&
+         p1PathPercent == o.p1PathPercent && snapEdge == o.snapEdge && edgeReset == o.edgeReset;
 }
 
 const std::vector<std::string>& presetNames() {
@@ -130,9 +124,9 @@ std::string presetName(const Params& params) {
 }
 
 Params buildDefaults(const BuildLevers& build, int disparities) {
-  Params p = presetParams(build.census9x9 ? "paper"
+  Params p = presetParams(build.census9x9                                                           ? "paper"
                           : build.rightBlock && build.uniqueness && build.adTerm && build.edgeReset ? "default"
-                                                                                 : "four-path");
+                                                                                                    : "four-path");
   if (p.rightPathWeight) p.rightPathBlock = build.rightBlock;
   p.disparities = disparities;
   return p;
@@ -166,11 +160,13 @@ void Params::validate() const {
     throw Error("right-path block " + std::to_string(rightPathBlock) + " out of range 0.." +
                 std::to_string(kMaxRightPathBlock));
   for (int path = 0; path <= kPathCount; ++path)
-    if (p1PathPercent[size_t(path)] < kMinP1PathPercent || p1PathPercent[size_t(path)] > kMaxP1PathPercent || pathP1(path) > p2)
-      throw Error("P1 of path " + std::to_string(path) + " (" + std::to_string(p1PathPercent[size_t(path)]) + " % of P1=" +
-                  std::to_string(p1) + ") out of range " + std::to_string(kMinP1PathPercent) + ".." +
+    if (p1PathPercent[size_t(path)] < kMinP1PathPercent || p1PathPercent[size_t(path)] > kMaxP1PathPercent ||
+        pathP1(path) > p2)
+      throw Error("P1 of path " + std::to_string(path) + " (" + std::to_string(p1PathPercent[size_t(path)]) +
+                  " % of P1=" + std::to_string(p1) + ") out of range " + std::to_string(kMinP1PathPercent) + ".." +
                   std::to_string(kMaxP1PathPercent) + " % and 0..P2'=" + std::to_string(p2));
-  if (medianGate < 0 || medianGate > 255) throw Error("median gate " + std::to_string(medianGate) + " out of range 0..255");
+  if (medianGate < 0 || medianGate > 255)
+    throw Error("median gate " + std::to_string(medianGate) + " out of range 0..255");
   if (snapEdge < 0 || snapEdge > 255) throw Error("snap edge " + std::to_string(snapEdge) + " out of range 0..255");
   if (edgeReset.threshold < 0 || edgeReset.threshold > 255)
     throw Error("edge reset " + std::to_string(edgeReset.threshold) + " out of range 0..255");
@@ -179,11 +175,14 @@ void Params::validate() const {
                 std::to_string(kMaxEdgeResetLength));
   for (const int on : edgeReset.paths)
     if (on != 0 && on != 1) throw Error("edge reset paths expect 0 or 1 each, got " + std::to_string(on));
-  if (edgeReset.threshold && mgm) throw Error("the path restart at strong edges (--edge-reset, on by default) does not combine with --mgm: give --edge-reset 0");
-  if (uniqueness < 0 || uniqueness > 99) throw Error("uniqueness " + std::to_string(uniqueness) + " out of range 0..99");
+  if (edgeReset.threshold && mgm)
+    throw Error(
+        "the path restart at strong edges (--edge-reset, on by default) does not combine with --mgm: give --edge-reset 0");
+  if (uniqueness < 0 || uniqueness > 99)
+    throw Error("uniqueness " + std::to_string(uniqueness) + " out of range 0..99");
   if (adWeight < 0 || adWeight > kMaxAdWeight || adCap < 0 || adCap > kMaxAdCap)
-    throw Error("AD term weight " + std::to_string(adWeight) + " / cap " + std::to_string(adCap) +
-                " out of range 0.." + std::to_string(kMaxAdWeight) + " / 0.." + std::to_string(kMaxAdCap));
+    throw Error("AD term weight " + std::to_string(adWeight) + " / cap " + std::to_string(adCap) + " out of range 0.." +
+                std::to_string(kMaxAdWeight) + " / 0.." + std::to_string(kMaxAdCap));
   if (adWeight && !isHardwareMode(mode)) throw Error("the AD term (--ad-weight) needs a census cost mode");
   if (adWeight && adCap > largestAdCap(mode, census, adWeight))
     throw Error("AD term weight " + std::to_string(adWeight) + " x cap " + std::to_string(adCap) + " makes " +
@@ -193,8 +192,7 @@ void Params::validate() const {
     throw Error("right-path weight " + std::to_string(rightPathWeight) + " with P2'=" + std::to_string(p2) +
                 " overflows the 16-bit S");
   if (lrTolerance > disparities)
-    throw Error("LR tolerance " + std::to_string(lrTolerance) + " exceeds D=" +
-                std::to_string(disparities));
+    throw Error("LR tolerance " + std::to_string(lrTolerance) + " exceeds D=" + std::to_string(disparities));
 }
 
 Params defaultParams(CostMode mode) {

@@ -25,19 +25,19 @@ struct CensusShape {
 constexpr CensusShape censusShape(CensusWindow window) {
   return window == CensusWindow::k9x9 ? CensusShape{4, 4, 9, 9, 80} : CensusShape{4, 2, 9, 5, 44};
 }
-constexpr int kMaxCensusBits = 80;                // the 9x9 window
-const char* censusWindowName(CensusWindow window);  // "9x5", "9x9"
+constexpr int kMaxCensusBits = 80;                        // the 9x9 window
+const char* censusWindowName(CensusWindow window);        // "9x5", "9x9"
 CensusWindow parseCensusWindow(const std::string& name);  // throws Error on unknown names
 
 // P2 adaptation (section 4): the knee max(P1, 4 P2' / (dI + 4)) (ours) or the paper's
 // max(P1, P2' / dI) with P2' at dI = 0.
 enum class P2Mode { kKnee, kPaper };
-const char* p2ModeName(P2Mode mode);              // "knee", "paper"
+const char* p2ModeName(P2Mode mode);  // "knee", "paper"
 P2Mode parseP2Mode(const std::string& name);
 
 // Path weights of S (section 5): 3,2,3,2 (ours) or equal (the paper's plain sum).
 enum class PathWeighting { k3232, kEqual };
-const char* pathWeightingName(PathWeighting weighting);  // "3232", "equal"
+const char* pathWeightingName(PathWeighting weighting);     // "3232", "equal"
 PathWeighting parsePathWeighting(const std::string& name);  // "3232", "3,2,3,2" or "equal"
 
 // Matching-cost modes. The first three exist in the RTL; the others are
@@ -45,7 +45,7 @@ PathWeighting parsePathWeighting(const std::string& name);  // "3232", "3,2,3,2"
 enum class CostMode { kRt, kRsad, kUnified, kSad, kBt, kSadRt };
 
 bool isHardwareMode(CostMode mode);
-const char* costModeName(CostMode mode);      // "rt", "rsad", "unified", "sad", "bt", "sad+rt"
+const char* costModeName(CostMode mode);          // "rt", "rsad", "unified", "sad", "bt", "sad+rt"
 CostMode parseCostMode(const std::string& name);  // throws Error on unknown names
 std::vector<CostMode> allCostModes();
 
@@ -74,18 +74,20 @@ constexpr int kPathCount = 4;                     // 0, 45, 90, 135 degrees
 // S = sum of w[r] Lr. 3,2,3,2: the horizontal and vertical paths count 3, the diagonals 2.
 constexpr int kPathWeights[kPathCount] = {3, 2, 3, 2};  // 0, 45, 90, 135 degrees
 constexpr int kPathWeightsEqual[kPathCount] = {1, 1, 1, 1};
-constexpr int kPathWeightSum = 10;                // the larger sum of the two weightings
+constexpr int kPathWeightSum = 10;  // the larger sum of the two weightings
 inline const int* pathWeights(PathWeighting weighting) {
   return weighting == PathWeighting::kEqual ? kPathWeightsEqual : kPathWeights;
 }
 constexpr int kMaxPenalty = 6000;
-constexpr int kMaxRightPathWeight = 8;            // fifth path's weight (Params::rightPathWeight; the core's 4-bit field, 9 .. 15 out of range)
-constexpr int kMaxRightPathBlock = 4096;          // fifth path's block (Params::rightPathBlock; the core: sgm_top RIGHT_BLOCK)
-constexpr int kMaxAdWeight = 15;                  // AD term weight (Params::adWeight, 4 bits in the RTL)
+constexpr int kMaxRightPathWeight =
+    8;  // fifth path's weight (Params::rightPathWeight; the core's 4-bit field, 9 .. 15 out of range)
+constexpr int kMaxRightPathBlock = 4096;  // fifth path's block (Params::rightPathBlock; the core: sgm_top RIGHT_BLOCK)
+constexpr int kMaxAdWeight = 15;          // AD term weight (Params::adWeight, 4 bits in the RTL)
 constexpr int kMinP1PathPercent = 25, kMaxP1PathPercent = 400;  // golden-only per-path P1 (Params::p1PathPercent)
-constexpr int kMaxEdgeResetLength = 15;           // the path restart (Params::edgeReset.length)
-constexpr int kMaxAdCap = 255;                    // AD term truncation (Params::adCap, 8 bits)
-constexpr int kAdShift = 3;                       // AD term = adWeight * min(AD, adCap) >> kAdShift                 // keeps kPathWeightSum * (Cmax + P2') < 2^16
+constexpr int kMaxEdgeResetLength = 15;                         // the path restart (Params::edgeReset.length)
+constexpr int kMaxAdCap = 255;                                  // AD term truncation (Params::adCap, 8 bits)
+constexpr int kAdShift =
+    3;  // AD term = adWeight * min(AD, adCap) >> kAdShift                 // keeps kPathWeightSum * (Cmax + P2') < 2^16
 
 // The path restart at strong edges (issue 15, docs/algorithm.md section 12; in the core
 // with sgm_top EDGE_RESET = 1, run-time T, R and flags): a path
@@ -99,7 +101,9 @@ struct EdgeReset {
   int length = 5;     // steps restarted from the edge on, 1 .. kMaxEdgeResetLength
   std::array<int, kPathCount + 1> paths = {1, 1, 1, 1, 1};  // 1 = that path restarts, 0 = it does not
   bool on(int path) const { return threshold > 0 && paths[size_t(path)] != 0; }
-  bool operator==(const EdgeReset& o) const { return threshold == o.threshold && length == o.length && paths == o.paths; }
+  bool operator==(const EdgeReset& o) const {
+    return threshold == o.threshold && length == o.length && paths == o.paths;
+  }
   bool operator!=(const EdgeReset& o) const { return !(*this == o); }
 };
 
@@ -108,22 +112,22 @@ struct EdgeReset {
 // the AD term, the uniqueness ratio, the path restart at strong edges, no edge snapping. The preset "four-path" is the
 // former defaults, for builds without these levers (sgm_top RIGHT_BLOCK = 0, ...).
 struct Params {
-  int disparities = 64;        // D: candidates 0 .. D-1
-  int p1 = 24;                 // small-change penalty
-  int p2 = 200;                // P2' of the adaptive P2r = max(P1, 4 P2' / (|dI| + 4))
-  CostMode mode = CostMode::kRsad;  // the hardware default (measured best)
-  bool subpixel = true;        // quadratic refinement to 1/16 px
-  int lrTolerance = 1;         // left-right check tolerance in px; < 0 disables it
-  bool fill = true;            // fill invalid pixels along the row from the background side
-  bool snap = false;           // move disparity drops onto the nearby intensity edge
-  bool median = true;          // 5x5 median over valid pixels
-  CensusWindow census = CensusWindow::k9x5;    // census window (section 2)
-  P2Mode p2Mode = P2Mode::kKnee;               // P2 adaptation (section 4)
+  int disparities = 64;                          // D: candidates 0 .. D-1
+  int p1 = 24;                                   // small-change penalty
+  int p2 = 200;                                  // P2' of the adaptive P2r = max(P1, 4 P2' / (|dI| + 4))
+  CostMode mode = CostMode::kRsad;               // the hardware default (measured best)
+  bool subpixel = true;                          // quadratic refinement to 1/16 px
+  int lrTolerance = 1;                           // left-right check tolerance in px; < 0 disables it
+  bool fill = true;                              // fill invalid pixels along the row from the background side
+  bool snap = false;                             // move disparity drops onto the nearby intensity edge
+  bool median = true;                            // 5x5 median over valid pixels
+  CensusWindow census = CensusWindow::k9x5;      // census window (section 2)
+  P2Mode p2Mode = P2Mode::kKnee;                 // P2 adaptation (section 4)
   PathWeighting weights = PathWeighting::k3232;  // path weights of S (section 5)
-  int uniqueness = 15;         // uniqueness ratio U (%, section 7): invalid when some S(k), |k - d*| > 1,
-                               // has S(k) (100 - U) < 100 S(d*); 0 = off
-  int adWeight = 3;            // AD term added to C (section 3): adWeight * min(|IL(x) - IR(x-d)|, adCap) >> 3; 0 = off
-  int adCap = 20;              // the AD term's truncation (gray levels)
+  int uniqueness = 15;  // uniqueness ratio U (%, section 7): invalid when some S(k), |k - d*| > 1,
+                        // has S(k) (100 - U) < 100 S(d*); 0 = off
+  int adWeight = 3;     // AD term added to C (section 3): adWeight * min(|IL(x) - IR(x-d)|, adCap) >> 3; 0 = off
+  int adCap = 20;       // the AD term's truncation (gray levels)
 
   // The fifth path, 0 degrees from the right (docs/algorithm.md section 5): in blocks it
   // is in the core (sgm_top RIGHT_BLOCK = rightPathBlock, run-time weight), over the
@@ -169,7 +173,7 @@ Params defaultParams(CostMode mode);
 // ratio, P1 18, P2' 100, edge snapping; what a build without those levers runs) and
 // "paper", the paper's system: 9x9 census, unified cost, P2' / dI, equal weights, LR
 // check, sub-pixel, 5x5 median, no filling, no snapping (docs/algorithm.md, section 11).
-Params presetParams(const std::string& name);   // throws Error on unknown names
+Params presetParams(const std::string& name);  // throws Error on unknown names
 const std::vector<std::string>& presetNames();
 // The preset's name when params equal it (D aside), "custom" otherwise.
 std::string presetName(const Params& params);

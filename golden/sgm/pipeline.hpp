@@ -12,12 +12,12 @@ namespace sgm {
 
 // Intermediate results, for tests and for the harness's per-stage comparison.
 struct PipelineStages {
-  CostVolume cost;         // C(p, d)
-  PathVolume aggregated;   // S(p, d)
-  DisparityMap selected;   // after WTA, sub-pixel and LR check
-  DisparityMap filled;     // after hole filling (== selected when filling is off)
-  DisparityMap snapped;    // after edge snapping (== filled when snapping is off)
-  DisparityMap result;     // after the median (== snapped when the median is off)
+  CostVolume cost;        // C(p, d)
+  PathVolume aggregated;  // S(p, d)
+  DisparityMap selected;  // after WTA, sub-pixel and LR check
+  DisparityMap filled;    // after hole filling (== selected when filling is off)
+  DisparityMap snapped;   // after edge snapping (== filled when snapping is off)
+  DisparityMap result;    // after the median (== snapped when the median is off)
 };
 
 // Throws Error for bad input: size mismatch, non-gray images, images smaller

@@ -20,7 +20,7 @@ struct Volume {
   const T* at(int x, int y) const { return data.data() + (size_t(y) * width + x) * depth; }
 };
 
-using CostVolume = Volume<uint8_t>;    // C(p, d), at most 255
-using PathVolume = Volume<uint16_t>;   // Lr(p, d) or S(p, d)
+using CostVolume = Volume<uint8_t>;   // C(p, d), at most 255
+using PathVolume = Volume<uint16_t>;  // Lr(p, d) or S(p, d)
 
 }  // namespace sgm

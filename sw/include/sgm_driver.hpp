@@ -32,7 +32,7 @@ struct Identity {
   uint32_t disparities = 0, maxWidth = 0, maxHeight = 0;
   uint32_t censusWidth = 0, censusHeight = 0;
   uint32_t minWidth = 0, lanes = 0;  // narrowest frame width, row lanes
-  uint32_t features = 0;  // SGM_FEATURES_* bits: the run-time levers the build has
+  uint32_t features = 0;             // SGM_FEATURES_* bits: the run-time levers the build has
 };
 
 // One frame's run-time configuration (the fields of FRAME_SIZE, PENALTY, CONFIG, EDGE_RESET).
@@ -78,7 +78,7 @@ struct FrameConfig {
 };
 
 struct Errors {
-  uint32_t sticky = 0;                 // SGM_ERROR_* bits (SGM_ERROR_LAST_EARLY ...)
+  uint32_t sticky = 0;                    // SGM_ERROR_* bits (SGM_ERROR_LAST_EARLY ...)
   uint32_t counts[SGM_ERROR_KINDS] = {};  // events per kind (saturate at 255)
 };
 

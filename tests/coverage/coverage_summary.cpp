@@ -37,9 +37,7 @@ struct Point {
 struct Totals {
   long points = 0, covered = 0, waived = 0;
   double percent() const { return points ? 100.0 * double(covered) / double(points) : 100.0; }
-  double percentWithWaivers() const {
-    return points ? 100.0 * double(covered + waived) / double(points) : 100.0;
-  }
+  double percentWithWaivers() const { return points ? 100.0 * double(covered + waived) / double(points) : 100.0; }
 };
 
 [[noreturn]] void fail(const std::string& message) {
@@ -112,10 +110,14 @@ int main(int argc, char** argv) {
   std::vector<std::string> inputs;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--out" && i + 1 < argc) out = argv[++i];
-    else if (a == "--waivers" && i + 1 < argc) waiverFile = argv[++i];
-    else if (a.rfind("--", 0) == 0) fail("unknown option '" + a + "'");
-    else inputs.push_back(a);
+    if (a == "--out" && i + 1 < argc)
+      out = argv[++i];
+    else if (a == "--waivers" && i + 1 < argc)
+      waiverFile = argv[++i];
+    else if (a.rfind("--", 0) == 0)
+      fail("unknown option '" + a + "'");
+    else
+      inputs.push_back(a);
   }
   if (out.empty() || inputs.empty()) fail("usage: coverage-summary --out DIR [--waivers FILE] DATA.dat...");
 
@@ -191,19 +193,21 @@ int main(int argc, char** argv) {
       assignOnly += (assignOnly.empty() ? "" : ", ") + file;
   }
   md << "# RTL coverage\n\nLine coverage: " << line.covered << " of " << line.points << " points, **"
-     << percent(line.percent()) << " %** (" << percent(line.percentWithWaivers()) << " % counting the "
-     << line.waived << " waived unreachable points). Toggle coverage: " << toggle.covered << " of " << toggle.points
-     << " signal bits of the source, **" << percent(toggle.percent()) << " %**; counted per instance (every PE, path and "
-        "stage separately): " << toggleInstances.covered << " of " << toggleInstances.points << ", **"
-     << percent(toggleInstances.percent()) << " %**.\n\n"
+     << percent(line.percent()) << " %** (" << percent(line.percentWithWaivers()) << " % counting the " << line.waived
+     << " waived unreachable points). Toggle coverage: " << toggle.covered << " of " << toggle.points
+     << " signal bits of the source, **" << percent(toggle.percent())
+     << " %**; counted per instance (every PE, path and "
+        "stage separately): "
+     << toggleInstances.covered << " of " << toggleInstances.points << ", **" << percent(toggleInstances.percent())
+     << " %**.\n\n"
      << "A point is covered when any instance in any run reached it at least once. Line points are Verilator's "
         "v_line and v_branch points (statements, both arms of each if/case); toggle points are signal bits, covered when the bit rose and fell (changed at least twice). Modules made only of continuous assignments have toggle points but no line points"
      << (assignOnly.empty() ? std::string() : " (here: " + assignOnly + ")") << ".\n\n"
      << "| file | line points | covered | % | toggle bits | toggled | % |\n|---|---|---|---|---|---|---|\n";
   for (const auto& [file, t] : lineByFile) {
     const Totals& g = toggleByFile[file];
-    md << "| " << file << " | " << t.points << " | " << t.covered << " | " << percent(t.percent()) << " | "
-       << g.points << " | " << g.covered << " | " << percent(g.percent()) << " |\n";
+    md << "| " << file << " | " << t.points << " | " << t.covered << " | " << percent(t.percent()) << " | " << g.points
+       << " | " << g.covered << " | " << percent(g.percent()) << " |\n";
   }
   md << "\n## Uncovered line points\n\n";
   if (uncovered.empty()) md << "None.\n";
@@ -216,9 +220,10 @@ int main(int argc, char** argv) {
   std::ostringstream js;
   js << "{\n  \"line\": {\"points\": " << line.points << ", \"covered\": " << line.covered
      << ", \"waived\": " << line.waived << ", \"percent\": " << percent(line.percent())
-     << ", \"percent_with_waivers\": " << percent(line.percentWithWaivers()) << "},\n  \"toggle\": {\"points\": "
-     << toggle.points << ", \"covered\": " << toggle.covered << ", \"percent\": " << percent(toggle.percent())
-     << ", \"instance_points\": " << toggleInstances.points << ", \"instance_covered\": " << toggleInstances.covered
+     << ", \"percent_with_waivers\": " << percent(line.percentWithWaivers())
+     << "},\n  \"toggle\": {\"points\": " << toggle.points << ", \"covered\": " << toggle.covered
+     << ", \"percent\": " << percent(toggle.percent()) << ", \"instance_points\": " << toggleInstances.points
+     << ", \"instance_covered\": " << toggleInstances.covered
      << ", \"instance_percent\": " << percent(toggleInstances.percent()) << "},\n  \"files\": {";
   bool first = true;
   for (const auto& [file, t] : lineByFile) {

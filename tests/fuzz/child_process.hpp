@@ -21,8 +21,8 @@
 namespace sgm::test {
 
 struct ChildResult {
-  int rc = -1;           // exit status, -1 when killed by a signal or timed out
-  int signal = 0;        // the signal that ended it, if any
+  int rc = -1;            // exit status, -1 when killed by a signal or timed out
+  int signal = 0;         // the signal that ended it, if any
   bool timedOut = false;  // killed after the time limit
   std::string out, err;
 };

@@ -105,21 +105,65 @@ std::vector<SeedFile> makeSeeds() {
 
 const std::vector<std::string>& optionNames() {  // of the three tools, plus strangers
   static const std::vector<std::string> names = {
-      "d",    "p1",   "p2",     "mode",     "subpixel", "lr",  "fill",  "snap",  "median", "out",    "left", "right",
-      "gt",   "gt-scale", "stall", "seed",  "frames",   "data", "delta", "scene",  "repeats", "help", "",
-      "bogus", "D",   "d=",    "census", "p2-mode",  "weights",    "preset"};
+      "d",       "p1",    "p2", "mode",     "subpixel", "lr",   "fill",   "snap",    "median",  "out",
+      "left",    "right", "gt", "gt-scale", "stall",    "seed", "frames", "data",    "delta",   "scene",
+      "repeats", "help",  "",   "bogus",    "D",        "d=",   "census", "p2-mode", "weights", "preset"};
   return names;
 }
 
 const std::vector<std::string>& absurdValues() {
-  static const std::vector<std::string> values = {
-      "",      "0",     "1",       "-1",       "2",          "7",          "8",   "9",
-      "16",    "64",    "255",     "256",      "257",        "6000",       "6001", "4294967295",
-      "4294967296", "99999999999999999999", "-99999999999999999999", "0.5", "0.95", "1e309", "-1e309",
-      "nan",   "inf",   "-0",      "0x10",     " 16",        "16 ",        "on",  "off",
-      "yes",   "rt",    "rsad",    "unified",  "sad",        "bt",         "sad+rt", "RT",
-      "9x9",   "9x5",   "paper",   "knee",     "equal",      "3,2,3,2",    "default",
-      "a\nb",  "--d",   "=",       "%s%n%s",   std::string(5000, '9'),     "\xff\xfe\x01"};
+  static const std::vector<std::string> values = {"",
+                                                  "0",
+                                                  "1",
+                                                  "-1",
+                                                  "2",
+                                                  "7",
+                                                  "8",
+                                                  "9",
+                                                  "16",
+                                                  "64",
+                                                  "255",
+                                                  "256",
+                                                  "257",
+                                                  "6000",
+                                                  "6001",
+                                                  "4294967295",
+                                                  "4294967296",
+                                                  "99999999999999999999",
+                                                  "-99999999999999999999",
+                                                  "0.5",
+                                                  "0.95",
+                                                  "1e309",
+                                                  "-1e309",
+                                                  "nan",
+                                                  "inf",
+                                                  "-0",
+                                                  "0x10",
+                                                  " 16",
+                                                  "16 ",
+                                                  "on",
+                                                  "off",
+                                                  "yes",
+                                                  "rt",
+                                                  "rsad",
+                                                  "unified",
+                                                  "sad",
+                                                  "bt",
+                                                  "sad+rt",
+                                                  "RT",
+                                                  "9x9",
+                                                  "9x5",
+                                                  "paper",
+                                                  "knee",
+                                                  "equal",
+                                                  "3,2,3,2",
+                                                  "default",
+                                                  "a\nb",
+                                                  "--d",
+                                                  "=",
+                                                  "%s%n%s",
+                                                  std::string(5000, '9'),
+                                                  "\xff\xfe\x01"};
   return values;
 }
 
@@ -217,9 +261,12 @@ class Fuzzer {
     const int count = int(below(rng, 9));
     for (int k = 0; k < count; ++k) {
       const uint64_t kind = below(rng, 10);
-      if (kind < 5) argvText.push_back("--" + pick(rng, optionNames()));
-      else if (kind < 6) argvText.push_back("--" + pick(rng, optionNames()) + "=" + pick(rng, absurdValues()));
-      else argvText.push_back(pick(rng, absurdValues()));
+      if (kind < 5)
+        argvText.push_back("--" + pick(rng, optionNames()));
+      else if (kind < 6)
+        argvText.push_back("--" + pick(rng, optionNames()) + "=" + pick(rng, absurdValues()));
+      else
+        argvText.push_back(pick(rng, absurdValues()));
     }
     std::set<std::string> valueOptions;
     for (const std::string& name : optionNames())
@@ -233,9 +280,12 @@ class Fuzzer {
       if (!problem.empty()) failures_.push_back({"args", i, problem});
     };
     std::unique_ptr<CliArgs> args;
-    check(cleanOutcome([&] { args = std::make_unique<CliArgs>(int(argvText.size()), argv.data(), valueOptions,
-                                                              std::set<std::string>{"help"}); },
-                       "", true));
+    check(cleanOutcome(
+        [&] {
+          args = std::make_unique<CliArgs>(int(argvText.size()), argv.data(), valueOptions,
+                                           std::set<std::string>{"help"});
+        },
+        "", true));
     if (args) {
       static const long bounds[][2] = {{-10, 10}, {0, 255}, {2, 256}, {0, 0xffffffffL}, {1, 100}};
       for (const std::string& name : optionNames()) {
@@ -273,7 +323,8 @@ class Fuzzer {
     const std::string left = inputs + "/left" + (ext.empty() ? ".png" : ext);
     test::writeBytes(left, bytes);
     std::vector<std::string> args;
-    const std::vector<std::string> pipelineOptions(CliArgs::pipelineOptions().begin(), CliArgs::pipelineOptions().end());
+    const std::vector<std::string> pipelineOptions(CliArgs::pipelineOptions().begin(),
+                                                   CliArgs::pipelineOptions().end());
     std::vector<std::string> names = pipelineOptions;
     if (tool == "sgm-golden") {
       args = {left, goodRight_};
@@ -288,9 +339,9 @@ class Fuzzer {
       if (args[0] != "bench") args.resize(3);
       if (args[0] == "pool") {
         args[1] = "--pool";
-        if (below(rng, 2)) test::writeBytes(scene + "/meta.txt", pick(rng, {"gt_scale: 4\nndisp: 16\nset: x\n",
-                                                                            "gt_scale: 4\nndisp: 1e9\n",
-                                                                            "gt_scale: 4\nset: a b\n"}));
+        if (below(rng, 2))
+          test::writeBytes(scene + "/meta.txt", pick(rng, {"gt_scale: 4\nndisp: 16\nset: x\n",
+                                                           "gt_scale: 4\nndisp: 1e9\n", "gt_scale: 4\nset: a b\n"}));
       }
       names.insert(names.end(), {"delta", "repeats", "half", "opencv"});
     } else {
@@ -304,8 +355,10 @@ class Fuzzer {
       if (name == "repeats" || name == "frames") value = std::to_string(below(rng, 4));  // keep runs short
       args.insert(args.end(), {"--" + name, value});
     }
-    args.insert(args.end(), {"--out", pick(rng, {"res", "res", "res", "res/sub", "", goodRight_ + "/res"})});  // the last under a file
-    if (tool == "sgm-eval" && args[0] == "run") args.resize(args.size() - 2);  // run writes nothing
+    args.insert(
+        args.end(),
+        {"--out", pick(rng, {"res", "res", "res", "res/sub", "", goodRight_ + "/res"})});  // the last under a file
+    if (tool == "sgm-eval" && args[0] == "run") args.resize(args.size() - 2);              // run writes nothing
 
     beginCase(tool.c_str(), i, seed_, left, timeout_ + 30);
     const test::ChildResult r = test::runChild(binary, args, work, dir_, timeout_);
@@ -368,7 +421,7 @@ class Fuzzer {
 int main(int argc, char** argv) {
   try {
     const CliArgs args(argc, argv, {"seed", "iters", "tool-runs", "bin", "sim", "only", "timeout"},
-                        {"help", "verbose"});
+                       {"help", "verbose"});
     if (args.has("help")) {
       std::cout << kUsage;
       return 0;

@@ -32,10 +32,9 @@ class Mutator {
   size_t position(size_t size) { return below(2) ? below(std::min<size_t>(size, 64)) : below(size); }
 
   uint32_t interestingValue() {
-    static const uint32_t values[] = {0,      1,          2,          7,          8,          9,     15,
-                                      16,     17,         255,        256,        16383,      16384, 16385,
-                                      0x7fff, 0x8000,     0xffff,     0x10000,    0x7fffffff, 0x80000000u,
-                                      0xffffffffu};
+    static const uint32_t values[] = {0,      1,      2,      7,       8,          9,           15,
+                                      16,     17,     255,    256,     16383,      16384,       16385,
+                                      0x7fff, 0x8000, 0xffff, 0x10000, 0x7fffffff, 0x80000000u, 0xffffffffu};
     return values[below(sizeof values / sizeof values[0])];
   }
 

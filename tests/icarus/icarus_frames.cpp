@@ -69,7 +69,8 @@ void write(const std::string& dir) {
     for (int y = 0; y < f.height; ++y)
       for (int x = 0; x < f.width; ++x) {
         const bool sof = x == 0 && y == 0, eol = x == f.width - 1;
-        std::snprintf(line, sizeof line, "%04x %d %d\n", left.at<uint8_t>(y, x) | right.at<uint8_t>(y, x) << 8, sof, eol);
+        std::snprintf(line, sizeof line, "%04x %d %d\n", left.at<uint8_t>(y, x) | right.at<uint8_t>(y, x) << 8, sof,
+                      eol);
         in << line;
         const int tdata = golden.valid.at<uint8_t>(y, x) << 15 | golden.disp.at<uint16_t>(y, x);
         std::snprintf(line, sizeof line, "%04x %d %d\n", tdata, sof, eol);

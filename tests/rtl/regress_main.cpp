@@ -33,13 +33,13 @@ const char* kUsage =
     "(default 500) were checked, or only case K. Frame heights go up to H (default 40).\n"
     "--xml writes a GoogleTest-style report (one test per case). Exit 1 when a case fails.\n";
 
-
 void writeXml(const std::string& path, const std::vector<std::pair<std::string, std::string>>& results) {
   long failures = 0;
   for (const auto& r : results) failures += !r.second.empty();
   const auto escape = [](const std::string& s) {
     std::string o;
-    for (const char ch : s) o += ch == '<' ? "&lt;" : ch == '>' ? "&gt;" : ch == '&' ? "&amp;" : ch == '"' ? "&quot;" : std::string(1, ch);
+    for (const char ch : s)
+      o += ch == '<' ? "&lt;" : ch == '>' ? "&gt;" : ch == '&' ? "&amp;" : ch == '"' ? "&quot;" : std::string(1, ch);
     return o;
   };
   const std::string tmp = path + ".tmp";
@@ -50,8 +50,10 @@ void writeXml(const std::string& path, const std::vector<std::pair<std::string, 
         << results.size() << "\" failures=\"" << failures << "\" disabled=\"0\" errors=\"0\">\n";
     for (const auto& [name, failure] : results) {
       xml << "    <testcase name=\"" << escape(name) << "\" classname=\"Regress\"";
-      if (failure.empty()) xml << " />\n";
-      else xml << ">\n      <failure message=\"" << escape(failure) << "\" />\n    </testcase>\n";
+      if (failure.empty())
+        xml << " />\n";
+      else
+        xml << ">\n      <failure message=\"" << escape(failure) << "\" />\n    </testcase>\n";
     }
     xml << "  </testsuite>\n</testsuites>\n";
     if (!xml) throw Error("cannot write " + path);
@@ -69,8 +71,9 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (!args.positional().empty()) throw Error("unexpected argument '" + args.positional()[0] + "' (see --help)");
-    const uint64_t master = args.has("seed") ? uint64_t(args.integer("seed", 0, 0, 0x7fffffffffffffffL))
-                                             : uint64_t(std::chrono::system_clock::now().time_since_epoch().count()) % 1000000007u;
+    const uint64_t master = args.has("seed")
+                                ? uint64_t(args.integer("seed", 0, 0, 0x7fffffffffffffffL))
+                                : uint64_t(std::chrono::system_clock::now().time_since_epoch().count()) % 1000000007u;
     const long frames = args.integer("frames", 500, 1, 100000000);
     const int maxHeight = int(args.integer("max-height", kDefaultMaxHeight, kMinHeight, 1024));
     const bool quiet = args.has("quiet");
@@ -99,8 +102,8 @@ int main(int argc, char** argv) {
       totals.sourceStalls.insert(c.sourceStalls);
       totals.sinkStalls.insert(c.sinkStalls);
       std::ostringstream line;
-      line << "case " << k << " (seed " << c.seed << "): " << c.kind << ", " << c.frames.size() << (c.frames.size() == 1 ? " frame, " : " frames, ")
-           << c.stallText;
+      line << "case " << k << " (seed " << c.seed << "): " << c.kind << ", " << c.frames.size()
+           << (c.frames.size() == 1 ? " frame, " : " frames, ") << c.stallText;
       results.push_back({"case" + std::to_string(k), failure});
       if (!failure.empty()) {
         ++totals.failed;
@@ -116,15 +119,16 @@ int main(int argc, char** argv) {
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::cout << "sgm-regress: " << totals.cases << " cases, " << totals.failed << " failed; " << totals.goodFrames
-              << " good frames bit-exact (" << totals.pixels << " pixels, " << totals.widths.size()
-              << " widths in " << kMinWidth << ".." << kMaxWidth << ", heights " << totals.minHeight << ".."
-              << totals.maxHeight << "), " << totals.malformed << " malformed frames flagged, " << totals.resets
+              << " good frames bit-exact (" << totals.pixels << " pixels, " << totals.widths.size() << " widths in "
+              << kMinWidth << ".." << kMaxWidth << ", heights " << totals.minHeight << ".." << totals.maxHeight << "), "
+              << totals.malformed << " malformed frames flagged, " << totals.resets
               << " resets mid-frame; mean bad-1.0 (non-occluded) vs the scenes' ground truth "
               << (totals.goodFrames ? totals.badNonocc / double(totals.goodFrames) : 0.0) << " %; "
               << totals.combinations.size()
               << " of 96 switch combinations (mode x sub-pixel x LR x fill x median x snap); stalls: source "
-              << totals.sourceStalls.size() << " of 5, sink " << totals.sinkStalls.size() << " of 5 profiles; case kinds "
-              << totals.kinds.size() << "; " << seconds << " s; master seed " << master << "\n";
+              << totals.sourceStalls.size() << " of 5, sink " << totals.sinkStalls.size()
+              << " of 5 profiles; case kinds " << totals.kinds.size() << "; " << seconds << " s; master seed " << master
+              << "\n";
     if (!xmlPath.empty()) writeXml(xmlPath, results);
     return totals.failed ? 1 : 0;
   } catch (const std::exception& e) {

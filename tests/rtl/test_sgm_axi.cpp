@@ -128,7 +128,8 @@ struct AxiCore {
     const std::vector<sgm::tb::FrameOutput> out = core.run(frames);
     for (size_t k = 0; k < frames.size(); ++k)
       EXPECT_EQ(sgm::tb::compareMaps(sgm::runPipeline(frames[k].left, frames[k].right, frames[k].params), out[k].map,
-                                     "sgm_axi output"), "")
+                                     "sgm_axi output"),
+                "")
           << what << ", frame " << k;
   }
   ~AxiCore() { EXPECT_EQ(bus.checker().finish(), "") << "AXI4-Lite protocol"; }
@@ -199,8 +200,8 @@ struct RegisterSpec {
 };
 
 // The build's census window (sgm_axi's CENSUS_H, passed to sgm_top).
-constexpr sgm::CensusShape kCensus =
-    sgm::censusShape(Rtl::CENSUS_H == 9 ? sgm::CensusWindow::k9x9 : sgm::CensusWindow::k9x5);
+constexpr sgm::CensusShape kCensus = sgm::censusShape(Rtl::CENSUS_H == 9 ? sgm::CensusWindow::k9x9
+                                                                         : sgm::CensusWindow::k9x5);
 
 // MIN_WIDTH of a one-lane build is max(D, 16) (sgm_top MIN_FRAME_WIDTH; the
 // fixture's builds have one lane). SizeFitsAgreesWithTheCore checks the value by
@@ -230,7 +231,7 @@ std::vector<RegisterSpec> registers() {
       {"LAST_SIZE", SGM_REG_LAST_SIZE, 0, 0},
       {"EDGE_RESET", SGM_REG_EDGE_RESET, kEdgeResetReset, SGM_EDGE_RESET_MASK},
       {"IRQ_ENABLE", SGM_REG_IRQ_ENABLE, 0, SGM_IRQ_ENABLE_MASK},
-      {"IRQ_STATUS", SGM_REG_IRQ_STATUS, 0, 0},    // W1C: its own test
+      {"IRQ_STATUS", SGM_REG_IRQ_STATUS, 0, 0},  // W1C: its own test
   };
 }
 
@@ -290,7 +291,8 @@ TEST(SgmAxi, FeaturesAgreeWithTheCore) {
   sgm::Params ad = defaults();
   ad.adWeight = 5, ad.adCap = 24;
   sgm::Params right = defaults();  // the fifth path in the build's blocks (any block when it has none)
-  right.rightPathWeight = 4, right.rightPathBlock = Rtl::RIGHT_BLOCK ? Rtl::RIGHT_BLOCK : 16, right.p1 = 24, right.p2 = 200;
+  right.rightPathWeight = 4, right.rightPathBlock = Rtl::RIGHT_BLOCK ? Rtl::RIGHT_BLOCK : 16, right.p1 = 24,
+  right.p2 = 200;
   sgm::Params restart = withBuildLevers(defaults());  // the path restart at strong edges
   restart.edgeReset = sgm::EdgeReset{30, 6, {1, 1, 0, 1, 1}};
   EXPECT_EQ(drv::Driver::rightBlock(id), uint32_t(Rtl::RIGHT_BLOCK));
@@ -395,9 +397,12 @@ TEST(SgmAxi, ConfigurationWrittenMidFrameActsFromTheNextFrame) {
   strict.lrTolerance = 0, strict.p1 = 5, strict.p2 = 30, strict.snap = false, strict.uniqueness = 99;
   sgm::Params unique = defaults();
   unique.uniqueness = 20;
-  const std::vector<FrameInput> frames = {scene(40, 14, 1, defaults()), scene(36, 12, 2, unified),
-                                          scene(48, 11, 3, rt), scene(33, 15, 4, withBuildLevers(strict)),
-                                          scene(38, 12, 6, withBuildLevers(unique)), scene(40, 10, 5, defaults().rawSgm())};
+  const std::vector<FrameInput> frames = {scene(40, 14, 1, defaults()),
+                                          scene(36, 12, 2, unified),
+                                          scene(48, 11, 3, rt),
+                                          scene(33, 15, 4, withBuildLevers(strict)),
+                                          scene(38, 12, 6, withBuildLevers(unique)),
+                                          scene(40, 10, 5, defaults().rawSgm())};
   c.expectBitExact(frames, "mid-frame configuration");
   ASSERT_EQ(c.busyWhenConfigured.size(), frames.size());
   for (size_t k = 1; k < frames.size(); ++k)
@@ -457,8 +462,8 @@ TEST(SgmAxi, ErrorsAreStickyCountedAndClearedByWritingOne) {
   const int w = 36, h = 12;
   std::vector<FrameInput> frames = {scene(w, h, 10, defaults())};
   unsigned expected = 0;
-  for (const sgm::tb::Malformation kind : {sgm::tb::Malformation::kEarlyLast, sgm::tb::Malformation::kMissingLast,
-                                           sgm::tb::Malformation::kStartInside}) {
+  for (const sgm::tb::Malformation kind :
+       {sgm::tb::Malformation::kEarlyLast, sgm::tb::Malformation::kMissingLast, sgm::tb::Malformation::kStartInside}) {
     const sgm::tb::MalformedFrames bad = malform(scene(w, h, 11, defaults()), kind, Rtl::MAX_WIDTH, rng(), rng());
     frames.insert(frames.end(), bad.frames.begin(), bad.frames.end());
     for (const unsigned e : bad.errors) expected |= e;
@@ -466,7 +471,8 @@ TEST(SgmAxi, ErrorsAreStickyCountedAndClearedByWritingOne) {
   }
   const std::vector<sgm::tb::FrameOutput> out = c.core.run(frames);
   EXPECT_EQ(sgm::tb::compareMaps(sgm::runPipeline(frames.back().left, frames.back().right, frames.back().params),
-                                 out.back().map, "sgm_axi output"), "");
+                                 out.back().map, "sgm_axi output"),
+            "");
   drv::Errors e = c.driver.errors();
   EXPECT_EQ(e.sticky, expected);
   for (int k = 0; k < 3; ++k) EXPECT_EQ(e.counts[k], 1u) << "kind " << k;

@@ -48,7 +48,7 @@ constexpr int kLanes = int(Rtl::LANES);
 constexpr int kCensusH = int(Rtl::CENSUS_H);
 constexpr int kLatency = int(Rtl::LATENCY);
 constexpr int kMaxWidth = int(Rtl::MAX_WIDTH);
-constexpr int kRy = (kCensusH - 1) / 2;   // window rows above and below the centre
+constexpr int kRy = (kCensusH - 1) / 2;  // window rows above and below the centre
 constexpr int kBits = 9 * kCensusH - 1;  // census bits
 constexpr uint32_t kRowMask = 0xff;      // the builds' RW = 8 (rows wrap)
 const sgm::CensusWindow kWindow = kCensusH == 9 ? sgm::CensusWindow::k9x9 : sgm::CensusWindow::k9x5;
@@ -202,8 +202,8 @@ void runStream(const std::string& name, const std::vector<Frame>& frames, uint32
     const cv::Mat& si = fr.img;
     const int w = si.cols, h = si.rows;
     std::ostringstream where;
-    where << "frame " << src.frame << " (" << w << "x" << h << ", " << kLanes << " lanes, skew " << fr.skew
-          << ", lead " << fr.lead << "), input slot " << src.index << " of lane " << src.index % kLanes;
+    where << "frame " << src.frame << " (" << w << "x" << h << ", " << kLanes << " lanes, skew " << fr.skew << ", lead "
+          << fr.lead << "), input slot " << src.index << " of lane " << src.index % kLanes;
     if (!src.active) {
       ASSERT_EQ(uint32_t(top->valid_o), 0u)
           << "field valid: " << where.str() << " is a waiting slot (active_i = 0, driven (" << src.col << ", "
@@ -220,8 +220,10 @@ void runStream(const std::string& name, const std::vector<Frame>& frames, uint32
     ASSERT_EQ(uint32_t(top->valid_o), uint32_t(inside))
         << fail("valid", std::to_string(inside), std::to_string(top->valid_o));
     if (!inside) continue;
-    ASSERT_EQ(uint32_t(top->col_o), uint32_t(cx)) << fail("position (col_o)", std::to_string(cx), std::to_string(top->col_o));
-    ASSERT_EQ(uint32_t(top->row_o), uint32_t(cy)) << fail("position (row_o)", std::to_string(cy), std::to_string(top->row_o));
+    ASSERT_EQ(uint32_t(top->col_o), uint32_t(cx))
+        << fail("position (col_o)", std::to_string(cx), std::to_string(top->col_o));
+    ASSERT_EQ(uint32_t(top->row_o), uint32_t(cy))
+        << fail("position (row_o)", std::to_string(cy), std::to_string(top->row_o));
     const size_t i = size_t(cy) * w + cx;
     ASSERT_EQ(seen[src.frame][i], 0) << fail("valid", "one output per pixel", "a second one");
     seen[src.frame][i] = 1;
@@ -277,7 +279,9 @@ TEST(SgmCensusUnitLanes, SeveralSizesOneStream) {
   const int leads[] = {0, 1, kLanes + 1, 0, 2, kLanes + 1, 0};
   std::vector<Frame> frames;
   for (int i = 0; i < 7; ++i) {
-    const int w = i == 3 ? std::max(minWidth(skews[i]), std::min(37, kMaxWidth)) : i == 5 ? kMaxWidth : minWidth(skews[i]);
+    const int w = i == 3   ? std::max(minWidth(skews[i]), std::min(37, kMaxWidth))
+                  : i == 5 ? kMaxWidth
+                           : minWidth(skews[i]);
     if (w > kMaxWidth) continue;
     frames.push_back(frame(randomImage(w, heights[i], rng), skews[i], leads[i], i < 3 ? 0 : int(rng() % 50),
                            i % 2 ? Waiting::kLaneDeal : Waiting::kJunk));
@@ -298,7 +302,8 @@ TEST(SgmCensusUnitLanes, RandomFramesBackToBack) {
       const int h = 9 + int(rng() % 22);
       const int lead = int(rng() % uint32_t(kLanes + 3));
       const int extra = rng() % 3 ? int(rng() % uint32_t(2 * kLanes * w)) : 0;
-      frames.push_back(frame(randomImage(w, h, rng), skew, lead, extra, rng() % 2 ? Waiting::kJunk : Waiting::kLaneDeal));
+      frames.push_back(
+          frame(randomImage(w, h, rng), skew, lead, extra, rng() % 2 ? Waiting::kJunk : Waiting::kLaneDeal));
     }
     ASSERT_NO_FATAL_FAILURE(runStream("sgm_census_unit_lanes_random", frames, seed));
   }

@@ -115,8 +115,8 @@ void runStream(Top& top, const std::vector<Frame>& frames, const StreamOptions& 
     std::ostringstream os;
     os << "frame " << src.frame << " (" << frames[src.frame].left.cols << "x" << frames[src.frame].left.rows << ", "
        << sgm::costModeName(frames[src.frame].mode) << ", AD " << frames[src.frame].adWeight << "/"
-       << frames[src.frame].adCap << ") pixel (" << c.x << ", " << c.y << ") from input slot " << o
-       << " (" << src.x << ", " << src.y << "), output slot " << s;
+       << frames[src.frame].adCap << ") pixel (" << c.x << ", " << c.y << ") from input slot " << o << " (" << src.x
+       << ", " << src.y << "), output slot " << s;
     return os.str();
   };
 
@@ -229,15 +229,19 @@ TEST(SgmCostVolume, AdTerm) {
   Top top("tb_cost_front_ad");
   const int w = std::min(kMaxWidth, 52);
   std::vector<Frame> frames;
-  const struct { CostMode mode; int weight, cap; } settings[] = {
-      {CostMode::kRsad, 3, 20}, {CostMode::kRsad, 15, 44}, {CostMode::kRt, 8, 83}, {CostMode::kUnified, 15, 21},
-      {CostMode::kUnified, 1, 255}, {CostMode::kRsad, 7, 0},  {CostMode::kRt, 0, 99},  {CostMode::kRsad, 2, 100}};
+  const struct {
+    CostMode mode;
+    int weight, cap;
+  } settings[] = {{CostMode::kRsad, 3, 20},     {CostMode::kRsad, 15, 44},    {CostMode::kRt, 8, 83},
+                  {CostMode::kUnified, 15, 21}, {CostMode::kUnified, 1, 255}, {CostMode::kRsad, 7, 0},
+                  {CostMode::kRt, 0, 99},       {CostMode::kRsad, 2, 100}};
   for (const auto& s : settings) {
     Frame f = randomFrame(w, 10, s.mode, rng);
     f.adWeight = s.weight, f.adCap = s.cap;
     frames.push_back(std::move(f));
   }
-  Frame bright{cv::Mat(9, 20, CV_8UC1, cv::Scalar(255)), cv::Mat(9, 20, CV_8UC1, cv::Scalar(0)), CostMode::kRsad, 15, 44};
+  Frame bright{cv::Mat(9, 20, CV_8UC1, cv::Scalar(255)), cv::Mat(9, 20, CV_8UC1, cv::Scalar(0)), CostMode::kRsad, 15,
+               44};
   frames.push_back(bright);
   ASSERT_NO_FATAL_FAILURE(runStream(top, frames, StreamOptions::seeded(42)));
 }

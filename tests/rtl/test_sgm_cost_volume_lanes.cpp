@@ -51,7 +51,8 @@ std::string runFrame(Top& top, const cv::Mat& left, const cv::Mat& right, sgm::C
   const int w = left.cols, h = left.rows;
   const std::vector<sgm::Census> lc = sgm::censusTransform(left), rc = sgm::censusTransform(right);
   sgm::CostVolume expected = sgm::computeCost(left, right, mode, kD);
-  for (int y = 0; adWeight && kAdTerm && y < h; ++y) sgm::addAdTerm(left, right, y, 0, w, kD, adWeight, adCap, expected.at(0, y));
+  for (int y = 0; adWeight && kAdTerm && y < h; ++y)
+    sgm::addAdTerm(left, right, y, 0, w, kD, adWeight, adCap, expected.at(0, y));
   const int leadRows = 2;
   const sgm::tb::LaneSchedule lanes(w, kLanes, kSkew, leadRows);
   const long slots = lanes.slotsToCover(h) + kLatency;

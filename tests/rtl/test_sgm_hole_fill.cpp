@@ -42,16 +42,28 @@ DisparityMap HoleFill::structured(int w, int h, std::mt19937& rng) {
   auto set = [&](int y, int x, bool v) { m.valid.at<uint8_t>(y, x) = v; };
   for (int y = 0; y < h; ++y) {
     switch (y % 12) {
-      case 0: break;                                           // no valid pixel
-      case 1: for (int x = 0; x < w; ++x) set(y, x, true); break;  // all valid
-      case 2: set(y, 0, true); break;                          // run touching the right end
-      case 3: set(y, w - 1, true); break;                      // run touching the left end
-      case 4: set(y, w / 2, true); break;                      // runs touching both ends
-      case 5: for (int x = 0; x < w; x += 2) set(y, x, true); break;  // alternating
-      case 6: for (int x = 1; x < w; x += 2) set(y, x, true); break;
-      case 7: set(y, 0, true); set(y, w - 1, true); break;     // one long inner run
-      case 8: set(y, 1, true); set(y, w - 2, true); break;     // short end runs
-      default: {                                              // random run lengths
+      case 0: break;  // no valid pixel
+      case 1:
+        for (int x = 0; x < w; ++x) set(y, x, true);
+        break;                             // all valid
+      case 2: set(y, 0, true); break;      // run touching the right end
+      case 3: set(y, w - 1, true); break;  // run touching the left end
+      case 4: set(y, w / 2, true); break;  // runs touching both ends
+      case 5:
+        for (int x = 0; x < w; x += 2) set(y, x, true);
+        break;  // alternating
+      case 6:
+        for (int x = 1; x < w; x += 2) set(y, x, true);
+        break;
+      case 7:
+        set(y, 0, true);
+        set(y, w - 1, true);
+        break;  // one long inner run
+      case 8:
+        set(y, 1, true);
+        set(y, w - 2, true);
+        break;    // short end runs
+      default: {  // random run lengths
         std::geometric_distribution<int> len(0.15);
         bool v = rng() & 1;
         for (int x = 0; x < w;) {

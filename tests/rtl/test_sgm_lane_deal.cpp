@@ -52,9 +52,9 @@ std::string runFrame(Top& top, int frame, int w, int h, std::mt19937& rng, doubl
     // The outputs now belong to lane slot m.
     const sgm::tb::SlotPosition want = lanes.at(m);
     const bool inside = want.row >= 0 && want.row < h;
-    const std::string where = "stage sgm_lane_deal (" + std::to_string(kLanes) + " lanes, width " +
-                              std::to_string(w) + ") lane slot " + std::to_string(m) + " (x=" +
-                              std::to_string(want.col) + ", y=" + std::to_string(want.row) + ")";
+    const std::string where = "stage sgm_lane_deal (" + std::to_string(kLanes) + " lanes, width " + std::to_string(w) +
+                              ") lane slot " + std::to_string(m) + " (x=" + std::to_string(want.col) +
+                              ", y=" + std::to_string(want.row) + ")";
     if (bool(top->valid_o) != inside) return where + ": valid_o " + std::to_string(top->valid_o);
     const bool started = m / kLanes >= (m % kLanes) * kSkew;
     if (bool(top->active_o) != started) return where + ": active_o " + std::to_string(top->active_o);

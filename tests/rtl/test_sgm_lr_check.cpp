@@ -55,7 +55,7 @@ struct Frame {
   int tol = 1;  // < 0: check off
   bool subpixel = true;
   std::string name;
-  int flushRows = 0;  // flush slots = width + LATENCY - 1 (the minimum) + flushRows * width
+  int flushRows = 0;   // flush slots = width + LATENCY - 1 (the minimum) + flushRows * width
   int uniqueness = 0;  // the ratio of the WTA side's unique flag (golden isUnique)
 };
 
@@ -63,7 +63,8 @@ std::string describe(const Frame& f) {
   std::ostringstream o;
   o << "frame '" << f.name << "' " << f.s.width << "x" << f.s.height << " tolerance "
     << (f.tol < 0 ? std::string("off") : std::to_string(f.tol)) << " sub-pixel " << (f.subpixel ? "on" : "off")
-    << " uniqueness " << f.uniqueness << " (D=" << kD << ", MAX_WIDTH=" << kMaxWidth << ", LATENCY=1 row + " << kLatency << ")";
+    << " uniqueness " << f.uniqueness << " (D=" << kD << ", MAX_WIDTH=" << kMaxWidth << ", LATENCY=1 row + " << kLatency
+    << ")";
   return o.str();
 }
 
@@ -204,9 +205,8 @@ void runFrames(Top& top, const std::vector<Frame>& frames, uint32_t seed, int la
       if (ed != gd || ev != gv) {
         const int d = wta[s.frame].d[size_t(oy) * sf.s.width + ox];
         std::ostringstream ctx;
-        ctx << (ed != gd ? "left result memory (disp)" : "left-right check (valid)") << "; d* = " << d
-            << ", unique " << wta[s.frame].unique[size_t(oy) * sf.s.width + ox]
-            << ", x - d* = " << ox - d;
+        ctx << (ed != gd ? "left result memory (disp)" : "left-right check (valid)") << "; d* = " << d << ", unique "
+            << wta[s.frame].unique[size_t(oy) * sf.s.width + ox] << ", x - d* = " << ox - d;
         if (ox - d >= 0) ctx << ", golden dR(x - d*) = " << sgm::rightDisparity(sf.s, ox - d, oy);
         auto result = [](int disp, int valid) {
           return "disp " + std::to_string(disp) + " valid " + std::to_string(valid);
@@ -242,8 +242,7 @@ sgm::PathVolume sceneVolume(int w, int h, std::mt19937& rng, int flat = -1) {
       for (int i = 0; i < len && x < w; ++i, ++x) dt[x] = flat >= 0 ? flat : d;
     }
     for (int x = 0; x < w; ++x)
-      for (int d = 0; d < kD; ++d)
-        v.at(x, y)[d] = uint16_t(std::min(kMaxS, 30 * std::abs(d - dt[x]) + noise(rng)));
+      for (int d = 0; d < kD; ++d) v.at(x, y)[d] = uint16_t(std::min(kMaxS, 30 * std::abs(d - dt[x]) + noise(rng)));
   }
   return v;
 }
@@ -392,9 +391,9 @@ TEST(SgmLrCheck, Cones) {
   for (int x0 : {0, (s.width - w) / 2, s.width - w}) {
     const int y0 = (k * 97) % (s.height - h + 1);
     const int tol = tols[k++ % 3];
-    frames.push_back({crop(s, x0, y0, w, h), tol, true,
-                      "cones D=" + std::to_string(kD) + " columns " + std::to_string(x0) + ".., rows " +
-                          std::to_string(y0) + ".."});
+    frames.push_back(
+        {crop(s, x0, y0, w, h), tol, true,
+         "cones D=" + std::to_string(kD) + " columns " + std::to_string(x0) + ".., rows " + std::to_string(y0) + ".."});
   }
   frames.push_back({crop(s, s.width - w, s.height - h, w, h), 0, false, "cones bottom right, integer"});
   frames.push_back({crop(s, 0, 0, w, h), 1, true, "cones left, uniqueness 15", 0, 15});

@@ -108,8 +108,7 @@ class LrLanes {
       // S side.
       const sgm::tb::SlotPosition sp = lanes.at(n);
       const bool real = sp.row >= 0 && sp.row < h;
-      sgm::tb::packFields(top_->s_i, real ? f.s.at(sp.col, sp.row) : sgm::tb::junkVector(junk, kMaxS, rng_), kD,
-                          kSW);
+      sgm::tb::packFields(top_->s_i, real ? f.s.at(sp.col, sp.row) : sgm::tb::junkVector(junk, kMaxS, rng_), kD, kSW);
       top_->col_i = sp.col;
       top_->row_i = uint32_t(sp.row) & rowMask;
       top_->last_i = sp.col == w - 1;
@@ -118,8 +117,8 @@ class LrLanes {
       if (n >= lag) {
         const sgm::tb::SlotPosition wp = lanes.at(n - lag);
         const bool wreal = wp.row >= 0 && wp.row < h;
-        const sgm::tb::WtaResult r =
-            sgm::tb::goldenWta(wreal ? f.s.at(wp.col, wp.row) : f.s.at(0, 0), kD, f.subpixel, f.uniqueness);
+        const sgm::tb::WtaResult r = sgm::tb::goldenWta(wreal ? f.s.at(wp.col, wp.row) : f.s.at(0, 0), kD, f.subpixel,
+                                                        f.uniqueness);
         top_->d_i = wreal ? r.d : rng_() % kD;
         top_->disp_i = wreal ? r.disp : rng_() & 0xff;
         top_->unique_i = wreal ? r.unique : rng_() & 1;
@@ -153,7 +152,8 @@ class LrLanes {
       std::ostringstream where;
       where << "stage sgm_lr_check (" << kLanes << " lanes, " << w << "x" << h << ", lag " << lag << ") pixel (x=" << ox
             << ", y=" << oy << ")";
-      if (bool(top_->out_valid_o) != expectOut) return where.str() + ": out_valid_o " + std::to_string(top_->out_valid_o);
+      if (bool(top_->out_valid_o) != expectOut)
+        return where.str() + ": out_valid_o " + std::to_string(top_->out_valid_o);
       if (!expectOut) continue;
       if (int(top_->col_o) != ox || int(top_->row_o) != oy)
         return where.str() + ": position (" + std::to_string(top_->col_o) + ", " + std::to_string(top_->row_o) + ")";

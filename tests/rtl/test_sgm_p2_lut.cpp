@@ -34,8 +34,8 @@ void checkTable(Top& top, int p1, int p2, sgm::P2Mode mode = sgm::P2Mode::kKnee)
     top->en_i = 0;
     for (int p = 0; p < 4; ++p)
       ASSERT_EQ(int((top->p2r_o >> (8 * p)) & 0xff), expected[base + p])
-          << "P1=" << p1 << " P2'=" << p2 << " mode " << sgm::p2ModeName(mode) << " |dI|=" << base + p
-          << " (port " << p << ")";
+          << "P1=" << p1 << " P2'=" << p2 << " mode " << sgm::p2ModeName(mode) << " |dI|=" << base + p << " (port " << p
+          << ")";
   }
 }
 

@@ -53,10 +53,10 @@ constexpr bool kEdgeReset = int(Vsgm_path_engine_sgm_path_engine::EDGE_RESET) !=
 constexpr int kCostBits = 7, kSumBits = 13;
 
 struct Frame {
-  cv::Mat gray;           // left gray image (P2 gradients)
-  sgm::CostVolume cost;   // C(p, d)
+  cv::Mat gray;          // left gray image (P2 gradients)
+  sgm::CostVolume cost;  // C(p, d)
   int p1 = 20, p2 = 200;
-  sgm::P2Mode p2Mode = sgm::P2Mode::kKnee;             // run-time P2 form
+  sgm::P2Mode p2Mode = sgm::P2Mode::kKnee;                 // run-time P2 form
   sgm::PathWeighting weights = sgm::PathWeighting::k3232;  // run-time path weights
   sgm::EdgeReset edgeReset{};  // run-time path restart (threshold 0: off); paths 0 .. 3 only
 };
@@ -80,8 +80,7 @@ Frame syntheticFrame(int w, int h, int p1, int p2, std::mt19937& rng) {
 
 class PathEngine {
  public:
-  explicit PathEngine(const std::string& name, uint32_t seed, double idle)
-      : top_(name), rng_(seed), idle_(idle) {
+  explicit PathEngine(const std::string& name, uint32_t seed, double idle) : top_(name), rng_(seed), idle_(idle) {
     top_->en_i = 0;
     top_->lut_start_i = 0;
     top_.reset();
@@ -91,8 +90,8 @@ class PathEngine {
   std::string run(const Frame& f) {
     const int w = f.cost.width, h = f.cost.height;
     const sgm::EdgeReset restart = kEdgeReset ? f.edgeReset : sgm::EdgeReset{0};
-    const sgm::PathVolume expected =
-        sgm::aggregateCost(f.cost, f.gray, f.p1, f.p2, f.p2Mode, f.weights, 0, false, 0, nullptr, restart);
+    const sgm::PathVolume expected = sgm::aggregateCost(f.cost, f.gray, f.p1, f.p2, f.p2Mode, f.weights, 0, false, 0,
+                                                        nullptr, restart);
     // Per-frame configuration and the P2 table fill, pipeline held.
     top_->en_i = 0;
     top_->width_i = w;
@@ -120,8 +119,7 @@ class PathEngine {
       const sgm::tb::SlotPosition pos = lanes.at(t);
       const int row = pos.row, col = pos.col;
       const bool inside = row >= 0 && row < h;
-      for (int d = 0; d < kD; ++d)
-        setBits(top_->cost_i, d * kCostBits, kCostBits, inside ? f.cost.at(col, row)[d] : 0);
+      for (int d = 0; d < kD; ++d) setBits(top_->cost_i, d * kCostBits, kCostBits, inside ? f.cost.at(col, row)[d] : 0);
       top_->col_i = lanes.at(t + kColLead).col;
       top_->valid_i = inside;
       // The row and the grays of slot t + kGrayLead (negative rows wrap; they carry no
@@ -147,8 +145,8 @@ class PathEngine {
       if (top_->valid_o && failure.empty()) {
         const int x = top_->col_o, y = int(top_->row_o);
         if (bool(top_->last_o) != (x == w - 1)) {
-          failure = "stage sgm_path_engine: last_o = " + std::to_string(int(top_->last_o)) + " at (x=" +
-                    std::to_string(x) + ", y=" + std::to_string(y) + "), width " + std::to_string(w);
+          failure = "stage sgm_path_engine: last_o = " + std::to_string(int(top_->last_o)) +
+                    " at (x=" + std::to_string(x) + ", y=" + std::to_string(y) + "), width " + std::to_string(w);
           break;
         }
         const uint16_t* s = expected.at(x, y);
@@ -186,7 +184,7 @@ TEST(SgmPathEngine, RandomCostsSeveralSizesBackToBack) {
   for (const auto& s : sizes) {
     const int p2 = int(rng() % 256), p1 = int(rng() % (p2 + 1));
     Frame f = syntheticFrame(std::max(s[0], kMinWidth), s[1], p1, p2, rng);
-    f.p2Mode = k % 2 ? sgm::P2Mode::kPaper : sgm::P2Mode::kKnee;       // both forms and both weightings,
+    f.p2Mode = k % 2 ? sgm::P2Mode::kPaper : sgm::P2Mode::kKnee;                     // both forms and both weightings,
     f.weights = k / 2 % 2 ? sgm::PathWeighting::kEqual : sgm::PathWeighting::k3232;  // changing per frame
     ++k;
     EXPECT_EQ(engine.run(f), "") << sgm::p2ModeName(f.p2Mode) << " " << sgm::pathWeightingName(f.weights);
@@ -228,7 +226,8 @@ TEST(SgmPathEngine, RestartAtStrongEdges) {
 TEST(SgmPathEngine, MiddleburyCones) {
   const char* data = std::getenv("SGM_DATA");
   const std::string dir = std::string(data ? data : "") + "/cones";
-  if (!data || !std::ifstream(dir + "/left.png")) GTEST_SKIP() << "Middlebury data not found at " << dir << "; set DATA=...";
+  if (!data || !std::ifstream(dir + "/left.png"))
+    GTEST_SKIP() << "Middlebury data not found at " << dir << "; set DATA=...";
   cv::Mat left = sgm::readGray(dir + "/left.png"), right = sgm::readGray(dir + "/right.png");
   if (left.cols > 128 * (kD / 16)) {  // small builds take a crop that fits MAX_WIDTH
     const cv::Rect crop(0, 0, 120, 60);

@@ -94,9 +94,9 @@ std::string runFrame(Top& top, const Frame& f, std::mt19937& rng, double idle) {
       const int got = d < kD ? int(getBits(top->lr_o, d * kPathBits, kPathBits)) : int(top->min_o);
       if (got != want) {
         std::ostringstream msg;
-        msg << "stage sgm_path_ring (LANES=" << kLanes << "): first mismatch at (x=" << out.x << ", y=" << out.y
-            << ") " << (d < kD ? "Lr d=" + std::to_string(d) : std::string("min Lr")) << ": expected " << want
-            << ", got " << got << " (" << w << "x" << h << ", P1=" << f.p1 << ", P2'=" << f.p2 << ")";
+        msg << "stage sgm_path_ring (LANES=" << kLanes << "): first mismatch at (x=" << out.x << ", y=" << out.y << ") "
+            << (d < kD ? "Lr d=" + std::to_string(d) : std::string("min Lr")) << ": expected " << want << ", got "
+            << got << " (" << w << "x" << h << ", P1=" << f.p1 << ", P2'=" << f.p2 << ")";
         return msg.str();
       }
     }

@@ -46,12 +46,12 @@ constexpr int kDelayLaneSlots = (kLatency - 1) / kLanes;  // DLY
 
 struct Frame {
   int width = 0, height = 0;
-  cv::Mat gray;                  // height x width
-  std::vector<uint8_t> cost;     // height x width x D
+  cv::Mat gray;                       // height x width
+  std::vector<uint8_t> cost;          // height x width x D
   int p1 = 20, p2 = 200, weight = 1;  // W5
   sgm::P2Mode p2Mode = sgm::P2Mode::kKnee;
-  sgm::EdgeReset edgeReset{0};   // the pass restart (paths[4]: the fifth path's flag)
-  std::vector<uint16_t> l5;      // expected W5 L5, height x width x D
+  sgm::EdgeReset edgeReset{0};  // the pass restart (paths[4]: the fifth path's flag)
+  std::vector<uint16_t> l5;     // expected W5 L5, height x width x D
 };
 
 Frame randomFrame(int w, int h, int p1, int p2, sgm::P2Mode mode, int weight, std::mt19937& rng,
@@ -178,8 +178,8 @@ class Bench {
       const int got = int(getBits(top_->l5w_o, d * kWeightedBits, kWeightedBits));
       if (got != want[d]) {
         where << "(x=" << e.x << ", y=" << e.y << ") W5 L5 d=" << d << ": expected " << want[d] << ", got " << got
-              << " (frame " << e.frame << ", " << f.width << "x" << f.height << ", P1=" << f.p1 << ", P2'=" << f.p2 << ", W5=" << f.weight
-              << ", restart T=" << f.edgeReset.threshold << " R=" << f.edgeReset.length << " on "
+              << " (frame " << e.frame << ", " << f.width << "x" << f.height << ", P1=" << f.p1 << ", P2'=" << f.p2
+              << ", W5=" << f.weight << ", restart T=" << f.edgeReset.threshold << " R=" << f.edgeReset.length << " on "
               << f.edgeReset.paths[4] << (kEdgeReset ? "" : " not built") << ")";
         mismatch_ = where.str();
         return;
@@ -203,8 +203,8 @@ TEST(SgmRightPath, FramesOfManyWidthsBackToBack) {
   top.reset();
   std::mt19937 rng(11);
   // Narrower than a block, one block, between one and two, two, multiples and remainders.
-  const int widths[] = {kBlock / 2 + 1, kBlock, kBlock + 3, 2 * kBlock - 1, 2 * kBlock, 3 * kBlock + 1,
-                        5 * kBlock - 2, 4 * kBlock, 2 * kBlock + kBlock / 2, 7 * kBlock + 5};
+  const int widths[] = {kBlock / 2 + 1, kBlock,         kBlock + 3, 2 * kBlock - 1,          2 * kBlock,
+                        3 * kBlock + 1, 5 * kBlock - 2, 4 * kBlock, 2 * kBlock + kBlock / 2, 7 * kBlock + 5};
   std::vector<Frame> frames;
   frames.reserve(std::size(widths));
   for (int w : widths) {
@@ -241,7 +241,10 @@ TEST(SgmRightPath, RestartAtStrongEdges) {
   for (size_t i = 0; i < std::size(widths); ++i) {
     const int w = widths[i];
     if (w < 2 || w > 255) continue;
-    sgm::EdgeReset reset{thresholds[i], i == 0 ? 15 : i == 1 ? 1 : 1 + int(rng() % sgm::kMaxEdgeResetLength),
+    sgm::EdgeReset reset{thresholds[i],
+                         i == 0   ? 15
+                         : i == 1 ? 1
+                                  : 1 + int(rng() % sgm::kMaxEdgeResetLength),
                          {0, 0, 0, 0, i == 5 ? 0 : 1}};
     const int p2 = 40 + int(rng() % 200), p1 = int(rng() % 40);
     frames.push_back(randomFrame(w, 2 * kLanes + 1, p1, p2, i % 2 ? sgm::P2Mode::kPaper : sgm::P2Mode::kKnee,

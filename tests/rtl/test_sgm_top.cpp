@@ -33,7 +33,6 @@
 #define SGM_D 16
 #endif
 
-
 namespace {
 
 using Harness = sgm::tb::CoreHarness<Vsgm_top>;
@@ -42,12 +41,12 @@ using sgm::tb::Malformation;
 using sgm::tb::MalformedFrames;
 
 constexpr int kD = SGM_D;
-constexpr int kMaxWidth = Vsgm_top_sgm_top::MAX_WIDTH;  // of this build
-constexpr int kCensusH = Vsgm_top_sgm_top::CENSUS_H;    // 5 or 9
+constexpr int kMaxWidth = Vsgm_top_sgm_top::MAX_WIDTH;           // of this build
+constexpr int kCensusH = Vsgm_top_sgm_top::CENSUS_H;             // 5 or 9
 constexpr bool kUniqueness = Vsgm_top_sgm_top::UNIQUENESS != 0;  // the build has the uniqueness ratio
 constexpr bool kAdTerm = Vsgm_top_sgm_top::AD_TERM != 0;         // the build has the AD term
 constexpr int kRightBlock = Vsgm_top_sgm_top::RIGHT_BLOCK;       // the fifth path's block (0: not built)
-constexpr bool kEdgeReset = Vsgm_top_sgm_top::EDGE_RESET != 0;    // the build has the path restart
+constexpr bool kEdgeReset = Vsgm_top_sgm_top::EDGE_RESET != 0;   // the build has the path restart
 constexpr bool kLean = !kUniqueness || !kAdTerm;
 
 // The settings with every lever the build lacks off (bit-exact tests run what the build
@@ -117,8 +116,9 @@ TEST(SgmTop, FirstFramesFromZeroOrOnesPowerUpState) {
     std::mt19937 rng(15);
     sgm::Params unique = hardwareDefaults();
     unique.uniqueness = 20;
-    const std::vector<FrameInput> frames = {syntheticPair(Vsgm_top_sgm_top::MIN_FRAME_WIDTH + 9, 12, rng, hardwareDefaults()),
-                                            syntheticPair(Vsgm_top_sgm_top::MIN_FRAME_WIDTH, 9, rng, withBuildLevers(unique))};
+    const std::vector<FrameInput> frames = {
+        syntheticPair(Vsgm_top_sgm_top::MIN_FRAME_WIDTH + 9, 12, rng, hardwareDefaults()),
+        syntheticPair(Vsgm_top_sgm_top::MIN_FRAME_WIDTH, 9, rng, withBuildLevers(unique))};
     expectBitExact(core, frames, "power-up state " + std::to_string(state));
   }
 }
@@ -135,9 +135,8 @@ TEST(SgmTop, SyntheticFramesBackToBackWithStalls) {
   }
 }
 
-
 constexpr int kMinWidth = Vsgm_top_sgm_top::MIN_FRAME_WIDTH;  // max(D, 16), more with many lanes
-constexpr int kMaxHeight = Vsgm_top_sgm_top::MAX_HEIGHT;  // of this build
+constexpr int kMaxHeight = Vsgm_top_sgm_top::MAX_HEIGHT;      // of this build
 
 // Frames at the build's limits: MAX_WIDTH wide, MAX_HEIGHT tall, and both at
 // once where the build is small enough (the Makefile gives the small whole-core
@@ -150,7 +149,8 @@ TEST(SgmTop, FullWidthAndFullHeightFrames) {
   std::vector<FrameInput> frames = {syntheticPair(kMaxWidth, 9, rng, hardwareDefaults()),
                                     syntheticPair(kMinWidth, kMaxHeight, rng, unified),
                                     syntheticPair(kMaxWidth, 10, rng, unified)};
-  if (long(kMaxWidth) * kMaxHeight <= 200000) frames.push_back(syntheticPair(kMaxWidth, kMaxHeight, rng, hardwareDefaults()));
+  if (long(kMaxWidth) * kMaxHeight <= 200000)
+    frames.push_back(syntheticPair(kMaxWidth, kMaxHeight, rng, hardwareDefaults()));
   frames.push_back(syntheticPair(kMinWidth + 3, 9, rng, hardwareDefaults()));
   expectBitExact(core, frames, "full-size frames");
 }
@@ -196,7 +196,7 @@ TEST(SgmTop, OutOfRangeConfigurationIsDroppedThenGoodFrame) {
     }
     sgm::Params good = i % 2 ? unified : hardwareDefaults();
     good.uniqueness = i == 6 ? 99 : 0;  // the largest ratio in range, after the first out of range
-    if (i == 9) good.rightPathWeight = sgm::kMaxRightPathWeight;  // the largest weight, after one above it
+    if (i == 9) good.rightPathWeight = sgm::kMaxRightPathWeight;            // the largest weight, after one above it
     if (i == 10) good.edgeReset = sgm::EdgeReset{255, 1, {1, 1, 1, 1, 1}};  // the largest T, the shortest R
     if (i == 8) {  // weight 15 with the largest cap the build's cost word leaves this mode
       good.adWeight = 15, good.adCap = sgm::largestAdCap(good.mode, good.census, 15);
@@ -212,7 +212,8 @@ TEST(SgmTop, OutOfRangeConfigurationIsDroppedThenGoodFrame) {
       continue;
     }
     EXPECT_EQ(sgm::tb::compareMaps(sgm::runPipeline(frames[k].left, frames[k].right, frames[k].params), out[k].map,
-                                   "sgm_top output"), "")
+                                   "sgm_top output"),
+              "")
         << what << " (after " << (k ? bad[k / 2 - 1].first : "reset") << ")";
     EXPECT_EQ(out[k].errors, 0u) << what;
   }
@@ -230,11 +231,11 @@ TEST(SgmTop, SettingsSweep) {
     sgm::Params p = hardwareDefaults();
     p.mode = modes[tol % 3];
     p.lrTolerance = tol;
-    p.p1 = 2 * tol + 3 + 10 * (tol % 3);      // odd: 3, 15, 27, 9, 21, 33, 15, 27
-    p.p2 = p.p1 + 2 * (tol * 17 % 23) + 1;    // odd difference to P1
+    p.p1 = 2 * tol + 3 + 10 * (tol % 3);    // odd: 3, 15, 27, 9, 21, 33, 15, 27
+    p.p2 = p.p1 + 2 * (tol * 17 % 23) + 1;  // odd difference to P1
     p.subpixel = tol % 2 == 0;
     p.fill = tol % 4 != 1, p.snap = tol % 4 != 2, p.median = tol % 4 != 3;
-    p.uniqueness = tol * 13 % 40;  // 0, 13, 26, 39, 12, 25, 38, 11
+    p.uniqueness = tol * 13 % 40;           // 0, 13, 26, 39, 12, 25, 38, 11
     p.rightPathWeight = (tol * 5 + 1) % 9;  // 1, 6, 2, 7, 3, 8, 4, 0 (with the fifth path built)
     frames.push_back(syntheticPair(kMinWidth + 5 * tol + 1, 9 + tol % 3, rng, withBuildLevers(p)));
   }
@@ -274,7 +275,8 @@ TEST(SgmTop, ParameterSetsChangeFromFrameToFrame) {
   candidate.rightPathWeight = 4, candidate.p1 = 24, candidate.p2 = 200, candidate.adWeight = 3;
   candidate.uniqueness = 15, candidate.snap = false;
   sgm::Params rightEqual = hardwareDefaults();  // the fifth path beside equal weights, the paper's P2
-  rightEqual.rightPathWeight = 1, rightEqual.weights = sgm::PathWeighting::kEqual, rightEqual.p2Mode = sgm::P2Mode::kPaper;
+  rightEqual.rightPathWeight = 1, rightEqual.weights = sgm::PathWeighting::kEqual,
+  rightEqual.p2Mode = sgm::P2Mode::kPaper;
   sgm::Params restart = candidate;  // the path restart at strong edges (issue 15's candidate)
   restart.edgeReset = sgm::EdgeReset{40, 6, {1, 1, 0, 1, 1}};
   sgm::Params restartAll = hardwareDefaults();  // every path, a low threshold, the longest R
@@ -303,17 +305,20 @@ TEST(SgmTop, LeversTheBuildLacksAreDroppedThenGoodFrame) {
   both.uniqueness = 10, both.adWeight = 2, both.adCap = 12;
   sgm::Params capOnly = hardwareDefaults();
   capOnly.adWeight = 0, capOnly.adCap = 255;  // weight 0: the term is off
-  sgm::Params right = hardwareDefaults();  // the fifth path, in the build's blocks when it has them
+  sgm::Params right = hardwareDefaults();     // the fifth path, in the build's blocks when it has them
   right.rightPathWeight = 4, right.rightPathBlock = kRightBlock ? kRightBlock : 16;
   sgm::Params restart = hardwareDefaults(), restartOff = hardwareDefaults();
-  restart.edgeReset = sgm::EdgeReset{1, 4, {1, 0, 1, 0, 0}};        // T 1: the smallest that asks for it
-  restartOff.edgeReset = sgm::EdgeReset{0, 15, {1, 1, 1, 1, 1}};    // T 0: off, whatever R and the flags
-  const std::vector<std::pair<std::string, sgm::Params>> asks = {
-      {"uniqueness 25", unique},         {"uniqueness 1", unique1},
-      {"AD weight 4 cap 30", ad},        {"AD weight 1 cap 0", ad1},
-      {"uniqueness 10, AD weight 2", both}, {"AD cap 255 weight 0", capOnly},
-      {"fifth path weight 4", right},    {"path restart T 1", restart},
-      {"path restart T 0, R 15, every flag", restartOff}};
+  restart.edgeReset = sgm::EdgeReset{1, 4, {1, 0, 1, 0, 0}};      // T 1: the smallest that asks for it
+  restartOff.edgeReset = sgm::EdgeReset{0, 15, {1, 1, 1, 1, 1}};  // T 0: off, whatever R and the flags
+  const std::vector<std::pair<std::string, sgm::Params>> asks = {{"uniqueness 25", unique},
+                                                                 {"uniqueness 1", unique1},
+                                                                 {"AD weight 4 cap 30", ad},
+                                                                 {"AD weight 1 cap 0", ad1},
+                                                                 {"uniqueness 10, AD weight 2", both},
+                                                                 {"AD cap 255 weight 0", capOnly},
+                                                                 {"fifth path weight 4", right},
+                                                                 {"path restart T 1", restart},
+                                                                 {"path restart T 0, R 15, every flag", restartOff}};
   std::vector<FrameInput> frames = {syntheticPair(kMinWidth + 2, 9, rng, hardwareDefaults())};
   std::vector<std::string> what = {"first good frame"};
   for (const auto& [name, p] : asks) {
@@ -327,15 +332,16 @@ TEST(SgmTop, LeversTheBuildLacksAreDroppedThenGoodFrame) {
   Harness core("sgm_top_levers", 17, {0.2, 0.2});
   const std::vector<sgm::tb::FrameOutput> out = core.run(frames);
   for (size_t k = 0; k < frames.size(); ++k) {
-    const std::string build = std::string(" (UNIQUENESS=") + (kUniqueness ? "1" : "0") + ", AD_TERM=" + (kAdTerm ? "1" : "0") +
-                              ", RIGHT_BLOCK=" + std::to_string(kRightBlock) +
+    const std::string build = std::string(" (UNIQUENESS=") + (kUniqueness ? "1" : "0") +
+                              ", AD_TERM=" + (kAdTerm ? "1" : "0") + ", RIGHT_BLOCK=" + std::to_string(kRightBlock) +
                               ", EDGE_RESET=" + (kEdgeReset ? "1" : "0") + ")";
     if (frames[k].dropped) {
       EXPECT_EQ(out[k].errors, 8u) << what[k] << build << ": error_o of a frame asking for a lever the build lacks";
       continue;
     }
     EXPECT_EQ(sgm::tb::compareMaps(sgm::runPipeline(frames[k].left, frames[k].right, frames[k].params), out[k].map,
-                                   "sgm_top output"), "")
+                                   "sgm_top output"),
+              "")
         << what[k] << build;
     EXPECT_EQ(out[k].errors, 0u) << what[k] << build;
   }
@@ -367,7 +373,8 @@ TEST(SgmTop, EveryMalformedFrameKindIsFlaggedAndRecovered) {
         EXPECT_EQ(out[1 + k].errors, bad.errors[k]) << bad.description << ": error_o of frame " << 1 + k;
       for (const size_t k : {size_t(0), frames.size() - 1}) {
         EXPECT_EQ(sgm::tb::compareMaps(sgm::runPipeline(frames[k].left, frames[k].right, frames[k].params), out[k].map,
-                                       "sgm_top output"), "")
+                                       "sgm_top output"),
+                  "")
             << bad.description << ", frame " << k;
         EXPECT_EQ(out[k].errors, 0u) << bad.description << ", frame " << k;
       }
@@ -431,7 +438,8 @@ TEST(AxisChecker, NamesTheCycleAndTheRuleOfEachViolation) {
   change.observe(0, true, false, frame[0]);
   change.observe(1, true, false, frame[0]);
   change.observe(2, true, true, frame[1]);
-  EXPECT_EQ(change.violation(), "cycle 2, output beat 0: tdata/tuser/tlast changed while tvalid was high and tready low");
+  EXPECT_EQ(change.violation(),
+            "cycle 2, output beat 0: tdata/tuser/tlast changed while tvalid was high and tready low");
   // Legal: valid low without a pending beat, data changing while valid is low, a reset dropping a held beat.
   AxisChecker legal;
   legal.observe(0, false, false, frame[3]);
@@ -453,7 +461,9 @@ TEST(SgmTop, MiddleburyAndAloe) {
     if (data && std::filesystem::exists(dir + "/left.png")) scenes.push_back(sgm::eval::loadScene(dir));
   }
   if (sgm::eval::aloeAvailable()) scenes.push_back(sgm::eval::loadAloe());
-  if (kCensusH != 9 && scenes.size() < 5) std::cout << "[ note     ] Middlebury data not found at " << (data ? data : "(SGM_DATA unset)") << "; set DATA=...\n";
+  if (kCensusH != 9 && scenes.size() < 5)
+    std::cout << "[ note     ] Middlebury data not found at " << (data ? data : "(SGM_DATA unset)")
+              << "; set DATA=...\n";
   if (scenes.empty()) GTEST_SKIP() << "no scenes";
   for (const sgm::eval::Scene& s : scenes) {
     Harness core("sgm_top_" + s.name, 1, {0.0, 0.0});
@@ -466,8 +476,8 @@ TEST(SgmTop, MiddleburyAndAloe) {
     const uint64_t cycles = out[0].lastOutCycle - out[0].firstInCycle + 1;
     const sgm::eval::ErrorFigures f = sgm::eval::evaluate(sgm::eval::toFloat(out[0].map), s);
     std::cout << "[ figures  ] " << s.name << " " << s.left.cols << "x" << s.left.rows << ": bit-exact "
-              << (mismatches == 0 ? "yes" : "NO") << ", " << cycles << " cycles, "
-              << double(cycles) / double(pixels) << " cycles/pixel, bad-1.0 nonocc " << f.errNonocc << "%\n";
+              << (mismatches == 0 ? "yes" : "NO") << ", " << cycles << " cycles, " << double(cycles) / double(pixels)
+              << " cycles/pixel, bad-1.0 nonocc " << f.errNonocc << "%\n";
     // One pixel per clock: at most 1.05 W H + a fixed latency of a few (here 12) lines.
     EXPECT_LE(double(cycles), 1.05 * double(pixels) + 12.0 * s.left.cols) << s.name;
   }
@@ -477,7 +487,8 @@ TEST(SgmTop, RealSceneUnderStalls) {
   if (kD != 64 || kCensusH == 9) GTEST_SKIP() << "real scenes under stalls run in the D = 64 9x5 build";
   const char* data = std::getenv("SGM_DATA");
   const std::string dir = std::string(data ? data : "") + "/cones";
-  if (!data || !std::filesystem::exists(dir + "/left.png")) GTEST_SKIP() << "Middlebury data not found at " << dir << "; set DATA=...";
+  if (!data || !std::filesystem::exists(dir + "/left.png"))
+    GTEST_SKIP() << "Middlebury data not found at " << dir << "; set DATA=...";
   const sgm::eval::Scene s = sgm::eval::loadScene(dir);
   Harness core("sgm_top_cones_stalls", 2, {0.25, 0.25});
   expectBitExact(core, {FrameInput{s.left, s.right, hardwareDefaults()}}, "cones with stalls");
@@ -492,7 +503,8 @@ TEST(SgmTop, RegressionSlice) {
   // (tb/regress_cases.hpp drawParams); and the fifth-path builds, with random weights.
   const bool other = kLean || kRightBlock;  // a build the D = 16 regression does not cover
   if (kD != 64 && !other)
-    GTEST_SKIP() << "the regression slice runs in the D = 64, the lean and the fifth-path builds (make regress-ci runs D = 16)";
+    GTEST_SKIP()
+        << "the regression slice runs in the D = 64, the lean and the fifth-path builds (make regress-ci runs D = 16)";
   constexpr uint64_t kMaster = 64;
   constexpr long kGoodFrames = 12;
   sgm::regress::Totals totals;

@@ -100,8 +100,7 @@ void runFrames(Top& top, const std::vector<Frame>& frames, uint32_t seed, double
           {int(fi), x, y, real},
           [&](Vsgm_wta& m) {
             // flush slots: junk the module must not mistake for a pixel
-            sgm::tb::packFields(m.s_i, real ? f.s.at(x, y) : sgm::tb::junkVector(junkS, kMaxS, driver.junk()), kD,
-                                kSW);
+            sgm::tb::packFields(m.s_i, real ? f.s.at(x, y) : sgm::tb::junkVector(junkS, kMaxS, driver.junk()), kD, kSW);
             m.col_i = x;
             m.row_i = y;
             m.valid_i = real;
@@ -120,8 +119,8 @@ void runFrames(Top& top, const std::vector<Frame>& frames, uint32_t seed, double
       }
       const Slot& s = *src;
       const Frame& sf = frames[s.frame];
-      ASSERT_EQ(bool(top->valid_o), s.real) << describe(sf) << ": valid_o of slot (" << s.x << ", " << s.y
-                                            << ") [stage: position pipeline]";
+      ASSERT_EQ(bool(top->valid_o), s.real)
+          << describe(sf) << ": valid_o of slot (" << s.x << ", " << s.y << ") [stage: position pipeline]";
       ASSERT_EQ(int(top->col_o), s.x) << describe(sf) << ": col_o of slot (" << s.x << ", " << s.y << ")";
       ASSERT_EQ(int(top->row_o), s.y) << describe(sf) << ": row_o of slot (" << s.x << ", " << s.y << ")";
       if (!s.real) continue;
@@ -135,16 +134,17 @@ void runFrames(Top& top, const std::vector<Frame>& frames, uint32_t seed, double
         for (int k = 0; k < kD; ++k)
           if (std::abs(k - gd) > 1 && (sec < 0 || sp[k] < sec)) sec = sp[k];
         std::ostringstream ctx;
-        ctx << "uniqueness (tree's second minimum, product); S(d*) = " << int(sp[gd]) << ", min S(k), |k - d*| > 1 = "
-            << sec << ", U = " << sf.uniqueness;
+        ctx << "uniqueness (tree's second minimum, product); S(d*) = " << int(sp[gd])
+            << ", min S(k), |k - d*| > 1 = " << sec << ", U = " << sf.uniqueness;
         FAIL() << sgm::tb::firstMismatch(s.x, s.y, describe(sf), "unique " + std::to_string(want.unique),
                                          "unique " + std::to_string(gunique), ctx.str());
       }
       if (gd != want.d || gdisp != want.disp) {
         std::ostringstream ctx;
         const int d = want.d;
-        ctx << (gd != want.d ? "winner-take-all tree" : "sub-pixel division") << "; S(d-1, d, d+1) = "
-            << (d > 0 ? int(sp[d - 1]) : -1) << ", " << int(sp[d]) << ", " << (d < kD - 1 ? int(sp[d + 1]) : -1);
+        ctx << (gd != want.d ? "winner-take-all tree" : "sub-pixel division")
+            << "; S(d-1, d, d+1) = " << (d > 0 ? int(sp[d - 1]) : -1) << ", " << int(sp[d]) << ", "
+            << (d < kD - 1 ? int(sp[d + 1]) : -1);
         auto result = [](int d, int disp) { return "d " + std::to_string(d) + " disp " + std::to_string(disp); };
         FAIL() << sgm::tb::firstMismatch(s.x, s.y, describe(sf), result(want.d, want.disp), result(gd, gdisp),
                                          ctx.str());
@@ -173,23 +173,25 @@ sgm::PathVolume edgeCaseVolume(int w, int h, std::mt19937& rng) {
       for (int d = 0; d < kD; ++d) s[d] = uint16_t(m + 1 + above(rng) % (kMaxS - m));
       const int dm = 1 + int(rng() % (kD - 2));  // an interior winner
       switch (k % 16) {
-        case 0: std::fill(s, s + kD, uint16_t(m)); break;              // all equal: d = 0
-        case 1: s[0] = uint16_t(m); break;                             // winner at 0
-        case 2: s[kD - 1] = uint16_t(m); break;                        // winner at D-1
-        case 3: s[kD - 1] = s[kD - 2] = uint16_t(m); break;            // tie D-2 / D-1
-        case 4: s[1] = uint16_t(m); break;                             // first refined d
-        case 5: s[kD - 2] = uint16_t(m); break;                        // last refined d
-        case 6: s[dm] = s[dm + 1] = uint16_t(m); break;                // b = m: offset +8
-        case 7:                                                        // many equal minima
+        case 0: std::fill(s, s + kD, uint16_t(m)); break;    // all equal: d = 0
+        case 1: s[0] = uint16_t(m); break;                   // winner at 0
+        case 2: s[kD - 1] = uint16_t(m); break;              // winner at D-1
+        case 3: s[kD - 1] = s[kD - 2] = uint16_t(m); break;  // tie D-2 / D-1
+        case 4: s[1] = uint16_t(m); break;                   // first refined d
+        case 5: s[kD - 2] = uint16_t(m); break;              // last refined d
+        case 6: s[dm] = s[dm + 1] = uint16_t(m); break;      // b = m: offset +8
+        case 7:                                              // many equal minima
           for (int d = 0; d < kD; ++d)
             if (rng() % 3 == 0 && d >= dm) s[d] = uint16_t(m);
           s[dm] = uint16_t(m);
           break;
-        case 8: s[dm] = 0, s[dm - 1] = s[dm + 1] = uint16_t(kMaxS); break;  // widest den, num = 0
-        case 9: s[dm] = 0, s[dm - 1] = uint16_t(kMaxS), s[dm + 1] = 0; break;  // tie to the right
+        case 8: s[dm] = 0, s[dm - 1] = s[dm + 1] = uint16_t(kMaxS); break;      // widest den, num = 0
+        case 9: s[dm] = 0, s[dm - 1] = uint16_t(kMaxS), s[dm + 1] = 0; break;   // tie to the right
         case 10: s[dm] = 0, s[dm - 1] = uint16_t(kMaxS), s[dm + 1] = 1; break;  // q near 8
         case 11: s[dm] = 0, s[dm - 1] = 1, s[dm + 1] = uint16_t(kMaxS); break;  // q near -8
-        case 12: s[dm] = uint16_t(m), s[dm - 1] = uint16_t(m + 1), s[dm + 1] = uint16_t(m + 3); break;  // half-way rounding
+        case 12:
+          s[dm] = uint16_t(m), s[dm - 1] = uint16_t(m + 1), s[dm + 1] = uint16_t(m + 3);
+          break;  // half-way rounding
         case 13: s[dm] = uint16_t(m), s[dm - 1] = uint16_t(m + 3), s[dm + 1] = uint16_t(m + 1); break;
         case 14: std::fill(s, s + kD, uint16_t(kMaxS)), s[dm] = uint16_t(kMaxS - 1); break;  // all at the top
         default: s[dm] = uint16_t(m); break;
@@ -220,7 +222,10 @@ sgm::PathVolume uniquenessVolume(int w, int h, int u, std::mt19937& rng) {
         case 0: at = d >= 2 ? d - 2 : d + 2; break;
         case 1: at = d + 2 < kD ? d + 2 : d - 2; break;
         case 2: at = d < kD / 2 ? kD - 1 : 0; break;
-        default: do at = int(rng() % kD); while (std::abs(at - d) <= 1); break;
+        default:
+          do at = int(rng() % kD);
+          while (std::abs(at - d) <= 1);
+          break;
       }
       s[at] = uint16_t(sec);
       for (int n : {d - 1, d + 1})
@@ -274,8 +279,10 @@ TEST(SgmWta, SmallestDenominator) {
       std::fill(s, s + kD, uint16_t(500));
       const int dm = 1 + (x % (kD - 2));
       s[dm] = 100;
-      if (y % 2 == 0) s[dm - 1] = 101, s[dm + 1] = 100;
-      else s[dm - 1] = 101, s[dm + 1] = 101;
+      if (y % 2 == 0)
+        s[dm - 1] = 101, s[dm + 1] = 100;
+      else
+        s[dm - 1] = 101, s[dm + 1] = 101;
     }
   runFrames(top, {{v, true, "small den"}}, 112);
 }
