@@ -8,6 +8,7 @@
 #include "report_json.hpp"
 #include "report_pool.hpp"
 #include "report_table.hpp"
+#include "report_util.hpp"
 
 #include "sgm/cli_args.hpp"
 #include "sgm/pipeline.hpp"
@@ -37,6 +38,7 @@ const char* kUsage =
     "                                                      (the four-path preset) beside -> pool.md, pool.json, pool.png\n"
     "       sgm-eval datasheet [--build DIR] [--out FILE]  the datasheet from the measured JSON reports under\n"
     "                                                      DIR (default build) -> FILE (default docs/datasheet.md)\n"
+    "                  [--readme FILE]                     and the generated summary section of FILE (README.md)\n"
     "pipeline options: --d D --p1 N --p2 N --mode M --subpixel on|off --lr TOL|off --fill on|off\n"
     "                  --snap on|off --median on|off --census 9x5|9x9 --p2-mode knee|paper\n"
     "                  --weights 3232|equal --uniqueness U (%, 0 off) --ad-weight W (0 off .. 15)\n"
@@ -198,6 +200,12 @@ int commandDatasheet(const CliArgs& args) {
   if (!parent.empty()) std::filesystem::create_directories(parent);
   eval::writeTextFile(out, md);
   std::cout << "sgm-eval datasheet: wrote " << out << " from the reports under " << build << "/\n";
+  if (const std::string readme = args.text("readme", ""); !readme.empty()) {
+    const std::string page = eval::readTextFile(readme);
+    eval::writeTextFile(
+        readme, eval::replaceGeneratedSection(page, "datasheet: summary", eval::summaryMarkdown(build), readme));
+    std::cout << "sgm-eval datasheet: wrote the summary section of " << readme << "\n";
+  }
   return 0;
 }
 
@@ -217,7 +225,7 @@ std::vector<Command> commands() {
       {"table", commandTable, {"data", "out", "d", "delta", "scenes"}},
       {"bench", commandBench, {"data", "out", "scene", "repeats"}},
       {"pool", commandPool, poolOptions},
-      {"datasheet", commandDatasheet, {"build", "out"}},
+      {"datasheet", commandDatasheet, {"build", "out", "readme"}},
   };
 }
 
