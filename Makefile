@@ -76,9 +76,11 @@ help:
 	@echo "make fuzz          seeded random-corruption fuzzing of image loading and argument parsing"
 	@echo "make coverage      line and toggle coverage of rtl/ -> build/coverage/"
 	@echo "make mutate        plant each bug of tests/mutate/mutations.txt in a copy of rtl/, run the tests -> build/mutate/ (MUTATE_ONLY=id,id)"
-	@echo "make datasheet     docs/datasheet.md (DATASHEET=...) from the measured JSON reports under build/"
+	@echo "make datasheet     docs/datasheet.md (DATASHEET=...) and README's summary from the measured JSON reports under build/"
+	@echo "make regmap        sw/include/sgm_regs.h, rtl/sgm_regmap.svh, docs/registers.md from regmap/sgm_regmap.def; make regmap-check"
+	@echo "make param-checks  every module's parameter checks fire on an illegal value; the legal sets elaborate"
 	@echo "make format        clang-format every C++ file (.clang-format); make format-check lists the ones that differ"
-	@echo "make test          everything CI runs (lint, unit tests, RTL fixtures, synth-ci, regress-ci, fuzz-ci, mutate-ci)"
+	@echo "make test          everything CI runs: lint, unit tests, RTL fixtures, then $(TEST_EXTRA)"
 	@echo "make clean         remove build/"
 
 # ---------------------------------------------------------------- dependencies
