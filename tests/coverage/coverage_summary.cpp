@@ -154,7 +154,14 @@ int main(int argc, char** argv) {
       if (line.empty() || line[0] == '#') continue;
       const size_t a = line.find(" | "), b = a == std::string::npos ? a : line.find(" | ", a + 3);
       if (b == std::string::npos) fail("waiver is not 'file | source line | reason': '" + line + "'");
-      waivers[trim(line.substr(0, a)) + " | " + trim(line.substr(a + 3, b - a - 3))] = trim(line.substr(b + 3));
+      const std::string file = trim(line.substr(0, a)), text = trim(line.substr(a + 3, b - a - 3));
+      // A waiver names a source line that exists: one that no longer does is stale.
+      auto& src = sources[file];
+      if (src.empty()) src = readSource(file);
+      bool found = false;
+      for (const std::string& l : src) found = found || trim(l) == text;
+      if (!found) fail("waiver names a line that " + file + " does not have (stale): '" + text + "'");
+      waivers[file + " | " + text] = trim(line.substr(b + 3));
     }
   }
 
