@@ -344,5 +344,10 @@ module sgm_axi #(
   wire unused = &{1'b0, reg_re, reg_waddr[1:0], reg_raddr[1:0], error, act_config, act_edge_reset, wset,
                   shadow_width[15:XW], shadow_height[15:YW]};
 
+`ifdef SGM_FORMAL
+  // The formal property set (tests/formal/sgm_axi_props.svh; make formal, docs/formal.md).
+`include "sgm_axi_props.svh"
+`endif
+
 endmodule
 `default_nettype wire

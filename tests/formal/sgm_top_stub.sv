@@ -1,0 +1,82 @@
+// SPDX-License-Identifier: Apache-2.0
+`default_nettype none
+// sgm_top as the formal tasks of sgm_axi see it (tests/formal/axi_*.sby; docs/formal.md):
+// the parameters and ports of rtl/sgm_top.sv, every output free in every cycle (Yosys
+// anyseq), every input unused. A property of sgm_axi proven with this stub holds with any
+// core behind it: whatever the stream handshake, busy, frame_done_o, the error events and
+// the frame size the core reports, in any cycle and any combination.
+module sgm_top #(
+  parameter int D           = 64,
+  parameter int MAX_WIDTH   = 1280,
+  parameter int MAX_HEIGHT  = 1024,
+  parameter int CENSUS_H    = 5,
+  parameter int LANES       = 1,
+  parameter int UNIQUENESS  = 1,
+  parameter int AD_TERM     = 1,
+  parameter int RIGHT_BLOCK = 64,
+  parameter int EDGE_RESET  = 1,
+  localparam int XW         = $clog2(MAX_WIDTH + 1),
+  localparam int YW         = $clog2(MAX_HEIGHT + 16)
+) (
+  input  wire           clk_i,
+  input  wire           rst_ni,
+  input  wire  [15:0]   s_tdata_i,
+  input  wire           s_tuser_i,
+  input  wire           s_tlast_i,
+  input  wire           s_tvalid_i,
+  output logic          s_tready_o,
+  output logic [15:0]   m_tdata_o,
+  output logic          m_tuser_o,
+  output logic          m_tlast_o,
+  output logic          m_tvalid_o,
+  input  wire           m_tready_i,
+  input  wire  [XW-1:0] cfg_width_i,
+  input  wire  [YW-1:0] cfg_height_i,
+  input  wire  [7:0]    cfg_p1_i,
+  input  wire  [7:0]    cfg_p2_i,
+  input  wire  [1:0]    cfg_mode_i,
+  input  wire           cfg_subpixel_i,
+  input  wire           cfg_lr_en_i,
+  input  wire  [2:0]    cfg_lr_tol_i,
+  input  wire           cfg_fill_i,
+  input  wire           cfg_snap_i,
+  input  wire           cfg_median_i,
+  input  wire           cfg_p2_mode_i,
+  input  wire           cfg_weights_i,
+  input  wire  [6:0]    cfg_unique_i,
+  input  wire  [3:0]    cfg_ad_weight_i,
+  input  wire  [7:0]    cfg_ad_cap_i,
+  input  wire  [3:0]    cfg_right_weight_i,
+  input  wire  [7:0]    cfg_reset_t_i,
+  input  wire  [3:0]    cfg_reset_len_i,
+  input  wire  [4:0]    cfg_reset_paths_i,
+  output logic          busy_o,
+  output logic          frame_done_o,
+  output logic [3:0]    error_o,
+  output logic [3:0]    error_event_o,
+  output logic [XW-1:0] frame_width_o,
+  output logic [YW-1:0] frame_height_o,
+  output logic [XW-1:0] min_width_o
+);
+
+  (* anyseq *) logic          any_tready, any_tuser, any_tlast, any_tvalid, any_busy, any_done;
+  (* anyseq *) logic [15:0]   any_tdata;
+  (* anyseq *) logic [3:0]    any_error, any_event;
+  (* anyseq *) logic [XW-1:0] any_width, any_min_width;
+  (* anyseq *) logic [YW-1:0] any_height;
+
+  assign s_tready_o     = any_tready;
+  assign m_tdata_o      = any_tdata;
+  assign m_tuser_o      = any_tuser;
+  assign m_tlast_o      = any_tlast;
+  assign m_tvalid_o     = any_tvalid;
+  assign busy_o         = any_busy;
+  assign frame_done_o   = any_done;
+  assign error_o        = any_error;
+  assign error_event_o  = any_event;
+  assign frame_width_o  = any_width;
+  assign frame_height_o = any_height;
+  assign min_width_o    = any_min_width;
+
+endmodule
+`default_nettype wire
