@@ -10,8 +10,11 @@
 # The exact text must occur exactly once in the file (else the run stops: the RTL
 # changed and the list must follow it in the same commit). Each mutation is applied
 # to a scratch copy of the tree (--tree, default build/mutate/tree; rtl/ is never
-# touched), and the verilated test binaries whose top instantiates the mutated module
-# are rebuilt and run there, cheapest first (unit fixtures, then the whole core at
+# touched), and the tests that contain the mutated module run there, cheapest first: the
+# formal tasks whose .sby reads the module's file (tests/formal/*.sby, `make formal
+# FORMAL_ONLY=task`, seconds each; a task that fails or leaves a cover unreached kills, one
+# whose model does not elaborate makes the mutant invalid), then the verilated test binaries
+# whose top instantiates the module, rebuilt (unit fixtures, then the whole core at
 # D = 16 (and its lean build), the D = 16 regression slice, the whole core at D = 32 and
 # D = 64, the AXI4-Lite wrapper and its lean build), up to the
 # first one that fails: that test kills the mutation. A mutation no test fails
@@ -111,6 +114,25 @@ done < <(grep -E '^\$\(eval \$\(call rtl_test,' Makefile)
 top_of[sgm-regress-d16-w128]=sgm_top
 for t in "${order[@]}"; do [[ -n "${top_of[$t]:-}" ]] || die "test $t not in the Makefile"; done
 
+# Formal tasks (tests/formal/TASK.sby) as tests formal-TASK, tried first: the modules of
+# one are the rtl/*.sv files its [files] section reads, its top the `prep -top` module.
+declare -A formal_mods=()
+formal_tests=()
+for f in tests/formal/*.sby; do
+  [[ -f "$f" ]] || continue
+  t="formal-$(basename "$f" .sby)"
+  top_of[$t]=$(awk '$1 == "prep" { for (i = 2; i < NF; i++) if ($i == "-top") print $(i + 1) }' "$f" | head -1)
+  formal_mods[$t]=$(sed -n '/^\[files\]/,/^\[/p' "$f" | grep -oE 'rtl/sgm_[a-z0-9_]+\.sv' | sed 's|rtl/||; s|\.sv$||' | tr '\n' ' ')
+  [[ -n "${top_of[$t]}" && -n "${formal_mods[$t]// /}" ]] || die "$f: no 'prep -top' line or no rtl/*.sv in [files]"
+  formal_tests+=("$t")
+done
+is_formal() { [[ "$1" == formal-* ]]; }
+# Proofs before covers (a proof names the broken property, a cover only its lost trace),
+# each the tasks of fewer modules first (the module's own property set).
+order=($(for t in "${formal_tests[@]}"; do
+           set -- ${formal_mods[$t]}; echo "$([[ $t == *_cover ]] && echo 1 || echo 0) $# $t"
+         done | sort -k1,1n -k2,2n -k3,3 | awk '{ print $3 }') "${order[@]}")
+
 # Modules a top instantiates, itself included (instantiation lines: `  sgm_x #(` or `  sgm_x u_name (`).
 closure() {
   local m="$1" f sub
@@ -123,7 +145,8 @@ closure() {
 }
 declare -A tests_of=()  # module -> tests containing it, cheapest first
 for t in "${order[@]}"; do
-  for m in $(closure "${top_of[$t]}" | sort -u); do tests_of[$m]+="$t "; done
+  if is_formal "$t"; then mods_t=${formal_mods[$t]}; else mods_t=$(closure "${top_of[$t]}" | sort -u); fi
+  for m in $mods_t; do tests_of[$m]+="$t "; done
 done
 # The tests of a mutated file: those of its module, or for an included .svh those of every
 # module that includes it, cheapest first.
@@ -140,9 +163,22 @@ tests_of_file() {
   echo "$out"
 }
 
-run_test() {  # run_test DIR NAME LOG: runs build/bin/NAME of DIR; returns its status
+# build_test DIR NAME LOG: builds build/bin/NAME in DIR (a formal task has nothing to build).
+build_test() {
   local dir="$1" name="$2" log="$3"
-  if [[ "$name" == sgm-regress-* ]]; then
+  is_formal "$name" && return 0
+  if [[ "$dir" == . ]]; then (nice -n 5 "${MAKE_CMD[@]}" "build/bin/$name") > "$log" 2>&1
+  else (cd "$dir" && nice -n 5 "${MUTANT_MAKE[@]}" "build/bin/$name") > "$log" 2>&1; fi
+}
+
+run_test() {  # run_test DIR NAME LOG: runs build/bin/NAME (or the formal task) of DIR; returns its status,
+  local dir="$1" name="$2" log="$3" st  # 3 when a formal task's model does not elaborate
+  if is_formal "$name"; then
+    (cd "$dir" && timeout "$TEST_TIMEOUT" nice -n 5 "${MAKE_CMD[@]}" formal FORMAL_ONLY="${name#formal-}") > "$log" 2>&1 && return 0
+    st=$(awk '{ print $1; exit }' "$dir/build/formal/${name#formal-}/status" 2>/dev/null)
+    [[ "$st" == ERROR ]] && return 3
+    return 1
+  elif [[ "$name" == sgm-regress-* ]]; then
     (cd "$dir" && timeout "$TEST_TIMEOUT" nice -n 5 "build/bin/$name" --seed 1 --frames 60 --quiet) > "$log" 2>&1
   else
     (cd "$dir" && SGM_DATA="$DATA" timeout "$TEST_TIMEOUT" nice -n 5 "build/bin/$name" --gtest_brief=1) > "$log" 2>&1
@@ -162,7 +198,7 @@ baseline() {
   local t="$1"
   [[ -n "${baseline_done[$t]:-}" ]] && return 0
   echo "mutate: baseline $t (unmutated)"
-  nice -n 5 "${MAKE_CMD[@]}" "build/bin/$t" > "$out/logs/baseline-$t.log" 2>&1 || die "baseline build of $t failed ($out/logs/baseline-$t.log)"
+  build_test . "$t" "$out/logs/baseline-$t.log" || die "baseline build of $t failed ($out/logs/baseline-$t.log)"
   run_test . "$t" "$out/logs/baseline-run-$t.log" || die "baseline: $t fails on the unmutated tree ($out/logs/baseline-run-$t.log)"
   baseline_done[$t]=1
 }
@@ -247,12 +283,15 @@ for i in "${selected[@]}"; do
   for t in $(tests_of_file "$file"); do
     baseline "$t"
     log="$out/logs/$id-$t.log"
-    if ! (cd "$tree" && nice -n 5 "${MUTANT_MAKE[@]}" "build/bin/$t") > "$log" 2>&1; then
+    if ! build_test "$tree" "$t" "$log"; then
       status=invalid killer="" notes[$i]="the mutant does not build for $t (see $log): not a kill; change the mutation"; break
     fi
-    if ! run_test "$tree" "$t" "$log.run"; then
-      status=killed killer="$t"; break
-    fi
+    run_test "$tree" "$t" "$log.run"
+    case $? in
+      0) ;;
+      3) status=invalid killer="" notes[$i]="the mutant does not elaborate in $t (see $log.run): not a kill; change the mutation"; break ;;
+      *) status=killed killer="$t"; break ;;
+    esac
   done
   cp -p "$file" "$tree/$file"
   touch "$tree/$file"  # newer than every mutant binary: the next build starts clean
