@@ -518,5 +518,10 @@ module sgm_stream_ctrl #(
   assign m_tlast_o  = fifo_q[rd_q][16];
   assign m_tdata_o  = fifo_q[rd_q][15:0];
 
+`ifdef SGM_FORMAL
+  // The formal property set (tests/formal/sgm_stream_ctrl_props.svh; make formal, docs/formal.md).
+`include "sgm_stream_ctrl_props.svh"
+`endif
+
 endmodule
 `default_nettype wire

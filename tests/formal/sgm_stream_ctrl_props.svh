@@ -1,0 +1,269 @@
+// SPDX-License-Identifier: Apache-2.0
+// The formal property set of sgm_stream_ctrl (make formal, docs/formal.md). Included at the
+// end of the module's body when SGM_FORMAL is defined (tests/formal/stream_ctrl_*.sby: yosys
+// read -formal -DSGM_FORMAL); no other flow defines it. Its names start with f_.
+//
+// Assumed: the first cycle is in reset; the input stream follows AXI4-Stream (s_tvalid_i
+// low in reset, held until s_tready_o with tdata, tuser and tlast unchanged). Everything
+// else is free in every cycle: the configuration inputs, m_tready_i, lut_ready_i and the
+// pipeline's result (res_valid_i, res_disp_i, res_ok_i). With SGM_FORMAL_PIPE (the
+// stream_ctrl_live task) the pipeline follows its contract instead (docs/rtl.md, "The
+// step stream"): a slot's result comes F_LAT slots after the slot, res_valid_i high exactly
+// for the results of frame pixels, and m_tready_i is high (a sink that takes every beat).
+//
+// Asserted:
+//   output stream   m_tvalid_o is low after reset and held until m_tready_i, with
+//                   m_tdata_o, m_tuser_o and m_tlast_o unchanged while held;
+//   output FIFO     never written when full nor read when empty; its count, pointers and
+//                   room flag agree; a slot is enabled only with a free entry for its
+//                   result;
+//   input buffer    never written when full (s_tready_o low) nor read when empty; the
+//                   head's flags (a beat is there, it is a start of frame) are the buffer's;
+//   state           the state's flags (RUN, PAD or FLUSH) are the state's, busy_o is
+//                   state != IDLE; no slot is decided in IDLE or FILL;
+//   configuration   the check of a tuser beat's configuration is the range of docs/rtl.md
+//                   ("Stream protocol and malformed frames"); the latched configuration
+//                   changes only when IDLE takes a start of frame, so it is constant while
+//                   a frame's slots flow;
+//   framing         in a frame the slot position stays inside the frame (RUN, PAD) and its
+//                   row/column end flags and first-slot flag equal their comparisons; the
+//                   output position likewise; sof_o is set exactly on slot (0, 0);
+//   errors          an error event (error_set_o[2:0]) leaves RUN for PAD (or FLUSH at the
+//                   frame's last pixel); PAD, FLUSH and FILL take no input beat, a tuser
+//                   inside a frame is not consumed (it starts the next frame); IDLE takes a
+//                   start of frame with a configuration in range in the cycle it reaches the
+//                   head of the buffer and drops any other beat in one cycle;
+//   frame_done_o    pulses once, in the cycle after the push of a frame's last pixel.
+// With SGM_FORMAL_PIPE, in addition (bounded response): a frame left by an error returns
+// to IDLE within F_N cycles of the error event (stated in docs/formal.md).
+// Covered: a frame completes, each framing error and a dropped configuration, a frame
+// after a malformed one, the output FIFO full, an output beat held by m_tready_i low.
+
+  logic [2:0] f_t = 3'd0;
+  always @(posedge clk_i) if (f_t != 3'd7) f_t <= f_t + 3'd1;
+  wire f_past_valid = f_t != 3'd0;
+
+  wire f_in_hs   = s_tvalid_i && s_tready_o;
+  wire f_out_hs  = m_tvalid_o && m_tready_i;
+  wire f_idle    = state_q == IDLE;
+  wire f_framing = state_q == RUN || state_q == PAD || state_q == FLUSH;
+
+  // ------------------------------------------------------------ assumptions
+  always @(*) begin
+    if (!f_past_valid) assume (!rst_ni);
+    if (!rst_ni) assume (!s_tvalid_i);
+  end
+  always @(posedge clk_i) begin
+    if (f_past_valid && $past(rst_ni) && rst_ni && $past(s_tvalid_i && !s_tready_o))
+      assume (s_tvalid_i && s_tdata_i == $past(s_tdata_i) && s_tuser_i == $past(s_tuser_i) &&
+              s_tlast_i == $past(s_tlast_i));
+  end
+
+  // ------------------------------------------------------------ the configuration range
+  // docs/rtl.md: width MIN_WIDTH .. MAX_WIDTH, height 9 .. MAX_HEIGHT, P2' >= P1, mode
+  // 0 .. 2, uniqueness ratio 0 .. 99, the AD term's largest value (W T) >> 3 added to the
+  // mode's Cmax (NB; unified 2 NB) within the cost word, fifth-path weight 0 .. 8, a path
+  // restart (T != 0) of length 1 .. 15, and no lever the build lacks.
+  localparam int F_CMAX_WORD = (1 << $clog2(2 * NB + 1)) - 1;
+  function automatic logic f_in_range(input logic [XW-1:0] w, input logic [YW-1:0] h, input logic [PW-1:0] p1,
+                                      input logic [PW-1:0] p2, input logic [1:0] mode, input logic [6:0] u,
+                                      input logic [3:0] adw, input logic [7:0] adcap, input logic [3:0] rw);
+    logic [31:0] ad_top;
+    ad_top = (mode == 2'd2 ? 32'(2 * NB) : 32'(NB)) + 32'((12'(adw) * 12'(adcap)) >> 3);
+    f_in_range = 32'(w) >= 32'(MIN_WIDTH) && 32'(w) <= 32'(MAX_WIDTH) && 32'(h) >= 32'd9 &&
+                 32'(h) <= 32'(MAX_HEIGHT) && p2 >= p1 && mode != 2'd3 && u <= 7'd99 && ad_top <= 32'(F_CMAX_WORD) &&
+                 rw <= 4'd8 && (UNIQUENESS != 0 || u == 7'd0) && (AD_TERM != 0 || adw == 4'd0) &&
+                 (RIGHT_PATH != 0 || rw == 4'd0);
+  endfunction
+  wire f_cfg_in_range = f_in_range(cfg_width_i, cfg_height_i, cfg_p1_i, cfg_p2_i, cfg_mode_i, cfg_unique_i,
+                                   cfg_ad_weight_i, cfg_ad_cap_i, cfg_right_weight_i) &&
+                        (cfg_reset_t_i == 8'd0 || cfg_reset_len_i != 4'd0) && (EDGE_RESET != 0 || cfg_reset_t_i == 8'd0);
+  // Entry i holds a tuser beat (its configuration word was written with it): its word,
+  // unpacked as the module packs it, is in range when its check said so.
+  wire [1:0] f_tuser_in;
+  for (genvar i = 0; i < 2; i++) begin : g_f_pend
+    logic          ok;
+    logic [XW-1:0] w;
+    logic [YW-1:0] h;
+    logic [PW-1:0] p1, p2;
+    logic [1:0]    mode;
+    logic [9:0]    flags;
+    logic [6:0]    u;
+    logic [3:0]    adw, rw;
+    logic [7:0]    adcap;
+    assign {ok, w, h, p1, p2, mode, flags, u, adw, adcap, rw} = pend_q[i];
+    assign f_tuser_in[i] = (in_count_q == 2'd2 || (in_count_q == 2'd1 && in_rd_q == 1'(i))) && ibuf_q[i][17];
+    always @(*) if (f_past_valid && f_tuser_in[i] && ok) assert (f_in_range(w, h, p1, p2, mode, u, adw, adcap, rw));
+    wire unused_flags = ^flags;
+  end
+  wire f_latched_in_range = f_in_range(width_o, height_o, p1_o, p2_o, mode_o, unique_o, ad_weight_o, ad_cap_o,
+                                       right_weight_o);
+
+  // The output position (pixels pushed) before the slot position (slots decided).
+  wire f_out_behind = out_y_q < y_q || (out_y_q == y_q && out_x_q < x_q);
+
+  // ------------------------------------------------------------ every cycle
+  always @(*) begin
+    if (f_past_valid) begin
+      // state flags
+      assert (state_q == IDLE || state_q == FILL || state_q == RUN || state_q == PAD || state_q == FLUSH);
+      assert (run_q == (state_q == RUN));
+      assert (gen_q == (state_q == PAD || state_q == FLUSH));
+      assert (busy_o == !f_idle);
+      if (f_idle || state_q == FILL) assert (!slot);
+      // input buffer
+      assert (in_count_q <= 2'd2);
+      assert (s_tready_o == (in_count_q != 2'd2));
+      assert (in_wr_q == (in_rd_q ^ in_count_q[0]));
+      assert (head_ok_q == (in_count_q != 2'd0));
+      assert (head_sof_q == (in_count_q != 2'd0 && ibuf_q[in_rd_q][17]));
+      if (in_pop) assert (in_count_q != 2'd0);
+      // output FIFO
+      assert (count_q <= (FAW+1)'(FIFO_DEPTH));
+      assert (32'(wr_q) == (32'(rd_q) + 32'(count_q) >= FIFO_DEPTH ? 32'(rd_q) + 32'(count_q) - FIFO_DEPTH :
+                                                                      32'(rd_q) + 32'(count_q)));
+      assert (32'(rd_q) < FIFO_DEPTH && 32'(wr_q) < FIFO_DEPTH);
+      assert (room_q == (count_q < (FAW+1)'(FIFO_DEPTH - 1)));
+      if (en_o) assert (count_q < (FAW+1)'(FIFO_DEPTH));
+      if (push) assert (count_q < (FAW+1)'(FIFO_DEPTH));
+      assert (m_tvalid_o == (count_q != '0));
+      // configuration check, kept with each entry; a frame runs with a configuration in range
+      assert (cfg_ok == f_cfg_in_range);
+      if (!f_idle) assert (f_latched_in_range);
+      // errors: no input beat taken outside RUN and IDLE, a tuser inside a frame kept
+      if (!(state_q == RUN || f_idle)) assert (!in_pop);
+      if (err_sof) assert (!in_pop);
+      if (f_idle && head_ok_q) assert (in_pop != (head_sof_q && pend_ok));
+      if (error_set_o[2:0] != 3'd0) assert (state_q == PAD || state_q == FLUSH);
+    end
+    // framing: positions inside the frame, flags equal to their comparisons
+    if (f_past_valid && f_framing) begin
+      assert (wm2_q == width_o - XW'(2) && hm1_q == height_o - YW'(1));
+      assert (x_q < width_o && last_col_q == (x_q == width_o - XW'(1)));
+      assert (out_x_q < width_o && out_eol_q == (out_x_q == width_o - XW'(1)));
+      if (x_q != '0) assert (last_row_q == (y_q == hm1_q));
+      if (out_x_q != '0) assert (out_last_row_q == (out_y_q == hm1_q));
+      assert (out_y_q <= hm1_q);
+    end
+    if (f_past_valid && (state_q == RUN || state_q == PAD)) begin
+      assert (y_q <= hm1_q);
+      assert (first_q == (x_q == '0 && y_q == '0));
+      // no more output pixels than slots enabled (each push is a slot's result)
+      assert (en_o ? f_out_behind : f_out_behind || (out_y_q == y_q && out_x_q == x_q));
+    end
+    if (f_past_valid && state_q == FILL)
+      assert (first_q && x_q == '0 && y_q == '0 && !last_col_q && out_x_q == '0 && out_y_q == '0 && !out_eol_q);
+  end
+
+  // ------------------------------------------------------------ cycle to cycle
+  always @(posedge clk_i) begin
+    if (f_past_valid && !$past(rst_ni)) assert (!m_tvalid_o && f_idle && !en_o && in_count_q == 2'd0);
+    if (f_past_valid && $past(rst_ni)) begin
+      if ($past(m_tvalid_o && !m_tready_i))
+        assert (m_tvalid_o && m_tdata_o == $past(m_tdata_o) && m_tuser_o == $past(m_tuser_o) &&
+                m_tlast_o == $past(m_tlast_o));
+      // the latched configuration changes only when IDLE takes a start of frame
+      if (!($past(f_idle && head_sof && pend_ok)))
+        assert (width_o == $past(width_o) && height_o == $past(height_o) && p1_o == $past(p1_o) &&
+                p2_o == $past(p2_o) && mode_o == $past(mode_o) && subpixel_o == $past(subpixel_o) &&
+                lr_en_o == $past(lr_en_o) && lr_tol_o == $past(lr_tol_o) && fill_o == $past(fill_o) &&
+                snap_o == $past(snap_o) && median_o == $past(median_o) && p2_mode_o == $past(p2_mode_o) &&
+                weights_o == $past(weights_o) && unique_o == $past(unique_o) && ad_weight_o == $past(ad_weight_o) &&
+                ad_cap_o == $past(ad_cap_o) && right_weight_o == $past(right_weight_o) &&
+                reset_t_o == $past(reset_t_o) && reset_len_o == $past(reset_len_o) &&
+                reset_paths_o == $past(reset_paths_o));
+      // IDLE takes a start of frame in range at once
+      if ($past(f_idle && head_sof && pend_ok)) assert (state_q == FILL && lut_start_o);
+      // a slot enters the pipeline the cycle after its decision; sof_o on slot (0, 0) of
+      // the frame (flush rows, which count on past the frame, excepted)
+      assert (en_o == $past(slot));
+      if ($past(slot && state_q != FLUSH)) assert (sof_o == (col_o == '0 && row_o == '0));
+      // frame_done_o: the cycle after the push of the frame's last pixel, in FLUSH
+      assert (frame_done_o == $past(state_q == FLUSH && push && out_last));
+      if (frame_done_o) assert (f_idle);
+    end
+  end
+
+`ifdef SGM_FORMAL_PIPE
+  // ------------------------------------------------------------ the pipeline's contract
+  // A slot's result is presented F_LAT slots later (res_valid_i in the cycle of the later
+  // slot's en_o), valid exactly for a frame pixel: row_o < height_o (the column is always
+  // inside). Nothing before the first frame pixel after reset. The sink takes every beat.
+  // The frame width is fixed (MIN_WIDTH = MAX_WIDTH = F_W), the height any of 9 .. MAX_HEIGHT.
+  localparam int F_LAT = 3;
+  localparam int F_W   = MAX_WIDTH;
+  if (MIN_WIDTH != MAX_WIDTH) begin : g_f_bad_width
+    $error("sgm_stream_ctrl_props: SGM_FORMAL_PIPE needs MIN_WIDTH = MAX_WIDTH");
+  end
+  logic [F_LAT-1:0] f_pipe;
+  always @(posedge clk_i) begin
+    if (!rst_ni) f_pipe <= '0;
+    else if (en_o) f_pipe <= {f_pipe[F_LAT-2:0], row_o < height_o};
+  end
+  always @(*) begin
+    if (en_o) assume (res_valid_i == f_pipe[F_LAT-1]);
+    assume (m_tready_i);
+  end
+
+  // Cycles since a framing error event (error_set_o[2:0]), counted until the frame's
+  // return to IDLE; F_N bounds them: the frame's pixels after the first slot (an error
+  // at the first beat pads all the others) and the pipeline's latency.
+  localparam int F_N = F_W * MAX_HEIGHT + F_LAT - 1;
+  logic [15:0] f_err_age;
+  always @(posedge clk_i) begin
+    if (!rst_ni || state_d == IDLE) f_err_age <= 16'd0;
+    else if (error_set_o[2:0] != 3'd0) f_err_age <= 16'd1;
+    else if (f_err_age != 16'd0 && f_err_age != 16'hFFFF) f_err_age <= f_err_age + 16'd1;
+  end
+  always @(*) if (f_past_valid) assert (32'(f_err_age) <= F_N);
+
+  // The invariants that close the induction: slots decided (f_p), slots enabled (f_q),
+  // output pixels pushed (f_o) and the pipeline's flags agree.
+  wire [31:0] f_p = 32'(y_q) * F_W + 32'(x_q);
+  wire [31:0] f_q = f_p - 32'(en_o);
+  wire [31:0] f_o = 32'(out_y_q) * F_W + 32'(out_x_q);
+  wire [31:0] f_pixels = 32'(height_o) * F_W;
+  always @(*) begin
+    if (f_past_valid) begin
+      assert (count_q <= (FAW+1)'(1));
+      if (f_idle || state_q == FILL) begin
+        assert (f_pipe == '0 && f_err_age == 16'd0);
+        if (en_o) assert (row_o >= height_o);
+      end
+      if (state_q == RUN) assert (f_err_age == 16'd0);
+      if (f_framing) begin
+        if (en_o) assert (32'(row_o) * F_W + 32'(col_o) == f_p - 32'd1);
+        assert (f_o == (f_q < F_LAT ? 32'd0 : f_q - F_LAT > f_pixels ? f_pixels : f_q - F_LAT));
+        assert (f_p <= f_pixels + F_LAT);
+        if (f_err_age != 16'd0) assert (state_q != RUN && 32'(f_err_age) < f_p);
+      end
+    end
+  end
+  // The pipeline's flags: f_pipe[j] is the flag of slot f_q - 1 - j.
+  for (genvar j = 0; j < F_LAT; j++) begin : g_f_pipe
+    always @(*) if (f_past_valid && f_framing) assert (f_pipe[j] == (f_q >= 32'(j + 1) && f_q - 32'(j + 1) < f_pixels));
+  end
+`endif
+
+  // ------------------------------------------------------------ covers
+  // Without SGM_FORMAL_PIPE: a tlast early, a tuser inside a frame, a configuration
+  // dropped, the output FIFO full, an output beat held two cycles. With it: a frame left by
+  // an error at its first beat padded, its results pushed, the error's age counted. A
+  // missing tlast (a whole line, 16 beats or more) and a whole frame (16 x 9 beats and the
+  // flush) are deeper than smtbmc with z3 reaches in minutes here: the properties are
+  // proven by induction, whole frames and every error kind are the simulation's
+  // (docs/formal.md).
+  always @(posedge clk_i) begin
+    if (f_t == 3'd7 && rst_ni && $past(rst_ni)) begin
+`ifndef SGM_FORMAL_PIPE
+      cover (error_set_o[0]);
+      cover (error_set_o[2]);
+      cover (error_set_o[3]);
+      cover (count_q == (FAW+1)'(FIFO_DEPTH));
+      cover ($past(m_tvalid_o && !m_tready_i) && $past(m_tvalid_o && !m_tready_i, 2) && f_out_hs);
+`else
+      cover (state_q == PAD && push && f_o == 32'd4);
+      cover (f_err_age == 16'd6);
+`endif
+    end
+  end
