@@ -329,7 +329,8 @@ void summaryTables(std::ostringstream& md, const Report& bench, const Report& po
     std::map<std::string, std::string> cycles;
     if (const Json* core = bench.json->get("core"); core && core->isArray())
       for (const Json& c : core->items) cycles[text(c, "scene")] = text(c, "cycles_per_pixel");
-    md << "Bad-" << text(bench.json->get("delta"))
+    const std::optional<double> delta = number(*bench.json, "delta");
+    md << "Bad-" << (delta ? fixed(*delta, 1) : "-")
        << " error (%) over the non-occluded pixels, invalid pixels counted as "
        << "errors, D = " << text(need(*bench.json, "d", bench.path))
        << ", the default configuration; the core's output "
@@ -349,13 +350,13 @@ void summaryTables(std::ostringstream& md, const Report& bench, const Report& po
     md << "Scene pool: " << pool.notMeasured() << ".\n\n";
   } else {
     md << "| scene pool, mean over | scenes | this core (%) | OpenCV StereoSGBM (%) |\n|---|---:|---:|---:|\n";
-    for (const char* part : {"groups", "sets"})
-      if (const Json* means = pool.json->get(part); means && means->isArray())
-        for (const Json& m : means->items)
-          md << "| " << text(m, "name") << " | " << text(m, "scenes") << " | **" << text(need(m, "ours", pool.path))
-             << "** | " << text(m, "opencv_strict") << " |\n";
-    md << "\nSource: " << pool.path << " (`make eval-pool`; Middlebury bad-" << text(pool.json->get("delta"))
-       << ", KITTI D1).\n\n";
+    if (const Json* means = pool.json->get("groups"); means && means->isArray())
+      for (const Json& m : means->items)
+        md << "| " << text(m, "name") << " | " << text(m, "scenes") << " | **" << text(need(m, "ours", pool.path))
+           << "** | " << text(m, "opencv_strict") << " |\n";
+    const std::optional<double> delta = number(*pool.json, "delta");
+    md << "\nSource: " << pool.path << " (`make eval-pool`, groups[]; Middlebury bad-"
+       << (delta ? fixed(*delta, 1) : "-") << ", KITTI D1; OpenCV with its invalid pixels counted as errors).\n\n";
   }
   const Json* runs = pnr.present() ? pnr.json->get("runs") : nullptr;
   if (!runs || !runs->isArray() || runs->items.empty()) {
