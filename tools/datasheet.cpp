@@ -74,8 +74,6 @@ std::string usedOf(const Json& run, const char* used, const char* available) {
   return a == "-" ? text(run, used) : text(run, used) + " / " + a;
 }
 
-std::string code(const std::string& s) { return s == "-" ? s : "`" + s + "`"; }
-
 // Every summary.json below root (recursively), sorted by path.
 std::vector<std::string> synthSummaries(const std::string& root) {
   std::vector<std::string> out;
@@ -109,17 +107,17 @@ void pnrSection(std::ostringstream& md, const Report& pnr) {
     md << "No routed build in " << pnr.path << ": run `make pnr`.\n\n";
   } else {
     md << "| build | device | speed | D | MAX_WIDTH | lanes | LUT4 | FF | EBR | DSP | fmax (MHz) | seed | nextpnr | "
-          "Yosys | RTL | date |\n|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---|---|---|\n";
+          "Yosys | date |\n|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---|---|\n";
     for (const Json& r : runs.items) {
       md << "| " << text(need(r, "run", pnr.path)) << " | " << text(r, "device") << "-" << text(r, "package") << " | "
          << text(r, "speed") << " | " << text(need(r, "d", pnr.path)) << " | " << text(need(r, "max_width", pnr.path))
          << " | " << text(r, "lanes") << " | " << usedOf(r, "lut4", "lut4_available") << " | "
          << usedOf(r, "ff", "ff_available") << " | " << usedOf(r, "ebr", "ebr_available") << " | " << text(r, "dsp")
          << " | **" << text(need(r, "fmax_mhz", pnr.path)) << "** | " << text(r, "seed") << " | " << text(r, "nextpnr")
-         << " | " << text(r, "yosys") << " | " << code(text(r, "rtl_commit")) << " | " << text(r, "date") << " |\n";
+         << " | " << text(r, "yosys") << " | " << text(r, "date") << " |\n";
     }
     md << "\nSource: " << pnr.path
-       << " (runs[]: lut4, ff, ebr with their _available, dsp, fmax_mhz, seed, nextpnr, yosys, rtl_commit, date).\n\n";
+       << " (runs[]: lut4, ff, ebr with their _available, dsp, fmax_mhz, seed, nextpnr, yosys, date).\n\n";
   }
   const Json* loops = pnr.json->get("loop_runs");
   if (loops && loops->isArray() && !loops->items.empty()) {
@@ -145,7 +143,7 @@ void synthSection(std::ostringstream& md, const std::vector<Report>& synth, cons
     for (const Json& r : results.items) (text(r, "target") == "ice40-loop" ? loops : cores).push_back(&r);
     if (!cores.empty()) {
       md << "| configuration | target | D | MAX_WIDTH | census | LUTs | FF | block RAM (Kbit) | DSP | fmax (MHz) | Yosys | "
-            "RTL | date |\n|---|---|---:|---:|---|---:|---:|---:|---:|---:|---|---|---|\n";
+            "date |\n|---|---|---:|---:|---|---:|---:|---:|---:|---:|---|---|\n";
       for (const Json* r : cores) {
         // Xilinx: slice LUTs (logic + distributed RAM + SRL); iCE40: LUT4; generic: not mapped.
         const std::string sliceLuts = text(*r, "slice_luts");
@@ -155,10 +153,10 @@ void synthSection(std::ostringstream& md, const std::vector<Report>& synth, cons
         md << "| " << text(need(*r, "config", s.path)) << " | " << text(need(*r, "target", s.path)) << " | "
            << text(*r, "d") << " | " << text(*r, "max_width") << " | " << text(*r, "census") << " | " << luts << " | "
            << text(*r, "ff") << " | " << text(*r, "bram_kbit") << " | " << text(*r, "dsp") << " | " << fmax << " | "
-           << text(*r, "yosys") << " | " << code(text(*r, "rtl_commit")) << " | " << text(*r, "date") << " |\n";
+           << text(*r, "yosys") << " | " << text(*r, "date") << " |\n";
       }
       md << "\nSource: " << s.path
-         << " (results[]: slice_luts or lut, ff, bram_kbit, dsp, fmax_mhz and fmax_source, yosys, rtl_commit, date). "
+         << " (results[]: slice_luts or lut, ff, bram_kbit, dsp, fmax_mhz and fmax_source, yosys, date). "
             "Yosys figures are before place and route.\n\n";
     }
     if (!loops.empty()) {
