@@ -389,7 +389,8 @@ std::string svHeader() {
   if (!word.empty()) {
     // cfg_from_regs: the frame configuration word of the registers' values.
     std::string args;
-    for (const Register* r : wordRegisters()) args += std::string(args.empty() ? "" : ",\n") + "    input logic [31:0] reg_" + lower(r->name);
+    for (const Register* r : wordRegisters())
+      args += std::string(args.empty() ? "" : ",\n") + "    input logic [31:0] reg_" + lower(r->name);
     o << "\n// The frame configuration word (rtl/sgm_cfg.svh, included before the module) of the\n"
       << "// registers' values: each field at its place, the highest first.\n"
       << "function automatic logic [CFG_W-1:0] cfg_from_regs(\n" << args << ");\n  cfg_from_regs = {\n";
@@ -425,8 +426,10 @@ std::string svCfg() {
     << "//\n";
   for (const WordField& w : word) {
     char b[200];
-    std::snprintf(b, sizeof b, "//   %-10s %-26s %s", bitRange(w.lsb, w.field->width).c_str(),
-                  (w.reg->name + "." + w.field->name).c_str(), (w.reg->name + bitRange(w.field->lsb, w.field->width)).c_str());
+    const std::string field = w.reg->name + "." + w.field->name;
+    const std::string regBits = w.reg->name + bitRange(w.field->lsb, w.field->width);
+    std::snprintf(b, sizeof b, "//   %-10s %-26s %s", bitRange(w.lsb, w.field->width).c_str(), field.c_str(),
+                  regBits.c_str());
     o << b << "\n";
   }
   const std::vector<std::string> needs = wordNeeds();
@@ -640,7 +643,8 @@ int main(int argc, char** argv) {
       writeFile(args[i + 2], text);
       i += 2;
     } else {
-      die("unknown argument '" + args[i] + "' (usage: regmap_gen [--header FILE] [--svh FILE] [--cfg-svh FILE] [--tb FILE] [--doc IN OUT])");
+      die("unknown argument '" + args[i] +
+          "' (usage: regmap_gen [--header FILE] [--svh FILE] [--cfg-svh FILE] [--tb FILE] [--doc IN OUT])");
     }
   }
   return 0;
