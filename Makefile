@@ -159,7 +159,7 @@ SIM_VFLAGS = -O3 --x-assign fast --x-initial fast
 
 # Any build/bin/sgm-sim-<tag>[-suffix] builds the core of SIM_CORE; the recipe stops unless
 # the name is that build's tag (make build/bin/sgm-sim-d16-w128 D=16 MAX_WIDTH=128).
-$(BIN)/sgm-sim-d%: sim/sgm_sim.cpp $(RTL_SRC) $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
+$(BIN)/sgm-sim-d%: sim/sgm_sim.cpp $(RTL_SRC) $(RTL_INC) $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
 	@case $(notdir $@) in sgm-sim-$(call core_tag,$(SIM_CORE))$(subst $(core_space),,$(foreach x,$(SIM_BIN_SUFFIXES),|sgm-sim-$(call core_tag,$(SIM_CORE))-$(x)))) ;; \
 	   *) echo "$@: not the name of the build asked for (sgm-sim-$(call core_tag,$(SIM_CORE)): $(SIM_CORE))"; exit 1 ;; esac
 	@mkdir -p $(BIN) $(BUILD)/verilator

@@ -62,7 +62,7 @@ $(BENCH_TOOL): bench/sgm_bench.cpp $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
 
 # One sgm-sim build per variant, through the main Makefile's sgm-sim rule.
 define bench_variant
-$(call BENCH_SIM,$(1)): $(RTL_SRC) sim/sgm_sim.cpp $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
+$(call BENCH_SIM,$(1)): $(RTL_SRC) $(RTL_INC) sim/sgm_sim.cpp $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
 	@$$(MAKE) --no-print-directory BENCH_INNER=1 MAX_WIDTH=$(BENCH_MAX_WIDTH) MAX_HEIGHT=$(BENCH_MAX_HEIGHT) SIM_VFLAGS="$(BENCH_FLAGS_$(1))" $$@
 endef
 # (BENCH_INNER: the inner make builds with the pattern rule, not this one.)

@@ -4,14 +4,19 @@
 //
 //   --header FILE       the C header (sw/include/sgm_regs.h)
 //   --svh FILE          the SystemVerilog localparams included by sgm_axi (rtl/sgm_regmap.svh)
+//   --cfg-svh FILE      the frame configuration word (rtl/sgm_cfg.svh): its layout and checks
+//   --tb FILE           the testbenches' table of the word (tb/sgm_cfg_fields.hpp)
 //   --doc IN OUT        IN with its generated sections (between the markers
 //                       "<!-- BEGIN regmap: NAME -->" and "<!-- END regmap: NAME -->")
 //                       replaced, written to OUT (docs/registers.md)
 //
 // Every file is written whole or not at all; a malformed description (overlapping fields,
-// a field beyond bit 31, a default outside its field, two registers at one offset) stops
-// the generator with one line naming it and exit status 2.
+// a field beyond bit 31, a default outside its field, two registers at one offset, a
+// CFG_FIELD that is no read-write field, a read-write field of a frame configuration
+// register without its CFG_FIELD) stops the generator with one line naming it and exit
+// status 2.
 #include <algorithm>
+#include <cctype>
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
@@ -49,6 +54,20 @@ struct Register {
   std::vector<Value> values;
 };
 
+// A field of the frame configuration word (CFG_FIELD).
+struct CfgRow {
+  std::string reg, field, golden;
+};
+
+// A field of the word, resolved: its register, its field and its position in the word.
+struct WordField {
+  const Register* reg;
+  const Field* field;
+  std::string golden;
+  int lsb;
+  std::string name() const { return reg->name + "_" + field->name; }
+};
+
 struct Constant {
   std::string name;
   uint64_t value;
@@ -57,6 +76,9 @@ struct Constant {
 
 std::vector<Register> registers;
 std::vector<Constant> constants;
+std::vector<CfgRow> cfgRows;
+std::vector<WordField> word;  // the frame configuration word, bit 0 first (layoutWord)
+int wordWidth = 0;
 
 void die(const std::string& what) {
   std::cerr << "regmap_gen: error: " << what << "\n";
@@ -80,6 +102,7 @@ Register& registerNamed(const std::string& name) {
   registerNamed(#REG).fields.push_back(Field{#REG, #NAME, LSB, WIDTH, ACCESS, DEF, FOUR, MIN, MAX, NEEDS, SV, DESC});
 #define VALUE(REG, FIELD, NAME, VAL, DESC) registerNamed(#REG).values.push_back(Value{#REG, #FIELD, #NAME, VAL, DESC});
 #define CONSTANT(NAME, VAL, DESC) constants.push_back(Constant{#NAME, VAL, DESC});
+#define CFG_FIELD(REG, FIELD, GOLDEN) cfgRows.push_back(CfgRow{#REG, #FIELD, GOLDEN});
 
 void describe() {
 #include "sgm_regmap.def"
@@ -181,6 +204,69 @@ void check() {
   }
 }
 
+// The frame configuration word: every CFG_FIELD at its register width, in register order
+// (offset, then LSB), from bit 0 up. Run after the registers are sorted by offset.
+void layoutWord() {
+  std::set<std::string> named;
+  for (const CfgRow& c : cfgRows) {
+    const std::string where = "CFG_FIELD(" + c.reg + ", " + c.field + ")";
+    if (!named.insert(c.reg + "." + c.field).second) die(where + " described twice");
+    bool found = false;
+    for (const Register& r : registers)
+      for (const Field& f : r.fields)
+        if (r.name == c.reg && f.name == c.field) {
+          found = true;
+          if (f.access != Access::kRW) die(where + ": the field is not read-write");
+        }
+    if (!found) die(where + ": no such field");
+    if (c.golden.empty()) die(where + ": no golden value");
+  }
+  for (const Register& r : registers) {
+    bool inWord = false;
+    for (const CfgRow& c : cfgRows) inWord = inWord || c.reg == r.name;
+    if (!inWord) continue;
+    std::vector<const Field*> byLsb;
+    for (const Field& f : r.fields) byLsb.push_back(&f);
+    std::sort(byLsb.begin(), byLsb.end(), [](const Field* a, const Field* b) { return a->lsb < b->lsb; });
+    for (const Field* f : byLsb) {
+      if (f->access != Access::kRW) continue;
+      const CfgRow* row = nullptr;
+      for (const CfgRow& c : cfgRows)
+        if (c.reg == r.name && c.field == f->name) row = &c;
+      if (!row)
+        die(r.name + "." + f->name + ": a read-write field of a frame configuration register without its CFG_FIELD");
+      word.push_back(WordField{&r, f, row->golden, wordWidth});
+      wordWidth += f->width;
+    }
+  }
+}
+
+// The build parameters the word's fields need (NEEDS), in the order of the word.
+std::vector<std::string> wordNeeds() {
+  std::vector<std::string> needs;
+  for (const WordField& w : word)
+    if (!w.field->needs.empty() && std::find(needs.begin(), needs.end(), w.field->needs) == needs.end())
+      needs.push_back(w.field->needs);
+  return needs;
+}
+
+std::string lower(std::string s) {
+  for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// The registers of the word, in its order.
+std::vector<const Register*> wordRegisters() {
+  std::vector<const Register*> regs;
+  for (const WordField& w : word)
+    if (regs.empty() || regs.back() != w.reg) regs.push_back(w.reg);
+  return regs;
+}
+
+std::string bitRange(int lsb, int width) {
+  return "[" + std::to_string(lsb + width - 1) + (width > 1 ? ":" + std::to_string(lsb) : "") + "]";
+}
+
 const char* kNotice = "generated by `make regmap` from regmap/sgm_regmap.def: do not edit";
 
 // ------------------------------------------------------------------ C header
@@ -240,6 +326,11 @@ std::string cHeader() {
       o << "#define SGM_ID_VALUE " << hex32(constantValue(r)) << "\n";
     }
   }
+  o << "\n/* ---- the frame configuration word: sgm_top's cfg_i (rtl/sgm_cfg.svh), SGM_CFG_W bits, bit 0\n"
+    << " * first; field F of register R at bits [SGM_CFG_R_F_LSB +: SGM_R_F_WIDTH] (docs/registers.md). */\n";
+  o << "#define SGM_CFG_W " << wordWidth << "u\n";
+  o << "#define SGM_CFG_WORDS " << (wordWidth + 31) / 32 << "u /* 32-bit words of the word */\n";
+  for (const WordField& w : word) o << "#define SGM_CFG_" << w.name() << "_LSB " << w.lsb << "u\n";
   o << "\n/* ---- constants */\n";
   for (const Constant& c : constants)
     o << "#define SGM_" << c.name << " " << c.value << "u /* " << c.description << " */\n";
@@ -256,7 +347,8 @@ std::string svHeader() {
     << "// lever: its registers reset to the golden model's defaults, else to the four-path preset).\n"
     << "// For each field F of register R: R_F_LSB and R_F_W; for each register: ADDR_R (byte\n"
     << "// offset), R_MASK (the bits that read back), R_RESET (configuration) or R_VALUE (a\n"
-    << "// constant of the build); reg_defined(a) tells whether a word address is a register.\n"
+    << "// constant of the build); reg_defined(a) tells whether a word address is a register;\n"
+    << "// cfg_from_regs packs the frame configuration word (rtl/sgm_cfg.svh) from the registers.\n"
     << "`ifndef SGM_REGMAP_SVH\n`define SGM_REGMAP_SVH\n\n";
   for (const Register& r : registers) {
     char b[200];
@@ -298,11 +390,133 @@ std::string svHeader() {
   o << "\n";
   for (const Constant& c : constants)
     o << "localparam int " << c.name << " = " << c.value << ";  // " << c.description << "\n";
+  if (!word.empty()) {
+    // cfg_from_regs: the frame configuration word of the registers' values.
+    std::string args;
+    for (const Register* r : wordRegisters())
+      args += std::string(args.empty() ? "" : ",\n") + "    input logic [31:0] reg_" + lower(r->name);
+    o << "\n// The frame configuration word (rtl/sgm_cfg.svh, included before the module) of the\n"
+      << "// registers' values: each field at its place, the highest first.\n"
+      << "function automatic logic [CFG_W-1:0] cfg_from_regs(\n"
+      << args << ");\n  cfg_from_regs = {\n";
+    for (size_t i = word.size(); i-- > 0;) {
+      const WordField& w = word[i];
+      std::string term = "    reg_" + lower(w.reg->name) + bitRange(w.field->lsb, w.field->width) + (i ? "," : "");
+      char b[200];
+      std::snprintf(b, sizeof b, "%-32s // %s, word %s", term.c_str(), (w.reg->name + "." + w.field->name).c_str(),
+                    bitRange(w.lsb, w.field->width).c_str());
+      o << b << "\n";
+    }
+    o << "  };\nendfunction\n";
+  }
   o << "\nfunction automatic logic reg_defined(input logic [ADDR_W-1:0] a);\n  case (a)\n";
   for (size_t i = 0; i < registers.size(); ++i)
     o << (i % 4 == 0 ? "    " : " ") << "ADDR_" << registers[i].name << (i + 1 < registers.size() ? "," : ":")
       << (i % 4 == 3 || i + 1 == registers.size() ? "\n" : "");
   o << "      reg_defined = 1'b1;\n    default: reg_defined = 1'b0;\n  endcase\nendfunction\n\n`endif  // SGM_REGMAP_SVH\n";
+  return o.str();
+}
+
+// ------------------------------------------------------------------ the word, SystemVerilog
+std::string svCfg() {
+  std::ostringstream o;
+  o << "// SPDX-License-Identifier: Apache-2.0\n"
+    << "// sgm_cfg.svh: the frame configuration word, " << kNotice << ".\n"
+    << "//\n"
+    << "// One packed word carries a frame's run-time configuration: sgm_top's cfg_i (sgm_axi packs it\n"
+    << "// from its registers, cfg_from_regs of rtl/sgm_regmap.svh), checked and kept per pending frame\n"
+    << "// by sgm_stream_ctrl, latched at the frame's start (its cfg_o) and sliced by sgm_top for the\n"
+    << "// stages. Field F of register R is bits [CFG_R_F_LSB +: CFG_R_F_W] of the word, at its\n"
+    << "// register width, legal from CFG_R_F_MIN to CFG_R_F_MAX:\n"
+    << "//\n";
+  for (const WordField& w : word) {
+    char b[200];
+    const std::string field = w.reg->name + "." + w.field->name;
+    const std::string regBits = w.reg->name + bitRange(w.field->lsb, w.field->width);
+    std::snprintf(b, sizeof b, "//   %-10s %-26s %s", bitRange(w.lsb, w.field->width).c_str(), field.c_str(),
+                  regBits.c_str());
+    o << b << "\n";
+  }
+  const std::vector<std::string> needs = wordNeeds();
+  o << "//\n"
+    << "// Declarations of the compilation unit, guarded: every file that reads the word includes\n"
+    << "// this file at its top, before its module (the ports use CFG_W). Localparams and functions\n"
+    << "// only, which Verilator 5.006, Yosys 0.23 and Icarus 11 all take (no package, no struct).\n"
+    << "`ifndef SGM_CFG_SVH\n`define SGM_CFG_SVH\n\n"
+    << "localparam int CFG_W = " << wordWidth << ";  // bits of the word\n";
+  for (const WordField& w : word) {
+    const std::string p = "CFG_" + w.name();
+    o << "\nlocalparam int " << p << "_LSB = " << w.lsb << ";\n";
+    o << "localparam int " << p << "_W = " << w.field->width << ";\n";
+    o << "localparam int " << p << "_MIN = " << w.field->minValue << ";\n";
+    o << "localparam int " << p << "_MAX = " << w.field->maxValue << ";\n";
+  }
+  // The MAX checks: every field whose legal range ends below its top.
+  std::vector<std::string> terms;
+  for (const WordField& w : word) {
+    const uint64_t top = (uint64_t(1) << w.field->width) - 1;
+    if (w.field->maxValue >= top) continue;
+    const std::string p = "CFG_" + w.name();
+    terms.push_back("c[" + p + "_LSB +: " + p + "_W] <= " + std::to_string(w.field->width) + "'d" +
+                    std::to_string(w.field->maxValue));
+  }
+  o << "\n// Every field of c at most its MAX (the fields whose legal range ends below their top). The\n"
+    << "// lower bounds above 0, the bounds of the build and the rules across fields are\n"
+    << "// sgm_stream_ctrl's (docs/rtl.md, \"Adding a run-time setting\").\n"
+    << "function automatic logic cfg_below_max(input logic [CFG_W-1:0] c);\n  cfg_below_max = ";
+  if (terms.empty()) o << "1'b1";
+  for (size_t i = 0; i < terms.size(); ++i) o << (i ? " &&\n                  " : "") << terms[i];
+  o << ";\nendfunction\n";
+  // The NEEDS checks.
+  std::string args = "    input logic [CFG_W-1:0] c";
+  for (const std::string& n : needs) args += ",\n    input logic has_" + lower(n);
+  terms.clear();
+  for (const WordField& w : word) {
+    if (w.field->needs.empty()) continue;
+    const std::string p = "CFG_" + w.name();
+    terms.push_back("(has_" + lower(w.field->needs) + " || c[" + p + "_LSB +: " + p +
+                    "_W] == " + std::to_string(w.field->width) + "'d0)");
+  }
+  o << "\n// Every field whose build parameter (NEEDS) the build lacks at 0: has_<need> is 1 when the\n"
+    << "// build has sgm_top's parameter <NEED>.\n"
+    << "function automatic logic cfg_levers_built(\n"
+    << args << ");\n  cfg_levers_built = ";
+  if (terms.empty()) o << "1'b1";
+  for (size_t i = 0; i < terms.size(); ++i) o << (i ? " &&\n                     " : "") << terms[i];
+  o << ";\nendfunction\n\n`endif  // SGM_CFG_SVH\n";
+  return o.str();
+}
+
+// ------------------------------------------------------------------ the word, testbenches
+std::string tbHeader() {
+  std::ostringstream o;
+  o << "// SPDX-License-Identifier: Apache-2.0\n"
+    << "// sgm_cfg_fields.hpp: the frame configuration word for the testbenches, " << kNotice << ".\n"
+    << "// Each field of sgm_top's cfg_i (rtl/sgm_cfg.svh) with its register in sgm_axi and its value\n"
+    << "// for a frame of the golden model's parameters; tb/hardware_config.hpp packs the word and the\n"
+    << "// registers by this table.\n"
+    << "#pragma once\n\n"
+    << "#include \"hardware_codes.hpp\"\n\n"
+    << "#include \"sgm/params.hpp\"\n\n"
+    << "#include <algorithm>\n#include <array>\n#include <cstdint>\n\n"
+    << "namespace sgm::tb {\n\n"
+    << "struct CfgField {\n"
+    << "  const char* name;  // REGISTER_FIELD (sgm_regs.h SGM_REGISTER_FIELD_*)\n"
+    << "  uint32_t reg;      // the register's byte offset in sgm_axi\n"
+    << "  int shift, width;  // the field's bits in the register: [shift +: width]\n"
+    << "  int lsb;           // and in the word: [lsb +: width]\n"
+    << "  // The field's value for a frame of the golden model's parameters p, w x h pixels.\n"
+    << "  uint32_t (*golden)(const Params& p, int w, int h);\n"
+    << "};\n\n"
+    << "constexpr int kCfgWidth = " << wordWidth << ";  // CFG_W, SGM_CFG_W\n\n"
+    << "inline const std::array<CfgField, " << word.size() << "> kCfgFields = {{\n";
+  for (const WordField& w : word) {
+    o << "    {\"" << w.name() << "\", 0x" << hexPlain(w.reg->offset, 2).substr(2) << ", " << w.field->lsb << ", "
+      << w.field->width << ", " << w.lsb << ",\n"
+      << "     []([[maybe_unused]] const Params& p, [[maybe_unused]] int w, [[maybe_unused]] int h) { return uint32_t("
+      << w.golden << "); }},\n";
+  }
+  o << "}};\n\n}  // namespace sgm::tb\n";
   return o.str();
 }
 
@@ -365,6 +579,21 @@ std::string docFields() {
   return o.str();
 }
 
+std::string docWord() {
+  std::ostringstream o;
+  o << "| bits of `cfg_i` | field | register bits | legal | needs |\n|---|---|---|---|---|\n";
+  for (const WordField& w : word) {
+    std::string legal;
+    if (!(w.field->minValue == 0 && w.field->maxValue == (uint64_t(1) << w.field->width) - 1))
+      legal = std::to_string(w.field->minValue) + " .. " + std::to_string(w.field->maxValue);
+    o << "| " << bitRange(w.lsb, w.field->width) << " | " << w.reg->name << "." << w.field->name << " | " << w.reg->name
+      << bitRange(w.field->lsb, w.field->width) << " | " << legal << " | "
+      << (w.field->needs.empty() ? "" : "`" + w.field->needs + "`") << " |\n";
+  }
+  o << "\n" << wordWidth << " bits (`CFG_W`, `SGM_CFG_W`).\n";
+  return o.str();
+}
+
 std::string replaceSection(const std::string& text, const std::string& name, const std::string& body) {
   const std::string begin = "<!-- BEGIN regmap: " + name + " (generated by make regmap; do not edit) -->\n";
   const std::string end = "<!-- END regmap: " + name + " -->";
@@ -400,21 +629,28 @@ int main(int argc, char** argv) {
   check();
   std::stable_sort(registers.begin(), registers.end(),
                    [](const Register& a, const Register& b) { return a.offset < b.offset; });
+  layoutWord();
   std::vector<std::string> args(argv + 1, argv + argc);
-  if (args.empty()) die("usage: regmap_gen [--header FILE] [--svh FILE] [--doc IN OUT]");
+  if (args.empty()) die("usage: regmap_gen [--header FILE] [--svh FILE] [--cfg-svh FILE] [--tb FILE] [--doc IN OUT]");
   for (size_t i = 0; i < args.size(); ++i) {
     if (args[i] == "--header" && i + 1 < args.size()) {
       writeFile(args[++i], cHeader());
     } else if (args[i] == "--svh" && i + 1 < args.size()) {
       writeFile(args[++i], svHeader());
+    } else if (args[i] == "--cfg-svh" && i + 1 < args.size()) {
+      writeFile(args[++i], svCfg());
+    } else if (args[i] == "--tb" && i + 1 < args.size()) {
+      writeFile(args[++i], tbHeader());
     } else if (args[i] == "--doc" && i + 2 < args.size()) {
       std::string text = readFile(args[i + 1]);
       text = replaceSection(text, "map", docMap());
       text = replaceSection(text, "fields", docFields());
+      text = replaceSection(text, "word", docWord());
       writeFile(args[i + 2], text);
       i += 2;
     } else {
-      die("unknown argument '" + args[i] + "' (usage: regmap_gen [--header FILE] [--svh FILE] [--doc IN OUT])");
+      die("unknown argument '" + args[i] +
+          "' (usage: regmap_gen [--header FILE] [--svh FILE] [--cfg-svh FILE] [--tb FILE] [--doc IN OUT])");
     }
   }
   return 0;

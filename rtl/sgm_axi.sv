@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 `default_nettype none
+`include "sgm_cfg.svh"
 // sgm_axi: sgm_top with an AXI4-Lite control and status slave (32-bit data,
 // one clock). The register map is docs/registers.md. Offsets, fields, masks
 // and reset values are described once, in regmap/sgm_regmap.def, from which
-// `make regmap` generates rtl/sgm_regmap.svh (included below), the C header
+// `make regmap` generates rtl/sgm_regmap.svh (included below), the frame
+// configuration word rtl/sgm_cfg.svh (included above), the C header
 // sw/include/sgm_regs.h and the tables of docs/registers.md.
 //
 //   identification  ID, D, MAX_WIDTH, MAX_HEIGHT, CENSUS, MIN_WIDTH, LANES, FEATURES (read-only)
@@ -15,7 +17,8 @@
 //
 // Configuration: the bus writes FRAME_SIZE, PENALTY, CONFIG and EDGE_RESET (shadow
 // registers). While CTRL.HOLD is 0 they are copied every cycle into the active
-// set that drives sgm_top's cfg_*_i, and sgm_top takes the active set at the
+// set, the frame configuration word that drives sgm_top's cfg_i (cfg_from_regs
+// packs the registers' fields), and sgm_top takes the active set at the
 // handshake of a frame's first beat, so a write in the middle of a frame acts
 // from the next frame on. CTRL.HOLD = 1 freezes the active set, so that
 // several registers change together (set HOLD, write, clear HOLD).
@@ -197,29 +200,14 @@ module sgm_axi #(
   wire hold       = ctrl_q[CTRL_HOLD_LSB];
   wire core_reset = soft_reset_q != '0;
 
-  // Active configuration: follows the shadow registers unless held. A size
-  // that does not fit the core's counters is passed as 0, which the core
-  // rejects (error_o[3]) like any other out-of-range size.
-  logic [XW-1:0] act_width;
-  logic [YW-1:0] act_height;
-  logic [31:0]   act_penalty, act_config, act_edge_reset;
-  wire  [15:0]   shadow_width  = frame_size_q[FRAME_SIZE_WIDTH_LSB +: 16];
-  wire  [15:0]   shadow_height = frame_size_q[FRAME_SIZE_HEIGHT_LSB +: 16];
+  // Active configuration: the frame configuration word of the shadow registers, which
+  // it follows unless held. The frame size goes whole (16 bits each): the core drops a
+  // size it cannot take (error_o[3]) like any other configuration out of range.
+  logic [CFG_W-1:0] act_cfg;
 
   always_ff @(posedge clk_i) begin
-    if (!rst_ni) begin
-      act_width   <= '0;
-      act_height  <= '0;
-      act_penalty <= PENALTY_RESET;
-      act_config  <= CONFIG_RESET;
-      act_edge_reset <= EDGE_RESET_RESET;
-    end else if (!hold) begin
-      act_width   <= 32'(shadow_width) <= MAX_WIDTH ? shadow_width[XW-1:0] : '0;
-      act_height  <= 32'(shadow_height) <= MAX_HEIGHT ? shadow_height[YW-1:0] : '0;
-      act_penalty <= penalty_q;
-      act_config  <= config_q;
-      act_edge_reset <= edge_reset_q;
-    end
+    if (!rst_ni)    act_cfg <= cfg_from_regs(32'd0, PENALTY_RESET, CONFIG_RESET, EDGE_RESET_RESET);
+    else if (!hold) act_cfg <= cfg_from_regs(frame_size_q, penalty_q, config_q, edge_reset_q);
   end
 
   // ------------------------------------------------------------ core
@@ -250,26 +238,7 @@ module sgm_axi #(
     .m_tlast_o     (m_tlast_o),
     .m_tvalid_o    (m_tvalid_o),
     .m_tready_i    (m_tready_i),
-    .cfg_width_i   (act_width),
-    .cfg_height_i  (act_height),
-    .cfg_p1_i      (act_penalty[PENALTY_P1_LSB +: PENALTY_P1_W]),
-    .cfg_p2_i      (act_penalty[PENALTY_P2_LSB +: PENALTY_P2_W]),
-    .cfg_ad_cap_i  (act_penalty[PENALTY_AD_CAP_LSB +: PENALTY_AD_CAP_W]),
-    .cfg_ad_weight_i(act_penalty[PENALTY_AD_WEIGHT_LSB +: PENALTY_AD_WEIGHT_W]),
-    .cfg_right_weight_i(act_penalty[PENALTY_RIGHT_WEIGHT_LSB +: PENALTY_RIGHT_WEIGHT_W]),
-    .cfg_reset_t_i (act_edge_reset[EDGE_RESET_T_LSB +: EDGE_RESET_T_W]),
-    .cfg_reset_len_i(act_edge_reset[EDGE_RESET_LEN_LSB +: EDGE_RESET_LEN_W]),
-    .cfg_reset_paths_i(act_edge_reset[EDGE_RESET_PATHS_LSB +: EDGE_RESET_PATHS_W]),
-    .cfg_mode_i    (act_config[CONFIG_MODE_LSB +: CONFIG_MODE_W]),
-    .cfg_subpixel_i(act_config[CONFIG_SUBPIXEL_LSB]),
-    .cfg_lr_en_i   (act_config[CONFIG_LR_ENABLE_LSB]),
-    .cfg_lr_tol_i  (act_config[CONFIG_LR_TOL_LSB +: CONFIG_LR_TOL_W]),
-    .cfg_fill_i    (act_config[CONFIG_FILL_LSB]),
-    .cfg_snap_i    (act_config[CONFIG_SNAP_LSB]),
-    .cfg_median_i  (act_config[CONFIG_MEDIAN_LSB]),
-    .cfg_p2_mode_i (act_config[CONFIG_P2_PAPER_LSB]),
-    .cfg_weights_i (act_config[CONFIG_WEIGHTS_EQUAL_LSB]),
-    .cfg_unique_i  (act_config[CONFIG_UNIQUENESS_LSB +: CONFIG_UNIQUENESS_W]),
+    .cfg_i         (act_cfg),
     .busy_o        (busy),
     .frame_done_o  (frame_done),
     .error_o       (error),
@@ -341,8 +310,7 @@ module sgm_axi #(
     endcase
   end
 
-  wire unused = &{1'b0, reg_re, reg_waddr[1:0], reg_raddr[1:0], error, act_config, act_edge_reset, wset,
-                  shadow_width[15:XW], shadow_height[15:YW]};
+  wire unused = &{1'b0, reg_re, reg_waddr[1:0], reg_raddr[1:0], error, wset};
 
 `ifdef SGM_FORMAL
   // The formal property set (tests/formal/sgm_axi_props.svh; make formal, docs/formal.md).

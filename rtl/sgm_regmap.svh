@@ -4,7 +4,8 @@
 // lever: its registers reset to the golden model's defaults, else to the four-path preset).
 // For each field F of register R: R_F_LSB and R_F_W; for each register: ADDR_R (byte
 // offset), R_MASK (the bits that read back), R_RESET (configuration) or R_VALUE (a
-// constant of the build); reg_defined(a) tells whether a word address is a register.
+// constant of the build); reg_defined(a) tells whether a word address is a register;
+// cfg_from_regs packs the frame configuration word (rtl/sgm_cfg.svh) from the registers.
 `ifndef SGM_REGMAP_SVH
 `define SGM_REGMAP_SVH
 
@@ -171,6 +172,37 @@ localparam logic [31:0] IRQ_STATUS_MASK = 32'h00000003;
 localparam int MIN_HEIGHT = 9;  // shortest frame of every build (sgm_stream_ctrl)
 localparam int ERROR_KINDS = 4;  // error kinds (ERROR, ERROR_COUNT)
 localparam int SOFT_RESET_CYCLES = 4;  // cycles of the soft reset (CTRL.SOFT_RESET)
+
+// The frame configuration word (rtl/sgm_cfg.svh, included before the module) of the
+// registers' values: each field at its place, the highest first.
+function automatic logic [CFG_W-1:0] cfg_from_regs(
+    input logic [31:0] reg_frame_size,
+    input logic [31:0] reg_penalty,
+    input logic [31:0] reg_config,
+    input logic [31:0] reg_edge_reset);
+  cfg_from_regs = {
+    reg_edge_reset[20:16],       // EDGE_RESET.PATHS, word [99:95]
+    reg_edge_reset[11:8],        // EDGE_RESET.LEN, word [94:91]
+    reg_edge_reset[7:0],         // EDGE_RESET.T, word [90:83]
+    reg_config[30:24],           // CONFIG.UNIQUENESS, word [82:76]
+    reg_config[17],              // CONFIG.WEIGHTS_EQUAL, word [75]
+    reg_config[16],              // CONFIG.P2_PAPER, word [74]
+    reg_config[14],              // CONFIG.MEDIAN, word [73]
+    reg_config[13],              // CONFIG.SNAP, word [72]
+    reg_config[12],              // CONFIG.FILL, word [71]
+    reg_config[10:8],            // CONFIG.LR_TOL, word [70:68]
+    reg_config[5],               // CONFIG.LR_ENABLE, word [67]
+    reg_config[4],               // CONFIG.SUBPIXEL, word [66]
+    reg_config[1:0],             // CONFIG.MODE, word [65:64]
+    reg_penalty[31:28],          // PENALTY.RIGHT_WEIGHT, word [63:60]
+    reg_penalty[27:24],          // PENALTY.AD_WEIGHT, word [59:56]
+    reg_penalty[23:16],          // PENALTY.AD_CAP, word [55:48]
+    reg_penalty[15:8],           // PENALTY.P2, word [47:40]
+    reg_penalty[7:0],            // PENALTY.P1, word [39:32]
+    reg_frame_size[31:16],       // FRAME_SIZE.HEIGHT, word [31:16]
+    reg_frame_size[15:0]         // FRAME_SIZE.WIDTH, word [15:0]
+  };
+endfunction
 
 function automatic logic reg_defined(input logic [ADDR_W-1:0] a);
   case (a)

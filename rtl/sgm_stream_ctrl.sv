@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 `default_nettype none
+`include "sgm_cfg.svh"
 // sgm_stream_ctrl: the AXI4-Stream side of the core. Turns input beats into
 // pipeline slots (docs/rtl.md), generates the flush slots after a frame,
 // latches the per-frame configuration at start of frame, frames the output
@@ -21,8 +22,11 @@
 // other than 0 with RIGHT_PATH = 0, a path restart threshold other than 0 with
 // EDGE_RESET = 0), a fifth-path weight above 8 or a path restart with length 0.
 //
-// Configuration is sampled with the tuser beat's handshake (kept per input
-// buffer entry) and applied when that frame starts; the P2 table is refilled then (lut_start_o) and the
+// The configuration is one packed word, the frame configuration word cfg_i
+// (rtl/sgm_cfg.svh, generated from regmap/sgm_regmap.def): sampled whole with the
+// tuser beat's handshake (kept per input buffer entry with its range check) and
+// latched whole into cfg_o when that frame starts (width_o / height_o are its
+// frame size at the widths of the positions); the P2 table is refilled then (lut_start_o) and the
 // frame's first slot follows when lut_ready_i is high. A two-entry input
 // buffer keeps s_tready_o free of combinational paths from the stream inputs.
 // The slot (en_o, pixels, position) is decided one cycle ahead and comes from
@@ -33,10 +37,11 @@
 // count_q alone, not from en_o (the pipeline's enable, spread over the whole
 // device) through the push.
 //
-// Parameters: MAX_WIDTH, MIN_WIDTH (>= max(D, 16)), MAX_HEIGHT, NB census bits (the
+// Parameters: MAX_WIDTH, MIN_WIDTH (>= max(D, 16)), MAX_HEIGHT (each at most
+// FRAME_SIZE's 16-bit fields can hold, 65535), NB census bits (the
 // cost word holds 0 .. 2^CBITS - 1, CBITS = bits of 2 NB), XW/YW column/row
 // bits (rows count on past the frame while flushing: MAX_HEIGHT + flush rows
-// must fit YW bits), PW penalty bits, DW disparity bits (DW <= 15), FIFO_DEPTH,
+// must fit YW bits), DW disparity bits (DW <= 15), FIFO_DEPTH,
 // UNIQUENESS, AD_TERM, RIGHT_PATH and EDGE_RESET (sgm_top's: whether the build
 // has the uniqueness test, the AD term, the fifth path, the path restart at strong
 // edges; 0 rejects frames that set them).
@@ -48,7 +53,6 @@ module sgm_stream_ctrl #(
   parameter int NB         = 44,
   parameter int XW         = 11,
   parameter int YW         = 11,
-  parameter int PW         = 8,
   parameter int DW         = 10,
   parameter int FIFO_DEPTH = 4,
   parameter int UNIQUENESS = 1,
@@ -70,48 +74,13 @@ module sgm_stream_ctrl #(
   output logic                m_tlast_o,
   output logic                m_tvalid_o,
   input  wire                 m_tready_i,
-  // Run-time configuration, sampled at start of frame.
-  input  wire  [XW-1:0]       cfg_width_i,
-  input  wire  [YW-1:0]       cfg_height_i,
-  input  wire  [PW-1:0]       cfg_p1_i,
-  input  wire  [PW-1:0]       cfg_p2_i,
-  input  wire  [1:0]          cfg_mode_i,
-  input  wire                 cfg_subpixel_i,
-  input  wire                 cfg_lr_en_i,
-  input  wire  [2:0]          cfg_lr_tol_i,
-  input  wire                 cfg_fill_i,
-  input  wire                 cfg_snap_i,
-  input  wire                 cfg_median_i,
-  input  wire                 cfg_p2_mode_i,
-  input  wire                 cfg_weights_i,
-  input  wire  [6:0]          cfg_unique_i,
-  input  wire  [3:0]          cfg_ad_weight_i,
-  input  wire  [7:0]          cfg_ad_cap_i,
-  input  wire  [3:0]          cfg_right_weight_i,
-  input  wire  [7:0]          cfg_reset_t_i,      // path restart: T (0 off), R (1 .. 15), path flags
-  input  wire  [3:0]          cfg_reset_len_i,
-  input  wire  [4:0]          cfg_reset_paths_i,
-  // The latched configuration, constant while a frame's slots flow.
+  // Run-time configuration: the frame configuration word (rtl/sgm_cfg.svh), sampled at start of frame.
+  input  wire  [CFG_W-1:0]    cfg_i,
+  // The latched configuration, constant while a frame's slots flow: the word, and its
+  // frame size at the widths of the positions.
+  output logic [CFG_W-1:0]    cfg_o,
   output logic [XW-1:0]       width_o,
   output logic [YW-1:0]       height_o,
-  output logic [PW-1:0]       p1_o,
-  output logic [PW-1:0]       p2_o,
-  output logic [1:0]          mode_o,
-  output logic                subpixel_o,
-  output logic                lr_en_o,
-  output logic [2:0]          lr_tol_o,
-  output logic                fill_o,
-  output logic                snap_o,
-  output logic                median_o,
-  output logic                p2_mode_o,     // 0 knee, 1 paper (P2' / dI)
-  output logic                weights_o,     // 0 = 3,2,3,2, 1 = equal
-  output logic [6:0]          unique_o,      // uniqueness ratio in % (0 .. 99; 0 off)
-  output logic [3:0]          ad_weight_o,   // AD term weight (0 off)
-  output logic [7:0]          ad_cap_o,      // AD term cap
-  output logic [3:0]          right_weight_o, // fifth path weight W5 (0 off, 1 .. 8)
-  output logic [7:0]          reset_t_o,     // path restart threshold T (0 off)
-  output logic [3:0]          reset_len_o,   // path restart length R
-  output logic [4:0]          reset_paths_o, // path restart flags (0, 45, 90, 135 degrees, the fifth path)
   output logic                lut_start_o,
   input  wire                 lut_ready_i,
   // Pipeline slots.
@@ -143,11 +112,11 @@ module sgm_stream_ctrl #(
   if (!(MIN_WIDTH >= 16)) begin : g_bad_min_width
     $error("sgm_stream_ctrl: MIN_WIDTH = %0d: MIN_WIDTH must be at least 16 (frames are 16 or more pixels wide)", MIN_WIDTH);
   end
-  if (!(MAX_WIDTH >= MIN_WIDTH)) begin : g_bad_max_width
-    $error("sgm_stream_ctrl: MAX_WIDTH = %0d: MAX_WIDTH must be at least MIN_WIDTH = %0d", MAX_WIDTH, MIN_WIDTH);
+  if (!(MAX_WIDTH >= MIN_WIDTH && MAX_WIDTH <= CFG_FRAME_SIZE_WIDTH_MAX)) begin : g_bad_max_width
+    $error("sgm_stream_ctrl: MAX_WIDTH = %0d: MAX_WIDTH must be from MIN_WIDTH = %0d to %0d (FRAME_SIZE.WIDTH)", MAX_WIDTH, MIN_WIDTH, CFG_FRAME_SIZE_WIDTH_MAX);
   end
-  if (!(MAX_HEIGHT >= 9)) begin : g_bad_max_height
-    $error("sgm_stream_ctrl: MAX_HEIGHT = %0d: MAX_HEIGHT must be at least 9 (the narrowest frame has 9 rows)", MAX_HEIGHT);
+  if (!(MAX_HEIGHT >= CFG_FRAME_SIZE_HEIGHT_MIN && MAX_HEIGHT <= CFG_FRAME_SIZE_HEIGHT_MAX)) begin : g_bad_max_height
+    $error("sgm_stream_ctrl: MAX_HEIGHT = %0d: MAX_HEIGHT must be from %0d (the shortest frame) to %0d (FRAME_SIZE.HEIGHT)", MAX_HEIGHT, CFG_FRAME_SIZE_HEIGHT_MIN, CFG_FRAME_SIZE_HEIGHT_MAX);
   end
   if (!(NB == 44 || NB == 80)) begin : g_bad_nb
     $error("sgm_stream_ctrl: NB = %0d: NB must be 44 or 80 (9 CENSUS_H - 1 census bits, CENSUS_H 5 or 9)", NB);
@@ -157,9 +126,6 @@ module sgm_stream_ctrl #(
   end
   if (!(YW >= $clog2(MAX_HEIGHT + 16))) begin : g_bad_yw
     $error("sgm_stream_ctrl: YW = %0d: YW must hold MAX_HEIGHT = %0d and the flush rows (at least $clog2(MAX_HEIGHT + 16) bits)", YW, MAX_HEIGHT);
-  end
-  if (!(PW >= 1)) begin : g_bad_pw
-    $error("sgm_stream_ctrl: PW = %0d: PW must be at least 1", PW);
   end
   if (!(DW >= 5 && DW <= 15)) begin : g_bad_dw
     $error("sgm_stream_ctrl: DW = %0d: DW must be from 5 to 15 (4 fractional bits; the output word has 15 data bits)", DW);
@@ -207,64 +173,50 @@ module sgm_stream_ctrl #(
   // starts: one word per input buffer entry, so that a tuser beat keeps its own
   // configuration even when the next frame's tuser enters the buffer behind it
   // (a one-beat malformed frame).
-  // The range check of the configuration (in range: MIN_WIDTH .. MAX_WIDTH columns,
-  // 9 .. MAX_HEIGHT rows, P2' >= P1 (the golden model's contract), cost mode 0, 1
-  // or 2; 3 is not a mode; uniqueness ratio 0 .. 99; Cmax of the mode (NB, or 2 NB
-  // unified) + (W T) >> 3 within the cost word; no lever the build lacks) is done as the word is written and kept with it, so
-  // that the start-of-frame decision reads one flag (its comparisons behind the
-  // entry's distributed RAM would be the 5-lane core's critical path at 95.8 MHz).
-  // The AD term's largest value (W T) >> 3 added to the mode's Cmax stays within
-  // the cost word (the golden model's Params::validate, costLimit).
+  // The range check of the configuration is done as the word is written and kept with
+  // it, so that the start-of-frame decision reads one flag (its comparisons behind the
+  // entry's distributed RAM would be the 5-lane core's critical path at 95.8 MHz). In
+  // range: every field at most its MAX and no lever the build lacks (cfg_below_max,
+  // cfg_levers_built: generated from regmap/sgm_regmap.def into rtl/sgm_cfg.svh: cost
+  // mode 0, 1 or 2, 3 is not a mode; uniqueness ratio 0 .. 99; fifth-path weight 0 .. 8),
+  // and the bounds of the build and the rules across fields, checked here: MIN_WIDTH ..
+  // MAX_WIDTH columns, MIN .. MAX_HEIGHT rows (the frame size whole, at its register
+  // width), P2' >= P1 (the golden model's contract), a path restart length of at least
+  // its MIN when the restart is on, and the AD term's largest value (W T) >> 3 added to
+  // the mode's Cmax (NB, or 2 NB unified) within the cost word (the golden model's
+  // Params::validate, costLimit).
   localparam int CBITS = $clog2(2 * NB + 1);
-  wire [11:0] ad_max  = 12'(cfg_ad_weight_i) * 12'(cfg_ad_cap_i);
-  wire [9:0]  ad_cmax = cfg_mode_i == 2'd2 ? 10'(2 * NB) : 10'(NB);
+  wire [CFG_FRAME_SIZE_WIDTH_W-1:0]  cfg_width     = cfg_i[CFG_FRAME_SIZE_WIDTH_LSB +: CFG_FRAME_SIZE_WIDTH_W];
+  wire [CFG_FRAME_SIZE_HEIGHT_W-1:0] cfg_height    = cfg_i[CFG_FRAME_SIZE_HEIGHT_LSB +: CFG_FRAME_SIZE_HEIGHT_W];
+  wire [CFG_PENALTY_P1_W-1:0]        cfg_p1        = cfg_i[CFG_PENALTY_P1_LSB +: CFG_PENALTY_P1_W];
+  wire [CFG_PENALTY_P2_W-1:0]        cfg_p2        = cfg_i[CFG_PENALTY_P2_LSB +: CFG_PENALTY_P2_W];
+  wire [CFG_CONFIG_MODE_W-1:0]       cfg_mode      = cfg_i[CFG_CONFIG_MODE_LSB +: CFG_CONFIG_MODE_W];
+  wire [CFG_PENALTY_AD_WEIGHT_W-1:0] cfg_ad_weight = cfg_i[CFG_PENALTY_AD_WEIGHT_LSB +: CFG_PENALTY_AD_WEIGHT_W];
+  wire [CFG_PENALTY_AD_CAP_W-1:0]    cfg_ad_cap    = cfg_i[CFG_PENALTY_AD_CAP_LSB +: CFG_PENALTY_AD_CAP_W];
+  wire [CFG_EDGE_RESET_T_W-1:0]      cfg_reset_t   = cfg_i[CFG_EDGE_RESET_T_LSB +: CFG_EDGE_RESET_T_W];
+  wire [CFG_EDGE_RESET_LEN_W-1:0]    cfg_reset_len = cfg_i[CFG_EDGE_RESET_LEN_LSB +: CFG_EDGE_RESET_LEN_W];
+  wire [11:0] ad_max  = 12'(cfg_ad_weight) * 12'(cfg_ad_cap);
+  wire [9:0]  ad_cmax = cfg_mode == 2'd2 ? 10'(2 * NB) : 10'(NB);
   wire        ad_fits = ad_cmax + 10'(ad_max[11:3]) <= 10'((1 << CBITS) - 1);
   wire        unused_ad = ^ad_max[2:0];
-  // A lever the build lacks must be off (UNIQUENESS / AD_TERM = 0).
-  wire        has_levers = (UNIQUENESS != 0 || cfg_unique_i == 7'd0) && (AD_TERM != 0 || cfg_ad_weight_i == 4'd0) &&
-                           (RIGHT_PATH != 0 || cfg_right_weight_i == 4'd0) && (EDGE_RESET != 0 || cfg_reset_t_i == 8'd0);
-  wire cfg_ok = cfg_width_i >= XW'(MIN_WIDTH) && cfg_width_i <= XW'(MAX_WIDTH) &&
-                cfg_height_i >= YW'(9) && cfg_height_i <= YW'(MAX_HEIGHT) &&
-                cfg_p2_i >= cfg_p1_i && cfg_mode_i != 2'd3 && cfg_unique_i <= 7'd99 && ad_fits && has_levers &&
-                cfg_right_weight_i <= 4'd8 && (cfg_reset_t_i == 8'd0 || cfg_reset_len_i != 4'd0);
-  localparam int CFGW = XW + YW + 2 * PW + 36;
-  logic [CFGW-1:0] pend_q [0:1];
+  wire cfg_ok = 32'(cfg_width) >= MIN_WIDTH && 32'(cfg_width) <= MAX_WIDTH &&
+                32'(cfg_height) >= CFG_FRAME_SIZE_HEIGHT_MIN && 32'(cfg_height) <= MAX_HEIGHT &&
+                cfg_p2 >= cfg_p1 && ad_fits &&
+                (cfg_reset_t == 8'd0 || 32'(cfg_reset_len) >= CFG_EDGE_RESET_LEN_MIN) &&
+                cfg_below_max(cfg_i) &&
+                cfg_levers_built(cfg_i, AD_TERM != 0, RIGHT_PATH != 0, UNIQUENESS != 0, EDGE_RESET != 0);
+  logic [CFG_W:0] pend_q [0:1];  // {in range, the word}
   always_ff @(posedge clk_i) begin
-    if (in_push && s_tuser_i)
-      pend_q[in_wr_q] <= {cfg_ok, cfg_width_i, cfg_height_i, cfg_p1_i, cfg_p2_i, cfg_mode_i, cfg_subpixel_i,
-                          cfg_lr_en_i, cfg_lr_tol_i, cfg_fill_i, cfg_snap_i, cfg_median_i, cfg_p2_mode_i,
-                          cfg_weights_i, cfg_unique_i, cfg_ad_weight_i, cfg_ad_cap_i, cfg_right_weight_i};
+    if (in_push && s_tuser_i) pend_q[in_wr_q] <= {cfg_ok, cfg_i};
   end
   // The configuration of the head beat (meaningful when it is a tuser beat).
-  logic [XW-1:0] pend_width;
-  logic [YW-1:0] pend_height;
-  logic [PW-1:0] pend_p1, pend_p2;
-  logic [1:0]    pend_mode;
-  logic          pend_subpixel, pend_lr_en, pend_fill, pend_snap, pend_median, pend_p2_mode, pend_weights;
-  logic [2:0]    pend_lr_tol;
-  logic [6:0]    pend_unique;
-  logic [3:0]    pend_ad_weight;
-  logic [7:0]    pend_ad_cap;
-  logic [3:0]    pend_right_weight;
-  logic [7:0]    pend_reset_t;
-  logic [3:0]    pend_reset_len;
-  logic [4:0]    pend_reset_paths;
-  logic          pend_ok;
-  assign {pend_ok, pend_width, pend_height, pend_p1, pend_p2, pend_mode, pend_subpixel, pend_lr_en,
-          pend_lr_tol, pend_fill, pend_snap, pend_median, pend_p2_mode, pend_weights, pend_unique,
-          pend_ad_weight, pend_ad_cap, pend_right_weight} = pend_q[in_rd_q];
-  // The path restart's fields, in a word of their own per entry in a build with it
-  // (without it the frame's T must be 0, checked in cfg_ok, and they are constants).
-  if (EDGE_RESET != 0) begin : g_reset_cfg
-    logic [16:0] pend_reset_q [0:1];
-    always_ff @(posedge clk_i) begin
-      if (in_push && s_tuser_i) pend_reset_q[in_wr_q] <= {cfg_reset_t_i, cfg_reset_len_i, cfg_reset_paths_i};
-    end
-    assign {pend_reset_t, pend_reset_len, pend_reset_paths} = pend_reset_q[in_rd_q];
-  end else begin : g_no_reset_cfg
-    assign {pend_reset_t, pend_reset_len, pend_reset_paths} = '0;
-    wire unused_reset_cfg = ^{cfg_reset_len_i, cfg_reset_paths_i};
-  end
+  logic [CFG_W-1:0] pend_cfg;
+  logic             pend_ok;
+  assign {pend_ok, pend_cfg} = pend_q[in_rd_q];
+
+  // The frame size at the widths of the positions (in range: it fits them).
+  assign width_o  = XW'(cfg_o[CFG_FRAME_SIZE_WIDTH_LSB +: CFG_FRAME_SIZE_WIDTH_W]);
+  assign height_o = YW'(cfg_o[CFG_FRAME_SIZE_HEIGHT_LSB +: CFG_FRAME_SIZE_HEIGHT_W]);
 
   // ---------------------------------------------------------------- output FIFO
   localparam int FAW = $clog2(FIFO_DEPTH);
@@ -395,26 +347,7 @@ module sgm_stream_ctrl #(
           error_o     <= {~pend_ok, 3'b000};
           error_set_o <= {~pend_ok, 3'b000};
           if (pend_ok) begin
-            width_o     <= pend_width;
-            height_o    <= pend_height;
-            p1_o        <= pend_p1;
-            p2_o        <= pend_p2;
-            mode_o      <= pend_mode;
-            subpixel_o  <= pend_subpixel;
-            lr_en_o     <= pend_lr_en;
-            lr_tol_o    <= pend_lr_tol;
-            fill_o      <= pend_fill;
-            snap_o      <= pend_snap;
-            median_o    <= pend_median;
-            p2_mode_o   <= pend_p2_mode;
-            weights_o   <= pend_weights;
-            unique_o    <= pend_unique;
-            ad_weight_o <= pend_ad_weight;
-            ad_cap_o    <= pend_ad_cap;
-            right_weight_o <= pend_right_weight;
-            reset_t_o      <= pend_reset_t;
-            reset_len_o    <= pend_reset_len;
-            reset_paths_o  <= pend_reset_paths;
+            cfg_o       <= pend_cfg;
             lut_start_o <= 1'b1;
           end
         end

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 `default_nettype none
+`include "sgm_cfg.svh"
 // sgm_top: Semi-Global Matching stereo core with the refined rank cost of
 // Yao & Cheng, one pixel per clock (docs/algorithm.md defines every bit,
 // docs/rtl.md the architecture).
@@ -24,20 +25,25 @@
 // two run-time levers that cost area, the uniqueness ratio (sgm_wta, the unique
 // flag in sgm_lr_check) and the AD term (sgm_cost_volume's PEs and the gray in its
 // delay line); with 0 the logic is not built, the latencies are the same, and a
-// frame that asks for the missing lever (cfg_unique_i != 0, cfg_ad_weight_i != 0)
+// frame that asks for the missing lever (CONFIG.UNIQUENESS or PENALTY.AD_WEIGHT not 0)
 // is dropped with error_o[3] (sgm_axi's FEATURES register reports the build).
 // RIGHT_BLOCK = B > 0 builds the fifth path, 0 degrees from the right, in blocks of
 // B pixels with one block of look-ahead (sgm_right_path, docs/algorithm.md section 5;
-// run-time weight cfg_right_weight_i, 0 = off): it sits between the cost volume and
+// run-time weight PENALTY.RIGHT_WEIGHT, 0 = off): it sits between the cost volume and
 // the path engine and delays everything behind the census by its latency
 // (K (4B + 1 + ceil(5 / K)) + 1 slots); 0 leaves it out (the default: 64).
 // EDGE_RESET = 1 builds the path restart at strong edges (docs/rtl.md; run-time
-// cfg_reset_t_i, 0 = off, cfg_reset_len_i, cfg_reset_paths_i; the default); 0
-// leaves it out, and a frame with cfg_reset_t_i != 0 is dropped with error_o[3].
+// EDGE_RESET.T, 0 = off, LEN and PATHS; the default); 0 leaves it out, and a frame
+// with T != 0 is dropped with error_o[3].
+// Configuration: cfg_i, the frame configuration word (rtl/sgm_cfg.svh, generated from
+// regmap/sgm_regmap.def; its fields are the read-write fields of sgm_axi's FRAME_SIZE,
+// PENALTY, CONFIG and EDGE_RESET, docs/registers.md), taken at each start of frame by
+// sgm_stream_ctrl, which checks it and latches it whole; this module slices the latched
+// word for the stages by the generated CFG_<REGISTER>_<FIELD>_LSB / _W.
 // Frame constraints: MIN_FRAME_WIDTH (max(D, 16); with many lanes at least the
 // engine's K SKEW + 1) <= width <= MAX_WIDTH, 9 <= height <= MAX_HEIGHT
-// (frames outside are dropped and flagged in error_o[3], as are P2' < P1, cfg_mode_i = 3
-// and a lever the build lacks).
+// (frames outside are dropped and flagged in error_o[3], as are P2' < P1, cost mode 3,
+// a field above its legal range and a lever the build lacks).
 // Throughput: one pixel per clock while a frame streams; after its last input
 // pixel a frame needs about 6 more lines of flush (8 with the 9x9 census; K lanes add LR_LAG,
 // about 2K - 2 lines; input stalled) and, at its start, the P2 table fill (about 2 x 256 cycles).
@@ -79,7 +85,7 @@ module sgm_top #(
   localparam int LR_WAIT    = (D + 4) * LANES + COST_LATENCY,
   localparam int LR_LAG_MAX = LANES == 1 ? 0 :
                               2 * LANES - 3 + (LR_WAIT + MIN_FRAME_WIDTH - 1) / MIN_FRAME_WIDTH,
-  localparam int YW        = $clog2(MAX_HEIGHT + 16),  // height ports
+  localparam int YW        = $clog2(MAX_HEIGHT + 16),  // the frame height output
   // Row positions inside the core: rows before a frame's row 0 (negative,
   // RW-bit wrap) and after its last (flush) must not alias: 16 with one lane,
   // LR_LAG_MAX and the lanes' lead more, and the rows the fifth path's delay adds to the flush.
@@ -107,29 +113,8 @@ module sgm_top #(
   output logic         m_tlast_o,
   output logic         m_tvalid_o,
   input  wire          m_tready_i,
-  // Configuration, latched at start of frame.
-  input  wire [XW-1:0] cfg_width_i,
-  input  wire [YW-1:0] cfg_height_i,
-  input  wire  [7:0]   cfg_p1_i,
-  input  wire  [7:0]   cfg_p2_i,
-  input  wire  [1:0]   cfg_mode_i,     // 0 rt, 1 rsad, 2 unified (3: out of range, error_o[3])
-  input  wire          cfg_subpixel_i,
-  input  wire          cfg_lr_en_i,
-  input  wire  [2:0]   cfg_lr_tol_i,
-  input  wire          cfg_fill_i,
-  input  wire          cfg_snap_i,
-  input  wire          cfg_median_i,
-  input  wire          cfg_p2_mode_i,  // P2 adaptation: 0 knee 4 P2' / (dI + 4), 1 paper P2' / dI
-  input  wire          cfg_weights_i,  // path weights of S: 0 = 3,2,3,2, 1 = equal (the paper's sum)
-  input  wire  [6:0]   cfg_unique_i,   // uniqueness ratio in %: 0 off, 1 .. 99 (100 .. 127: out of range, error_o[3])
-  input  wire  [3:0]   cfg_ad_weight_i, // AD term weight W: 0 off, 1 .. 15
-  input  wire  [7:0]   cfg_ad_cap_i,    // AD term cap T; Cmax of the mode + (W T) >> 3 >= 2^CBITS: out of range, error_o[3]
-  input  wire  [3:0]   cfg_right_weight_i, // fifth path weight W5: 0 off, 1 .. 8 (9 .. 15, or any but 0 without RIGHT_BLOCK: error_o[3])
-  // The path restart at strong edges: T (0 off; any but 0 without EDGE_RESET: error_o[3]),
-  // R (1 .. 15; 0 with T != 0: error_o[3]), flags of the paths 0, 45, 90, 135 degrees, the fifth.
-  input  wire  [7:0]   cfg_reset_t_i,
-  input  wire  [3:0]   cfg_reset_len_i,
-  input  wire  [4:0]   cfg_reset_paths_i,
+  // Configuration: the frame configuration word (rtl/sgm_cfg.svh), latched at start of frame.
+  input  wire [CFG_W-1:0] cfg_i,
   // Status.
   output logic         busy_o,
   output logic         frame_done_o,
@@ -185,17 +170,12 @@ module sgm_top #(
   logic [XW-1:0] col0, width;
   logic          sof0;  // the slot is the frame's first, (0, 0): a flag of the controller
   logic [RW-1:0] row0, height;
-  logic [7:0]    p1, p2;
-  logic [1:0]    mode;
-  logic          subpixel, lr_en, fill_en, snap_en, median_en, p2_mode, weights_eq;
-  logic [2:0]    lr_tol;
-  logic [6:0]    uniq;
-  logic [3:0]    ad_weight;
-  logic [3:0]    right_weight;
-  logic [7:0]    ad_cap;
-  logic [7:0]    reset_t;
-  logic [3:0]    reset_len;
-  logic [4:0]    reset_paths;
+  // The frame's configuration word, latched at its start: the stages take its fields,
+  // cfg[CFG_<REGISTER>_<FIELD>_LSB +: CFG_<REGISTER>_<FIELD>_W]; the frame size they take
+  // at the positions' widths (width, height).
+  logic [CFG_W-1:0] cfg;
+  wire  [CFG_FRAME_SIZE_WIDTH_W+CFG_FRAME_SIZE_HEIGHT_W-1:0] unused_cfg_size =
+      {cfg[CFG_FRAME_SIZE_HEIGHT_LSB +: CFG_FRAME_SIZE_HEIGHT_W], cfg[CFG_FRAME_SIZE_WIDTH_LSB +: CFG_FRAME_SIZE_WIDTH_W]};
   logic          lut_start, lut_ready;
   logic          res_valid, res_ok;
   logic [DW-1:0] res_disp;
@@ -207,7 +187,6 @@ module sgm_top #(
     .NB        (NB),
     .XW        (XW),
     .YW        (RW),
-    .PW        (8),
     .DW        (DW),
     .FIFO_DEPTH(4),
     .UNIQUENESS(UNIQUENESS),
@@ -227,46 +206,10 @@ module sgm_top #(
     .m_tlast_o     (m_tlast_o),
     .m_tvalid_o    (m_tvalid_o),
     .m_tready_i    (m_tready_i),
-    .cfg_width_i   (cfg_width_i),
-    .cfg_height_i  (RW'(cfg_height_i)),
-    .cfg_p1_i      (cfg_p1_i),
-    .cfg_p2_i      (cfg_p2_i),
-    .cfg_mode_i    (cfg_mode_i),
-    .cfg_subpixel_i(cfg_subpixel_i),
-    .cfg_lr_en_i   (cfg_lr_en_i),
-    .cfg_lr_tol_i  (cfg_lr_tol_i),
-    .cfg_fill_i    (cfg_fill_i),
-    .cfg_snap_i    (cfg_snap_i),
-    .cfg_median_i  (cfg_median_i),
-    .cfg_p2_mode_i (cfg_p2_mode_i),
-    .cfg_weights_i (cfg_weights_i),
-    .cfg_unique_i  (cfg_unique_i),
-    .cfg_ad_weight_i(cfg_ad_weight_i),
-    .cfg_ad_cap_i  (cfg_ad_cap_i),
-    .cfg_right_weight_i(cfg_right_weight_i),
-    .cfg_reset_t_i (cfg_reset_t_i),
-    .cfg_reset_len_i(cfg_reset_len_i),
-    .cfg_reset_paths_i(cfg_reset_paths_i),
+    .cfg_i         (cfg_i),
+    .cfg_o         (cfg),
     .width_o       (width),
     .height_o      (height),
-    .p1_o          (p1),
-    .p2_o          (p2),
-    .mode_o        (mode),
-    .subpixel_o    (subpixel),
-    .lr_en_o       (lr_en),
-    .lr_tol_o      (lr_tol),
-    .fill_o        (fill_en),
-    .snap_o        (snap_en),
-    .median_o      (median_en),
-    .p2_mode_o     (p2_mode),
-    .weights_o     (weights_eq),
-    .unique_o      (uniq),
-    .ad_weight_o   (ad_weight),
-    .ad_cap_o      (ad_cap),
-    .right_weight_o(right_weight),
-    .reset_t_o     (reset_t),
-    .reset_len_o   (reset_len),
-    .reset_paths_o (reset_paths),
     .lut_start_o   (lut_start),
     .lut_ready_i   (lut_ready),
     .en_o          (en_ctrl),
@@ -429,9 +372,9 @@ module sgm_top #(
     .clk_i     (clk_i),
     .rst_ni    (rst_ni),
     .en_i      (en),
-    .mode_i    (mode),
-    .ad_weight_i(ad_weight),
-    .ad_cap_i  (ad_cap),
+    .mode_i    (cfg[CFG_CONFIG_MODE_LSB +: CFG_CONFIG_MODE_W]),
+    .ad_weight_i(cfg[CFG_PENALTY_AD_WEIGHT_LSB +: CFG_PENALTY_AD_WEIGHT_W]),
+    .ad_cap_i  (cfg[CFG_PENALTY_AD_CAP_LSB +: CFG_PENALTY_AD_CAP_W]),
     .lgray_i   (lane_centre),
     .rgray_i   (lane_centre_r),
     .lcensus_i (lane_census_l),
@@ -481,14 +424,14 @@ module sgm_top #(
       .rst_ni      (rst_ni),
       .en_i        (en),
       .width_i     (width),
-      .p1_i        (p1),
-      .weight_i    (right_weight),
-      .reset_t_i   (reset_t),
-      .reset_len_i (reset_len),
-      .reset_en_i  (reset_paths[4]),
+      .p1_i        (cfg[CFG_PENALTY_P1_LSB +: CFG_PENALTY_P1_W]),
+      .weight_i    (cfg[CFG_PENALTY_RIGHT_WEIGHT_LSB +: CFG_PENALTY_RIGHT_WEIGHT_W]),
+      .reset_t_i   (cfg[CFG_EDGE_RESET_T_LSB +: CFG_EDGE_RESET_T_W]),
+      .reset_len_i (cfg[CFG_EDGE_RESET_LEN_LSB +: CFG_EDGE_RESET_LEN_W]),
+      .reset_en_i  (cfg[CFG_EDGE_RESET_PATHS_LSB + 4]),  // the fifth path's restart flag
       .lut_start_i (lut_start),
-      .p2_i        (p2),
-      .p2_mode_i   (p2_mode),
+      .p2_i        (cfg[CFG_PENALTY_P2_LSB +: CFG_PENALTY_P2_W]),
+      .p2_mode_i   (cfg[CFG_CONFIG_P2_PAPER_LSB]),
       .lut_ready_i (lut_ready_paths),
       .lut_ready_o (lut_ready),
       .cost_i      (cost),
@@ -506,7 +449,8 @@ module sgm_top #(
            {lane_col, lane_row, lane_centre, lane_nbr, lane_valid};
     assign {rdt_col_e, rdt_row_e} = {rdt_col, rdt_row};
     assign l5w = '0;
-    wire [XW+4:0] unused_right = {right_weight, col2, reset_paths[4]};  // wiring only (no logic in the top)
+    wire [XW+4:0] unused_right = {cfg[CFG_PENALTY_RIGHT_WEIGHT_LSB +: CFG_PENALTY_RIGHT_WEIGHT_W], col2,
+                                  cfg[CFG_EDGE_RESET_PATHS_LSB + 4]};  // wiring only (no logic in the top)
   end
 
   // The path engine also needs the row and the left grays of the pixel,
@@ -538,14 +482,14 @@ module sgm_top #(
     .rst_ni      (rst_ni),
     .en_i        (en),
     .width_i     (width),
-    .p1_i        (p1),
-    .weights_eq_i(weights_eq),
-    .reset_t_i   (reset_t),
-    .reset_len_i (reset_len),
-    .reset_paths_i(reset_paths[3:0]),
+    .p1_i        (cfg[CFG_PENALTY_P1_LSB +: CFG_PENALTY_P1_W]),
+    .weights_eq_i(cfg[CFG_CONFIG_WEIGHTS_EQUAL_LSB]),
+    .reset_t_i   (cfg[CFG_EDGE_RESET_T_LSB +: CFG_EDGE_RESET_T_W]),
+    .reset_len_i (cfg[CFG_EDGE_RESET_LEN_LSB +: CFG_EDGE_RESET_LEN_W]),
+    .reset_paths_i(cfg[CFG_EDGE_RESET_PATHS_LSB +: 4]),  // the four paths' restart flags
     .lut_start_i (lut_start),
-    .p2_i        (p2),
-    .p2_mode_i   (p2_mode),
+    .p2_i        (cfg[CFG_PENALTY_P2_LSB +: CFG_PENALTY_P2_W]),
+    .p2_mode_i   (cfg[CFG_CONFIG_P2_PAPER_LSB]),
     .lut_ready_o (lut_ready_paths),
     .cost_i      (cost_e),
     .col_i       (lane_col_e),
@@ -573,8 +517,8 @@ module sgm_top #(
     .clk_i      (clk_i),
     .rst_ni     (rst_ni),
     .en_i       (en),
-    .subpixel_i (subpixel),
-    .uniq_i     (uniq),
+    .subpixel_i (cfg[CFG_CONFIG_SUBPIXEL_LSB]),
+    .uniq_i     (cfg[CFG_CONFIG_UNIQUENESS_LSB +: CFG_CONFIG_UNIQUENESS_W]),
     .s_i        (sum),
     .col_i      (col3),
     .row_i      (row3),
@@ -610,8 +554,8 @@ module sgm_top #(
     .en_i        (en),
     .width_i     (width),
     .height_i    (height),
-    .tol_i       (lr_tol),
-    .check_en_i  (lr_en),
+    .tol_i       (cfg[CFG_CONFIG_LR_TOL_LSB +: CFG_CONFIG_LR_TOL_W]),
+    .check_en_i  (cfg[CFG_CONFIG_LR_ENABLE_LSB]),
     .s_i         (sum),
     .col_i       (col3),
     .row_i       (row3),
@@ -642,7 +586,7 @@ module sgm_top #(
     .clk_i       (clk_i),
     .rst_ni      (rst_ni),
     .en_i        (en),
-    .fill_en_i   (fill_en),
+    .fill_en_i   (cfg[CFG_CONFIG_FILL_LSB]),
     .width_i     (width),
     .height_i    (height),
     .disp_i      (lr_disp),
@@ -673,7 +617,7 @@ module sgm_top #(
     .clk_i       (clk_i),
     .rst_ni      (rst_ni),
     .en_i        (en),
-    .snap_en_i   (snap_en),
+    .snap_en_i   (cfg[CFG_CONFIG_SNAP_LSB]),
     .width_i     (width),
     .height_i    (height),
     .gray_we_i   (lane_valid_e),
@@ -700,7 +644,7 @@ module sgm_top #(
     .clk_i       (clk_i),
     .rst_ni      (rst_ni),
     .en_i        (en),
-    .median_en_i (median_en),
+    .median_en_i (cfg[CFG_CONFIG_MEDIAN_LSB]),
     .width_i     (width),
     .height_i    (height),
     .disp_i      (snap_disp),

@@ -69,8 +69,12 @@ void Driver::configure(const FrameConfig& f) {
 }
 
 FrameConfig Driver::readConfig() {
-  FrameConfig f;
   const uint32_t size = read(SGM_REG_FRAME_SIZE), penalty = read(SGM_REG_PENALTY), config = read(SGM_REG_CONFIG);
+  return decode(size, penalty, config, read(SGM_REG_EDGE_RESET));
+}
+
+FrameConfig Driver::decode(uint32_t size, uint32_t penalty, uint32_t config, uint32_t edge) {
+  FrameConfig f;
   f.width = SGM_GET(size, FRAME_SIZE_WIDTH);
   f.height = SGM_GET(size, FRAME_SIZE_HEIGHT);
   f.p1 = SGM_GET(penalty, PENALTY_P1);
@@ -88,7 +92,6 @@ FrameConfig Driver::readConfig() {
   f.p2Paper = SGM_GET(config, CONFIG_P2_PAPER);
   f.weightsEqual = SGM_GET(config, CONFIG_WEIGHTS_EQUAL);
   f.uniqueness = SGM_GET(config, CONFIG_UNIQUENESS);
-  const uint32_t edge = read(SGM_REG_EDGE_RESET);
   f.edgeReset = SGM_GET(edge, EDGE_RESET_T);
   f.edgeResetLength = SGM_GET(edge, EDGE_RESET_LEN);
   f.edgeResetPaths = SGM_GET(edge, EDGE_RESET_PATHS);

@@ -144,7 +144,7 @@ PNR_DEVNAME  = LFE5U-$(subst k,F,$(PNR_DEVICE))
 PNR_RUN      = $(PNR_CFG)/lfe5u-$(subst k,f,$(PNR_DEVICE))-$(PNR_SPEED)
 PNR_LOCK     = $(PNR_DIR)/.lock
 PNR_SUMMARY  = $(BIN)/pnr-summary
-PNR_DEPS    := $(RTL_SRC) synth/common.tcl synth/ecp5.tcl synth/ecp5_cmp.tcl synth/ecp5_cmp_lut.v
+PNR_DEPS    := $(RTL_SRC) $(RTL_INC) synth/common.tcl synth/ecp5.tcl synth/ecp5_cmp.tcl synth/ecp5_cmp_lut.v
 
 .PHONY: pnr pnr-ci pnr-one pnr-summary pnr-tools pnr-clean pnr-help ecp5-cmp-check
 

@@ -61,7 +61,7 @@ SYNTH_CI_CORE = $(SYNTH_CORE) D=$(SYNTH_CI_D) MAX_WIDTH=$(SYNTH_CI_MAX_WIDTH)
 SYNTH_LOOP    = $(SYNTH_DIR)/ice40-loop-d$(ICE40_LOOP_D)
 SYNTH_LOCK    = $(SYNTH_DIR)/.lock
 SYNTH_SUMMARY = $(BIN)/synth-summary
-SYNTH_COMMON := $(RTL_SRC) synth/common.tcl
+SYNTH_COMMON := $(RTL_SRC) $(RTL_INC) synth/common.tcl
 
 .PHONY: synth synth-ci synth-summary synth-help synth-clean synth-flat \
         synth-xc7 synth-xc6s synth-generic synth-ice40 synth-ice40-loop

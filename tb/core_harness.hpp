@@ -7,7 +7,8 @@
 // middle (FrameInput::resetAfterBeats). The golden comparison is done by the
 // caller (compareMaps).
 //
-// The harness drives sgm_top's cfg_*_i ports when the model has them; a model
+// The harness drives sgm_top's frame configuration word cfg_i when the model has it
+// (packed by tb/hardware_config.hpp from the generated table of the word); a model
 // configured another way (sgm_axi: registers on an AXI4-Lite bus) sets a
 // presenter (called where the next frame's configuration is due: before the
 // first frame, then after each frame's first input beat) and cycle hooks (a bus
@@ -17,6 +18,7 @@
 
 #include "axis_bfm.hpp"
 #include "hardware_config.hpp"
+#include "port_bits.hpp"
 #include "verilated_top.hpp"
 
 #include "sgm/image_io.hpp"
@@ -26,6 +28,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <map>
 #include <sstream>
 #include <string>
 #include <type_traits>
@@ -34,11 +37,11 @@
 
 namespace sgm::tb {
 
-// Does the model have sgm_top's configuration and status ports?
+// Does the model have sgm_top's configuration word and status ports?
 template <class M, class = void>
 struct HasConfigPorts : std::false_type {};
 template <class M>
-struct HasConfigPorts<M, std::void_t<decltype(std::declval<M&>().cfg_width_i)>> : std::true_type {};
+struct HasConfigPorts<M, std::void_t<decltype(std::declval<M&>().cfg_i)>> : std::true_type {};
 template <class M, class = void>
 struct HasStatusPorts : std::false_type {};
 template <class M>
@@ -54,12 +57,10 @@ struct FrameInput {
   // frame is out), rst_ni goes low for a few cycles; the frame owes no output
   // and the next frame starts on a freshly reset core.
   long resetAfterBeats = -1;
-  // >= 0: presented on cfg_mode_i instead of the code of params.mode (3, the unused encoding).
-  int modeCode = -1;
-  int uniqueCode = -1;       // when >= 0, replaces cfg_unique_i (an out-of-range ratio on purpose)
-  int adWeightCode = -1;     // when >= 0, replaces cfg_ad_weight_i (an AD term that leaves the cost word)
-  int rightWeightCode = -1;  // when >= 0, replaces cfg_right_weight_i (a fifth-path weight out of range)
-  int resetLengthCode = -1;  // when >= 0, replaces cfg_reset_len_i (a restart of length 0)
+  // Fields of the configuration word (REGISTER_FIELD, e.g. "CONFIG_MODE") presented with
+  // these values instead of params' (an out-of-range value on purpose: cost mode 3, a
+  // uniqueness ratio above 99, a restart of length 0, ...).
+  std::map<std::string, uint32_t> fieldCodes = {};
   // The configuration is out of range: the core drops the frame whole (no output,
   // no frame_done_o); FrameOutput::errors is error_o once its last beat is in.
   bool dropped = false;
@@ -132,7 +133,7 @@ class CoreHarness {
 
   VerilatedTop<Model>& top() { return top_; }
 
-  // Replaces the cfg_*_i ports as the way a frame's configuration is given.
+  // Replaces the cfg_i port as the way a frame's configuration is given.
   void setPresenter(std::function<void(const Params&, cv::Size)> presenter) { presenter_ = std::move(presenter); }
   // Called every cycle before the model evaluates its inputs (drive) and
   // after (sample: the handshakes of this cycle), before the clock edge.
@@ -245,33 +246,15 @@ class CoreHarness {
     if constexpr (HasConfigPorts<Model>::value)
       presentPorts(f);
     else
-      throw Error("the model has no cfg_*_i ports: set a presenter");
+      throw Error("the model has no cfg_i port: set a presenter");
   }
 
-  // modeCode / uniqueCode, when set, replace the mode's encoding / the uniqueness
-  // ratio (an out-of-range value on purpose).
+  // The word of the frame's parameters, with its fieldCodes in place of theirs.
   void presentPorts(const FrameInput& f) {
-    const HardwareConfig c = hardwareConfig(f.params, f.left.cols, f.left.rows);
-    top_->cfg_width_i = c.width;
-    top_->cfg_height_i = c.height;
-    top_->cfg_p1_i = c.p1;
-    top_->cfg_p2_i = c.p2;
-    top_->cfg_mode_i = f.modeCode >= 0 ? f.modeCode : c.mode;
-    top_->cfg_subpixel_i = c.subpixel;
-    top_->cfg_lr_en_i = c.lrEnable;
-    top_->cfg_lr_tol_i = c.lrTolerance;
-    top_->cfg_fill_i = c.fill;
-    top_->cfg_snap_i = c.snap;
-    top_->cfg_median_i = c.median;
-    top_->cfg_p2_mode_i = c.p2Paper;
-    top_->cfg_weights_i = c.weightsEqual;
-    top_->cfg_unique_i = f.uniqueCode >= 0 ? f.uniqueCode : c.uniqueness;
-    top_->cfg_ad_weight_i = f.adWeightCode >= 0 ? f.adWeightCode : c.adWeight;
-    top_->cfg_ad_cap_i = c.adCap;
-    top_->cfg_right_weight_i = f.rightWeightCode >= 0 ? f.rightWeightCode : c.rightWeight;
-    top_->cfg_reset_t_i = c.resetThreshold;
-    top_->cfg_reset_len_i = f.resetLengthCode >= 0 ? f.resetLengthCode : c.resetLength;
-    top_->cfg_reset_paths_i = c.resetPaths;
+    HardwareConfig c = hardwareConfig(f.params, f.left.cols, f.left.rows);
+    for (const auto& [name, value] : f.fieldCodes) c.set(name, value);
+    const std::vector<uint32_t> word = c.word();
+    for (size_t i = 0; i < word.size(); ++i) setWord(top_->cfg_i, int(i), word[i]);
   }
 
   DisparityMap decode(size_t first, int w, int h) {

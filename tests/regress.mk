@@ -38,7 +38,7 @@ REGRESS_ARGS        = --max-height $(REGRESS_MAX_HEIGHT) $(if $(REGRESS_SEED),--
                       $(if $(REGRESS_CASE),--case $(REGRESS_CASE),--frames $(REGRESS_FRAMES))
 
 define regress_build
-$(1): tests/rtl/regress_main.cpp $(RTL_SRC) $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
+$(1): tests/rtl/regress_main.cpp $(RTL_SRC) $(RTL_INC) $(TB_HDR) $(EVAL_OBJ) $(GOLDEN_LIB) | check-tools
 	@mkdir -p $(BIN) $(BUILD)/verilator
 	@echo "verilating sgm_top ($(call core_tag,$(2))) for $$@ (log: $(BUILD)/verilator-$$(notdir $$@).log)"
 	@$(VERILATOR) --cc --exe --build -j $(JOBS) -Wall $(VLT) $(REGRESS_VFLAGS) $(3) -y rtl --top-module sgm_top \

@@ -68,13 +68,20 @@ std::optional<double> number(const Json& object, const char* key) {
   return v->number;
 }
 
+// A tool's version as the page shows it: Yosys without its build's git hash, nextpnr as
+// the version its banner names ("... (Version nextpnr-0.11.1)" -> "nextpnr-0.11.1").
+std::string toolVersion(const std::string& banner) {
+  std::string v = banner.substr(0, banner.find(" (git sha1"));
+  const size_t at = v.find("(Version ");
+  if (at != std::string::npos) v = v.substr(at + 9, v.find(')', at) - at - 9);
+  return v;
+}
+
 // "used / available" when the report has the available count.
 std::string usedOf(const Json& run, const char* used, const char* available) {
   const std::string a = text(run, available);
   return a == "-" ? text(run, used) : text(run, used) + " / " + a;
 }
-
-std::string code(const std::string& s) { return s == "-" ? s : "`" + s + "`"; }
 
 // Every summary.json below root (recursively), sorted by path.
 std::vector<std::string> synthSummaries(const std::string& root) {
@@ -109,17 +116,18 @@ void pnrSection(std::ostringstream& md, const Report& pnr) {
     md << "No routed build in " << pnr.path << ": run `make pnr`.\n\n";
   } else {
     md << "| build | device | speed | D | MAX_WIDTH | lanes | LUT4 | FF | EBR | DSP | fmax (MHz) | seed | nextpnr | "
-          "Yosys | RTL | date |\n|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---|---|---|\n";
+          "Yosys | date |\n|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---|---|\n";
     for (const Json& r : runs.items) {
       md << "| " << text(need(r, "run", pnr.path)) << " | " << text(r, "device") << "-" << text(r, "package") << " | "
          << text(r, "speed") << " | " << text(need(r, "d", pnr.path)) << " | " << text(need(r, "max_width", pnr.path))
          << " | " << text(r, "lanes") << " | " << usedOf(r, "lut4", "lut4_available") << " | "
          << usedOf(r, "ff", "ff_available") << " | " << usedOf(r, "ebr", "ebr_available") << " | " << text(r, "dsp")
-         << " | **" << text(need(r, "fmax_mhz", pnr.path)) << "** | " << text(r, "seed") << " | " << text(r, "nextpnr")
-         << " | " << text(r, "yosys") << " | " << code(text(r, "rtl_commit")) << " | " << text(r, "date") << " |\n";
+         << " | **" << text(need(r, "fmax_mhz", pnr.path)) << "** | " << text(r, "seed") << " | "
+         << toolVersion(text(r, "nextpnr")) << " | " << toolVersion(text(r, "yosys")) << " | " << text(r, "date")
+         << " |\n";
     }
     md << "\nSource: " << pnr.path
-       << " (runs[]: lut4, ff, ebr with their _available, dsp, fmax_mhz, seed, nextpnr, yosys, rtl_commit, date).\n\n";
+       << " (runs[]: lut4, ff, ebr with their _available, dsp, fmax_mhz, seed, nextpnr, yosys, date).\n\n";
   }
   const Json* loops = pnr.json->get("loop_runs");
   if (loops && loops->isArray() && !loops->items.empty()) {
@@ -145,7 +153,7 @@ void synthSection(std::ostringstream& md, const std::vector<Report>& synth, cons
     for (const Json& r : results.items) (text(r, "target") == "ice40-loop" ? loops : cores).push_back(&r);
     if (!cores.empty()) {
       md << "| configuration | target | D | MAX_WIDTH | census | LUTs | FF | block RAM (Kbit) | DSP | fmax (MHz) | Yosys | "
-            "RTL | date |\n|---|---|---:|---:|---|---:|---:|---:|---:|---:|---|---|---|\n";
+            "date |\n|---|---|---:|---:|---|---:|---:|---:|---:|---:|---|---|\n";
       for (const Json* r : cores) {
         // Xilinx: slice LUTs (logic + distributed RAM + SRL); iCE40: LUT4; generic: not mapped.
         const std::string sliceLuts = text(*r, "slice_luts");
@@ -155,10 +163,10 @@ void synthSection(std::ostringstream& md, const std::vector<Report>& synth, cons
         md << "| " << text(need(*r, "config", s.path)) << " | " << text(need(*r, "target", s.path)) << " | "
            << text(*r, "d") << " | " << text(*r, "max_width") << " | " << text(*r, "census") << " | " << luts << " | "
            << text(*r, "ff") << " | " << text(*r, "bram_kbit") << " | " << text(*r, "dsp") << " | " << fmax << " | "
-           << text(*r, "yosys") << " | " << code(text(*r, "rtl_commit")) << " | " << text(*r, "date") << " |\n";
+           << toolVersion(text(*r, "yosys")) << " | " << text(*r, "date") << " |\n";
       }
       md << "\nSource: " << s.path
-         << " (results[]: slice_luts or lut, ff, bram_kbit, dsp, fmax_mhz and fmax_source, yosys, rtl_commit, date). "
+         << " (results[]: slice_luts or lut, ff, bram_kbit, dsp, fmax_mhz and fmax_source, yosys, date). "
             "Yosys figures are before place and route.\n\n";
     }
     if (!loops.empty()) {
@@ -329,7 +337,8 @@ void summaryTables(std::ostringstream& md, const Report& bench, const Report& po
     std::map<std::string, std::string> cycles;
     if (const Json* core = bench.json->get("core"); core && core->isArray())
       for (const Json& c : core->items) cycles[text(c, "scene")] = text(c, "cycles_per_pixel");
-    md << "Bad-" << text(bench.json->get("delta"))
+    const std::optional<double> delta = number(*bench.json, "delta");
+    md << "Bad-" << (delta ? fixed(*delta, 1) : "-")
        << " error (%) over the non-occluded pixels, invalid pixels counted as "
        << "errors, D = " << text(need(*bench.json, "d", bench.path))
        << ", the default configuration; the core's output "
@@ -349,13 +358,13 @@ void summaryTables(std::ostringstream& md, const Report& bench, const Report& po
     md << "Scene pool: " << pool.notMeasured() << ".\n\n";
   } else {
     md << "| scene pool, mean over | scenes | this core (%) | OpenCV StereoSGBM (%) |\n|---|---:|---:|---:|\n";
-    for (const char* part : {"groups", "sets"})
-      if (const Json* means = pool.json->get(part); means && means->isArray())
-        for (const Json& m : means->items)
-          md << "| " << text(m, "name") << " | " << text(m, "scenes") << " | **" << text(need(m, "ours", pool.path))
-             << "** | " << text(m, "opencv_strict") << " |\n";
-    md << "\nSource: " << pool.path << " (`make eval-pool`; Middlebury bad-" << text(pool.json->get("delta"))
-       << ", KITTI D1).\n\n";
+    if (const Json* means = pool.json->get("groups"); means && means->isArray())
+      for (const Json& m : means->items)
+        md << "| " << text(m, "name") << " | " << text(m, "scenes") << " | **" << text(need(m, "ours", pool.path))
+           << "** | " << text(m, "opencv_strict") << " |\n";
+    const std::optional<double> delta = number(*pool.json, "delta");
+    md << "\nSource: " << pool.path << " (`make eval-pool`, groups[]; Middlebury bad-"
+       << (delta ? fixed(*delta, 1) : "-") << ", KITTI D1; OpenCV with its invalid pixels counted as errors).\n\n";
   }
   const Json* runs = pnr.present() ? pnr.json->get("runs") : nullptr;
   if (!runs || !runs->isArray() || runs->items.empty()) {

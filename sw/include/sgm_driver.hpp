@@ -122,6 +122,8 @@ class Driver {
   static uint32_t encodePenalty(const FrameConfig& frame);
   static uint32_t encodeConfig(const FrameConfig& frame);
   static uint32_t encodeEdgeReset(const FrameConfig& frame);
+  // The configuration the four registers' values hold (readConfig reads them).
+  static FrameConfig decode(uint32_t frameSize, uint32_t penalty, uint32_t config, uint32_t edgeReset);
 
  private:
   uint32_t read(uint32_t offset) { return bus_.read(offset); }

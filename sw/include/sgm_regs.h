@@ -472,6 +472,31 @@
 #define SGM_IRQ_STATUS_ERROR (1u << 1)
 #define SGM_IRQ_STATUS_MASK 0x00000003u
 
+/* ---- the frame configuration word: sgm_top's cfg_i (rtl/sgm_cfg.svh), SGM_CFG_W bits, bit 0
+ * first; field F of register R at bits [SGM_CFG_R_F_LSB +: SGM_R_F_WIDTH] (docs/registers.md). */
+#define SGM_CFG_W 100u
+#define SGM_CFG_WORDS 4u /* 32-bit words of the word */
+#define SGM_CFG_FRAME_SIZE_WIDTH_LSB 0u
+#define SGM_CFG_FRAME_SIZE_HEIGHT_LSB 16u
+#define SGM_CFG_PENALTY_P1_LSB 32u
+#define SGM_CFG_PENALTY_P2_LSB 40u
+#define SGM_CFG_PENALTY_AD_CAP_LSB 48u
+#define SGM_CFG_PENALTY_AD_WEIGHT_LSB 56u
+#define SGM_CFG_PENALTY_RIGHT_WEIGHT_LSB 60u
+#define SGM_CFG_CONFIG_MODE_LSB 64u
+#define SGM_CFG_CONFIG_SUBPIXEL_LSB 66u
+#define SGM_CFG_CONFIG_LR_ENABLE_LSB 67u
+#define SGM_CFG_CONFIG_LR_TOL_LSB 68u
+#define SGM_CFG_CONFIG_FILL_LSB 71u
+#define SGM_CFG_CONFIG_SNAP_LSB 72u
+#define SGM_CFG_CONFIG_MEDIAN_LSB 73u
+#define SGM_CFG_CONFIG_P2_PAPER_LSB 74u
+#define SGM_CFG_CONFIG_WEIGHTS_EQUAL_LSB 75u
+#define SGM_CFG_CONFIG_UNIQUENESS_LSB 76u
+#define SGM_CFG_EDGE_RESET_T_LSB 83u
+#define SGM_CFG_EDGE_RESET_LEN_LSB 91u
+#define SGM_CFG_EDGE_RESET_PATHS_LSB 95u
+
 /* ---- constants */
 #define SGM_MIN_HEIGHT 9u /* shortest frame of every build (sgm_stream_ctrl) */
 #define SGM_ERROR_KINDS 4u /* error kinds (ERROR, ERROR_COUNT) */

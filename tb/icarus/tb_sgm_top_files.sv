@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
 `default_nettype none
+`include "sgm_cfg.svh"
 // tb_sgm_top_files: a file-driven testbench of sgm_top for Icarus Verilog
 // (make icarus; tests/icarus/icarus_frames.cpp writes the inputs and checks the
 // output). Plain SystemVerilog that iverilog -g2012 accepts.
 //
-//   +cfg=FILE  one line per frame: width height p1 p2 mode subpixel lr_en lr_tol
-//              fill snap median p2_mode weights uniqueness ad_weight ad_cap
-//              right_weight reset_t reset_len reset_paths (decimal, 20 fields); the
-//              first line is the frame count.
+//   +cfg=FILE  the first line is the frame count, then one line per frame: its frame
+//              configuration word (sgm_top cfg_i, rtl/sgm_cfg.svh) in hexadecimal, as
+//              the testbenches pack it (tb/hardware_config.hpp); the frame size is
+//              read from it.
 //   +in=FILE   the input beats, one per line: tdata (hex) tuser tlast.
 //   +out=FILE  written: one line per output beat, tdata (hex) tuser tlast, and
 //              one line "done <error_o> <frame_width_o> <frame_height_o>" per
@@ -36,20 +37,7 @@ module tb_sgm_top_files #(
   wire  [15:0]   m_tdata;
   wire           m_tuser, m_tlast, m_tvalid;
   logic          m_tready = 1'b0;
-  logic [XW-1:0] cfg_width = '0;
-  logic [YW-1:0] cfg_height = '0;
-  logic [7:0]    cfg_p1 = '0, cfg_p2 = '0;
-  logic [1:0]    cfg_mode = '0;
-  logic          cfg_subpixel = 1'b0, cfg_lr_en = 1'b0, cfg_fill = 1'b0, cfg_snap = 1'b0, cfg_median = 1'b0;
-  logic          cfg_p2_mode = 1'b0, cfg_weights = 1'b0;
-  logic [2:0]    cfg_lr_tol = '0;
-  logic [6:0]    cfg_unique = '0;
-  logic [3:0]    cfg_ad_weight = '0;
-  logic [7:0]    cfg_ad_cap = '0;
-  logic [3:0]    cfg_right_weight = '0;
-  logic [7:0]    cfg_reset_t = '0;
-  logic [3:0]    cfg_reset_len = '0;
-  logic [4:0]    cfg_reset_paths = '0;
+  logic [CFG_W-1:0] cfg_word = '0;
   wire           busy, frame_done;
   wire  [3:0]    error, error_event;
   wire  [XW-1:0] frame_width;
@@ -68,26 +56,7 @@ module tb_sgm_top_files #(
     .m_tlast_o     (m_tlast),
     .m_tvalid_o    (m_tvalid),
     .m_tready_i    (m_tready),
-    .cfg_width_i   (cfg_width),
-    .cfg_height_i  (cfg_height),
-    .cfg_p1_i      (cfg_p1),
-    .cfg_p2_i      (cfg_p2),
-    .cfg_mode_i    (cfg_mode),
-    .cfg_subpixel_i(cfg_subpixel),
-    .cfg_lr_en_i   (cfg_lr_en),
-    .cfg_lr_tol_i  (cfg_lr_tol),
-    .cfg_fill_i    (cfg_fill),
-    .cfg_snap_i    (cfg_snap),
-    .cfg_median_i  (cfg_median),
-    .cfg_p2_mode_i (cfg_p2_mode),
-    .cfg_weights_i (cfg_weights),
-    .cfg_unique_i  (cfg_unique),
-    .cfg_ad_weight_i(cfg_ad_weight),
-    .cfg_ad_cap_i  (cfg_ad_cap),
-    .cfg_right_weight_i(cfg_right_weight),
-    .cfg_reset_t_i (cfg_reset_t),
-    .cfg_reset_len_i(cfg_reset_len),
-    .cfg_reset_paths_i(cfg_reset_paths),
+    .cfg_i         (cfg_word),
     .busy_o        (busy),
     .frame_done_o  (frame_done),
     .error_o       (error),
@@ -98,32 +67,13 @@ module tb_sgm_top_files #(
 
   always #5 clk = ~clk;
 
-  int cfg[MAX_FRAMES][20];
+  logic [CFG_W-1:0] cfg [MAX_FRAMES];
   int frames, total_in, total_out, stall, seed;
   int in_fd, out_fd;
 
   // Presents frame k's configuration.
   task automatic present(input int k);
-    cfg_width    = cfg[k][0][XW-1:0];
-    cfg_height   = cfg[k][1][YW-1:0];
-    cfg_p1       = cfg[k][2][7:0];
-    cfg_p2       = cfg[k][3][7:0];
-    cfg_mode     = cfg[k][4][1:0];
-    cfg_subpixel = cfg[k][5][0];
-    cfg_lr_en    = cfg[k][6][0];
-    cfg_lr_tol   = cfg[k][7][2:0];
-    cfg_fill     = cfg[k][8][0];
-    cfg_snap     = cfg[k][9][0];
-    cfg_median   = cfg[k][10][0];
-    cfg_p2_mode  = cfg[k][11][0];
-    cfg_weights  = cfg[k][12][0];
-    cfg_unique   = cfg[k][13][6:0];
-    cfg_ad_weight = cfg[k][14][3:0];
-    cfg_ad_cap   = cfg[k][15][7:0];
-    cfg_right_weight = cfg[k][16][3:0];
-    cfg_reset_t      = cfg[k][17][7:0];
-    cfg_reset_len    = cfg[k][18][3:0];
-    cfg_reset_paths  = cfg[k][19][4:0];
+    cfg_word = cfg[k];
   endtask
 
   // Reads the next input beat into s_tdata/s_tuser/s_tlast.
@@ -139,7 +89,7 @@ module tb_sgm_top_files #(
     string cfg_name, in_name, out_name;
     int cfg_fd, k, sent, received, presented, since_move, r;
     logic in_fire, out_fire;
-    int v0, v1, v2, v3, v4, v5, v6, v7, v8, v9, v10, v11, v12, v13, v14, v15, v16, v17, v18, v19;
+    logic [CFG_W-1:0] word;
     if (!$value$plusargs("cfg=%s", cfg_name) || !$value$plusargs("in=%s", in_name) ||
         !$value$plusargs("out=%s", out_name))
       $fatal(1, "tb: usage: +cfg=FILE +in=FILE +out=FILE [+stall=N] [+seed=S]");
@@ -154,14 +104,11 @@ module tb_sgm_top_files #(
     total_in = 0;
     for (k = 0; k < frames; k = k + 1) begin
       // (Icarus 11 scans into plain variables only, not array elements.)
-      r = $fscanf(cfg_fd, "%d %d %d %d %d %d %d %d %d %d %d %d %d %d %d %d %d %d %d %d\n", v0, v1, v2, v3, v4, v5, v6,
-                  v7, v8, v9, v10, v11, v12, v13, v14, v15, v16, v17, v18, v19);
-      if (r != 20) $fatal(1, "tb: %s: frame %0d: bad line", cfg_name, k);
-      cfg[k][0] = v0; cfg[k][1] = v1; cfg[k][2] = v2; cfg[k][3] = v3; cfg[k][4] = v4; cfg[k][5] = v5;
-      cfg[k][6] = v6; cfg[k][7] = v7; cfg[k][8] = v8; cfg[k][9] = v9; cfg[k][10] = v10; cfg[k][11] = v11;
-      cfg[k][12] = v12; cfg[k][13] = v13; cfg[k][14] = v14; cfg[k][15] = v15; cfg[k][16] = v16;
-      cfg[k][17] = v17; cfg[k][18] = v18; cfg[k][19] = v19;
-      total_in = total_in + cfg[k][0] * cfg[k][1];
+      r = $fscanf(cfg_fd, "%h\n", word);
+      if (r != 1) $fatal(1, "tb: %s: frame %0d: bad line", cfg_name, k);
+      cfg[k] = word;
+      total_in = total_in + int'(word[CFG_FRAME_SIZE_WIDTH_LSB +: CFG_FRAME_SIZE_WIDTH_W]) *
+                            int'(word[CFG_FRAME_SIZE_HEIGHT_LSB +: CFG_FRAME_SIZE_HEIGHT_W]);
     end
     total_out = total_in;
     present(0);

@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 `default_nettype none
+`include "sgm_cfg.svh"
 // tb_stream_ctrl: sgm_stream_ctrl around a stand-in pipeline, for the stream
 // protocol tests. The stand-in has a fixed latency of LAT slots; a slot at
 // (col, row) with row < height is a frame pixel and comes out as
 // disparity = {right, left} (low DW bits), validity flag = left[0]. Its P2
-// table is "filled" FILL_CYCLES cycles after lut_start.
+// table is "filled" FILL_CYCLES cycles after lut_start. The configuration is the
+// frame configuration word (rtl/sgm_cfg.svh), given by the test; the stand-in uses
+// only the frame size of the latched word.
 module tb_stream_ctrl #(
   parameter int LAT         = 37,
   parameter int FILL_CYCLES = 20,
@@ -24,11 +27,7 @@ module tb_stream_ctrl #(
   output logic        m_tlast_o,
   output logic        m_tvalid_o,
   input  wire         m_tready_i,
-  input  wire [XW-1:0] cfg_width_i,
-  input  wire [YW-1:0] cfg_height_i,
-  input  wire  [7:0]  cfg_p1_i,
-  input  wire  [7:0]  cfg_p2_i,
-  input  wire  [1:0]  cfg_mode_i,
+  input  wire [CFG_W-1:0] cfg_i,
   output logic        busy_o,
   output logic        frame_done_o,
   output logic [3:0]  error_o,
@@ -56,17 +55,7 @@ module tb_stream_ctrl #(
   logic [XW-1:0] col;
   logic [YW-1:0] row;
   logic          sof;  // the frame's first slot (checked in the whole-core lane builds)
-  logic [7:0]    unused_p1, unused_p2;
-  logic [1:0]    unused_mode;
-  logic [2:0]    unused_tol;
-  logic [6:0]    unused_unique;
-  logic [3:0]    unused_ad_weight;
-  logic [7:0]    unused_ad_cap;
-  logic [3:0]    unused_right_weight;
-  logic [7:0]    unused_reset_t;
-  logic [3:0]    unused_reset_len;
-  logic [4:0]    unused_reset_paths;
-  logic          unused_sub, unused_lr, unused_fill, unused_snap, unused_med, unused_p2_mode, unused_weights;
+  logic [CFG_W-1:0] unused_cfg;  // the latched word: the stand-in has no stage that reads it
 
   // Stand-in P2 table: ready FILL_CYCLES cycles after a start.
   logic [7:0] fill_q;
@@ -92,24 +81,14 @@ module tb_stream_ctrl #(
     .clk_i, .rst_ni,
     .s_tdata_i, .s_tuser_i, .s_tlast_i, .s_tvalid_i, .s_tready_o,
     .m_tdata_o, .m_tuser_o, .m_tlast_o, .m_tvalid_o, .m_tready_i,
-    .cfg_width_i, .cfg_height_i,
-    .cfg_p1_i, .cfg_p2_i, .cfg_mode_i, .cfg_subpixel_i(1'b1), .cfg_lr_en_i(1'b1),
-    .cfg_lr_tol_i(3'd1), .cfg_fill_i(1'b1), .cfg_snap_i(1'b1), .cfg_median_i(1'b1),
-    .cfg_p2_mode_i(1'b0), .cfg_weights_i(1'b0), .cfg_unique_i(7'd0), .cfg_ad_weight_i(4'd0), .cfg_ad_cap_i(8'd0),
-    .cfg_right_weight_i(4'd0), .cfg_reset_t_i(8'd0), .cfg_reset_len_i(4'd0), .cfg_reset_paths_i(5'd0),
-    .width_o(width), .height_o(height), .p1_o(unused_p1), .p2_o(unused_p2), .mode_o(unused_mode),
-    .subpixel_o(unused_sub), .lr_en_o(unused_lr), .lr_tol_o(unused_tol), .fill_o(unused_fill),
-    .snap_o(unused_snap), .median_o(unused_med), .p2_mode_o(unused_p2_mode), .weights_o(unused_weights), .unique_o(unused_unique), .ad_weight_o(unused_ad_weight), .ad_cap_o(unused_ad_cap), .right_weight_o(unused_right_weight),
-    .reset_t_o(unused_reset_t), .reset_len_o(unused_reset_len), .reset_paths_o(unused_reset_paths), .lut_start_o(lut_start), .lut_ready_i(fill_q == '0),
+    .cfg_i, .cfg_o(unused_cfg), .width_o(width), .height_o(height),
+    .lut_start_o(lut_start), .lut_ready_i(fill_q == '0),
     .en_o, .pix_left_o(pix_l), .pix_right_o(pix_r), .col_o(col), .row_o(row), .sof_o(sof),
     .res_valid_i(slot_out[SLOT-1]), .res_disp_i(slot_out[1 +: DW]), .res_ok_i(slot_out[0]),
     .busy_o, .frame_done_o, .error_o, .error_set_o
   );
 
-  wire unused = &{1'b0, width, col, sof, unused_p1, unused_p2, unused_mode, unused_tol, unused_sub, unused_lr,
-                  unused_fill, unused_snap, unused_med, unused_p2_mode, unused_weights, unused_unique,
-                  unused_ad_weight, unused_ad_cap, unused_right_weight, unused_reset_t, unused_reset_len,
-                  unused_reset_paths};
+  wire unused = &{1'b0, width, col, sof, unused_cfg};
 
 endmodule
 `default_nettype wire

@@ -3,8 +3,10 @@
 // verdict. tb/icarus/tb_sgm_top_files.sv streams the frames through sgm_top.
 //
 //   sgm-icarus-frames write DIR   synthetic scenes (tools/synthetic_scene) ->
-//                                 DIR/cfg.txt, DIR/in.txt, DIR/expected.txt
-//                                 (the golden model's output beats)
+//                                 DIR/cfg.txt (each frame's configuration word
+//                                 in hexadecimal, tb/hardware_config.hpp),
+//                                 DIR/in.txt, DIR/expected.txt (the golden
+//                                 model's output beats)
 //   sgm-icarus-frames check DIR   DIR/out.txt (the testbench's) against
 //                                 DIR/expected.txt: framing, every pixel,
 //                                 error_o of every frame; one line, exit 1 on
@@ -58,11 +60,7 @@ void write(const std::string& dir) {
   cfg << all.size() << "\n";
   for (size_t k = 0; k < all.size(); ++k) {
     const Frame& f = all[k];
-    const sgm::tb::HardwareConfig c = sgm::tb::hardwareConfig(f.params, f.width, f.height);
-    cfg << c.width << " " << c.height << " " << c.p1 << " " << c.p2 << " " << c.mode << " " << c.subpixel << " "
-        << c.lrEnable << " " << c.lrTolerance << " " << c.fill << " " << c.snap << " " << c.median << " " << c.p2Paper
-        << " " << c.weightsEqual << " " << c.uniqueness << " " << c.adWeight << " " << c.adCap << " " << c.rightWeight
-        << " " << c.resetThreshold << " " << c.resetLength << " " << c.resetPaths << "\n";
+    cfg << sgm::tb::hardwareConfig(f.params, f.width, f.height).hex() << "\n";
     const cv::Mat left = scene(f, int(k), false), right = scene(f, int(k), true);
     const sgm::DisparityMap golden = sgm::runPipeline(left, right, f.params);
     char line[32];

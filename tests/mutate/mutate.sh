@@ -207,7 +207,7 @@ baseline() {
 # A copy of the sources with the checkout's golden/eval objects (mtimes kept, so make
 # reuses them); its verilator directories persist between runs.
 mkdir -p "$tree/build"
-tar -cf - Makefile rtl tb tests golden tools scripts $(ls -d synth bench sw regmap 2>/dev/null) | tar -xf - -C "$tree"
+tar -cf - Makefile rtl tb tests golden tools scripts regmap $(ls -d synth bench sw 2>/dev/null) | tar -xf - -C "$tree"
 for d in obj lib; do [[ -d build/$d ]] && { rm -rf "$tree/build/$d"; cp -a "build/$d" "$tree/build/"; }; done
 # Seed its verilator directories from this checkout's (CI has them from `make rtl-tests`):
 # the Verilator runtime and test objects are then reused, only the mutant model recompiles.

@@ -41,7 +41,7 @@ run_one() {
     local set="" rd=""
     for p in $params; do set+=" -set ${p%%=*} ${p#*=}"; done
     for p in $defs; do rd+=" -D$p"; done
-    out=$($YOSYS -q -p "read_verilog -sv$rd rtl/*.sv tb/tops/*.sv; ${set:+chparam$set $top;} hierarchy -check -top $top" 2>&1); rc=$?
+    out=$($YOSYS -q -p "read_verilog -sv -Irtl$rd rtl/*.sv tb/tops/*.sv; ${set:+chparam$set $top;} hierarchy -check -top $top" 2>&1); rc=$?
   fi
   if [ "$expect" = fail ]; then
     if [ $rc -ne 0 ]; then echo "PASS $desc"; else echo "FAIL $desc: an illegal set elaborates"; fi

@@ -17,6 +17,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <map>
 #include <random>
 
@@ -64,15 +65,24 @@ FrameInput scene(int w, int h, uint32_t seed, const sgm::Params& p) {
   return FrameInput{s.left, s.right, p};
 }
 
+// The driver's configuration of a golden parameter set and frame size: the registers that
+// hold its frame configuration word (tb/hardware_config.hpp, by the generated table of the
+// word) decoded by the driver. The driver must carry every field of the word: its encoding
+// of what it decoded gives the same registers back (a field the driver lacks stops the test).
 drv::FrameConfig frameConfig(const sgm::Params& p, cv::Size size) {
   const sgm::tb::HardwareConfig c = sgm::tb::hardwareConfig(p, size.width, size.height);
-  drv::FrameConfig f;
-  f.width = c.width, f.height = c.height, f.p1 = c.p1, f.p2 = c.p2, f.mode = c.mode, f.subpixel = c.subpixel;
-  f.lrCheck = c.lrEnable, f.lrTolerance = c.lrTolerance, f.fill = c.fill, f.snap = c.snap, f.median = c.median;
-  f.p2Paper = c.p2Paper, f.weightsEqual = c.weightsEqual, f.uniqueness = c.uniqueness;
-  f.adWeight = c.adWeight, f.adCap = c.adCap, f.rightWeight = c.rightWeight;
-  f.edgeReset = uint32_t(c.resetThreshold), f.edgeResetLength = uint32_t(c.resetLength);
-  f.edgeResetPaths = uint32_t(c.resetPaths);
+  const uint32_t regs[4] = {c.reg(SGM_REG_FRAME_SIZE), c.reg(SGM_REG_PENALTY), c.reg(SGM_REG_CONFIG),
+                            c.reg(SGM_REG_EDGE_RESET)};
+  const drv::FrameConfig f = drv::Driver::decode(regs[0], regs[1], regs[2], regs[3]);
+  const uint32_t back[4] = {drv::Driver::encodeSize(f.width, f.height), drv::Driver::encodePenalty(f),
+                            drv::Driver::encodeConfig(f), drv::Driver::encodeEdgeReset(f)};
+  const char* names[4] = {"FRAME_SIZE", "PENALTY", "CONFIG", "EDGE_RESET"};
+  for (int r = 0; r < 4; ++r)
+    if (back[r] != regs[r]) {
+      char what[160];
+      std::snprintf(what, sizeof what, "%s 0x%08X encoded back by the driver as 0x%08X", names[r], regs[r], back[r]);
+      throw sgm::Error(std::string("the driver's FrameConfig lacks a field of the frame configuration word: ") + what);
+    }
   return f;
 }
 
@@ -249,7 +259,8 @@ TEST(SgmAxi, ResetValuesAndIdentification) {
 
 // The identification's frame limits (MIN_WIDTH, MAX_WIDTH, MAX_HEIGHT, the
 // shortest frame) through the driver's sizeFits agree with what the core takes:
-// a frame just outside is dropped with ERROR.CONFIG, one on the border streams.
+// a frame just outside is dropped with ERROR.CONFIG, as is one beyond the build's
+// counters, one on the border streams.
 TEST(SgmAxi, SizeFitsAgreesWithTheCore) {
   AxiCore c("sgm_axi_sizefits", 3, {0, 0});
   drv::Identity id;
@@ -261,7 +272,20 @@ TEST(SgmAxi, SizeFitsAgreesWithTheCore) {
   EXPECT_TRUE(drv::Driver::sizeFits(id, id.maxWidth, id.maxHeight));
   EXPECT_FALSE(drv::Driver::sizeFits(id, id.maxWidth + 1, h));
   EXPECT_FALSE(drv::Driver::sizeFits(id, w, id.maxHeight + 1));
-  for (const cv::Size bad : {cv::Size(int(w) - 1, int(h)), cv::Size(int(w), int(h) - 1)}) {
+  // Beside the sizes just outside the limits, a size beyond the build's counters that
+  // would alias to a legal one cut to them (the word carries the registers' 16 bits and
+  // the core checks them whole).
+  const auto bitsFor = [](uint32_t v) {
+    int b = 0;
+    while ((uint64_t(1) << b) <= v) ++b;
+    return b;
+  };
+  const int aliasWidth = (1 << bitsFor(id.maxWidth)) + int(w);
+  const int aliasHeight = (1 << bitsFor(id.maxHeight + 15)) + int(h);
+  const cv::Size bads[] = {{int(w) - 1, int(h)},           {int(w), int(h) - 1},
+                           {int(id.maxWidth) + 1, int(h)}, {int(w), int(id.maxHeight) + 1},
+                           {aliasWidth, int(h)},           {int(w), aliasHeight}};
+  for (const cv::Size bad : bads) {
     EXPECT_FALSE(drv::Driver::sizeFits(id, uint32_t(bad.width), uint32_t(bad.height))) << bad;
     c.driver.configure(frameConfig(defaults(), bad));
     c.driver.enable(c.enabled = true);

@@ -27,6 +27,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <random>
 
 #ifndef SGM_D
@@ -183,16 +184,18 @@ TEST(SgmTop, OutOfRangeConfigurationIsDroppedThenGoodFrame) {
   for (size_t i = 0; i < bad.size(); ++i) {
     frames.push_back(bad[i].second);
     frames.back().dropped = true;
-    frames.back().modeCode = bad[i].first == "cost mode 3" ? 3 : -1;
-    frames.back().uniqueCode = bad[i].first == "uniqueness 100" ? 100 : bad[i].first == "uniqueness 127" ? 127 : -1;
-    frames.back().rightWeightCode = bad[i].first == "fifth-path weight 9" ? 9 : -1;
+    std::map<std::string, uint32_t>& codes = frames.back().fieldCodes;
+    if (bad[i].first == "cost mode 3") codes["CONFIG_MODE"] = 3;
+    if (bad[i].first == "uniqueness 100") codes["CONFIG_UNIQUENESS"] = 100;
+    if (bad[i].first == "uniqueness 127") codes["CONFIG_UNIQUENESS"] = 127;
+    if (bad[i].first == "fifth-path weight 9") codes["PENALTY_RIGHT_WEIGHT"] = 9;
     if (bad[i].first == "path restart length 0") {  // T 30 with R 0 (dropped in every build)
       frames.back().params.edgeReset.threshold = 30;
-      frames.back().resetLengthCode = 0;
+      codes["EDGE_RESET_LEN"] = 0;
     }
     if (bad[i].first == "AD term beyond the cost word") {  // rsad 44 + (15 x 45) >> 3 = 128 > 127 (9x5; 9x9: 80 + 84)
       frames.back().params.adCap = Vsgm_top_sgm_top::CENSUS_H == 9 ? 255 : 45;
-      frames.back().adWeightCode = 15;
+      codes["PENALTY_AD_WEIGHT"] = 15;
     }
     sgm::Params good = i % 2 ? unified : hardwareDefaults();
     good.uniqueness = i == 6 ? 99 : 0;  // the largest ratio in range, after the first out of range

@@ -5,6 +5,8 @@
 // of frame, configuration out of range (width, height, penalties, mode) and at its limits.
 #include "Vtb_stream_ctrl.h"
 #include "axis_bfm.hpp"
+#include "hardware_config.hpp"
+#include "port_bits.hpp"
 #include "verilated_top.hpp"
 
 #include <gtest/gtest.h>
@@ -31,7 +33,7 @@ struct FrameCase {
   std::vector<Beat> beats;          // what the source sends
   std::vector<uint16_t> expected;   // expected output data (width x height), empty if dropped
   unsigned errors = 0;              // expected error_o after the frame
-  int p1 = 20, p2 = 200, mode = 1;  // cfg_p1_i, cfg_p2_i, cfg_mode_i
+  int p1 = 20, p2 = 200, mode = 1;  // PENALTY.P1, PENALTY.P2, CONFIG.MODE of the word (the others 0)
 };
 
 FrameCase goodFrame(int w, int h, std::mt19937& rng) {
@@ -119,12 +121,16 @@ class StreamCtrl {
   Top& top() { return top_; }
 
  private:
+  // The frame configuration word of the frame: its size, penalties and mode, every other field 0.
   void setConfig(const FrameCase& f) {
-    top_->cfg_width_i = f.width;
-    top_->cfg_height_i = f.height;
-    top_->cfg_p1_i = f.p1;
-    top_->cfg_p2_i = f.p2;
-    top_->cfg_mode_i = f.mode;
+    sgm::tb::HardwareConfig c;
+    c.set("FRAME_SIZE_WIDTH", uint32_t(f.width));
+    c.set("FRAME_SIZE_HEIGHT", uint32_t(f.height));
+    c.set("PENALTY_P1", uint32_t(f.p1));
+    c.set("PENALTY_P2", uint32_t(f.p2));
+    c.set("CONFIG_MODE", uint32_t(f.mode));
+    const std::vector<uint32_t> word = c.word();
+    for (size_t i = 0; i < word.size(); ++i) sgm::tb::setWord(top_->cfg_i, int(i), word[i]);
   }
   Top top_;
   sgm::tb::AxisSource<Model> source_;
@@ -168,7 +174,9 @@ TEST(SgmStreamCtrl, StrayBeatsAndBadConfigurationAreDropped) {
 
 // The configuration limits of tb_stream_ctrl (MIN_WIDTH 16, MAX_WIDTH = MAX_HEIGHT = 200):
 // frames exactly at them pass (MAX_WIDTH x MAX_HEIGHT at once), one beyond each is
-// dropped whole, as are P2' < P1 and cost mode 3; P2' = P1 and mode 2 pass.
+// dropped whole, as are P2' < P1 and cost mode 3; P2' = P1 and mode 2 pass. A frame size
+// beyond the position counters (XW = YW = 8 bits) that cut to them would be legal (272,
+// 265) is dropped too: the word's frame size is checked whole.
 TEST(SgmStreamCtrl, FramesAtTheConfigurationLimits) {
   constexpr int kMinWidth = 16, kMaxWidth = 200, kMaxHeight = 200;
   std::mt19937 rng(11);
@@ -184,7 +192,9 @@ TEST(SgmStreamCtrl, FramesAtTheConfigurationLimits) {
   ctrl.run({goodFrame(kMaxWidth, kMaxHeight, rng), dropped(kMaxWidth + 1, 9, 20, 200, 1), goodFrame(kMaxWidth, 9, rng),
             dropped(kMinWidth - 1, 9, 20, 200, 1), goodFrame(kMinWidth, kMaxHeight, rng),
             dropped(kMinWidth, kMaxHeight + 1, 20, 200, 1), dropped(kMinWidth, 8, 20, 200, 1), equal,
-            dropped(kMinWidth, 9, 21, 20, 0), dropped(kMinWidth, 9, 20, 200, 3), goodFrame(kMinWidth + 1, 9, rng)});
+            dropped(kMinWidth, 9, 21, 20, 0), dropped(kMinWidth, 9, 20, 200, 3), goodFrame(kMinWidth + 1, 9, rng),
+            dropped(256 + kMinWidth, 9, 20, 200, 1), dropped(kMinWidth, 256 + 9, 20, 200, 1),
+            goodFrame(kMinWidth, 9, rng)});
   EXPECT_EQ(ctrl.top()->busy_o, 0);
 }
 
