@@ -83,6 +83,11 @@ module sgm_delay_ram #(
       if (!rst_ni) ptr_q <= '0;
       else if (en_i) ptr_q <= ptr_q == PTRW'(WORDS - 1) ? '0 : ptr_q + 1'b1;
     end
+
+`ifdef SGM_FORMAL
+    // The formal property set (tests/formal/sgm_delay_ram_props.svh; make formal, docs/formal.md).
+`include "sgm_delay_ram_props.svh"
+`endif
   end
 
 endmodule

@@ -178,5 +178,10 @@ module sgm_lane_deal #(
     end
   end
 
+`ifdef SGM_FORMAL
+  // The formal property set (tests/formal/sgm_lane_deal_props.svh; make formal, docs/formal.md).
+`include "sgm_lane_deal_props.svh"
+`endif
+
 endmodule
 `default_nettype wire

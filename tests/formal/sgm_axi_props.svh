@@ -24,9 +24,9 @@
 //                write clears the bytes of its enabled lanes; FRAMES counts frame_done_o,
 //                LAST_SIZE takes the finished frame's size;
 //   irq_o        = |(IRQ_STATUS & IRQ_ENABLE) in every cycle;
-//   HOLD         while CTRL.HOLD is 1 the active configuration (the core's cfg_* inputs)
+//   HOLD         while CTRL.HOLD is 1 the active configuration (the core's cfg_i)
 //                does not change; while it is 0 the active set is the shadow registers of
-//                the cycle before (a size the core cannot take as 0);
+//                the cycle before (the frame size whole);
 //   soft reset   the core is in reset exactly in the SOFT_RESET_CYCLES cycles after each
 //                write of CTRL.SOFT_RESET = 1 (counted from the last one); no input beat is
 //                accepted while it is, nor a start-of-frame beat while CTRL.ENABLE is 0;
@@ -86,8 +86,7 @@
     if (f_past_valid && !$past(rst_ni)) begin
       assert (ctrl_q == 32'd0 && frame_size_q == 32'd0 && penalty_q == PENALTY_RESET && config_q == CONFIG_RESET &&
               edge_reset_q == EDGE_RESET_RESET && irq_enable_q == 32'd0);
-      assert (act_width == '0 && act_height == '0 && act_penalty == PENALTY_RESET && act_config == CONFIG_RESET &&
-              act_edge_reset == EDGE_RESET_RESET);
+      assert (act_cfg == cfg_from_regs(32'd0, PENALTY_RESET, CONFIG_RESET, EDGE_RESET_RESET));
       assert (error_q == '0 && irq_status_q == 2'd0 && error_count_q == 32'd0 && frames_q == 32'd0 &&
               last_size_q == 32'd0 && !core_reset);
     end
@@ -124,12 +123,12 @@
       end
       // The active configuration: frozen while HOLD, else the shadow registers of the cycle before
       if ($past(f_hold)) begin
-        assert (act_width == $past(act_width) && act_height == $past(act_height) && act_penalty == $past(act_penalty) &&
-                act_config == $past(act_config) && act_edge_reset == $past(act_edge_reset));
+        assert (act_cfg == $past(act_cfg));
       end else begin
-        assert (act_width == (32'($past(f_width)) <= 32'(MAX_WIDTH) ? XW'($past(f_width)) : '0));
-        assert (act_height == (32'($past(f_height)) <= 32'(MAX_HEIGHT) ? YW'($past(f_height)) : '0));
-        assert (act_penalty == $past(penalty_q) && act_config == $past(config_q) && act_edge_reset == $past(edge_reset_q));
+        // the word as the register map packs it; its frame size whole (16 bits each)
+        assert (act_cfg == cfg_from_regs($past(frame_size_q), $past(penalty_q), $past(config_q), $past(edge_reset_q)));
+        assert (act_cfg[CFG_FRAME_SIZE_WIDTH_LSB +: 16] == $past(f_width) &&
+                act_cfg[CFG_FRAME_SIZE_HEIGHT_LSB +: 16] == $past(f_height));
       end
     end
   end
@@ -228,7 +227,7 @@
       cover (($past(f_irq_clear & f_irq_event)) != 2'd0);
       cover (irq_o && !$past(irq_o));
       cover ($past(core_reset) && !core_reset);
-      cover (f_held_write && !$past(f_hold) && act_penalty != $past(act_penalty));
+      cover (f_held_write && !$past(f_hold) && act_cfg != $past(act_cfg));
       cover (f_wr && f_wa > F_LAST);
       cover (error_count_q[7:0] == 8'd2);
     end

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 `default_nettype none
+`include "sgm_cfg.svh"
 // sgm_top as the formal tasks of sgm_axi see it (tests/formal/axi_*.sby; docs/formal.md):
 // the parameters and ports of rtl/sgm_top.sv, every output free in every cycle (Yosys
 // anyseq), every input unused. A property of sgm_axi proven with this stub holds with any
@@ -30,26 +31,7 @@ module sgm_top #(
   output logic          m_tlast_o,
   output logic          m_tvalid_o,
   input  wire           m_tready_i,
-  input  wire  [XW-1:0] cfg_width_i,
-  input  wire  [YW-1:0] cfg_height_i,
-  input  wire  [7:0]    cfg_p1_i,
-  input  wire  [7:0]    cfg_p2_i,
-  input  wire  [1:0]    cfg_mode_i,
-  input  wire           cfg_subpixel_i,
-  input  wire           cfg_lr_en_i,
-  input  wire  [2:0]    cfg_lr_tol_i,
-  input  wire           cfg_fill_i,
-  input  wire           cfg_snap_i,
-  input  wire           cfg_median_i,
-  input  wire           cfg_p2_mode_i,
-  input  wire           cfg_weights_i,
-  input  wire  [6:0]    cfg_unique_i,
-  input  wire  [3:0]    cfg_ad_weight_i,
-  input  wire  [7:0]    cfg_ad_cap_i,
-  input  wire  [3:0]    cfg_right_weight_i,
-  input  wire  [7:0]    cfg_reset_t_i,
-  input  wire  [3:0]    cfg_reset_len_i,
-  input  wire  [4:0]    cfg_reset_paths_i,
+  input  wire  [CFG_W-1:0] cfg_i,
   output logic          busy_o,
   output logic          frame_done_o,
   output logic [3:0]    error_o,

@@ -98,11 +98,10 @@ else
 fi
 
 # ------------------------------------------------------------------ tests per module
-# Test binaries in the order they are tried: NAME (make target build/bin/NAME) and the
-# top it verilates (read from the Makefile's rtl_test lines; the regression from regress.mk).
-order=(rtl-p2-lut rtl-stream-ctrl rtl-hole-fill rtl-edge-snap rtl-median5x5 rtl-wta-d16 rtl-wta-d16-lean rtl-lr-check-d16 rtl-lr-check-d16-lean rtl-lr-lanes-d16-k3
-       rtl-census-unit rtl-census-lanes-k1 rtl-census-lanes-k2 rtl-census-lanes-k3-9x9 rtl-census-lanes-k6 rtl-cost-volume-d16 rtl-cost-volume-d16-lean rtl-cost-lanes-d16-k3 rtl-lane-deal-k2 rtl-lane-deal-k3 rtl-path-ring-d16 rtl-path-ring-d16-k3 rtl-path-ring-d16-k12 rtl-path-ring-d32-k6 rtl-path-ring-d64-k4 rtl-path-ring-d64-k6 rtl-right-path-d16-b8 rtl-right-path-d16-b4-k2 rtl-right-path-d16-b16-k3 rtl-right-path-d64-b32-k6 rtl-path-engine-d16 rtl-path-engine-d16-k2 rtl-path-engine-d16-k5 rtl-path-engine-d64-k6 rtl-top-d16 rtl-top-d16-lean rtl-top-d16-rb8 rtl-top-d16-k2 rtl-top-d16-k2-rb16 rtl-top-d16-k3-9x9 sgm-regress-d16-w128 rtl-top-d32 rtl-top-d64
-       rtl-axi-d16 rtl-axi-d16-lean rtl-axi-d16-rb16)
+# Test binaries: every rtl_test fixture of the Makefile (NAME -> make target build/bin/rtl-NAME,
+# with the top it verilates) and the regression of regress.mk, tried cheapest first: module
+# fixtures before whole-core (sgm_top, sgm_axi) builds, then by D, then by lanes (the
+# -d<D> and -k<K> of the name; D = 16 and one lane where the name says none).
 declare -A top_of=()
 while IFS= read -r l; do
   args="${l#*call rtl_test,}"
@@ -111,8 +110,17 @@ while IFS= read -r l; do
   [[ "$rest" =~ --top-module[[:space:]]+([a-z_0-9]+) ]] && top="${BASH_REMATCH[1]}"
   top_of["rtl-$name"]="$top"
 done < <(grep -E '^\$\(eval \$\(call rtl_test,' Makefile)
-top_of[sgm-regress-d16-w128]=sgm_top
-for t in "${order[@]}"; do [[ -n "${top_of[$t]:-}" ]] || die "test $t not in the Makefile"; done
+regress_test=sgm-regress-d16-w128  # the regression at its defaults (tests/regress.mk, REGRESS_BIN)
+top_of[$regress_test]=sgm_top
+((${#top_of[@]} > 1)) || die "no rtl_test fixtures found in the Makefile"
+test_cost() {  # whole-core D K name
+  local t="$1" d=16 k=1 whole=0
+  [[ "$t" =~ -d([0-9]+) ]] && d=${BASH_REMATCH[1]}
+  [[ "$t" =~ -k([0-9]+) ]] && k=${BASH_REMATCH[1]}
+  [[ "${top_of[$t]}" == sgm_top || "${top_of[$t]}" == sgm_axi ]] && whole=1
+  echo "$whole $d $k $t"
+}
+order=($(for t in "${!top_of[@]}"; do test_cost "$t"; done | sort -k1,1n -k2,2n -k3,3n -k4,4 | awk '{ print $4 }'))
 
 # Formal tasks (tests/formal/TASK.sby) as tests formal-TASK, tried first: the modules of
 # one are the rtl/*.sv files its [files] section reads, its top the `prep -top` module.
