@@ -11,7 +11,7 @@
 
 MUTATE_LIST   ?= tests/mutate/mutations.txt
 MUTATE_ONLY   ?=
-MUTATE_CI_IDS := ctrl-height-max,p2-entry-max,wta-tie,axi-error-w1c-race
+MUTATE_CI_IDS := ctrl-height-max,p2-entry-max,wta-tie,axi-error-w1c-race,ctrl-out-tuser-row,deal-skew,delay-ram-wrap
 MUTATE_DEPS   := $(GOLDEN_LIB) $(EVAL_OBJ)
 
 .PHONY: mutate mutate-ci
