@@ -451,6 +451,27 @@ std::string svCfg() {
     o << "localparam int " << p << "_MIN = " << w.field->minValue << ";\n";
     o << "localparam int " << p << "_MAX = " << w.field->maxValue << ";\n";
   }
+  // The words of the two presets (frame size 0): each field's DEFAULT or FOUR_PATH.
+  for (const bool fourPath : {false, true}) {
+    std::vector<int> bitsOf(size_t(wordWidth), 0);
+    for (const WordField& w : word) {
+      const uint64_t v = fourPath ? w.field->fourPathValue : w.field->defaultValue;
+      for (int b = 0; b < w.field->width; ++b) bitsOf[size_t(w.lsb + b)] = int(v >> b & 1);
+    }
+    std::string hex;
+    for (int d = (wordWidth + 3) / 4 - 1; d >= 0; --d) {
+      int digit = 0;
+      for (int b = 0; b < 4; ++b)
+        if (4 * d + b < wordWidth) digit |= bitsOf[size_t(4 * d + b)] << b;
+      hex += "0123456789ABCDEF"[digit];
+    }
+    if (!fourPath)
+      o << "\n// The word of the golden model's defaults (every field's DEFAULT: what a build with every\n"
+        << "// lever runs, sgm::Params{}) and of the four-path preset (FOUR_PATH: any other build), each\n"
+        << "// with the frame size 0: set FRAME_SIZE's fields to use one (docs/integration.md).\n";
+    o << "localparam logic [CFG_W-1:0] CFG_" << (fourPath ? "FOUR_PATH" : "DEFAULT") << " = " << wordWidth << "'h" << hex
+      << ";\n";
+  }
   // The MAX checks: every field whose legal range ends below its top.
   std::vector<std::string> terms;
   for (const WordField& w : word) {
@@ -581,14 +602,14 @@ std::string docFields() {
 
 std::string docWord() {
   std::ostringstream o;
-  o << "| bits of `cfg_i` | field | register bits | legal | needs |\n|---|---|---|---|---|\n";
+  o << "| bits of `cfg_i` | field | register bits | legal | needs | what it does |\n|---|---|---|---|---|---|\n";
   for (const WordField& w : word) {
     std::string legal;
     if (!(w.field->minValue == 0 && w.field->maxValue == (uint64_t(1) << w.field->width) - 1))
       legal = std::to_string(w.field->minValue) + " .. " + std::to_string(w.field->maxValue);
     o << "| " << bitRange(w.lsb, w.field->width) << " | " << w.reg->name << "." << w.field->name << " | " << w.reg->name
       << bitRange(w.field->lsb, w.field->width) << " | " << legal << " | "
-      << (w.field->needs.empty() ? "" : "`" + w.field->needs + "`") << " |\n";
+      << (w.field->needs.empty() ? "" : "`" + w.field->needs + "`") << " | " << mdEscape(w.field->description) << " |\n";
   }
   o << "\n" << wordWidth << " bits (`CFG_W`, `SGM_CFG_W`).\n";
   return o.str();

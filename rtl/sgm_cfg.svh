@@ -136,6 +136,12 @@ localparam int CFG_EDGE_RESET_PATHS_W = 5;
 localparam int CFG_EDGE_RESET_PATHS_MIN = 0;
 localparam int CFG_EDGE_RESET_PATHS_MAX = 31;
 
+// The word of the golden model's defaults (every field's DEFAULT: what a build with every
+// lever runs, sgm::Params{}) and of the four-path preset (FOUR_PATH: any other build), each
+// with the frame size 0: set FRAME_SIZE's fields to use one (docs/integration.md).
+localparam logic [CFG_W-1:0] CFG_DEFAULT = 100'hDB140F29D4314C81800000000;
+localparam logic [CFG_W-1:0] CFG_FOUR_PATH = 100'hFA800039D0014641200000000;
+
 // Every field of c at most its MAX (the fields whose legal range ends below their top). The
 // lower bounds above 0, the bounds of the build and the rules across fields are
 // sgm_stream_ctrl's (docs/rtl.md, "Adding a run-time setting").

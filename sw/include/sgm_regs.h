@@ -175,7 +175,7 @@
 #define SGM_CTRL_HOLD_MAX 1u
 #define SGM_CTRL_MASK 0x00000005u
 
-/* ---- FRAME_SIZE (0x24): size of the next frames (a size the build cannot take reaches the core as 0 and is dropped) */
+/* ---- FRAME_SIZE (0x24): size of the next frames (the core checks both fields whole and drops a frame of a size the build cannot take) */
 /* WIDTH [15:0] RW: frame width, MIN_WIDTH .. MAX_WIDTH */
 #define SGM_FRAME_SIZE_WIDTH_SHIFT 0
 #define SGM_FRAME_SIZE_WIDTH_WIDTH 16

@@ -23,7 +23,7 @@ module tb_sgm_top_files #(
   parameter int D          = 16,
   parameter int MAX_WIDTH  = 128,
   parameter int MAX_HEIGHT = 64,
-  parameter int RIGHT_BLOCK = 0,  // sgm_top's fifth path (0: not built; its weight field must then be 0)
+  parameter int RIGHT_BLOCK = 64,  // sgm_top's fifth path, its default (0: not built; the weight field must then be 0)
   localparam int XW        = $clog2(MAX_WIDTH + 1),
   localparam int YW        = $clog2(MAX_HEIGHT + 16),
   localparam int MAX_FRAMES = 8,
