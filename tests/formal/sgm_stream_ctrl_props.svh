@@ -19,6 +19,8 @@
 //                   result;
 //   input buffer    never written when full (s_tready_o low) nor read when empty; the
 //                   head's flags (a beat is there, it is a start of frame) are the buffer's;
+//                   an accepted beat leaves it once, unchanged, in order (a beat chosen
+//                   freely is followed through it);
 //   state           the state's flags (RUN, PAD or FLUSH) are the state's, busy_o is
 //                   state != IDLE; no slot is decided in IDLE or FILL;
 //   configuration   the check of a tuser beat's configuration is the range of docs/rtl.md
@@ -96,6 +98,32 @@
     always @(*) if (f_past_valid && f_tuser_in[i]) assert (pend_q[i][CFG_W] == f_in_range(pend_q[i][CFG_W-1:0]));
   end
   wire f_latched_in_range = f_in_range(cfg_o);
+
+  // ------------------------------------------------------------ input beats in order
+  // One accepted beat, chosen freely (f_pick), is followed through the input buffer: it
+  // leaves it exactly once, as the buffer's head, unchanged, after the beats accepted
+  // before it: no accepted beat is lost, changed, reordered or taken twice.
+  (* anyseq *) logic f_pick;
+  logic [1:0]  f_track = 2'd0;  // 0: none chosen yet, 1: in the buffer, 2: left it
+  logic [17:0] f_beat;          // its {tuser, tlast, tdata}
+  logic        f_ahead;         // a beat accepted before it is still in the buffer
+  always @(posedge clk_i) begin
+    if (!rst_ni) f_track <= 2'd0;
+    else if (f_track == 2'd1 && in_pop) begin
+      if (f_ahead) f_ahead <= 1'b0;
+      else         f_track <= 2'd2;
+    end else if (f_track == 2'd0 && in_push && f_pick) begin
+      f_track <= 2'd1;
+      f_beat  <= {s_tuser_i, s_tlast_i, s_tdata_i};
+      f_ahead <= in_count_q == 2'd1 && !in_pop;
+    end
+  end
+  always @(*) begin
+    if (f_past_valid && f_track == 2'd1) begin
+      if (f_ahead) assert (in_count_q == 2'd2 && ibuf_q[~in_rd_q] == f_beat);
+      else         assert (in_count_q != 2'd0 && ibuf_q[in_rd_q] == f_beat);
+    end
+  end
 
   // The output position (pixels pushed) before the slot position (slots decided).
   wire f_out_behind = out_y_q < y_q || (out_y_q == y_q && out_x_q < x_q);
@@ -281,6 +309,7 @@
       cover (error_set_o[3]);
       cover (f_dropped_cfg && state_q == FILL);
       cover (s_tvalid_i && !s_tready_o);
+      cover (f_track == 2'd2 && $past(f_track == 2'd1 && f_ahead, 2));
       cover (count_q == (FAW+1)'(FIFO_DEPTH));
       cover ($past(m_tvalid_o && !m_tready_i) && $past(m_tvalid_o && !m_tready_i, 2) && f_out_hs);
 `else
