@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // sgm_axi (sgm_top + AXI4-Lite registers) configured THROUGH the driver
 // (sw/sgm_driver.cpp) over an AXI4-Lite master with random delays on all five
-// channels, every bus cycle checked by the protocol checker; the streams go
+// channels, which presents each request while the previous response of its kind
+// may still wait, every bus cycle checked by the protocol checker; the streams go
 // through the core harness (random stalls, stream checker) and every frame is
 // compared with the golden model. The register map is sw/include/sgm_regs.h.
 #include "Vsgm_axi.h"
@@ -142,8 +143,20 @@ struct AxiCore {
                 "")
           << what << ", frame " << k;
   }
-  ~AxiCore() { EXPECT_EQ(bus.checker().finish(), "") << "AXI4-Lite protocol"; }
+  ~AxiCore() { EXPECT_EQ(bus.finish(), "") << "AXI4-Lite protocol"; }
 };
+
+// A bus without delays: every request is taken in the first cycle it is presented
+// (no response waits), so a test can time a write to the cycle.
+constexpr sgm::tb::AxilDelays kNoBusDelays{0, 0, 0, 0};
+
+// The bits of the byte lanes a write's strobes enable.
+uint32_t strobedBits(uint32_t strobes) {
+  uint32_t bits = 0;
+  for (int lane = 0; lane < 4; ++lane)
+    if (strobes >> lane & 1) bits |= 0xFFu << (8 * lane);
+  return bits;
+}
 
 // ---------------------------------------------------------------- the map
 TEST(SgmAxi, RtlOffsetsAndResetValuesMatchTheHeader) {
@@ -376,10 +389,8 @@ TEST(SgmAxi, ReadBackReservedBitsAndWriteStrobes) {
     for (unsigned strb = 0; strb < 16; ++strb) {
       c.bus.write(r.offset, 0);
       c.bus.write(r.offset, 0xFFFFFFFFu, strb);
-      uint32_t lanes = 0;
-      for (int k = 0; k < 4; ++k)
-        if (strb >> k & 1) lanes |= 0xFFu << (8 * k);
-      EXPECT_EQ(c.bus.read(r.offset).data, lanes & r.writable) << r.name << ", strobes 0x" << std::hex << strb;
+      EXPECT_EQ(c.bus.read(r.offset).data, strobedBits(strb) & r.writable)
+          << r.name << ", strobes 0x" << std::hex << strb;
     }
     c.bus.write(r.offset, r.reset);
   }
@@ -635,6 +646,40 @@ TEST(AxilChecker, NamesTheCycleChannelAndRuleOfEachViolation) {
     ar.arvalid = ar.arready = true;
     c.observe(0, ar);
     EXPECT_EQ(c.finish(), "end: 0 write addresses, 0 write data, 0 write responses, 1 reads, 0 read responses");
+  }
+  {
+    // A second write taken while the first one's response waits (BREADY low).
+    AxilChecker c;
+    AxilWires waiting = taken;
+    waiting.bvalid = true;
+    c.observe(0, taken);
+    EXPECT_EQ(c.observe(1, waiting),
+              "cycle 1, AW: write address taken while the write response before it still waits (too many writes in "
+              "flight)");
+    AxilChecker two(2);  // a slave that promises two writes in flight
+    two.observe(0, taken);
+    EXPECT_EQ(two.observe(1, waiting), "");
+  }
+  {
+    // Accepted in the same cycle: the response still counts in that cycle.
+    AxilChecker c;
+    AxilWires sameCycle = taken;
+    sameCycle.bvalid = sameCycle.bready = true;
+    c.observe(0, taken);
+    EXPECT_EQ(c.observe(1, sameCycle),
+              "cycle 1, AW: write address taken while the write response before it still waits (too many writes in "
+              "flight)");
+  }
+  {
+    AxilChecker c;
+    AxilWires ar = idle;
+    ar.arvalid = ar.arready = true, ar.araddr = 4;
+    AxilWires secondRead = ar;
+    secondRead.rvalid = true;
+    c.observe(0, ar);
+    EXPECT_EQ(c.observe(1, secondRead),
+              "cycle 1, AR: read address taken while the read response before it still waits (too many reads in "
+              "flight)");
   }
 }
 
