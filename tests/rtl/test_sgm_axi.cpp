@@ -622,6 +622,99 @@ TEST(SgmAxi, FrameDoneInterruptRaisedMaskedAndCleared) {
   EXPECT_EQ(c.driver.framesDone(), 2u);
 }
 
+// ---------------------------------------------------------------- clears against events
+// One frame streamed by hand into a core whose bus has no delays: a good frame (its end
+// raises IRQ_STATUS.FRAME_DONE) or one of a size out of range (dropped: ERROR.CONFIG, its
+// counter, IRQ_STATUS.ERROR). A run without a clearing write finds the event's cycle (the
+// cycle whose clock edge raises irq_o); the runs are deterministic (same seeds, same bus
+// traffic before the event), so another run times a clearing write to be taken in a chosen
+// cycle. The registers are read once the frame has passed.
+enum class Event { kFrameDone, kConfigError };
+
+struct EventRun {
+  uint64_t eventCycle = 0;  // found by a run without a clearing write
+  uint64_t clearTaken = 0;  // the cycle in which the clearing write was taken
+  uint32_t error = 0, errorCount = 0, irqStatus = 0;
+};
+
+struct TimedClear {
+  uint32_t offset = 0, data = 0;
+  uint64_t cycle = 0;  // 0: no clearing write
+};
+
+EventRun runEvent(Event event, TimedClear clear = {}) {
+  AxiCore c("sgm_axi_clear_timing", 12, {0.1, 0.1}, kNoBusDelays);
+  const int w = 36, h = 12;
+  const bool error = event == Event::kConfigError;
+  c.driver.configure(frameConfig(defaults(), {error ? 0 : w, h}));
+  c.driver.enableInterrupts(error ? SGM_IRQ_ENABLE_ERROR : SGM_IRQ_ENABLE_FRAME_DONE);
+  c.driver.enable(c.enabled = true);
+  const FrameInput f = scene(w, h, 50, defaults());
+  c.extra.push(sgm::tb::frameBeats(f.left.data, f.right.data, w, h, f.left.step, f.right.step));
+  EventRun run;
+  const auto cycle = [&c] { return c.core.top().cycles(); };
+  if (clear.cycle) {
+    if (cycle() >= clear.cycle) throw sgm::Error("the clear is due before the setup's writes are done");
+    while (cycle() < clear.cycle) c.steps(1);
+    c.bus.write(clear.offset, clear.data);  // taken in its first cycle: the bus has no delays
+    run.clearTaken = c.bus.lastWriteTaken();
+  } else {
+    for (long i = 0; !c.model().irq_o; ++i) {
+      if (i > 100000) throw sgm::Error("no event in 100000 cycles");
+      run.eventCycle = cycle();
+      c.steps(1);
+    }
+  }
+  const uint64_t settled = cycle() + 20;
+  while (!c.extra.empty() || cycle() < settled) c.steps(1);
+  run.error = c.bus.read(SGM_REG_ERROR).data;
+  run.errorCount = c.bus.read(SGM_REG_ERROR_COUNT).data;
+  run.irqStatus = c.bus.read(SGM_REG_IRQ_STATUS).data;
+  return run;
+}
+
+// IRQ_STATUS and ERROR (write 1 to clear) and ERROR_COUNT (a write clears its byte lanes)
+// against the events they record: a clear taken in the very cycle of the event keeps the
+// event (its bit set, its count 1), as does one a cycle before it; one a cycle after
+// clears it (which shows the write was timed to the cycle).
+TEST(SgmAxi, AClearInTheCycleOfItsEventKeepsTheEvent) {
+  struct Case {
+    Event event;
+    const char* what;
+    uint32_t offset, data;
+    uint32_t EventRun::*field;
+    uint32_t bits;  // the field's bits of the event, as read after it
+  };
+  const Case cases[] = {
+      {Event::kFrameDone, "IRQ_STATUS.FRAME_DONE", SGM_REG_IRQ_STATUS, SGM_IRQ_STATUS_FRAME_DONE, &EventRun::irqStatus,
+       SGM_IRQ_STATUS_FRAME_DONE},
+      {Event::kConfigError, "IRQ_STATUS.ERROR", SGM_REG_IRQ_STATUS, SGM_IRQ_STATUS_ERROR, &EventRun::irqStatus,
+       SGM_IRQ_STATUS_ERROR},
+      {Event::kConfigError, "ERROR.CONFIG", SGM_REG_ERROR, SGM_ERROR_CONFIG, &EventRun::error, SGM_ERROR_CONFIG},
+      {Event::kConfigError, "ERROR_COUNT.CONFIG", SGM_REG_ERROR_COUNT, 0, &EventRun::errorCount,
+       1u << SGM_ERROR_COUNT_CONFIG_SHIFT},
+  };
+  std::map<Event, EventRun> probes;
+  for (const Case& k : cases) {
+    if (!probes.count(k.event)) probes[k.event] = runEvent(k.event);
+    const EventRun& probe = probes[k.event];
+    const uint32_t mask = k.offset == SGM_REG_ERROR_COUNT ? uint32_t(SGM_ERROR_COUNT_CONFIG_MASK) : k.bits;
+    ASSERT_GT(probe.eventCycle, 0u);
+    EXPECT_EQ(probe.*k.field & mask, k.bits) << k.what << " without a clear";
+    for (const int offset : {-1, 0, 1}) {
+      const EventRun run = runEvent(k.event, {k.offset, k.data, probe.eventCycle + offset});
+      EXPECT_EQ(run.clearTaken, probe.eventCycle + offset) << k.what << ": the clear's timing";
+      const uint32_t expected = offset <= 0 ? k.bits : 0;
+      EXPECT_EQ(run.*k.field & mask, expected) << k.what << " cleared "
+                                               << (offset < 0    ? "a cycle before"
+                                                   : offset == 0 ? "in the cycle of"
+                                                                 : "a cycle after")
+                                               << " its event (cycle " << probe.eventCycle << ")"
+                                               << (offset == 0 ? ": the event in the cycle of its clear was lost" : "");
+    }
+  }
+}
+
 // CTRL.ENABLE = 0 holds the start-of-frame beat back; a soft reset in the
 // middle of a frame leaves a core whose next frame is bit-exact.
 TEST(SgmAxi, EnableHoldsTheStartOfFrameAndSoftResetRecovers) {
