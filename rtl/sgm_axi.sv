@@ -272,10 +272,12 @@ module sgm_axi #(
   end
 
   // Saturating event counters, one per error kind; a write clears the
-  // counters of its enabled byte lanes.
+  // counters of its enabled byte lanes. An event in the cycle of the clear
+  // counts (the counter restarts at 1), as ERROR keeps it.
   for (genvar k = 0; k < 4; k++) begin : g_count
     always_ff @(posedge clk_i) begin
-      if (!rst_ni || (wr_error_count && reg_wstrb[k])) error_count_q[k*8 +: 8] <= '0;
+      if (!rst_ni) error_count_q[k*8 +: 8] <= '0;
+      else if (wr_error_count && reg_wstrb[k]) error_count_q[k*8 +: 8] <= 8'(error_event[k]);
       else if (error_event[k] && error_count_q[k*8 +: 8] != 8'hFF)
         error_count_q[k*8 +: 8] <= error_count_q[k*8 +: 8] + 1'b1;
     end

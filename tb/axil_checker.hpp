@@ -7,7 +7,13 @@
 //   responses:  no BVALID without a write whose address and data were both
 //               taken in an earlier cycle and not answered yet, no RVALID
 //               without such a read (no response without a request); at the
-//               end, one response per request (finish()).
+//               end, one response per request (finish());
+//   in flight:  at most maxOutstanding writes and maxOutstanding reads at a
+//               time (1 by default: the slave's promise): no AW (W) handshake
+//               while that many write addresses (data) wait for their B
+//               handshake, no AR handshake while that many reads wait for
+//               their R handshake (a response accepted in the same cycle
+//               still counts: its request is free from the next cycle on).
 // The first broken rule is kept, naming the cycle, the channel and the rule.
 #pragma once
 
@@ -45,12 +51,20 @@ AxilWires axilWires(const Model& m) {
 
 class AxilChecker {
  public:
+  explicit AxilChecker(uint64_t maxOutstanding = 1) : maxOutstanding_(maxOutstanding) {}
+
   // One cycle; returns the first violation so far ("" when none).
   const std::string& observe(uint64_t cycle, const AxilWires& w) {
     cycle_ = cycle;
     // Responses first, against the requests of earlier cycles.
     if (w.bvalid && responsesB_ >= writesTaken()) fail("B", "BVALID without an outstanding write");
     if (w.rvalid && responsesR_ >= reads_) fail("R", "RVALID without an outstanding read");
+    if (w.awvalid && w.awready && addresses_ >= responsesB_ + maxOutstanding_)
+      fail("AW", "write address taken while the write response before it still waits (too many writes in flight)");
+    if (w.wvalid && w.wready && data_ >= responsesB_ + maxOutstanding_)
+      fail("W", "write data taken while the write response before it still waits (too many writes in flight)");
+    if (w.arvalid && w.arready && reads_ >= responsesR_ + maxOutstanding_)
+      fail("AR", "read address taken while the read response before it still waits (too many reads in flight)");
     aw_.observe(*this, "AW", w.awvalid, w.awready, {w.awaddr, 0, 0});
     wd_.observe(*this, "W", w.wvalid, w.wready, {w.wdata, w.wstrb, 0});
     b_.observe(*this, "B", w.bvalid, w.bready, {w.bresp, 0, 0});
@@ -107,6 +121,7 @@ class AxilChecker {
   }
 
   Channel aw_, wd_, b_, ar_, r_;
+  uint64_t maxOutstanding_;
   uint64_t addresses_ = 0, data_ = 0, responsesB_ = 0, reads_ = 0, responsesR_ = 0;
   uint64_t cycle_ = 0;
   std::string violation_;

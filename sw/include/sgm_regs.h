@@ -379,7 +379,7 @@
 #define SGM_ERROR_CONFIG (1u << 3)
 #define SGM_ERROR_MASK 0x0000000Fu
 
-/* ---- ERROR_COUNT (0x3C): events of each error kind, saturating at 255 */
+/* ---- ERROR_COUNT (0x3C): events of each error kind, saturating at 255; an event in the cycle of its clear counts */
 /* LAST_EARLY [7:0] WC: events of ERROR.LAST_EARLY */
 #define SGM_ERROR_COUNT_LAST_EARLY_SHIFT 0
 #define SGM_ERROR_COUNT_LAST_EARLY_WIDTH 8

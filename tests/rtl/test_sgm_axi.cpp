@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // sgm_axi (sgm_top + AXI4-Lite registers) configured THROUGH the driver
 // (sw/sgm_driver.cpp) over an AXI4-Lite master with random delays on all five
-// channels, every bus cycle checked by the protocol checker; the streams go
+// channels, which presents each request while the previous response of its kind
+// may still wait, every bus cycle checked by the protocol checker; the streams go
 // through the core harness (random stalls, stream checker) and every frame is
 // compared with the golden model. The register map is sw/include/sgm_regs.h.
 #include "Vsgm_axi.h"
@@ -142,8 +143,20 @@ struct AxiCore {
                 "")
           << what << ", frame " << k;
   }
-  ~AxiCore() { EXPECT_EQ(bus.checker().finish(), "") << "AXI4-Lite protocol"; }
+  ~AxiCore() { EXPECT_EQ(bus.finish(), "") << "AXI4-Lite protocol"; }
 };
+
+// A bus without delays: every request is taken in the first cycle it is presented
+// (no response waits), so a test can time a write to the cycle.
+constexpr sgm::tb::AxilDelays kNoBusDelays{0, 0, 0, 0};
+
+// The bits of the byte lanes a write's strobes enable.
+uint32_t strobedBits(uint32_t strobes) {
+  uint32_t bits = 0;
+  for (int lane = 0; lane < 4; ++lane)
+    if (strobes >> lane & 1) bits |= 0xFFu << (8 * lane);
+  return bits;
+}
 
 // ---------------------------------------------------------------- the map
 TEST(SgmAxi, RtlOffsetsAndResetValuesMatchTheHeader) {
@@ -376,12 +389,63 @@ TEST(SgmAxi, ReadBackReservedBitsAndWriteStrobes) {
     for (unsigned strb = 0; strb < 16; ++strb) {
       c.bus.write(r.offset, 0);
       c.bus.write(r.offset, 0xFFFFFFFFu, strb);
-      uint32_t lanes = 0;
-      for (int k = 0; k < 4; ++k)
-        if (strb >> k & 1) lanes |= 0xFFu << (8 * k);
-      EXPECT_EQ(c.bus.read(r.offset).data, lanes & r.writable) << r.name << ", strobes 0x" << std::hex << strb;
+      EXPECT_EQ(c.bus.read(r.offset).data, strobedBits(strb) & r.writable)
+          << r.name << ", strobes 0x" << std::hex << strb;
     }
     c.bus.write(r.offset, r.reset);
+  }
+}
+
+// Random register traffic with the bus model's random byte strobes: writes of random data
+// under random strobes and reads, to random RW registers in random order, every read
+// checked against a model that keeps the bytes a write leaves unstrobed. The bus model
+// presents each request while the previous response of its kind may still wait, so a
+// slave that takes a second write (read) before the first response is accepted fails the
+// protocol checker.
+TEST(SgmAxi, StrobedWritesKeepTheUnstrobedBytes) {
+  AxiCore c("sgm_axi_strobes", 11, {0, 0});
+  std::vector<RegisterSpec> writable;
+  std::map<uint32_t, uint32_t> expected;  // offset -> what the register must read
+  for (const RegisterSpec& r : registers())
+    if (r.writable) writable.push_back(r), expected[r.offset] = r.reset;
+  std::mt19937 rng(17);
+  int partial = 0;
+  std::string lastWrite = "none";
+  for (int i = 0; i < 1500; ++i) {
+    const RegisterSpec& r = writable[rng() % writable.size()];
+    if (rng() % 2) {
+      const uint32_t data = rng(), strobes = c.bus.randomStrobes();
+      ASSERT_EQ(c.bus.write(r.offset, data, strobes).resp, sgm::tb::kAxilOkay) << r.name;
+      const uint32_t lanes = strobedBits(strobes);
+      expected[r.offset] = ((expected[r.offset] & ~lanes) | (data & lanes)) & r.writable;
+      partial += strobes != 0 && strobes != 0xF;
+      char text[80];
+      std::snprintf(text, sizeof text, "0x%08X with strobes 0x%X to %s", data, strobes, r.name);
+      lastWrite = text;
+    } else {
+      ASSERT_EQ(c.bus.read(r.offset).data, expected[r.offset])
+          << r.name << " (transfer " << i << ", last write " << lastWrite << ")";
+    }
+  }
+  for (const RegisterSpec& r : writable) EXPECT_EQ(c.bus.read(r.offset).data, expected[r.offset]) << r.name;
+  EXPECT_GT(partial, 400) << "writes with some but not all byte lanes";
+  EXPECT_GT(c.bus.writeCyclesBehindResponse(), 100u) << "writes presented while a write response waited";
+  EXPECT_GT(c.bus.readCyclesBehindResponse(), 100u) << "reads presented while a read response waited";
+}
+
+// CTRL.SOFT_RESET (write 1 for a pulse) fires only when its byte lane is strobed: a
+// write of all ones under each of the 16 strobe combinations, STATUS.RESETTING read
+// right after it (the bus has no delays: the read is taken two cycles after the write,
+// within the reset's cycles).
+TEST(SgmAxi, SoftResetFiresOnlyFromItsStrobedByte) {
+  AxiCore c("sgm_axi_soft_reset_strobes", 13, {0, 0}, kNoBusDelays);
+  static_assert(SGM_CTRL_SOFT_RESET < 0x100u, "SOFT_RESET sits in byte lane 0");
+  for (uint32_t strobes = 0; strobes < 16; ++strobes) {
+    c.bus.write(SGM_REG_CTRL, 0xFFFFFFFFu, strobes);
+    const bool resetting = c.bus.read(SGM_REG_STATUS).data & SGM_STATUS_RESETTING;
+    EXPECT_EQ(resetting, (strobes & 1) != 0) << "CTRL written with all ones, strobes 0x" << std::hex << strobes;
+    c.steps(10);  // past the reset
+    EXPECT_EQ(c.bus.read(SGM_REG_STATUS).data & SGM_STATUS_RESETTING, 0u);
   }
 }
 
@@ -558,6 +622,99 @@ TEST(SgmAxi, FrameDoneInterruptRaisedMaskedAndCleared) {
   EXPECT_EQ(c.driver.framesDone(), 2u);
 }
 
+// ---------------------------------------------------------------- clears against events
+// One frame streamed by hand into a core whose bus has no delays: a good frame (its end
+// raises IRQ_STATUS.FRAME_DONE) or one of a size out of range (dropped: ERROR.CONFIG, its
+// counter, IRQ_STATUS.ERROR). A run without a clearing write finds the event's cycle (the
+// cycle whose clock edge raises irq_o); the runs are deterministic (same seeds, same bus
+// traffic before the event), so another run times a clearing write to be taken in a chosen
+// cycle. The registers are read once the frame has passed.
+enum class Event { kFrameDone, kConfigError };
+
+struct EventRun {
+  uint64_t eventCycle = 0;  // found by a run without a clearing write
+  uint64_t clearTaken = 0;  // the cycle in which the clearing write was taken
+  uint32_t error = 0, errorCount = 0, irqStatus = 0;
+};
+
+struct TimedClear {
+  uint32_t offset = 0, data = 0;
+  uint64_t cycle = 0;  // 0: no clearing write
+};
+
+EventRun runEvent(Event event, TimedClear clear = {}) {
+  AxiCore c("sgm_axi_clear_timing", 12, {0.1, 0.1}, kNoBusDelays);
+  const int w = 36, h = 12;
+  const bool error = event == Event::kConfigError;
+  c.driver.configure(frameConfig(defaults(), {error ? 0 : w, h}));
+  c.driver.enableInterrupts(error ? SGM_IRQ_ENABLE_ERROR : SGM_IRQ_ENABLE_FRAME_DONE);
+  c.driver.enable(c.enabled = true);
+  const FrameInput f = scene(w, h, 50, defaults());
+  c.extra.push(sgm::tb::frameBeats(f.left.data, f.right.data, w, h, f.left.step, f.right.step));
+  EventRun run;
+  const auto cycle = [&c] { return c.core.top().cycles(); };
+  if (clear.cycle) {
+    if (cycle() >= clear.cycle) throw sgm::Error("the clear is due before the setup's writes are done");
+    while (cycle() < clear.cycle) c.steps(1);
+    c.bus.write(clear.offset, clear.data);  // taken in its first cycle: the bus has no delays
+    run.clearTaken = c.bus.lastWriteTaken();
+  } else {
+    for (long i = 0; !c.model().irq_o; ++i) {
+      if (i > 100000) throw sgm::Error("no event in 100000 cycles");
+      run.eventCycle = cycle();
+      c.steps(1);
+    }
+  }
+  const uint64_t settled = cycle() + 20;
+  while (!c.extra.empty() || cycle() < settled) c.steps(1);
+  run.error = c.bus.read(SGM_REG_ERROR).data;
+  run.errorCount = c.bus.read(SGM_REG_ERROR_COUNT).data;
+  run.irqStatus = c.bus.read(SGM_REG_IRQ_STATUS).data;
+  return run;
+}
+
+// IRQ_STATUS and ERROR (write 1 to clear) and ERROR_COUNT (a write clears its byte lanes)
+// against the events they record: a clear taken in the very cycle of the event keeps the
+// event (its bit set, its count 1), as does one a cycle before it; one a cycle after
+// clears it (which shows the write was timed to the cycle).
+TEST(SgmAxi, AClearInTheCycleOfItsEventKeepsTheEvent) {
+  struct Case {
+    Event event;
+    const char* what;
+    uint32_t offset, data;
+    uint32_t EventRun::*field;
+    uint32_t bits;  // the field's bits of the event, as read after it
+  };
+  const Case cases[] = {
+      {Event::kFrameDone, "IRQ_STATUS.FRAME_DONE", SGM_REG_IRQ_STATUS, SGM_IRQ_STATUS_FRAME_DONE, &EventRun::irqStatus,
+       SGM_IRQ_STATUS_FRAME_DONE},
+      {Event::kConfigError, "IRQ_STATUS.ERROR", SGM_REG_IRQ_STATUS, SGM_IRQ_STATUS_ERROR, &EventRun::irqStatus,
+       SGM_IRQ_STATUS_ERROR},
+      {Event::kConfigError, "ERROR.CONFIG", SGM_REG_ERROR, SGM_ERROR_CONFIG, &EventRun::error, SGM_ERROR_CONFIG},
+      {Event::kConfigError, "ERROR_COUNT.CONFIG", SGM_REG_ERROR_COUNT, 0, &EventRun::errorCount,
+       1u << SGM_ERROR_COUNT_CONFIG_SHIFT},
+  };
+  std::map<Event, EventRun> probes;
+  for (const Case& k : cases) {
+    if (!probes.count(k.event)) probes[k.event] = runEvent(k.event);
+    const EventRun& probe = probes[k.event];
+    const uint32_t mask = k.offset == SGM_REG_ERROR_COUNT ? uint32_t(SGM_ERROR_COUNT_CONFIG_MASK) : k.bits;
+    ASSERT_GT(probe.eventCycle, 0u);
+    EXPECT_EQ(probe.*k.field & mask, k.bits) << k.what << " without a clear";
+    for (const int offset : {-1, 0, 1}) {
+      const EventRun run = runEvent(k.event, {k.offset, k.data, probe.eventCycle + offset});
+      EXPECT_EQ(run.clearTaken, probe.eventCycle + offset) << k.what << ": the clear's timing";
+      const uint32_t expected = offset <= 0 ? k.bits : 0;
+      EXPECT_EQ(run.*k.field & mask, expected) << k.what << " cleared "
+                                               << (offset < 0    ? "a cycle before"
+                                                   : offset == 0 ? "in the cycle of"
+                                                                 : "a cycle after")
+                                               << " its event (cycle " << probe.eventCycle << ")"
+                                               << (offset == 0 ? ": the event in the cycle of its clear was lost" : "");
+    }
+  }
+}
+
 // CTRL.ENABLE = 0 holds the start-of-frame beat back; a soft reset in the
 // middle of a frame leaves a core whose next frame is bit-exact.
 TEST(SgmAxi, EnableHoldsTheStartOfFrameAndSoftResetRecovers) {
@@ -635,6 +792,40 @@ TEST(AxilChecker, NamesTheCycleChannelAndRuleOfEachViolation) {
     ar.arvalid = ar.arready = true;
     c.observe(0, ar);
     EXPECT_EQ(c.finish(), "end: 0 write addresses, 0 write data, 0 write responses, 1 reads, 0 read responses");
+  }
+  {
+    // A second write taken while the first one's response waits (BREADY low).
+    AxilChecker c;
+    AxilWires waiting = taken;
+    waiting.bvalid = true;
+    c.observe(0, taken);
+    EXPECT_EQ(c.observe(1, waiting),
+              "cycle 1, AW: write address taken while the write response before it still waits (too many writes in "
+              "flight)");
+    AxilChecker two(2);  // a slave that promises two writes in flight
+    two.observe(0, taken);
+    EXPECT_EQ(two.observe(1, waiting), "");
+  }
+  {
+    // Accepted in the same cycle: the response still counts in that cycle.
+    AxilChecker c;
+    AxilWires sameCycle = taken;
+    sameCycle.bvalid = sameCycle.bready = true;
+    c.observe(0, taken);
+    EXPECT_EQ(c.observe(1, sameCycle),
+              "cycle 1, AW: write address taken while the write response before it still waits (too many writes in "
+              "flight)");
+  }
+  {
+    AxilChecker c;
+    AxilWires ar = idle;
+    ar.arvalid = ar.arready = true, ar.araddr = 4;
+    AxilWires secondRead = ar;
+    secondRead.rvalid = true;
+    c.observe(0, ar);
+    EXPECT_EQ(c.observe(1, secondRead),
+              "cycle 1, AR: read address taken while the read response before it still waits (too many reads in "
+              "flight)");
   }
 }
 
