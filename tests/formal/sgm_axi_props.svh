@@ -21,7 +21,8 @@
 //                error_event_o; IRQ_STATUS: frame_done_o and any error event), so a clear
 //                in the cycle of an event never loses the event; nothing else changes them;
 //   counters     each ERROR_COUNT byte counts its kind's events and saturates at 255, a
-//                write clears the bytes of its enabled lanes; FRAMES counts frame_done_o,
+//                write clears the bytes of its enabled lanes (to 1 when an event of the
+//                byte's kind comes in the cycle of the clear); FRAMES counts frame_done_o,
 //                LAST_SIZE takes the finished frame's size;
 //   irq_o        = |(IRQ_STATUS & IRQ_ENABLE) in every cycle;
 //   HOLD         while CTRL.HOLD is 1 the active configuration (the core's cfg_i)
@@ -133,12 +134,14 @@
     end
   end
 
-  // ERROR_COUNT: one saturating byte per error kind, cleared by a write in its lane.
+  // ERROR_COUNT: one saturating byte per error kind, cleared by a write in its lane (to 1 when
+  // an event of its kind comes in the cycle of the clear).
   for (genvar k = 0; k < ERROR_KINDS; k++) begin : g_f_count
     wire [7:0] f_count = error_count_q[k*8 +: 8];
     always @(posedge clk_i) begin
       if (f_past_valid && $past(rst_ni)) begin
-        if ($past(f_wr && f_wa == ADDR_ERROR_COUNT && s_axil_wstrb_i[k])) assert (f_count == 8'd0);
+        // a clear restarts the byte; an event in the cycle of its clear counts (is not lost)
+        if ($past(f_wr && f_wa == ADDR_ERROR_COUNT && s_axil_wstrb_i[k])) assert (f_count == 8'($past(error_event[k])));
         else if ($past(error_event[k])) assert (f_count == ($past(f_count) == 8'hFF ? 8'hFF : $past(f_count) + 8'd1));
         else assert (f_count == $past(f_count));
       end
@@ -230,5 +233,6 @@
       cover (f_held_write && !$past(f_hold) && act_cfg != $past(act_cfg));
       cover (f_wr && f_wa > F_LAST);
       cover (error_count_q[7:0] == 8'd2);
+      cover ($past(f_wr && f_wa == ADDR_ERROR_COUNT && s_axil_wstrb_i[0] && error_event[0]) && error_count_q[7:0] == 8'd1);
     end
   end
