@@ -469,8 +469,8 @@ std::string svCfg() {
       o << "\n// The word of the golden model's defaults (every field's DEFAULT: what a build with every\n"
         << "// lever runs, sgm::Params{}) and of the four-path preset (FOUR_PATH: any other build), each\n"
         << "// with the frame size 0: set FRAME_SIZE's fields to use one (docs/integration.md).\n";
-    o << "localparam logic [CFG_W-1:0] CFG_" << (fourPath ? "FOUR_PATH" : "DEFAULT") << " = " << wordWidth << "'h" << hex
-      << ";\n";
+    o << "localparam logic [CFG_W-1:0] CFG_" << (fourPath ? "FOUR_PATH" : "DEFAULT") << " = " << wordWidth << "'h"
+      << hex << ";\n";
   }
   // The MAX checks: every field whose legal range ends below its top.
   std::vector<std::string> terms;
@@ -609,7 +609,8 @@ std::string docWord() {
       legal = std::to_string(w.field->minValue) + " .. " + std::to_string(w.field->maxValue);
     o << "| " << bitRange(w.lsb, w.field->width) << " | " << w.reg->name << "." << w.field->name << " | " << w.reg->name
       << bitRange(w.field->lsb, w.field->width) << " | " << legal << " | "
-      << (w.field->needs.empty() ? "" : "`" + w.field->needs + "`") << " | " << mdEscape(w.field->description) << " |\n";
+      << (w.field->needs.empty() ? "" : "`" + w.field->needs + "`") << " | " << mdEscape(w.field->description)
+      << " |\n";
   }
   o << "\n" << wordWidth << " bits (`CFG_W`, `SGM_CFG_W`).\n";
   return o.str();
