@@ -40,13 +40,14 @@ EVAL_OBJ   := $(patsubst %.cpp,$(OBJ)/%.o,$(EVAL_SRC))
 # The report helpers (JSON writer and reader, number formatter, meta.txt reader)
 # the summary programs of synth/ link without the rest of the evaluation library.
 REPORT_SRC := tools/report_json.cpp tools/report_util.cpp tools/json_read.cpp
-REPORT_HDR := tools/report_json.hpp tools/report_util.hpp tools/json_read.hpp tools/video_formats.hpp
+REPORT_HDR := tools/report_json.hpp tools/report_util.hpp tools/json_read.hpp tools/video_formats.hpp tools/xc7_parts.hpp
 TEST_SRC   := $(wildcard tests/*.cpp)
 TEST_OBJ   := $(patsubst %.cpp,$(OBJ)/%.o,$(TEST_SRC))
 
 # One definition of a core build (sgm_top's parameters, their defaults, the tag that names
 # a build, its Verilator and Yosys flags, its meta.txt) for every flow (scripts/build.mk).
 include scripts/build.mk
+include scripts/refs.mk
 
 .PHONY: all help deps check-tools golden eval eval-ci bench-golden test unit-test rtl-tests sim sim-ci synth lint clean
 .DEFAULT_GOAL := all
@@ -256,6 +257,14 @@ $(eval $(call rtl_test,top-d16-lean,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=
 # (its defaults run weight 4; the settings, parameter sets and regression vary it).
 $(eval $(call rtl_test,top-d16-rb8,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GRIGHT_BLOCK=8 -GEDGE_RESET=1 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,top-d16-k2-rb16,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GLANES=2 -GRIGHT_BLOCK=16 -GEDGE_RESET=1 -CFLAGS -DSGM_D=16))
+# The reference builds (scripts/refs.mk), each whole (its D, lanes, MAX_WIDTH, features and,
+# for the ECP5 ones, the ECP5 flow's register-chain delays): what `make pnr-ref` routes is
+# what is tested, with frames up to its MAX_WIDTH (a 1280-wide build's banked path memories).
+$(eval $(call rtl_test,ref-hd64,sgm_top,$(call ref_gflags,hd64)))
+$(eval $(call rtl_test,ref-fhd32,sgm_top,$(call ref_gflags,fhd32)))
+$(eval $(call rtl_test,ref-small,sgm_top,$(call ref_gflags,small)))
+$(eval $(call rtl_test,ref-fhd128,sgm_top,$(call ref_gflags,fhd128)))
+$(foreach r,$(REF_NAMES),$(if $(filter $(BIN)/rtl-ref-$(r),$(RTL_TEST_BINS)),,$(error scripts/refs.mk: reference build $(r) has no rtl-ref-$(r) fixture in the Makefile)))
 # sgm_axi configured through the driver (sw/) over an AXI4-Lite bus model; the lean build reads
 # its FEATURES back and has the frames that ask for a missing lever dropped.
 $(eval $(call rtl_test,axi-d16,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))

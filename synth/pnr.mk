@@ -141,7 +141,9 @@ PNR_CORE     = $(call core_spec_of,PNR_)
 PNR_CI_CORE  = $(PNR_CORE) D=$(PNR_CI_D) MAX_WIDTH=$(PNR_CI_MAX_WIDTH) LANES=$(PNR_CI_LANES)
 PNR_CFG      = $(PNR_DIR)/$(call core_tag,$(PNR_CORE))
 PNR_DEVNAME  = LFE5U-$(subst k,F,$(PNR_DEVICE))
-PNR_RUN      = $(PNR_CFG)/lfe5u-$(subst k,f,$(PNR_DEVICE))-$(PNR_SPEED)
+PNR_RUN      = $(PNR_CFG)/$(PNR_RUN_NAME)
+# A run of one device, speed and seed: lfe5u-85f-8-s1.
+PNR_RUN_NAME = lfe5u-$(subst k,f,$(PNR_DEVICE))-$(PNR_SPEED)-s$(PNR_SEED)
 PNR_LOCK     = $(PNR_DIR)/.lock
 PNR_SUMMARY  = $(BIN)/pnr-summary
 PNR_DEPS    := $(RTL_SRC) $(RTL_INC) synth/common.tcl synth/ecp5.tcl synth/ecp5_cmp.tcl synth/ecp5_cmp_lut.v
@@ -169,7 +171,7 @@ pnr-ci: pnr-tools $(PNR_SUMMARY)
 	 $(MAKE) --no-print-directory pnr-one PNR_D=$(PNR_CI_D) PNR_MAX_WIDTH=$(PNR_CI_MAX_WIDTH) PNR_LANES=$(PNR_CI_LANES) \
 	   PNR_DEVICE=$(PNR_CI_DEVICE) PNR_SPEED=$(PNR_CI_SPEED) PNR_FLAGS="$(PNR_CI_FLAGS)" && \
 	 $(MAKE) --no-print-directory pnr-summary \
-	   PNR_CHECK=$(call core_tag,$(PNR_CI_CORE))/lfe5u-$(subst k,f,$(PNR_CI_DEVICE))-$(PNR_CI_SPEED) && \
+	   PNR_CHECK=$(call core_tag,$(PNR_CI_CORE))/lfe5u-$(subst k,f,$(PNR_CI_DEVICE))-$(PNR_CI_SPEED)-s$(PNR_SEED) && \
 	 echo "pnr-ci: OK ($$(( $$(date +%s) - start )) s)"
 
 pnr-one: $(PNR_RUN)/done
@@ -245,7 +247,7 @@ define pnr_route
 	   else echo "pnr: nextpnr-ecp5 failed (exit $$rc):"; grep -E '^ERROR' $(@D)/nextpnr.log $(@D)/nextpnr.out | tail -5; fi; exit 1; fi; \
 	 commit=$$(git log -1 --format=%h -- rtl 2>/dev/null)$$(git status --porcelain -- rtl 2>/dev/null | grep -q . && echo -dirty); \
 	 { echo "device=$(PNR_DEVNAME)"; echo "package=$(PNR_PACKAGE)"; echo "speed=$(PNR_SPEED)"; \
-	   $(3) echo "target_mhz=$(PNR_FREQ)"; echo "seed=$(PNR_SEED)"; echo "nextpnr_flags=$(PNR_FLAGS)"; \
+	   $(3) echo "target_mhz=$(PNR_FREQ)"; echo "seed=$(PNR_SEED)"; $(if $(PNR_REF),echo "ref=$(PNR_REF)";) echo "nextpnr_flags=$(PNR_FLAGS)"; \
 	   echo "synth_flags=$$(cat $(1)/synth/flags)"; \
 	   echo "pnr_seconds=$$secs"; echo "synth_seconds=$$(cat $(1)/synth/seconds)"; \
 	   echo "nextpnr=$$($(PNR_NEXTPNR) --version 2>&1 | head -1)"; echo "yosys=$$(yosys -V)"; \
@@ -265,7 +267,7 @@ $(PNR_RUN)/done: $(PNR_CFG)/synth/done | pnr-tools
 PNR_LOOP_D     ?= 64
 PNR_LOOP_LANES ?= 1 2 3 4
 PNR_LOOP_CFG    = $(PNR_DIR)/loop-d$(PNR_LOOP_D)-k$(PNR_LOOP_K)
-PNR_LOOP_RUN    = $(PNR_LOOP_CFG)/lfe5u-$(subst k,f,$(PNR_DEVICE))-$(PNR_SPEED)
+PNR_LOOP_RUN    = $(PNR_LOOP_CFG)/$(PNR_RUN_NAME)
 PNR_LOOP_DEPS  := synth/sgm_path_loop.sv synth/ecp5_loop.tcl rtl/sgm_path_pe.sv rtl/sgm_min_tree.sv rtl/sgm_delay_ram.sv rtl/sgm_path_ring.sv
 
 .PHONY: pnr-loop pnr-loop-one
@@ -289,3 +291,37 @@ $(PNR_LOOP_CFG)/synth/done: $(PNR_LOOP_DEPS) | pnr-tools
 
 $(PNR_LOOP_RUN)/done: $(PNR_LOOP_CFG)/synth/done | pnr-tools
 	$(call pnr_route,$(PNR_LOOP_CFG),loop harness D=$(PNR_LOOP_D) LANES=$(PNR_LOOP_K),echo "kind=loop"; echo "d=$(PNR_LOOP_D)"; echo "lanes=$(PNR_LOOP_K)";)
+
+# ------------------------------------------------------------------ reference builds
+# `make pnr-ref [REF=name]`: each ECP5 reference build of scripts/refs.mk (all of them when
+# REF is not given) synthesized once and routed once per seed of PNR_SEEDS on its device,
+# speed and clock target, then build/pnr/summary.{json,md}, whose "refs" give per build the
+# median fmax of its seeds (the figure of record), the seeds' figures, and the median run's
+# resources and critical path. `make synth-ref [REF=name]`: the synthesis alone (ECP5: the
+# netlist and Yosys' cell counts per stage, build/pnr/<tag>/synth/; xc7: `make synth-xc7` of
+# the build, build/synth/<tag>/xc7/, with the smallest 7-series part that holds it).
+PNR_SEEDS ?= 1 2 3
+REF       ?=
+ref_list      = $(or $(REF),$(1))
+ref_pnr_vars  = $(call core_env,$(REF_$(1)_CORE),PNR_) PNR_DEVICE=$(REF_$(1)_DEVICE) PNR_PACKAGE=$(REF_$(1)_PACKAGE) \
+                PNR_SPEED=$(REF_$(1)_SPEED) PNR_FREQ=$(REF_$(1)_FREQ) PNR_FLAGS="$(REF_$(1)_NEXTPNR)" PNR_REF=$(1)
+
+.PHONY: pnr-ref synth-ref pnr-synth
+pnr-ref: pnr-tools $(PNR_SUMMARY)
+	@$(foreach r,$(call ref_list,$(call refs_on,ecp5)),$(call ref_check,$(r)) \
+	   $(if $(filter ecp5,$(REF_$(r)_TARGET)),,echo "pnr-ref: $(r) is a $(REF_$(r)_TARGET) build, which has no open router: make synth-ref REF=$(r)"; exit 1;) \
+	   for s in $(PNR_SEEDS); do $(MAKE) --no-print-directory pnr-one $(call ref_pnr_vars,$(r)) PNR_SEED=$$s || exit 1; done;)
+	@$(MAKE) --no-print-directory pnr-summary
+	@sed -n '/^## Reference builds/,/^## [^R]/p' $(PNR_DIR)/summary.md | sed '$$d'
+
+synth-ref: | pnr-tools
+	@$(foreach r,$(call ref_list,$(REF_NAMES)),$(call ref_check,$(r)) \
+	   $(if $(filter ecp5,$(REF_$(r)_TARGET)),$(MAKE) --no-print-directory pnr-synth $(call ref_pnr_vars,$(r)) || exit 1;) \
+	   $(if $(filter xc7,$(REF_$(r)_TARGET)),$(MAKE) --no-print-directory synth-xc7 $(call core_env,$(REF_$(r)_CORE),) SYNTH_REF=$(r) || exit 1;))
+	@$(if $(filter xc7,$(foreach r,$(call ref_list,$(REF_NAMES)),$(REF_$(r)_TARGET))),$(MAKE) --no-print-directory synth-summary)
+
+# The ECP5 synthesis of one build (PNR_ variables) and its cells per stage.
+pnr-synth: $(PNR_CFG)/synth/done
+	@echo "pnr-synth: $(PNR_CORE): Yosys cells per stage (before packing), $(PNR_CFG)/synth/"
+	@for f in $(PNR_CFG)/synth/*.stat.txt; do printf '  %-28s' "$$(basename $$f .stat.txt)"; \
+	   for c in LUT4 CCU2C TRELLIS_FF DP16KD DPR16X4 MULT18X18D; do printf ' %s %s' $$c "$$(awk -v c=$$c '$$1 == c { n = $$2 } END { print n + 0 }' $$f)"; done; echo; done

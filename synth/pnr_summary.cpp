@@ -10,7 +10,10 @@
 // pnr_seconds, ...), report.json (nextpnr's --report) and the "done" stamp
 // (nextpnr exited 0, i.e. the design was placed and routed). Every figure
 // comes from report.json: utilisation (TRELLIS_COMB, TRELLIS_FF, DP16KD,
-// MULT18X18D), fmax (achieved) and the critical path. --check CONFIG/RUN fails
+// MULT18X18D), fmax (achieved) and the critical path. Runs of a reference build
+// (`make pnr-ref`, meta ref=<name>, one run per seed) are also gathered per build in
+// "refs": the median fmax of the seeds (the figure of record), each seed's, and the
+// median run's resources and critical path. --check CONFIG/RUN fails
 // (exit 1, the reason on stderr) unless that run is done and reports an fmax.
 #include "json_read.hpp"
 #include "report_json.hpp"
@@ -198,6 +201,47 @@ void writeCriticalPath(JsonWriter& j, const Run& r) {
   j.endObject();
 }
 
+// ------------------------------------------------------------------ reference builds
+// The runs of one reference build (meta ref=<name>), one per seed, sorted by fmax.
+struct Ref {
+  std::string name;
+  std::vector<const Run*> runs;
+  // The median of the seeds' fmax (the mean of the two middle ones for an even count) and
+  // the run the build's resources and critical path are taken from (the lower middle).
+  double medianFmax() const {
+    const size_t n = runs.size();
+    return n % 2 ? runs[n / 2]->fmax : (runs[n / 2 - 1]->fmax + runs[n / 2]->fmax) / 2;
+  }
+  const Run& medianRun() const { return *runs[(runs.size() - 1) / 2]; }
+};
+
+std::vector<Ref> gatherRefs(const std::vector<Run>& runs) {
+  std::map<std::string, Ref> byName;
+  for (const Run& r : runs) {
+    const std::string name = metaText(r, "ref");
+    if (name.empty()) continue;
+    Ref& ref = byName[name];
+    ref.name = name;
+    ref.runs.push_back(&r);
+  }
+  std::vector<Ref> refs;
+  for (auto& [name, ref] : byName) {
+    std::sort(ref.runs.begin(), ref.runs.end(), [](const Run* a, const Run* b) { return a->fmax < b->fmax; });
+    refs.push_back(ref);
+  }
+  return refs;
+}
+
+// The seeds of a reference build in seed order: "seed 1: 121.3, seed 2: 118.0".
+std::string seedsText(const Ref& ref) {
+  std::vector<const Run*> bySeed = ref.runs;
+  std::sort(bySeed.begin(), bySeed.end(),
+            [](const Run* a, const Run* b) { return metaNumber(*a, "seed") < metaNumber(*b, "seed"); });
+  std::string out;
+  for (const Run* r : bySeed) out += (out.empty() ? "" : ", ") + meta(*r, "seed") + ": " + fixed(r->fmax, 1);
+  return out;
+}
+
 // Runs of the loop harness (`make pnr-loop`, meta kind=loop) and of the whole core.
 bool isLoopRun(const Run& r) { return meta(r, "kind") == "loop"; }
 
@@ -264,6 +308,56 @@ void writeSummary(const std::string& root, const std::vector<Run>& allRuns, doub
     j.endObject();
   }
   j.endArray();
+  const std::vector<Ref> refs = gatherRefs(runs);
+  j.key("refs").beginArray();
+  for (const Ref& ref : refs) {
+    const Run& m = ref.medianRun();
+    j.beginObject();
+    j.key("ref").string(ref.name);
+    j.key("median_run").string(m.name);
+    writeRunHeader(j, m);
+    j.key("max_width").integer(std::atol(meta(m, "max_width").c_str()));
+    j.key("lanes").integer(std::atol(meta(m, "lanes").c_str()));
+    j.key("right_block").integer(std::atol(meta(m, "right_block").c_str()));
+    j.key("edge_reset").integer(std::atol(meta(m, "edge_reset").c_str()));
+    j.key("uniqueness").integer(std::atol(meta(m, "uniqueness").c_str()));
+    j.key("ad_term").integer(std::atol(meta(m, "ad_term").c_str()));
+    j.key("lut4").integer(m.lut4);
+    j.key("lut4_available").integer(m.lut4Avail);
+    j.key("ff").integer(m.ff);
+    j.key("ff_available").integer(m.ffAvail);
+    j.key("ebr").integer(m.ebr);
+    j.key("ebr_available").integer(m.ebrAvail);
+    j.key("dsp").integer(m.dsp);
+    j.key("target_mhz").real(metaNumber(m, "target_mhz"));
+    j.key("fmax_median_mhz").real(ref.medianFmax());
+    j.key("seeds").beginArray();
+    for (const Run* r : ref.runs) {
+      j.beginObject();
+      j.key("seed").integer(std::atol(meta(*r, "seed").c_str()));
+      j.key("run").string(r->name);
+      j.key("fmax_mhz").real(r->fmax);
+      j.endObject();
+    }
+    j.endArray();
+    writeCriticalPath(j, m);
+    j.key("rtl_commit").string(meta(m, "rtl_commit"));
+    j.key("nextpnr").string(meta(m, "nextpnr"));
+    j.key("yosys").string(meta(m, "yosys"));
+    j.key("date").string(meta(m, "date"));
+    j.key("formats").beginArray();
+    for (const VideoFormat& f : kVideoFormats) {
+      j.beginObject();
+      j.key("format").string(f.name);
+      j.key("needed_mhz").real(neededMhz(f, cpp));
+      j.key("clock_met").boolean(ref.medianFmax() >= neededMhz(f, cpp));
+      j.key("width_fits").boolean(f.width <= std::atol(meta(m, "max_width").c_str()));
+      j.endObject();
+    }
+    j.endArray();
+    j.endObject();
+  }
+  j.endArray();
   j.endObject();
   sgm::eval::writeTextFile(root + "/summary.json", j.str());
 
@@ -290,6 +384,25 @@ void writeSummary(const std::string& root, const std::vector<Run>& allRuns, doub
        << r.lut4Avail << " | " << r.ff << " / " << r.ffAvail << " | " << r.ebr << " / " << r.ebrAvail << " | " << r.dsp
        << " | **" << fixed(r.fmax, 1) << "** | " << meta(r, "target_mhz") << " | " << pathText(r) << " | "
        << meta(r, "pnr_seconds") << " |\n";
+  if (!refs.empty()) {
+    md << "\n## Reference builds (`make pnr-ref`)\n\n"
+       << "scripts/refs.mk names each build. fmax is the median of its seeds' (each seed's in the next column); "
+          "the resources and the critical path are the median run's.\n\n"
+       << "| build | run | D | MAX_WIDTH | lanes | LUT4 | FF | EBR | DSP | fmax, median (MHz) | seeds (MHz) | "
+          "target (MHz) | critical path | formats met |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const Ref& ref : refs) {
+      const Run& m = ref.medianRun();
+      std::string met;
+      for (const VideoFormat& f : kVideoFormats)
+        if (ref.medianFmax() >= neededMhz(f, cpp) && f.width <= std::atol(meta(m, "max_width").c_str()))
+          met += (met.empty() ? "" : ", ") + std::string(f.name);
+      md << "| " << ref.name << " | " << m.name << " | " << meta(m, "d") << " | " << meta(m, "max_width") << " | "
+         << meta(m, "lanes") << " | " << m.lut4 << " / " << m.lut4Avail << " | " << m.ff << " / " << m.ffAvail << " | "
+         << m.ebr << " / " << m.ebrAvail << " | " << m.dsp << " | **" << fixed(ref.medianFmax(), 1) << "** | "
+         << seedsText(ref) << " | " << meta(m, "target_mhz") << " | " << pathText(m) << " | "
+         << (met.empty() ? std::string("none") : met) << " |\n";
+    }
+  }
   if (!loops.empty()) {
     md << "\n## The 0 degree loop alone (`make pnr-loop`)\n\n"
        << "synth/sgm_path_loop.sv: the recursion of the 0 degree path (D sub-PEs and the minimum tree) with "

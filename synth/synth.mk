@@ -114,7 +114,7 @@ define synth_yosys
 	 if [ $$rc != 0 ]; then \
 	   if [ $$rc = 124 ]; then echo "synth: $(1): Yosys timed out after $(SYNTH_TIMEOUT) s (SYNTH_TIMEOUT)"; \
 	   else echo "synth: $(1): Yosys failed (exit $$rc):"; grep -E '^ERROR' $(@D)/yosys.log | tail -5; fi; exit 1; fi; \
-	 { echo "target=$(1)"; $(call core_meta,$(SYNTH_CORE)) echo "census=$(SYNTH_CENSUS)"; \
+	 { echo "target=$(1)"; $(call core_meta,$(SYNTH_CORE)) echo "census=$(SYNTH_CENSUS)"; $(if $(SYNTH_REF),echo "ref=$(SYNTH_REF)";) \
 	   echo "yosys=$$(yosys -V)"; echo "rtl_commit=$$commit"; \
 	   echo "date=$$(date -u +%Y-%m-%dT%H:%M:%SZ)"; echo "seconds=$$(( $$(date +%s) - start ))"; } > $(@D)/meta.txt; \
 	 echo "synth: $(1) done in $$(( $$(date +%s) - start )) s"

@@ -15,6 +15,7 @@
 // loop harness was routed and both nextpnr-ice40 and icetime gave an fmax.
 #include "report_json.hpp"
 #include "report_util.hpp"
+#include "xc7_parts.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -493,7 +494,28 @@ void targetJson(JsonWriter &j, const Target &t, const std::vector<Loop> &loops) 
   j.key("max_height").integer(t.h);
   j.key("census").string(t.census);
   j.key("pixels_per_clock").integer(1);
+  // The reference build (scripts/refs.mk) this run is, when `make synth-ref` made it.
+  j.key("ref");
+  metaGet(t.meta, "ref").empty() ? j.null() : j.string(metaGet(t.meta, "ref"));
   countsJson(j, t.total, t.tech);
+  // xc7: the smallest Artix-7 / Kintex-7 that holds the estimate (tools/xc7_parts.hpp).
+  if (t.target == "xc7") {
+    const long bram36 = t.total.bram36 + (t.total.bram18 + 1) / 2;
+    const sgm::eval::Xc7Part *part = sgm::eval::smallestXc7Part(t.total.sliceLuts(), t.total.ff, bram36, t.total.dsp);
+    j.key("smallest_part");
+    if (!part) {
+      j.null();
+    } else {
+      j.beginObject();
+      j.key("name").string(part->name);
+      j.key("luts").integer(part->luts);
+      j.key("ffs").integer(part->ffs);
+      j.key("bram36").integer(part->bram36);
+      j.key("dsp").integer(part->dsp);
+      j.key("bram36_needed").integer(bram36);
+      j.endObject();
+    }
+  }
   if (t.tech == Tech::Xilinx) {
     j.key("lut_by_size").beginObject();
     for (auto &kv : t.total.lutBySize) j.key("LUT" + std::to_string(kv.first)).integer(kv.second);

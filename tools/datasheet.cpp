@@ -328,6 +328,73 @@ void videoSection(std::ostringstream& md, const Report& pnr, const Report& bench
   md << ". The formats: tools/video_formats.hpp.\n\n";
 }
 
+// The reference builds (scripts/refs.mk): the ECP5 ones routed (pnr summary's refs[], the
+// median of their seeds), the xc7 ones as Yosys estimates (synth summaries' results[] with a
+// ref) with the smallest part that holds them.
+void refsSection(std::ostringstream& md, const Report& pnr, const std::vector<Report>& synth) {
+  md << "## Reference builds\n\n"
+     << "The configurations scripts/refs.mk names (`make refs`). Each is also a whole-core test build "
+        "(`rtl-ref-<name>` in `make rtl-tests`), bit-exact against the golden model. ECP5: placed and routed by "
+        "`make pnr-ref`; fmax is the median of the seeds' (each seed's beside it), the rest the median run's. "
+        "Xilinx 7-series: Yosys' estimate before place and route (`make synth-ref`).\n\n";
+  const Json* refs = pnr.present() ? pnr.json->get("refs") : nullptr;
+  if (!refs || !refs->isArray() || refs->items.empty()) {
+    md << "ECP5: not measured: run `make pnr-ref` (no refs[] in " << pnr.path << ").\n\n";
+  } else {
+    md << "| build | device | speed | D | MAX_WIDTH | lanes | fifth path (block) | LUT4 | FF | EBR | DSP | fmax, median "
+          "(MHz) | seeds: fmax (MHz) | critical path through | formats carried |\n"
+          "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---|---|\n";
+    for (const Json& r : refs->items) {
+      std::string seeds, met, through;
+      for (const Json& sd : needArray(r, "seeds", pnr.path).items)
+        seeds += (seeds.empty() ? "" : ", ") + text(sd, "seed") + ": " + text(need(sd, "fmax_mhz", pnr.path));
+      for (const Json& f : needArray(r, "formats", pnr.path).items)
+        if (need(f, "clock_met", pnr.path).boolean() && need(f, "width_fits", pnr.path).boolean())
+          met += (met.empty() ? "" : ", ") + text(f, "format");
+      if (const Json* cp = r.get("critical_path"))
+        if (const Json* mods = cp->get("modules"); mods && mods->isArray())
+          for (const Json& m : mods->items) through += (through.empty() ? "" : " > ") + text(m);
+      const std::string block = text(r, "right_block");
+      md << "| " << text(need(r, "ref", pnr.path)) << " | " << text(r, "device") << "-" << text(r, "package") << " | "
+         << text(r, "speed") << " | " << text(r, "d") << " | " << text(r, "max_width") << " | " << text(r, "lanes")
+         << " | " << (block == "0" ? std::string("none") : block) << " | " << text(r, "lut4") << " / "
+         << text(r, "lut4_available") << " | " << text(r, "ff") << " | " << text(r, "ebr") << " / "
+         << text(r, "ebr_available") << " | " << text(r, "dsp") << " | **" << text(need(r, "fmax_median_mhz", pnr.path))
+         << "** | " << seeds << " | " << (through.empty() ? "-" : through) << " | " << (met.empty() ? "none" : met)
+         << " |\n";
+    }
+    md << "\nSource: " << pnr.path
+       << " (refs[]: fmax_median_mhz, seeds[], lut4, ff, ebr, dsp, critical_path.modules, formats[] with clock_met "
+          "and width_fits).\n\n";
+  }
+  std::string rows, sources;
+  for (const Report& s : synth) {
+    bool fromThis = false;
+    for (const Json& r : needArray(*s.json, "results", s.path).items) {
+      const Json* ref = r.get("ref");
+      if (!ref || !ref->isString()) continue;
+      fromThis = true;
+      const Json* part = r.get("smallest_part");
+      rows += "| " + text(*ref) + " | " + text(r, "target") + " | " + text(r, "d") + " | " + text(r, "max_width") +
+              " | " + text(r, "slice_luts") + " | " + text(r, "ff") + " | " + text(r, "bram36") + " + " +
+              text(r, "bram18") + " | " + text(r, "dsp") + " | " +
+              (part && part->isObject()
+                   ? text(*part, "name") + " (" + text(*part, "luts") + ", " + text(*part, "bram36") + ")"
+                   : std::string("none of tools/xc7_parts.hpp")) +
+              " |\n";
+    }
+    if (fromThis) sources += (sources.empty() ? "" : ", ") + s.path;
+  }
+  if (rows.empty()) {
+    md << "Xilinx 7-series: not measured: run `make synth-ref`.\n\n";
+    return;
+  }
+  md << "| build | target | D | MAX_WIDTH | slice LUTs | FF | RAMB36 + RAMB18 | DSP | smallest part (LUTs, RAMB36) "
+        "|\n|---|---|---:|---:|---:|---:|---:|---:|---|\n"
+     << rows << "\nSource: " << sources
+     << " (results[] with a ref: slice_luts, ff, bram36, bram18, dsp, smallest_part).\n\n";
+}
+
 // The README's short table: the core's accuracy per scene beside the paper and OpenCV,
 // with its cycles per pixel (bench), the pool means (eval-pool) and each routed build (pnr).
 void summaryTables(std::ostringstream& md, const Report& bench, const Report& pool, const Report& pnr) {
@@ -398,6 +465,7 @@ std::string datasheetMarkdown(const std::string& buildDir) {
      << "/ and nothing else: every figure below is copied from the JSON report named under its table. Do not edit by "
         "hand; run the measurements and `make datasheet` again.\n\n";
   sourcesSection(md, synth, synthRoot, {&pnr, &bench, &eval, &pool});
+  refsSection(md, pnr, synth);
   pnrSection(md, pnr);
   videoSection(md, pnr, bench);
   synthSection(md, synth, synthRoot);

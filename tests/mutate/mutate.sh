@@ -113,10 +113,15 @@ done < <(grep -E '^\$\(eval \$\(call rtl_test,' Makefile)
 regress_test=sgm-regress-d16-w128  # the regression at its defaults (tests/regress.mk, REGRESS_BIN)
 top_of[$regress_test]=sgm_top
 ((${#top_of[@]} > 1)) || die "no rtl_test fixtures found in the Makefile"
+# The reference builds' fixtures (rtl-ref-NAME) are named without D and lanes: their tags
+# (scripts/refs.mk) give them.
+declare -A ref_tag=()
+while read -r r tag; do ref_tag["rtl-ref-$r"]="$tag"; done < <(make --no-print-directory -s refs-tags)
 test_cost() {  # whole-core D K name
-  local t="$1" d=16 k=1 whole=0
-  [[ "$t" =~ -d([0-9]+) ]] && d=${BASH_REMATCH[1]}
-  [[ "$t" =~ -k([0-9]+) ]] && k=${BASH_REMATCH[1]}
+  local t="$1" d=16 k=1 whole=0 n="$1"
+  [[ -n "${ref_tag[$t]:-}" ]] && n="-${ref_tag[$t]}"
+  [[ "$n" =~ -d([0-9]+) ]] && d=${BASH_REMATCH[1]}
+  [[ "$n" =~ -k([0-9]+) ]] && k=${BASH_REMATCH[1]}
   [[ "${top_of[$t]}" == sgm_top || "${top_of[$t]}" == sgm_axi ]] && whole=1
   echo "$whole $d $k $t"
 }

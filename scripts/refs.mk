@@ -1,0 +1,79 @@
+# SPDX-License-Identifier: Apache-2.0
+# The reference builds: the configurations the datasheet gives routed or synthesized figures
+# for, each named once here (included by the Makefile after scripts/build.mk). A reference
+# build is a core build (a spec of scripts/build.mk, so its directories carry the same tag in
+# every flow) on one target:
+#
+#   REF_<name>_CORE     the core's build parameters (NAME=VALUE over CORE_PARAMS)
+#   REF_<name>_TARGET   ecp5 (Yosys synth_ecp5 + nextpnr-ecp5: `make pnr-ref`, `make synth-ref`)
+#                       or xc7 (Yosys synth_xilinx, an estimate before place and route:
+#                       `make synth-ref`; there is no open router for 7-series)
+#   REF_<name>_DEVICE   ECP5: nextpnr's device (45k, 85k); REF_<name>_PACKAGE, _SPEED
+#   REF_<name>_FREQ     the clock target of nextpnr (MHz)
+#   REF_<name>_NEXTPNR  nextpnr options beyond synth/pnr.mk's defaults
+#   REF_<name>_ABOUT    one line for `make refs`: what the build is for
+#
+# Every reference build is also a whole-core test build of `make rtl-tests` (rtl-ref-<name>,
+# the same spec: its D, lanes, width and features, bit-exact against the golden model on
+# frames narrower than its MAX_WIDTH), so that what is routed is what is tested.
+#
+# Decisions (docs/notes/synthesis-log.md, "Reference builds"):
+# - hd64 is the four-path core. sgm_top's default feature set at D = 64 (the fifth path in
+#   blocks of 64) needs more LUT positions than the LFE5U-85F has (123 % at one lane,
+#   MAX_WIDTH 1024, measured after packing), so on ECP5 the D = 64 build leaves it out;
+#   fhd128 carries the default feature set. Six lanes: the 0 degree recursion at D = 64 is
+#   six units (three sub-PE parts, three tree levels), one per lane slot at 125 MHz.
+# - fhd32: D = 32 is six units too (ceil(log4 32) = 3 tree levels); 1920 wide.
+# - small: D = 16 with the fifth path in blocks of 32 (64 does not fit the 45F's 108 EBR at
+#   five lanes) on the LFE5U-45F; five lanes (five units at D = 16); VGA width.
+# - fhd128: the default feature set at D = 128, 1920 wide, seven lanes (seven units).
+REF_NAMES := hd64 fhd32 small fhd128
+
+REF_hd64_CORE    := D=64 MAX_WIDTH=1280 LANES=6 RIGHT_BLOCK=0 EDGE_RESET=0
+REF_hd64_TARGET  := ecp5
+REF_hd64_DEVICE  := 85k
+REF_hd64_PACKAGE := CABGA381
+REF_hd64_SPEED   := 8
+REF_hd64_FREQ    := 125
+# HeAP found no placement of the D = 64 six-lane core that routed; the electrostatic
+# placer did (synth/pnr.mk, PNR_FULL_FLAGS).
+REF_hd64_NEXTPNR := --placer static
+REF_hd64_ABOUT   := D = 64, four paths, six lanes, 1280 wide (720p), LFE5U-85F-8
+
+REF_fhd32_CORE    := D=32 MAX_WIDTH=1920 LANES=6 RIGHT_BLOCK=0 EDGE_RESET=0
+REF_fhd32_TARGET  := ecp5
+REF_fhd32_DEVICE  := 85k
+REF_fhd32_PACKAGE := CABGA381
+REF_fhd32_SPEED   := 8
+REF_fhd32_FREQ    := 130
+REF_fhd32_NEXTPNR := --placer static
+REF_fhd32_ABOUT   := D = 32, four paths, six lanes, 1920 wide (1080p), LFE5U-85F-8
+
+REF_small_CORE    := D=16 MAX_WIDTH=640 LANES=5 RIGHT_BLOCK=32 EDGE_RESET=1
+REF_small_TARGET  := ecp5
+REF_small_DEVICE  := 45k
+REF_small_PACKAGE := CABGA381
+REF_small_SPEED   := 8
+REF_small_FREQ    := 125
+REF_small_NEXTPNR :=
+REF_small_ABOUT   := D = 16, five paths (blocks of 32), five lanes, 640 wide (VGA), LFE5U-45F-8
+
+REF_fhd128_CORE   := D=128 MAX_WIDTH=1920 LANES=7
+REF_fhd128_TARGET := xc7
+REF_fhd128_ABOUT  := D = 128, sgm_top's default features, seven lanes, 1920 wide, Xilinx 7-series (Yosys estimate)
+
+REF_TARGETS := ecp5 xc7
+ref_check = $(if $(filter $(1),$(REF_NAMES)),,$(error REF=$(1): expected one of $(REF_NAMES) (scripts/refs.mk)))$(if $(filter $(REF_$(1)_TARGET),$(REF_TARGETS)),,$(error REF_$(1)_TARGET=$(REF_$(1)_TARGET): expected one of $(REF_TARGETS)))
+# The names of the reference builds on one target.
+refs_on = $(foreach r,$(REF_NAMES),$(if $(filter $(1),$(REF_$(r)_TARGET)),$(r)))
+
+# The Verilator options of a reference build's whole-core test (rtl-ref-<name>).
+ref_gflags = $(call core_gflags,$(REF_$(1)_CORE)) $(if $(filter ecp5,$(REF_$(1)_TARGET)),-DSGM_DELAY_CHAIN) \
+             -CFLAGS -DSGM_D=$(call core_get,$(REF_$(1)_CORE),D)
+
+.PHONY: refs refs-tags
+# `make refs-tags`: "name tag" per line (tests/mutate/mutate.sh orders fixtures by D and lanes).
+refs-tags:
+	@$(foreach r,$(REF_NAMES),echo "$(r) $(call core_tag,$(REF_$(r)_CORE))";)
+refs:
+	@$(foreach r,$(REF_NAMES),echo "$(r): $(REF_$(r)_ABOUT)"; echo "    $(REF_$(r)_TARGET) $(call core_tag,$(REF_$(r)_CORE)): $(REF_$(r)_CORE)";)
