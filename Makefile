@@ -89,7 +89,7 @@ help:
 include scripts/deps.mk
 # Fragments add their own targets; each appends the targets CI must run to
 # TEST_EXTRA (run by `make test` after the GoogleTest binaries).
-TEST_EXTRA := build-defaults-check sim-ci eval-ci
+TEST_EXTRA := build-defaults-check refs-doc-check sim-ci eval-ci
 # `make synth` and its reports (synth/synth.mk, when present).
 -include synth/synth.mk synth/axi.mk
 # `make eval-pool`, `make eval-pool-ci`: accuracy on the scene pool (tools/pool.mk).

@@ -71,6 +71,16 @@ refs_on = $(foreach r,$(REF_NAMES),$(if $(filter $(1),$(REF_$(r)_TARGET)),$(r)))
 ref_gflags = $(call core_gflags,$(REF_$(1)_CORE)) $(if $(filter ecp5,$(REF_$(1)_TARGET)),-DSGM_DELAY_CHAIN) \
              -CFLAGS -DSGM_D=$(call core_get,$(REF_$(1)_CORE),D)
 
+# docs/integration.md's table of the reference builds against the specs above: each build's row
+# names every parameter of its spec as `NAME = VALUE` (cheap: in `make test`, the Makefile's TEST_EXTRA).
+REFS_DOC := docs/integration.md
+.PHONY: refs-doc-check
+refs-doc-check:
+	@$(foreach r,$(REF_NAMES),row=$$(grep -E '^\| `$(r)` \|' $(REFS_DOC)) || { echo "refs-doc-check: $(REFS_DOC) has no row for reference build $(r)"; exit 1; }; \
+	  for kv in $(REF_$(r)_CORE); do n=$${kv%%=*}; v=$${kv#*=}; \
+	    echo "$$row" | grep -qE "(\`|, )$$n = $$v(,|\`)" || { echo "refs-doc-check: $(REFS_DOC), row $(r): no '$$n = $$v' (scripts/refs.mk: $(REF_$(r)_CORE))"; exit 1; }; done;) \
+	 echo "refs-doc-check: OK ($(REFS_DOC) names every parameter of the $(words $(REF_NAMES)) reference builds)"
+
 .PHONY: refs refs-tags
 # `make refs-tags`: "name tag" per line (tests/mutate/mutate.sh orders fixtures by D and lanes).
 refs-tags:

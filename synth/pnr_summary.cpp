@@ -5,7 +5,7 @@
 //   pnr-summary ROOT --cycles-per-pixel X --cpp-source TEXT [--check CONFIG/RUN]...
 //
 // ROOT holds one directory per configuration, d<D>-w<MAX_WIDTH>, with one
-// directory per nextpnr-ecp5 run (e.g. lfe5u-85f-8) written by synth/pnr.mk:
+// directory per nextpnr-ecp5 run (device, speed and seed, e.g. lfe5u-85f-8-s1) written by synth/pnr.mk:
 // meta.txt (key=value: device, package, speed, d, max_width, target_mhz,
 // pnr_seconds, ...), report.json (nextpnr's --report) and the "done" stamp
 // (nextpnr exited 0, i.e. the design was placed and routed). Every figure
