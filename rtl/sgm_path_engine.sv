@@ -35,8 +35,7 @@
 //          min memory MIN_DELAY slots after it (MIN_LATENCY, the tree's, or one more)
 // Path memories (per vertical path: MAX_WIDTH words of D x LW bits and
 // MAX_WIDTH words of LW bits for min Lr; synchronous read with enable -> block
-// RAM; the Lr words in sgm_bank_ram, split by column into two banks where that
-// takes fewer block RAMs, e.g. 1280 words as 1024 + 256). Row y reads the words row y - 1 wrote at x - 1 .. x + 1 at slot
+// RAM). Row y reads the words row y - 1 wrote at x - 1 .. x + 1 at slot
 // B' - 4 of its pixel x; the writer (the lane before, SKEW columns ahead) wrote
 // x + 1 (SKEW - 1) K + 1 slots before that pixel's B', and its minimum
 // MIN_LATENCY slots after C: SKEW = 1 + ceil((5 + MIN_LATENCY) / K) keeps
@@ -422,18 +421,21 @@ module sgm_path_engine #(
     assign {addr135, addr90, addr45} = read_addrs(col_i, width_i);
   end
 
+  logic [LWORD-1:0] mem45  [0:MAX_WIDTH-1];
+  logic [LWORD-1:0] mem90  [0:MAX_WIDTH-1];
+  logic [LWORD-1:0] mem135 [0:MAX_WIDTH-1];
   logic [MW-1:0]    min45  [0:MAX_WIDTH-1];  // {count (EDGE_RESET), min Lr}
   logic [MW-1:0]    min90  [0:MAX_WIDTH-1];
   logic [MW-1:0]    min135 [0:MAX_WIDTH-1];
 
   // Read at B' - 4, the memories' data at B' - 3, their output register at B' - 2.
-  // The Lr memories are sgm_bank_ram (banked by column where that takes fewer block
-  // RAMs, e.g. MAX_WIDTH 1280 as 1024 + 256 words); they are written at slot C below.
-  logic [3*LWORD-1:0] rd_q;   // {135, 90, 45}
+  logic [3*LWORD-1:0] rd_m, rd_q;   // {135, 90, 45}
   logic [3*MW-1:0]    mrd_m, mrd_q, mrd_t;
   always_ff @(posedge clk_i) begin
     if (en_i) begin
+      rd_m  <= {mem135[addr135], mem90[addr90], mem45[addr45]};
       mrd_m <= {min135[addr135], min90[addr90], min45[addr45]};
+      rd_q  <= rd_m;
       mrd_q <= mrd_m;
       mrd_t <= mrd_q;  // min Lr at part (b), one slot after part (a)
     end
@@ -500,20 +502,12 @@ module sgm_path_engine #(
     assign {col_w45, lr_w45} = {AW'(col_c), lr_all[1*D*LW +: D*LW]};
   end
 
-  // The Lr memories of 45, 90 and 135 degrees: written at their column, read at B' - 4.
-  wire [3*AW-1:0]    lr_waddr = {AW'(col_c), AW'(col_c), col_w45};
-  wire [3*LWORD-1:0] lr_wdata = {lr_all[3*D*LW +: D*LW], lr_all[2*D*LW +: D*LW], lr_w45};
-  wire [3*AW-1:0]    lr_raddr = {addr135, addr90, addr45};
-  for (genvar r = 0; r < 3; r++) begin : g_lr_mem
-    sgm_bank_ram #(.WIDTH(LWORD), .DEPTH(MAX_WIDTH), .AW(AW)) u_mem (
-      .clk_i   (clk_i),
-      .en_i    (en_i),
-      .we_i    (1'b1),
-      .waddr_i (lr_waddr[r*AW +: AW]),
-      .wdata_i (lr_wdata[r*LWORD +: LWORD]),
-      .raddr_i (lr_raddr[r*AW +: AW]),
-      .rdata_o (rd_q[r*LWORD +: LWORD])
-    );
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      mem45[col_w45]     <= lr_w45;
+      mem90[AW'(col_c)]  <= lr_all[2*D*LW +: D*LW];
+      mem135[AW'(col_c)] <= lr_all[3*D*LW +: D*LW];
+    end
   end
 
   // min Lr of 45/90/135 degrees, MIN_DELAY slots after their Lr words are
