@@ -101,7 +101,7 @@ TEST(Datasheet, AbsentReportsAreNotMeasured) {
   const std::string dir = testing::TempDir() + "datasheet_empty";
   std::filesystem::create_directories(dir);
   const std::string md = datasheetMarkdown(dir);
-  for (const char* target : {"synth", "pnr", "bench", "eval", "eval-pool"})
+  for (const char* target : {"synth", "pnr", "pnr-ref", "synth-ref", "bench", "eval", "eval-pool"})
     EXPECT_NE(md.find(std::string("not measured: run `make ") + target + "`"), std::string::npos) << target << md;
 }
 
@@ -119,10 +119,19 @@ TEST(Datasheet, ReadmeSummaryFromTheFixtures) {
   for (const std::string& want : {
            std::string("| cones | **3.412** | yes | 4.800 | 5.001 | 1.0234 |"),
            std::string("| middlebury | 20 | **7.490** | 11.200 |"),
-           std::string("| d128-w1920-k2/lfe5u-85f-8 | 80000 | 60000 | 200 | **140.125** |"),
+           std::string("| hd64 | LFE5U-85F-8 | 64 | 1280 | 6 | 65432 | 63210 | 187 | **97.25** |"),
        })
     EXPECT_NE(md.find(want), std::string::npos) << want << "\n" << md;
   EXPECT_EQ(md.find("not measured"), std::string::npos) << md;
+  // Without reference builds the summary lists every routed run.
+  const std::string runsOnly = testing::TempDir() + "datasheet_summary_runs";
+  std::filesystem::create_directories(runsOnly + "/pnr");
+  std::string pnr = readTextFile(dir + "/pnr/summary.json");
+  pnr = pnr.substr(0, pnr.find("\"refs\"")) + "\"refs\": []}\n";
+  writeTextFile(runsOnly + "/pnr/summary.json", pnr);
+  EXPECT_NE(summaryMarkdown(runsOnly).find("| d128-w1920-k2/lfe5u-85f-8 | 80000 | 60000 | 200 | **140.125** |"),
+            std::string::npos)
+      << summaryMarkdown(runsOnly);
   const std::string empty = testing::TempDir() + "datasheet_summary_empty";
   std::filesystem::create_directories(empty);
   const std::string none = summaryMarkdown(empty);

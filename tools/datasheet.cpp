@@ -434,7 +434,18 @@ void summaryTables(std::ostringstream& md, const Report& bench, const Report& po
        << (delta ? fixed(*delta, 1) : "-") << ", KITTI D1; OpenCV with its invalid pixels counted as errors).\n\n";
   }
   const Json* runs = pnr.present() ? pnr.json->get("runs") : nullptr;
-  if (!runs || !runs->isArray() || runs->items.empty()) {
+  const Json* refs = pnr.present() ? pnr.json->get("refs") : nullptr;
+  if (refs && refs->isArray() && !refs->items.empty()) {
+    // The reference builds (scripts/refs.mk) when routed: the median of their seeds.
+    md << "| reference build | device | D | MAX_WIDTH | lanes | LUT4 | FF | EBR | fmax, median of seeds (MHz) |\n"
+          "|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (const Json& r : refs->items)
+      md << "| " << text(need(r, "ref", pnr.path)) << " | " << text(r, "device") << "-" << text(r, "speed") << " | "
+         << text(r, "d") << " | " << text(r, "max_width") << " | " << text(r, "lanes") << " | " << text(r, "lut4")
+         << " | " << text(r, "ff") << " | " << text(r, "ebr") << " | **" << text(need(r, "fmax_median_mhz", pnr.path))
+         << "** |\n";
+    md << "\nSource: " << pnr.path << " (`make pnr-ref`, refs[]).\n\n";
+  } else if (!runs || !runs->isArray() || runs->items.empty()) {
     md << "Routed builds: " << pnr.notMeasured() << ".\n\n";
   } else {
     md << "| routed build | LUT4 | FF | EBR | fmax (MHz) |\n|---|---:|---:|---:|---:|\n";
