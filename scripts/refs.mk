@@ -17,19 +17,23 @@
 # the same spec: its D, lanes, width and features, bit-exact against the golden model on
 # frames narrower than its MAX_WIDTH), so that what is routed is what is tested.
 #
-# Decisions (docs/notes/synthesis-log.md, "Reference builds"):
+# Decisions (docs/notes/synthesis-log.md, "2026-12-07: reference builds"):
 # - hd64 is the four-path core. sgm_top's default feature set at D = 64 (the fifth path in
 #   blocks of 64) needs more LUT positions than the LFE5U-85F has (123 % at one lane,
 #   MAX_WIDTH 1024, measured after packing), so on ECP5 the D = 64 build leaves it out;
 #   fhd128 carries the default feature set. Six lanes: the 0 degree recursion at D = 64 is
 #   six units (three sub-PE parts, three tree levels), one per lane slot at 125 MHz.
+#   MAX_WIDTH 1024: at 1280 the build takes 280 DP16KD of the 85F's 208 (Yosys, per stage:
+#   path engine 151, LR check 55, edge snap 32, deal ring 20, hole fill 10, census 6,
+#   median 6); at 1024, 191.
 # - fhd32: D = 32 is six units too (ceil(log4 32) = 3 tree levels); 1920 wide.
-# - small: D = 16 with the fifth path in blocks of 32 (64 does not fit the 45F's 108 EBR at
-#   five lanes) on the LFE5U-45F; five lanes (five units at D = 16); VGA width.
+# - small: D = 16 with the fifth path in blocks of 16 on the LFE5U-45F (blocks of 32 take
+#   120 DP16KD of its 108 at 640 wide, 43 of them the fifth path's); five lanes (five units
+#   at D = 16); VGA width.
 # - fhd128: the default feature set at D = 128, 1920 wide, seven lanes (seven units).
 REF_NAMES := hd64 fhd32 small fhd128
 
-REF_hd64_CORE    := D=64 MAX_WIDTH=1280 LANES=6 RIGHT_BLOCK=0 EDGE_RESET=0
+REF_hd64_CORE    := D=64 MAX_WIDTH=1024 LANES=6 RIGHT_BLOCK=0 EDGE_RESET=0
 REF_hd64_TARGET  := ecp5
 REF_hd64_DEVICE  := 85k
 REF_hd64_PACKAGE := CABGA381
@@ -38,7 +42,7 @@ REF_hd64_FREQ    := 125
 # HeAP found no placement of the D = 64 six-lane core that routed; the electrostatic
 # placer did (synth/pnr.mk, PNR_FULL_FLAGS).
 REF_hd64_NEXTPNR := --placer static
-REF_hd64_ABOUT   := D = 64, four paths, six lanes, 1280 wide (720p), LFE5U-85F-8
+REF_hd64_ABOUT   := D = 64, four paths, six lanes, 1024 wide, LFE5U-85F-8
 
 REF_fhd32_CORE    := D=32 MAX_WIDTH=1920 LANES=6 RIGHT_BLOCK=0 EDGE_RESET=0
 REF_fhd32_TARGET  := ecp5
@@ -49,14 +53,14 @@ REF_fhd32_FREQ    := 130
 REF_fhd32_NEXTPNR := --placer static
 REF_fhd32_ABOUT   := D = 32, four paths, six lanes, 1920 wide (1080p), LFE5U-85F-8
 
-REF_small_CORE    := D=16 MAX_WIDTH=640 LANES=5 RIGHT_BLOCK=32 EDGE_RESET=1
+REF_small_CORE    := D=16 MAX_WIDTH=640 LANES=5 RIGHT_BLOCK=16 EDGE_RESET=1
 REF_small_TARGET  := ecp5
 REF_small_DEVICE  := 45k
 REF_small_PACKAGE := CABGA381
 REF_small_SPEED   := 8
 REF_small_FREQ    := 125
 REF_small_NEXTPNR :=
-REF_small_ABOUT   := D = 16, five paths (blocks of 32), five lanes, 640 wide (VGA), LFE5U-45F-8
+REF_small_ABOUT   := D = 16, five paths (blocks of 16), five lanes, 640 wide (VGA), LFE5U-45F-8
 
 REF_fhd128_CORE   := D=128 MAX_WIDTH=1920 LANES=7
 REF_fhd128_TARGET := xc7
