@@ -30,31 +30,27 @@
 # make -j), each under `timeout $(PNR_TIMEOUT)`, at `nice -n $(PNR_NICE)`. A run
 # is redone only when its directory has no "done" stamp or the RTL or the Tcl
 # scripts changed (after changing an option here, `make pnr-clean`).
-PNR_D            ?= 64
-# 1024: the largest MAX_WIDTH whose memories fit the 208 EBR of the LFE5U-85F
-# at D = 64 (docs/notes/synthesis-log.md, "Place and route").
-PNR_MAX_WIDTH    ?= 1024
-PNR_MAX_HEIGHT   ?= $(call core_default,MAX_HEIGHT)
-PNR_CENSUS_H     ?= $(call core_default,CENSUS_H)
-# Six lanes: the 0 degree recursion gets six slots, which is what a 125 MHz clock
-# at D = 64 needs (docs/rtl.md, the loop alone in `make pnr-loop`); one lane
-# (the paper's schedule, one slot) routed at 26.6 MHz at D = 16 on LFE5U-45F-6
-# (docs/notes/synthesis-log.md, "Place and route").
-PNR_LANES        ?= 6
-PNR_UNIQUENESS   ?= 1
-PNR_AD_TERM      ?= 1
-PNR_RIGHT_BLOCK  ?= 0
-# The core's EDGE_RESET (the path restart at strong edges): built with the fifth path, as in
-# sgm_top's defaults; not in four-path builds, whose reset values (the four-path preset)
-# leave it off, so that `make pnr` and `make pnr-ci` keep their area. Like every parameter,
+# The build of `make pnr`: the reference build hd64 (scripts/refs.mk, which says why D = 64,
+# six lanes, four paths and MAX_WIDTH 1024 on the LFE5U-85F), each parameter overridable.
+pnr_hd64          = $(call core_get,$(REF_hd64_CORE),$(1))
+PNR_D            ?= $(call pnr_hd64,D)
+PNR_MAX_WIDTH    ?= $(call pnr_hd64,MAX_WIDTH)
+PNR_MAX_HEIGHT   ?= $(call pnr_hd64,MAX_HEIGHT)
+PNR_CENSUS_H     ?= $(call pnr_hd64,CENSUS_H)
+PNR_LANES        ?= $(call pnr_hd64,LANES)
+PNR_UNIQUENESS   ?= $(call pnr_hd64,UNIQUENESS)
+PNR_AD_TERM      ?= $(call pnr_hd64,AD_TERM)
+PNR_RIGHT_BLOCK  ?= $(call pnr_hd64,RIGHT_BLOCK)
+# The core's EDGE_RESET (the path restart at strong edges): hd64's, or built with the fifth
+# path when PNR_RIGHT_BLOCK asks for one (as in sgm_top's defaults). Like every parameter,
 # the tag of the run directory names it where it differs from sgm_top's default (-er0).
-PNR_EDGE_RESET_DEFAULT = $(if $(filter-out 0,$(PNR_RIGHT_BLOCK)),1,0)
+PNR_EDGE_RESET_DEFAULT = $(if $(filter-out 0,$(PNR_RIGHT_BLOCK)),1,$(call pnr_hd64,EDGE_RESET))
 PNR_EDGE_RESET   ?= $(PNR_EDGE_RESET_DEFAULT)
-PNR_DEVICE       ?= 85k
-PNR_PACKAGE      ?= CABGA381
+PNR_DEVICE       ?= $(REF_hd64_DEVICE)
+PNR_PACKAGE      ?= $(REF_hd64_PACKAGE)
 PNR_SPEEDS       ?= 8 6
 PNR_SPEED        ?= $(firstword $(PNR_SPEEDS))
-PNR_FREQ         ?= 125
+PNR_FREQ         ?= $(REF_hd64_FREQ)
 PNR_SEED         ?= 1
 PNR_TIMEOUT      ?= 21600
 PNR_NICE         ?= 10
