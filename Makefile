@@ -259,12 +259,14 @@ $(eval $(call rtl_test,top-d16-rb8,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=6
 $(eval $(call rtl_test,top-d16-k2-rb16,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GLANES=2 -GRIGHT_BLOCK=16 -GEDGE_RESET=1 -CFLAGS -DSGM_D=16))
 # The reference builds (scripts/refs.mk), each whole (its D, lanes, MAX_WIDTH, features and,
 # for the ECP5 ones, the ECP5 flow's register-chain delays): what `make pnr-ref` routes is
-# what is tested, with frames up to its MAX_WIDTH (a 1280-wide build's banked path memories).
+# what is tested, with frames up to its MAX_WIDTH.
 $(eval $(call rtl_test,ref-hd64,sgm_top,$(call ref_gflags,hd64)))
 $(eval $(call rtl_test,ref-fhd32,sgm_top,$(call ref_gflags,fhd32)))
 $(eval $(call rtl_test,ref-small,sgm_top,$(call ref_gflags,small)))
 $(eval $(call rtl_test,ref-fhd128,sgm_top,$(call ref_gflags,fhd128)))
-$(foreach r,$(REF_NAMES),$(if $(filter $(BIN)/rtl-ref-$(r),$(RTL_TEST_BINS)),,$(error scripts/refs.mk: reference build $(r) has no rtl-ref-$(r) fixture in the Makefile)))
+$(foreach r,$(REF_NAMES),$(if $(FIXTURE_TOP_ref-$(r)),,$(error scripts/refs.mk: reference build $(r) has no rtl-ref-$(r) fixture in the Makefile)))
+# A reference build's fixture is rebuilt when scripts/refs.mk (its parameters) changes.
+$(foreach r,$(REF_NAMES),$(eval $(BIN)/rtl-ref-$(r): scripts/refs.mk))
 # sgm_axi configured through the driver (sw/) over an AXI4-Lite bus model; the lean build reads
 # its FEATURES back and has the frames that ask for a missing lever dropped.
 $(eval $(call rtl_test,axi-d16,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
@@ -325,11 +327,9 @@ $(eval $(call rtl_test,cost-lanes-d64-k6,sgm_cost_volume,-GD=64 -GCW=8 -GLANES=6
 
 RESULTS := $(BUILD)/test-results
 
+# The fixtures JOBS at a time (scripts/run-rtl-tests.sh: each one's output printed whole).
 rtl-tests: $(RTL_TEST_BINS)
-	@mkdir -p $(RESULTS)
-	@for t in $(RTL_TEST_BINS); do echo "== $$t"; s=$$(date +%s); \
-	  SGM_DATA="$(DATA)" $$t --gtest_output=xml:$(RESULTS)/$$(basename $$t).xml || exit 1; \
-	  echo "time: run $$(basename $$t) $$(( $$(date +%s) - s )) s"; done
+	@SGM_DATA="$(DATA)" scripts/run-rtl-tests.sh $(JOBS) $(RESULTS) $(BUILD)/test-logs/rtl $(RTL_TEST_BINS)
 
 # The SPDX line of every source file (scripts/spdx-check.sh), then verilator --lint-only -Wall
 # on every module; waivers live in rtl/lint.vlt.
