@@ -11,26 +11,21 @@
 #   REF_<name>_DEVICE   ECP5: nextpnr's device (45k, 85k); REF_<name>_PACKAGE, _SPEED
 #   REF_<name>_FREQ     the clock target of nextpnr (MHz)
 #   REF_<name>_NEXTPNR  nextpnr options beyond synth/pnr.mk's defaults
-#   REF_<name>_ABOUT    one line for `make refs`: what the build is for
+#   REF_<name>_ABOUT    one line for `make refs`: what the build is for (its parameters are
+#                       printed from REF_<name>_CORE, not repeated here)
 #
 # Every reference build is also a whole-core test build of `make rtl-tests` (rtl-ref-<name>,
 # the same spec: its D, lanes, width and features, bit-exact against the golden model on
 # frames narrower than its MAX_WIDTH), so that what is routed is what is tested.
 #
-# Decisions (docs/notes/synthesis-log.md, "2026-12-07: reference builds"):
-# - hd64 is the four-path core. sgm_top's default feature set at D = 64 (the fifth path in
-#   blocks of 64) needs more LUT positions than the LFE5U-85F has (123 % at one lane,
-#   MAX_WIDTH 1024, measured after packing), so on ECP5 the D = 64 build leaves it out;
-#   fhd128 carries the default feature set. Six lanes: the 0 degree recursion at D = 64 is
-#   six units (three sub-PE parts, three tree levels), one per lane slot at 125 MHz.
-#   MAX_WIDTH 1024: at 1280 the build takes 280 DP16KD of the 85F's 208 (Yosys, per stage:
-#   path engine 151, LR check 55, edge snap 32, deal ring 20, hole fill 10, census 6,
-#   median 6); at 1024, 191.
-# - fhd32: D = 32 is six units too (ceil(log4 32) = 3 tree levels); 1920 wide.
-# - small: D = 16 with the fifth path in blocks of 16 on the LFE5U-45F (blocks of 32 take
-#   120 DP16KD of its 108 at 640 wide, 43 of them the fifth path's); five lanes (five units
-#   at D = 16); VGA width.
-# - fhd128: the default feature set at D = 128, 1920 wide, seven lanes (seven units).
+# Why each build is what it is (the measurements: docs/notes/synthesis-log.md, "2026-12-07:
+# reference builds"; the conclusions: synth/README.md, "Reference builds"):
+# - hd64: the D = 64 core on the largest ECP5. Four paths: the default feature set's fifth
+#   path does not fit beside it (LUT positions and block RAM). Six lanes: one lane slot per
+#   unit of the 0 degree recursion at D = 64. MAX_WIDTH: the widest whose block RAM fits.
+# - fhd32: 1080p frames at D = 32 on the largest ECP5.
+# - small: the five paths at D = 16 on a mid-size ECP5, in blocks small enough for its block RAM.
+# - fhd128: sgm_top's default features at D = 128, where the block RAM and the logic are.
 REF_NAMES := hd64 fhd32 small fhd128
 
 REF_hd64_CORE    := D=64 MAX_WIDTH=1024 LANES=6 RIGHT_BLOCK=0 EDGE_RESET=0
@@ -42,7 +37,7 @@ REF_hd64_FREQ    := 125
 # HeAP found no placement of the D = 64 six-lane core that routed; the electrostatic
 # placer did (synth/pnr.mk, PNR_FULL_FLAGS).
 REF_hd64_NEXTPNR := --placer static
-REF_hd64_ABOUT   := D = 64, four paths, six lanes, 1024 wide, LFE5U-85F-8
+REF_hd64_ABOUT   := the D = 64 core on the largest ECP5
 
 REF_fhd32_CORE    := D=32 MAX_WIDTH=1920 LANES=6 RIGHT_BLOCK=0 EDGE_RESET=0
 REF_fhd32_TARGET  := ecp5
@@ -51,7 +46,7 @@ REF_fhd32_PACKAGE := CABGA381
 REF_fhd32_SPEED   := 8
 REF_fhd32_FREQ    := 130
 REF_fhd32_NEXTPNR := --placer static
-REF_fhd32_ABOUT   := D = 32, four paths, six lanes, 1920 wide (1080p), LFE5U-85F-8
+REF_fhd32_ABOUT   := 1080p frames at D = 32 on the largest ECP5
 
 REF_small_CORE    := D=16 MAX_WIDTH=640 LANES=5 RIGHT_BLOCK=16 EDGE_RESET=1
 REF_small_TARGET  := ecp5
@@ -60,11 +55,11 @@ REF_small_PACKAGE := CABGA381
 REF_small_SPEED   := 8
 REF_small_FREQ    := 125
 REF_small_NEXTPNR :=
-REF_small_ABOUT   := D = 16, five paths (blocks of 16), five lanes, 640 wide (VGA), LFE5U-45F-8
+REF_small_ABOUT   := the five paths at D = 16 on a mid-size ECP5
 
 REF_fhd128_CORE   := D=128 MAX_WIDTH=1920 LANES=7
 REF_fhd128_TARGET := xc7
-REF_fhd128_ABOUT  := D = 128, sgm_top's default features, seven lanes, 1920 wide, Xilinx 7-series (Yosys estimate)
+REF_fhd128_ABOUT  := sgm_top's default features at D = 128 (Yosys estimate)
 
 REF_TARGETS := ecp5 xc7
 ref_check = $(if $(filter $(1),$(REF_NAMES)),,$(error REF=$(1): expected one of $(REF_NAMES) (scripts/refs.mk)))$(if $(filter $(REF_$(1)_TARGET),$(REF_TARGETS)),,$(error REF_$(1)_TARGET=$(REF_$(1)_TARGET): expected one of $(REF_TARGETS)))
@@ -90,4 +85,5 @@ refs-doc-check:
 refs-tags:
 	@$(foreach r,$(REF_NAMES),echo "$(r) $(call core_tag,$(REF_$(r)_CORE))";)
 refs:
-	@$(foreach r,$(REF_NAMES),echo "$(r): $(REF_$(r)_ABOUT)"; echo "    $(REF_$(r)_TARGET) $(call core_tag,$(REF_$(r)_CORE)): $(REF_$(r)_CORE)";)
+	@$(foreach r,$(REF_NAMES),echo "$(r): $(REF_$(r)_ABOUT)"; \
+	   echo "    $(REF_$(r)_TARGET)$(if $(REF_$(r)_DEVICE), LFE5U-$(subst k,F,$(REF_$(r)_DEVICE))-$(REF_$(r)_SPEED) $(REF_$(r)_PACKAGE) at $(REF_$(r)_FREQ) MHz), build $(call core_tag,$(REF_$(r)_CORE)): $(REF_$(r)_CORE)";)
