@@ -23,7 +23,9 @@
 # - hd64: the D = 64 core on the largest ECP5. Four paths: the default feature set's fifth
 #   path does not fit beside it (LUT positions and block RAM). Six lanes: one lane slot per
 #   unit of the 0 degree recursion at D = 64. MAX_WIDTH: the widest whose block RAM fits.
-# - fhd32: 1080p frames at D = 32 on the largest ECP5.
+# - fhd32: 1080p frames at D = 32 on the largest ECP5. Three lanes (two units of the recursion
+#   per lane slot: a clock for 1080p30): six lanes' rows in flight do not fit its block RAM
+#   at 1920 columns.
 # - small: the five paths at D = 16 on a mid-size ECP5, in blocks small enough for its block RAM.
 # - fhd128: sgm_top's default features at D = 128, where the block RAM and the logic are.
 REF_NAMES := hd64 fhd32 small fhd128
@@ -39,13 +41,13 @@ REF_hd64_FREQ    := 125
 REF_hd64_NEXTPNR := --placer static
 REF_hd64_ABOUT   := the D = 64 core on the largest ECP5
 
-REF_fhd32_CORE    := D=32 MAX_WIDTH=1920 LANES=6 RIGHT_BLOCK=0 EDGE_RESET=0
+REF_fhd32_CORE    := D=32 MAX_WIDTH=1920 LANES=3 RIGHT_BLOCK=0 EDGE_RESET=0
 REF_fhd32_TARGET  := ecp5
 REF_fhd32_DEVICE  := 85k
 REF_fhd32_PACKAGE := CABGA381
 REF_fhd32_SPEED   := 8
-REF_fhd32_FREQ    := 130
-REF_fhd32_NEXTPNR := --placer static
+REF_fhd32_FREQ    := 90
+REF_fhd32_NEXTPNR :=
 REF_fhd32_ABOUT   := 1080p frames at D = 32 on the largest ECP5
 
 REF_small_CORE    := D=16 MAX_WIDTH=640 LANES=5 RIGHT_BLOCK=16 EDGE_RESET=1
