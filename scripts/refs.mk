@@ -16,10 +16,10 @@
 #
 # Every reference build is also a whole-core test build of `make rtl-tests` (rtl-ref-<name>,
 # the same spec: its D, lanes, width and features, bit-exact against the golden model on
-# frames narrower than its MAX_WIDTH), so that what is routed is what is tested.
+# frames up to its MAX_WIDTH), so that what is routed is what is tested.
 #
-# Why each build is what it is (the measurements: docs/notes/synthesis-log.md, "2026-12-07:
-# reference builds"; the conclusions: synth/README.md, "Reference builds"):
+# Why each build is what it is (the measurements: docs/notes/synthesis-log.md, the entry
+# "reference builds"; the conclusions: synth/README.md, "Reference builds"):
 # - hd64: the D = 64 core on the largest ECP5. Four paths: the default feature set's fifth
 #   path does not fit beside it (LUT positions and block RAM). Six lanes: one lane slot per
 #   unit of the 0 degree recursion at D = 64. MAX_WIDTH: the widest whose block RAM fits.
