@@ -80,7 +80,7 @@ help:
 	@echo "make datasheet     docs/datasheet.md (DATASHEET=...) and README's summary from the measured JSON reports under build/"
 	@echo "make regmap        sw/include/sgm_regs.h, rtl/sgm_regmap.svh, docs/registers.md from regmap/sgm_regmap.def; make regmap-check"
 	@echo "make param-checks  every module's parameter checks fire on an illegal value; the legal sets elaborate"
-	@echo "make formal        SymbiYosys proofs and covers: AXI4-Lite slave, sgm_axi registers, stream controller, delay memory, lane deal -> build/formal/ (FORMAL_ONLY=task,task)"
+	@echo "make formal        SymbiYosys proofs and covers: AXI4-Lite slave, sgm_axi registers, stream controller, delay memory, banked memory, lane deal -> build/formal/ (FORMAL_ONLY=task,task)"
 	@echo "make format        clang-format every C++ file (.clang-format); make format-check lists the ones that differ"
 	@echo "make test          everything CI runs: lint, unit tests, RTL fixtures, then $(TEST_EXTRA)"
 	@echo "make clean         remove build/"

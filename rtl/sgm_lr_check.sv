@@ -50,30 +50,33 @@
 //     written, xr = W-D+1 first, during the lane's next D-1 slots (columns
 //     0 .. D-2 of its next row, where slot D-1 finalises nothing: no write
 //     port conflict); entries 1 .. D-2 wait in a shift register (tail_q).
-// dR goes through one registered write port into dr_mem (2 banks by row
-// parity x MAX_WIDTH x log2(D) bit). The WTA result {d, disp} of (x, y) goes
-// to lt_mem (2 banks x MAX_WIDTH x (log2(D) + DW + 2) bit: with the unique and
-// frame-pixel flags) at its own column.
+// dR goes through one registered write port into the dR memory (ROW_BANKS rows
+// x MAX_WIDTH x log2(D) bit). The WTA result {d, disp} of (x, y) goes to the left
+// memory (ROW_BANKS rows x MAX_WIDTH x (log2(D) + DW + 2) bit: with the unique and
+// frame-pixel flags) at its own column. Both memories are addressed column-major,
+// {column, row mod ROW_BANKS} (no multiplier in front of a block RAM address), and
+// built by sgm_bank_ram: banks of one block RAM's depth, each read into a register
+// of its own, the bank selected a slot later (RAM_LATENCY = 3 slots a read; the
+// deep memory's read multiplexer behind the block RAMs' clock-to-out was the
+// LFE5U-85F D = 64 core's critical path).
 //
 // Read side, at the S slot (x, y), y >= 1, for the left pixel (x, y-1):
-//   R1  read lt_mem[bank (y-1) % 2][x]
-//   R1o the memory's output register
-//   R2  xr = x - d; read dr_mem[bank (y-1) % 2][xr] when x >= d
-//   R2o the memory's output register (the block RAM's clock-to-out in front of
-//       the comparison would be the 5-lane core's critical path at 101.8 MHz)
+//   R1  read the left word (x, y-1): on r1_word RAM_LATENCY slots later
+//   R2  xr = x - d; read dR (xr, y-1) (a wrapped address when x < d: not used):
+//       on r2_dr RAM_LATENCY slots later
 //   R3  valid = (!check_en || (x >= d && |dR - d| <= tol)) && unique; output registers.
 // Order of memory accesses (slot = S-side slot, a write at slot t is visible
-// to reads at slots > t):
+// to reads at slots > t; the dR read of left pixel x is at slot x + 3 of its row):
 //   * dR(xr), xr <= W-D, of row y is written at slot (xr + D, y) and read no
-//     earlier than slot (xr + 2, y + 1).
+//     earlier than slot (xr + 3, y + 1).
 //   * tail entry k (xr = W-D+1+k) of row y is written at slot (k + 1, y + 1);
 //     the left pixel x that reads it has x - d = xr, so it reads at slot
-//     (x + 2, y + 1) with x >= xr = k + 1 + (W - D): strictly later because
-//     W >= D. (With W = D and d = 0 the margin is two slots.)
-//   * bank y % 2 is next written by row y + 2 from slot (D, y + 2) on; the
-//     last read of row y is at slot (1, y + 2).
-//   * lt_mem: (x, y) is written at slot (x, y) + L, L <= W-1, and read at
-//     (x, y + 1); row y + 2 writes the bank at (x, y + 2) + L.
+//     (x + 3, y + 1) with x >= xr = k + 1 + (W - D): strictly later because
+//     W >= D.
+//   * the bank of row y is next written by row y + ROW_BANKS from slot (D, y +
+//     ROW_BANKS) on; the last read of row y is at slot (2, y + 2).
+//   * left words: (x, y) is written at slot (x, y) + L, L <= W-1, and read at
+//     (x, y + 1); row y + ROW_BANKS writes the bank at (x, y + ROW_BANKS) + L.
 // Stale words from an earlier frame or from flush rows are never read for a
 // real pixel: every word read for row y was written by row y of this frame.
 //
@@ -90,8 +93,8 @@
 // of a frame, flush rows included), LANES (K >= 1), ROW_BANKS (rows per
 // memory, a power of two: 2 with one lane and the S-side read position),
 // UNIQUENESS (1: unique_i is stored and gates valid_o; 0: the WTA builds no
-// uniqueness test, unique_i is ignored and lt_mem's word is one bit narrower).
-// Latency: one row plus LATENCY = 5 slots: left pixel (x, y) presented on the
+// uniqueness test, unique_i is ignored and the left word is one bit narrower).
+// Latency: one row plus LATENCY = 2 RAM_LATENCY + 1 = 7 slots: left pixel (x, y) presented on the
 // WTA side is on the outputs after the enabled edge of S slot (x, y+1) plus
 // LATENCY - 1 edges, i.e. S slot (x, y) + width + LATENCY - 1 edges.
 // Throughput: one pixel per slot. Reset: control registers only (tail counter, dR write
@@ -107,7 +110,10 @@ module sgm_lr_check #(
   parameter int ROW_BANKS /*verilator public*/ = 2,
   parameter int UNIQUENESS /*verilator public*/ = 1,
   localparam int LD       = $clog2(D),
-  localparam int LATENCY  /*verilator public*/ = 5
+  // sgm_bank_ram's read latency: the dR read comes RAM_LATENCY slots after the left
+  // word's, the outputs RAM_LATENCY more and one later.
+  localparam int RAM_LATENCY /*verilator public*/ = 3,
+  localparam int LATENCY  /*verilator public*/ = 2 * RAM_LATENCY + 1
 ) (
   input  wire              clk_i,
   input  wire              rst_ni,
@@ -179,12 +185,13 @@ module sgm_lr_check #(
   localparam int BW  = $clog2(ROW_BANKS);    // bank bits (row mod ROW_BANKS)
   localparam int MW  = ROW_BANKS * MAX_WIDTH; // words per memory
   localparam int MAW = $clog2(MW);
-  localparam int UB  = UNIQUENESS != 0 ? 1 : 0;  // the unique flag in lt_mem's word
-  localparam int LW  = LD + DW + UB;    // lt_mem word {frame pixel, unique, d, disp} has LW + 1 bits (no unique: UB = 0)
+  localparam int UB  = UNIQUENESS != 0 ? 1 : 0;  // the unique flag in the left word
+  localparam int LW  = LD + DW + UB;    // left word {frame pixel, unique, d, disp} has LW + 1 bits (no unique: UB = 0)
 
-  // Word address of column col in bank b.
+  // Word address of column col in bank b (row bank: row mod ROW_BANKS).
+  // Column-major, {col, b}: no multiplier in front of the memories' addresses.
   function automatic logic [MAW-1:0] mem_addr(input logic [BW-1:0] b, input logic [CW-1:0] col);
-    mem_addr = MAW'(b) * MAW'(MAX_WIDTH) + MAW'(col);
+    mem_addr = MAW'({col, b});
   endfunction
 
   // ------------------------------------------------------------ lane state
@@ -333,145 +340,99 @@ module sgm_lr_check #(
     end
   end
 
-  logic [LD-1:0] dr_mem [0:MW-1];
-  always_ff @(posedge clk_i) begin
-    if (en_i && drw_en_q) dr_mem[drw_addr_q] <= drw_data_q;
-  end
-
   // ------------------------------------------------------------ left memory
   // Every WTA-side slot writes its word with its frame-pixel flag, so a word
   // read back is always the one of (x, y-1) of the same slot stream: output
   // validity comes from that flag, never from the position alone (a slot of an
   // earlier frame still in flight may have a row inside the next frame).
-  logic [LW:0] lt_mem [0:MW-1];
-  wire  [LW:0] lt_word;
+  wire [LW:0] lt_word;
   if (UNIQUENESS != 0) begin : g_uniq_word
     assign lt_word = {wta_valid_i, unique_i, d_i, disp_i};
   end else begin : g_word
     assign lt_word = {wta_valid_i, d_i, disp_i};
     wire unused_unique = unique_i;
   end
-  always_ff @(posedge clk_i) begin
-    if (en_i) lt_mem[mem_addr(wta_row_i[BW-1:0], wta_col_i)] <= lt_word;
-  end
 
-  // ------------------------------------------------------------ R1
-  // The read side: left pixel (rd_col_i, rd_row_i - 1).
+  // ------------------------------------------------------------ R1: the left word
+  // The read side: left pixel (rd_col_i, rd_row_i - 1), read at this slot; the word
+  // comes out of the memory RAM_LATENCY slots later (r1_word), its side band beside it.
   wire in_real = rd_row_i != '0 && rd_row_i <= height_i;   // previous row is a frame row
   wire [RW-1:0] rd_prev = rd_row_i - 1'b1;
 
-  logic [LW:0]   r1_word_q;
-  logic [CW-1:0] r1_col_q;
-  logic [RW-1:0] r1_row_q;
-  logic [BW-1:0] r1_bank_q;
-  logic          r1_real_q, r1_chk_q;
-  logic [2:0]    r1_tol_q;
+  wire [LW:0] r1_word;
+  sgm_bank_ram #(.WIDTH(LW + 1), .DEPTH(MW), .AW(MAW), .LATENCY(RAM_LATENCY)) u_lt_mem (
+    .clk_i  (clk_i),
+    .en_i   (en_i),
+    .we_i   (1'b1),
+    .waddr_i(mem_addr(wta_row_i[BW-1:0], wta_col_i)),
+    .wdata_i(lt_word),
+    .raddr_i(mem_addr(rd_prev[BW-1:0], rd_col_i)),
+    .rdata_o(r1_word)
+  );
 
-  always_ff @(posedge clk_i) begin
-    if (en_i) r1_word_q <= lt_mem[mem_addr(rd_prev[BW-1:0], rd_col_i)];
-  end
+  localparam int R1W = CW + RW + BW + 1 + 3;   // {col, row, bank, check on, tol}
+  logic [CW-1:0] r1_col;
+  logic [RW-1:0] r1_row;
+  logic [BW-1:0] r1_bank;
+  logic          r1_chk;
+  logic [2:0]    r1_tol;
+  sgm_delay #(.WIDTH(R1W), .DEPTH(RAM_LATENCY)) u_r1_side (
+    .clk_i(clk_i),
+    .en_i (en_i),
+    .d_i  ({rd_col_i, rd_prev, rd_prev[BW-1:0], check_en_i, tol_i}),
+    .q_o  ({r1_col, r1_row, r1_bank, r1_chk, r1_tol})
+  );
 
-  always_ff @(posedge clk_i) begin
-    if (en_i) begin
-      r1_col_q  <= rd_col_i;
-      r1_row_q  <= rd_prev;
-      r1_bank_q <= rd_prev[BW-1:0];
-      r1_chk_q  <= check_en_i;
-      r1_tol_q  <= tol_i;
-    end
-  end
-
-  // ------------------------------------------------------------ R1o
-  // The left memory's output register: its clock-to-out is then not in front
-  // of the x - d subtractor and the dR read address.
-  logic [LW:0]   r1o_word_q;
-  logic [CW-1:0] r1o_col_q;
-  logic [RW-1:0] r1o_row_q;
-  logic [BW-1:0] r1o_bank_q;
-  logic          r1o_real_q, r1o_chk_q;
-  logic [2:0]    r1o_tol_q;
-
-  always_ff @(posedge clk_i) begin
-    if (en_i) begin
-      r1o_word_q <= r1_word_q;
-      r1o_col_q  <= r1_col_q;
-      r1o_row_q  <= r1_row_q;
-      r1o_bank_q <= r1_bank_q;
-      r1o_chk_q  <= r1_chk_q;
-      r1o_tol_q  <= r1_tol_q;
-    end
-  end
-
-  // ------------------------------------------------------------ R2
-  wire [LD-1:0] r1_d    = r1o_word_q[DW +: LD];
-  wire          r1_ok   = r1o_col_q >= CW'(r1_d);          // x - d >= 0
-  wire [CW-1:0] r1_xr   = r1o_col_q - CW'(r1_d);
-  wire          r1_real = r1o_real_q && r1o_word_q[LW];  // (x, y-1) was a pixel of this frame
-  wire          r1_uniq;  // the winner passed the uniqueness test (not built: always)
+  // ------------------------------------------------------------ R2: the dR word
+  logic          r1_real_q;   // the pipeline of the real flag, RAM_LATENCY slots (reset)
+  wire  [LD-1:0] r1_d    = r1_word[DW +: LD];
+  wire           r1_ok   = r1_col >= CW'(r1_d);          // x - d >= 0
+  wire  [CW-1:0] r1_xr   = r1_col - CW'(r1_d);
+  wire           r1_real = r1_real_q && r1_word[LW];  // (x, y-1) was a pixel of this frame
+  wire           r1_uniq;  // the winner passed the uniqueness test (not built: always)
   if (UNIQUENESS != 0) begin : g_uniq_flag
-    assign r1_uniq = r1o_word_q[DW + LD];
+    assign r1_uniq = r1_word[DW + LD];
   end else begin : g_flag
     assign r1_uniq = 1'b1;
   end
 
-  logic [LD-1:0] r2_dr_q;
-  logic [LD-1:0] r2_d_q;
-  logic [DW-1:0] r2_disp_q;
-  logic          r2_uniq_q;
-  logic [CW-1:0] r2_col_q;
-  logic [RW-1:0] r2_row_q;
-  logic          r2_ok_q, r2_real_q, r2_chk_q;
-  logic [2:0]    r2_tol_q;
+  // With x - d < 0 the address wraps (and may pass the memory's end): the word read is
+  // not used (r2_ok is 0), and a clamp would sit on the address path.
+  wire [LD-1:0] r2_dr;
+  sgm_bank_ram #(.WIDTH(LD), .DEPTH(MW), .AW(MAW), .LATENCY(RAM_LATENCY)) u_dr_mem (
+    .clk_i  (clk_i),
+    .en_i   (en_i),
+    .we_i   (drw_en_q),
+    .waddr_i(drw_addr_q),
+    .wdata_i(drw_data_q),
+    .raddr_i(mem_addr(r1_bank, r1_xr)),
+    .rdata_o(r2_dr)
+  );
 
-  always_ff @(posedge clk_i) begin
-    if (en_i && r1_real && r1_ok) r2_dr_q <= dr_mem[mem_addr(r1o_bank_q, r1_xr)];
-  end
-
-  always_ff @(posedge clk_i) begin
-    if (en_i) begin
-      r2_d_q    <= r1_d;
-      r2_disp_q <= r1o_word_q[0 +: DW];
-      r2_uniq_q <= r1_uniq;
-      r2_ok_q   <= r1_ok;
-      r2_col_q  <= r1o_col_q;
-      r2_row_q  <= r1o_row_q;
-      r2_chk_q  <= r1o_chk_q;
-      r2_tol_q  <= r1o_tol_q;
-    end
-  end
-
-  // ------------------------------------------------------------ R2o
-  logic [LD-1:0] r2o_dr_q, r2o_d_q;
-  logic [DW-1:0] r2o_disp_q;
-  logic [CW-1:0] r2o_col_q;
-  logic [RW-1:0] r2o_row_q;
-  logic          r2o_ok_q, r2o_real_q, r2o_chk_q, r2o_uniq_q;
-  logic [2:0]    r2o_tol_q;
-
-  always_ff @(posedge clk_i) begin
-    if (en_i) begin
-      r2o_dr_q   <= r2_dr_q;
-      r2o_d_q    <= r2_d_q;
-      r2o_disp_q <= r2_disp_q;
-      r2o_uniq_q <= r2_uniq_q;
-      r2o_ok_q   <= r2_ok_q;
-      r2o_col_q  <= r2_col_q;
-      r2o_row_q  <= r2_row_q;
-      r2o_chk_q  <= r2_chk_q;
-      r2o_tol_q  <= r2_tol_q;
-    end
-  end
+  localparam int R2W = LD + DW + 1 + 1 + CW + RW + 1 + 3;   // {d, disp, unique, ok, col, row, check on, tol}
+  logic [LD-1:0] r2_d;
+  logic [DW-1:0] r2_disp;
+  logic          r2_uniq, r2_ok, r2_chk;
+  logic [CW-1:0] r2_col;
+  logic [RW-1:0] r2_row;
+  logic [2:0]    r2_tol;
+  sgm_delay #(.WIDTH(R2W), .DEPTH(RAM_LATENCY)) u_r2_side (
+    .clk_i(clk_i),
+    .en_i (en_i),
+    .d_i  ({r1_d, r1_word[0 +: DW], r1_uniq, r1_ok, r1_col, r1_row, r1_chk, r1_tol}),
+    .q_o  ({r2_d, r2_disp, r2_uniq, r2_ok, r2_col, r2_row, r2_chk, r2_tol})
+  );
 
   // ------------------------------------------------------------ R3 / outputs
-  wire [LD-1:0] diff = r2o_dr_q > r2o_d_q ? r2o_dr_q - r2o_d_q : r2o_d_q - r2o_dr_q;
-  wire          pass = (!r2o_chk_q || (r2o_ok_q && diff <= LD'(r2o_tol_q))) && r2o_uniq_q;
+  wire [LD-1:0] diff = r2_dr > r2_d ? r2_dr - r2_d : r2_d - r2_dr;
+  wire          pass = (!r2_chk || (r2_ok && diff <= LD'(r2_tol))) && r2_uniq;
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      disp_o  <= r2o_disp_q;
+      disp_o  <= r2_disp;
       valid_o <= pass;
-      col_o   <= r2o_col_q;
-      row_o   <= r2o_row_q;
+      col_o   <= r2_col;
+      row_o   <= r2_row;
     end
   end
 
@@ -484,19 +445,18 @@ module sgm_lr_check #(
     else if (en_i && valid_i) armed_q <= 1'b1;
   end
 
+  // The real flag (reset): RAM_LATENCY slots to r1_real_q, RAM_LATENCY more to the output.
+  logic [RAM_LATENCY-1:0] r1_real_pipe_q, r2_real_pipe_q;
+  assign r1_real_q = r1_real_pipe_q[RAM_LATENCY-1];
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
-      r1_real_q   <= 1'b0;
-      r1o_real_q  <= 1'b0;
-      r2_real_q   <= 1'b0;
-      r2o_real_q  <= 1'b0;
-      out_valid_o <= 1'b0;
+      r1_real_pipe_q <= '0;
+      r2_real_pipe_q <= '0;
+      out_valid_o    <= 1'b0;
     end else if (en_i) begin
-      r1_real_q   <= in_real && armed_q;
-      r1o_real_q  <= r1_real_q;
-      r2_real_q   <= r1_real;
-      r2o_real_q  <= r2_real_q;
-      out_valid_o <= r2o_real_q;
+      r1_real_pipe_q <= {r1_real_pipe_q[RAM_LATENCY-2:0], in_real && armed_q};
+      r2_real_pipe_q <= {r2_real_pipe_q[RAM_LATENCY-2:0], r1_real};
+      out_valid_o    <= r2_real_pipe_q[RAM_LATENCY-1];
     end
   end
 

@@ -201,6 +201,21 @@ void writeCriticalPath(JsonWriter& j, const Run& r) {
   j.endObject();
 }
 
+// "formats": per video format, the clock it needs at cpp cycles per pixel, whether fmaxMhz
+// meets it and whether its width fits maxWidth.
+void writeFormats(JsonWriter& j, double fmaxMhz, long maxWidth, double cpp) {
+  j.key("formats").beginArray();
+  for (const VideoFormat& f : kVideoFormats) {
+    j.beginObject();
+    j.key("format").string(f.name);
+    j.key("needed_mhz").real(neededMhz(f, cpp));
+    j.key("clock_met").boolean(fmaxMhz >= neededMhz(f, cpp));
+    j.key("width_fits").boolean(f.width <= maxWidth);
+    j.endObject();
+  }
+  j.endArray();
+}
+
 // ------------------------------------------------------------------ reference builds
 // The runs of one reference build (meta ref=<name>), one per seed, sorted by fmax.
 struct Ref {
@@ -278,16 +293,7 @@ void writeSummary(const std::string& root, const std::vector<Run>& allRuns, doub
     j.key("yosys").string(meta(r, "yosys"));
     j.key("rtl_commit").string(meta(r, "rtl_commit"));
     j.key("date").string(meta(r, "date"));
-    j.key("formats").beginArray();
-    for (const VideoFormat& f : kVideoFormats) {
-      j.beginObject();
-      j.key("format").string(f.name);
-      j.key("needed_mhz").real(neededMhz(f, cpp));
-      j.key("clock_met").boolean(r.fmax >= neededMhz(f, cpp));
-      j.key("width_fits").boolean(f.width <= std::atol(meta(r, "max_width").c_str()));
-      j.endObject();
-    }
-    j.endArray();
+    writeFormats(j, r.fmax, std::atol(meta(r, "max_width").c_str()), cpp);
     j.endObject();
   }
   j.endArray();
@@ -345,16 +351,7 @@ void writeSummary(const std::string& root, const std::vector<Run>& allRuns, doub
     j.key("nextpnr").string(meta(m, "nextpnr"));
     j.key("yosys").string(meta(m, "yosys"));
     j.key("date").string(meta(m, "date"));
-    j.key("formats").beginArray();
-    for (const VideoFormat& f : kVideoFormats) {
-      j.beginObject();
-      j.key("format").string(f.name);
-      j.key("needed_mhz").real(neededMhz(f, cpp));
-      j.key("clock_met").boolean(ref.medianFmax() >= neededMhz(f, cpp));
-      j.key("width_fits").boolean(f.width <= std::atol(meta(m, "max_width").c_str()));
-      j.endObject();
-    }
-    j.endArray();
+    writeFormats(j, ref.medianFmax(), std::atol(meta(m, "max_width").c_str()), cpp);
     j.endObject();
   }
   j.endArray();

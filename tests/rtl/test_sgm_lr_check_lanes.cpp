@@ -40,6 +40,7 @@ constexpr int kRW = int(Rtl::RW);
 constexpr int kLanes = int(Rtl::LANES);
 constexpr int kBanks = int(Rtl::ROW_BANKS);
 constexpr int kLatency = int(Rtl::LATENCY);
+constexpr int kDrRead = int(Rtl::RAM_LATENCY);  // the dR read, slots after the left word's
 // UNIQUENESS = 0 (a lean build): unique_i is not stored and does not gate valid_o; the
 // frames still drive the golden unique flags of their ratio and expect them ignored.
 constexpr bool kUniqueness = Rtl::UNIQUENESS != 0;
@@ -83,7 +84,7 @@ class LrLanes {
     };
     auto firstWrite = [&](int y) { return lanes.slotOf(0, y); };
     // The read side: raster index q (rows from -kLeadRows) at slot q + delay; row y
-    // is read at rows y + 1 from (0, y + 1) to (W - 1, y + 1) + 2 (the dR read).
+    // is read at rows y + 1 from (0, y + 1) to (W - 1, y + 1) + kDrRead (the dR read).
     auto rasterIndex = [&](int col, int row) { return long(row + kLeadRows) * w + col; };
     long delay = 0;
     for (int y = 0; y < h; ++y) delay = std::max(delay, lastWrite(y) + 1 - rasterIndex(0, y + 1));
@@ -93,7 +94,7 @@ class LrLanes {
       for (int x = 0; x < w; ++x) {
         const int xl = std::min(x + kD - 1, w - 1);
         if (lanes.slotOf(x, y + kBanks) + lag <= rasterIndex(x, y + 1) + delay ||
-            lanes.slotOf(xl, y + kBanks) + 1 <= rasterIndex(xl, y + 1) + delay + 2)
+            lanes.slotOf(xl, y + kBanks) + 1 <= rasterIndex(xl, y + 1) + delay + kDrRead)
           return "ROW_BANKS = " + std::to_string(kBanks) + " too few for " + std::to_string(kLanes) +
                  " lanes at width " + std::to_string(w) + " (pixel " + std::to_string(x) + ", " + std::to_string(y) +
                  ")";
