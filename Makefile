@@ -368,7 +368,7 @@ unit-test: $(BIN)/unit-tests golden
 # run one after another, then TEST_EXTRA in two streams (scripts/test-extra.sh): the targets of
 # TEST_BESIDE (single-threaded yosys and nextpnr runs that share no build products with the
 # rest) beside the others. One closing line over every GoogleTest binary of this run.
-TEST_BESIDE := synth-ci ecp5-cmp-check pnr-ci
+TEST_BESIDE := synth-ci ecp5-cmp-check pnr-ci pnr-ys-ci
 test:
 	@$(MAKE) --no-print-directory -j$(JOBS) -Otarget lint $(BIN)/unit-tests golden $(RTL_TEST_BINS)
 	@$(MAKE) --no-print-directory unit-test rtl-tests

@@ -10,9 +10,9 @@
 //
 // Left gray: written through its own port (gray_we_i at gray_col_i /
 // gray_row_i, any time before the disparity of that pixel arrives, at most
-// GRAY_ROWS - 1 rows earlier) into a memory of GRAY_ROWS row banks x
-// 2^ceil(log2 MAX_WIDTH) x 8 bit, and read back for each disparity slot one
-// slot after it entered.
+// GRAY_ROWS - 1 rows earlier) into a memory of MAX_WIDTH x GRAY_ROWS x 8 bit
+// (addressed column-major, {column, row mod GRAY_ROWS}: exactly the words it holds
+// at any width), and read back for each disparity slot one slot after it entered.
 //
 // Pipeline (all stages advance only when en_i):
 //   P0    input registers (pixel, position, frame-pixel flag)
@@ -104,9 +104,9 @@ module sgm_edge_snap #(
   localparam int EW = DW + 1 + CW + RW;   // entry data {valid, disp, col, row}
 
   // ------------------------------------------------------------ gray memory
-  logic [7:0] gray_mem [0:(GRAY_ROWS << AW)-1];
+  logic [7:0] gray_mem [0:(MAX_WIDTH << GB)-1];
   always_ff @(posedge clk_i) begin
-    if (en_i && gray_we_i) gray_mem[{gray_row_i[GB-1:0], gray_col_i[AW-1:0]}] <= gray_i;
+    if (en_i && gray_we_i) gray_mem[{gray_col_i[AW-1:0], gray_row_i[GB-1:0]}] <= gray_i;
   end
 
   // ------------------------------------------------------------ P0, P1, P2
@@ -121,7 +121,7 @@ module sgm_edge_snap #(
       p0_en_q   <= snap_en_i;
       p1_q      <= p0_q;
       p1_en_q   <= p0_en_q;
-      p1_gray_q <= gray_mem[{p0_q[GB-1:0], p0_q[RW +: AW]}];
+      p1_gray_q <= gray_mem[{p0_q[RW +: AW], p0_q[GB-1:0]}];
       p2_q      <= p1_q;
       p2_en_q   <= p1_en_q;
       p2_gray_q <= p1_gray_q;

@@ -38,7 +38,7 @@
 // a frame switch may have a row inside the new frame, never the flag).
 // Latency: LATENCY_ROWS * width + LATENCY slots (pixel (x, y) leaves LATENCY
 // slots after input slot (x, y + 1)). Throughput: one pixel per enabled slot.
-// Memory: 2 x 2^AW x (2 DW + 3 + RIW) + 2 x 2^RIW x (DW + 1) bit,
+// Memory: 2 x MAX_WIDTH x (2 DW + 3 + RIW) + 2 x 2^RIW x (DW + 1) bit,
 // RIW = ceil(log2(MAX_WIDTH / 2)). Cost (Yosys 0.23 synth_xilinx, xc7, DW = 8,
 // MAX_WIDTH = 128): ~70 LUT + 19 SRL16, ~56 FF, 1 RAMB18 (pixel memory) and
 // 6 RAM64M (run table); DW = 10, MAX_WIDTH = 512: RAMB36 + RAMB18.
@@ -94,7 +94,7 @@ module sgm_hole_fill #(
   localparam int TW  = DW + 1;                       // run-table word
 
   // ------------------------------------------------------------ write side (row y)
-  logic [PW-1:0] pix_mem [0:(2 << AW)-1];
+  logic [PW-1:0] pix_mem [0:2*MAX_WIDTH-1];   // {column, row parity}: exactly 2 rows
   logic [TW-1:0] run_mem [0:(2 << RIW)-1];
 
   logic           prev_valid_q;  // pixel x - 1 of this row was valid
@@ -125,7 +125,7 @@ module sgm_hole_fill #(
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      pix_mem[{row_i[0], col_i[AW-1:0]}] <= {in_valid_i, disp_i, v_in, left_e, left_q, run};
+      pix_mem[{col_i[AW-1:0], row_i[0]}] <= {in_valid_i, disp_i, v_in, left_e, left_q, run};
       if (run_we_q) run_mem[run_wa_q] <= run_wd_q;
       run_wa_q <= {row_i[0], run};
       run_wd_q <= run_wd;
@@ -155,7 +155,7 @@ module sgm_hole_fill #(
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      word1_q  <= pix_mem[{~row_i[0], col_i[AW-1:0]}];
+      word1_q  <= pix_mem[{col_i[AW-1:0], ~row_i[0]}];
       col1_q   <= col_i;
       row1_q   <= row_i - 1'b1;
       bank1_q  <= ~row_i[0];

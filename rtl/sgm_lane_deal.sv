@@ -88,8 +88,11 @@ module sgm_lane_deal #(
   localparam int WW  = $clog2(LANES * SKEW + 1);  // start countdown (rounds)
   localparam int LSW = 1 + WW + XW + YW;          // lane state {active, wait, col, row}
 
+  // Column-major, {col, bank}: no multiplier in front of the ring's addresses (the
+  // LFE5U-45F five-lane build's critical path ran from sof_i through bank x MAX_WIDTH +
+  // col to the block RAM address).
   function automatic logic [AW-1:0] ring_addr(input logic [BW-1:0] bank, input logic [XW-1:0] col);
-    ring_addr = AW'(bank) * AW'(MAX_WIDTH) + AW'(col);
+    ring_addr = AW'({col, bank});
   endfunction
 
   // ------------------------------------------------------------ raster side

@@ -119,7 +119,7 @@ module sgm_median5x5 #(
   endfunction
 
   // ------------------------------------------------------------ stage 0: line buffers
-  logic [4*EW-1:0] lines_mem [0:(1 << AW)-1];
+  logic [4*EW-1:0] lines_mem [0:MAX_WIDTH-1];
   logic [4*EW-1:0] lines_q;  // rows y-1 (bits EW-1:0) .. y-4 at column x
   logic [EW-1:0]   pix_q;    // pixel (x, y)
   logic [AW-1:0]   addr_q;
