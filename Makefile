@@ -78,6 +78,7 @@ help:
 	@echo "make coverage      line and toggle coverage of rtl/ -> build/coverage/"
 	@echo "make mutate        plant each bug of tests/mutate/mutations.txt in a copy of rtl/, run the tests -> build/mutate/ (MUTATE_ONLY=id,id)"
 	@echo "make datasheet     docs/datasheet.md (DATASHEET=...) and README's summary from the measured JSON reports under build/"
+	@echo "make raw-scenes    raw camera pairs made from the scenes (known calibration), their rectification meshes and the golden model on the way back"
 	@echo "make regmap        sw/include/sgm_regs.h, rtl/sgm_regmap.svh, docs/registers.md from regmap/sgm_regmap.def; make regmap-check"
 	@echo "make param-checks  every module's parameter checks fire on an illegal value; the legal sets elaborate"
 	@echo "make formal        SymbiYosys proofs and covers: AXI4-Lite slave, sgm_axi registers, stream controller, delay memory, banked memory, lane deal -> build/formal/ (FORMAL_ONLY=task,task)"
@@ -100,6 +101,8 @@ TEST_EXTRA := build-defaults-check refs-doc-check sim-ci eval-ci
 include regmap/regmap.mk
 # `make datasheet`, `make datasheet-ci`: docs/datasheet.md from the JSON reports (tools/datasheet.mk).
 include tools/datasheet.mk
+# `make raw-scenes`: raw camera pairs from the rectified scenes, their meshes and the way back (tools/raw_scenes.mk).
+include tools/raw_scenes.mk
 # `make format`, `make format-check`: clang-format (scripts/format.mk).
 include scripts/format.mk
 

@@ -515,4 +515,40 @@ TEST_F(SgmEvalCli, RunsOnASyntheticScene) {
   EXPECT_TRUE(entries(out_).empty());
 }
 
+TEST_F(SgmEvalCli, RawSceneToMeshToRectifiedPair) {
+  auto [l, r] = shiftedPair(96, 64, 3, 5);
+  writeImage("sl.png", l);
+  writeImage("sr.png", r);
+  const std::string raw = root_ + "/gen/raw", mesh = root_ + "/gen/mesh", rect = root_ + "/gen/rect";
+  ChildResult res = run("sgm-eval", {"raw-scene", "--left", in("sl.png"), "--right", in("sr.png"), "--out", raw});
+  ASSERT_EQ(res.rc, 0) << res.err;
+  EXPECT_EQ(entries(raw), (std::set<std::string>{"extrinsics.yml", "intrinsics.yml", "left.png", "right.png"}));
+  res = run("sgm-eval", {"calib-mesh", "--calib", raw, "--size", "96x64", "--grid", "8", "--out", mesh});
+  ASSERT_EQ(res.rc, 0) << res.err;
+  EXPECT_EQ(entries(mesh), (std::set<std::string>{"mesh.bin", "mesh.json"}));
+  EXPECT_NE(res.out.find("f 96.000 px"), std::string::npos) << res.out;
+  res = run("sgm-eval", {"rectify", "--mesh", mesh + "/mesh.bin", "--left", raw + "/left.png", "--right",
+                         raw + "/right.png", "--out", rect});
+  ASSERT_EQ(res.rc, 0) << res.err;
+  EXPECT_EQ(entries(rect), (std::set<std::string>{"left.png", "right.png"}));
+  // The errors: each one line, nothing written.
+  const std::string none = out_ + "/none";
+  expectOneLineError(run("sgm-eval", {"calib-mesh", "--calib", raw, "--out", none}), "sgm-eval", "--size");
+  expectOneLineError(run("sgm-eval", {"calib-mesh", "--calib", raw, "--size", "96by64", "--out", none}), "sgm-eval",
+                     "96by64");
+  expectOneLineError(run("sgm-eval", {"calib-mesh", "--calib", raw, "--size", "96x64", "--grid", "12"}), "sgm-eval",
+                     "power of two");
+  expectOneLineError(run("sgm-eval", {"calib-mesh", "--calib", raw, "--size", "96x64", "--rows", "2", "--out", none}),
+                     "sgm-eval", "rows");
+  expectOneLineError(run("sgm-eval", {"calib-mesh", "--calib", in_, "--size", "96x64", "--out", none}), "sgm-eval",
+                     "intrinsics.yml");
+  expectOneLineError(run("sgm-eval", {"rectify", "--mesh", in("sl.png"), "--left", in("sl.png"), "--right",
+                                      in("sr.png"), "--out", none}),
+                     "sgm-eval", "not a mesh file");
+  expectOneLineError(run("sgm-eval", {"rectify", "--mesh", mesh + "/mesh.bin", "--left", in("left.png"), "--right",
+                                      in("right.png"), "--out", none}),
+                     "sgm-eval", "96x64");
+  EXPECT_FALSE(std::filesystem::exists(none));
+}
+
 }  // namespace

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // sgm-eval: accuracy of the golden model (and OpenCV StereoSGBM) on the
 // Middlebury scenes: the paper's eq. (5) error ratio, Table I, timing.
+#include "calibration.hpp"
 #include "datasheet.hpp"
 #include "eval_lib.hpp"
 #include "report_bench.hpp"
@@ -12,12 +13,15 @@
 
 #include "sgm/cli_args.hpp"
 #include "sgm/pipeline.hpp"
+#include "sgm/rectify.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
+#include <tuple>
 #include <utility>
 
 using namespace sgm;
@@ -39,6 +43,19 @@ const char* kUsage =
     "       sgm-eval datasheet [--build DIR] [--out FILE]  the datasheet from the measured JSON reports under\n"
     "                                                      DIR (default build) -> FILE (default docs/datasheet.md)\n"
     "                  [--readme FILE]                     and the generated summary section of FILE (README.md)\n"
+    "       sgm-eval calib-mesh --calib DIR --size WxH|--size-of IMAGE [--grid 16] [--unit-mm 1] [--rows R]\n"
+    "                  [--out DIR]\n"
+    "                                                      OpenCV's intrinsics.yml + extrinsics.yml in DIR -> the\n"
+    "                                                      rectification meshes (step --grid px) -> mesh.bin, mesh.json:\n"
+    "                                                      error against cv::initUndistortRectifyMap, line-buffer\n"
+    "                                                      rows (refused above --rows R), f and B (--unit-mm: mm per\n"
+    "                                                      calibration unit)\n"
+    "       sgm-eval rectify --mesh FILE --left L --right R [--out DIR]\n"
+    "                                                      the golden rectification -> left.png, right.png\n"
+    "       sgm-eval raw-scene --left L --right R [--baseline-mm 160] [--out DIR]\n"
+    "                                                      a raw camera pair made from a rectified one with a\n"
+    "                                                      known calibration -> left.png, right.png (gray),\n"
+    "                                                      intrinsics.yml, extrinsics.yml\n"
     "pipeline options: --d D --p1 N --p2 N --mode M --subpixel on|off --lr TOL|off --fill on|off\n"
     "                  --snap on|off --median on|off --census 9x5|9x9 --p2-mode knee|paper\n"
     "                  --weights 3232|equal --uniqueness U (%, 0 off) --ad-weight W (0 off .. 15)\n"
@@ -209,6 +226,122 @@ int commandDatasheet(const CliArgs& args) {
   return 0;
 }
 
+std::string requiredText(const CliArgs& args, const std::string& name, const std::string& what) {
+  const std::string value = args.text(name, "");
+  if (value.empty()) throw Error("missing --" + name + " " + what);
+  return value;
+}
+
+// --size WxH, or --size-of IMAGE (that image's size).
+cv::Size frameSize(const CliArgs& args) {
+  if (args.has("size-of")) {
+    if (args.has("size")) throw Error("--size and --size-of: give one");
+    return readImage(requiredText(args, "size-of", "IMAGE")).size();
+  }
+  if (!args.has("size")) throw Error("missing --size WxH or --size-of IMAGE (the frame of the calibrated cameras)");
+  const std::string text = args.text("size", "");
+  int w = 0, h = 0;
+  char x = 0, extra = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x' || w < 2 || h < 2 ||
+      w > kMaxImageSide || h > kMaxImageSide)
+    throw Error("--size '" + text + "': expected WxH, 2 .. " + std::to_string(kMaxImageSide) + " a side");
+  return {w, h};
+}
+
+int commandCalibMesh(const CliArgs& args) {
+  const std::string dir = requiredText(args, "calib", "DIR (intrinsics.yml and extrinsics.yml)");
+  const cv::Size size = frameSize(args);
+  const long grid = args.integer("grid", 16, 1L << kMeshGridLog2Min, 1L << kMeshGridLog2Max);
+  if (grid & (grid - 1)) throw Error("--grid " + std::to_string(grid) + ": not a power of two");
+  const double unitMm = args.real("unit-mm", 1, 1e-6, 1e6);
+  const long rowsLimit = args.integer("rows", 0, 0, 4096);
+  const std::string out = args.text("out", "build/calib");
+  checkOutputDirectory(out);
+  const eval::StereoCalibration calibration = eval::readCalibration(dir);
+  int gridLog2 = 0;
+  while ((1L << gridLog2) < grid) ++gridLog2;
+  StereoMesh mesh;
+  mesh.left = eval::meshFromCamera(calibration.left, size.width, size.height, gridLog2);
+  mesh.right = eval::meshFromCamera(calibration.right, size.width, size.height, gridLog2);
+  const eval::DepthGeometry depth = eval::depthGeometry(calibration);
+  const double baselineMm = depth.baselineUnits * unitMm;
+  if (!(depth.focalPx > 0 && depth.focalPx * 256 < 4294967296.0))
+    throw Error(dir + ": focal length " + std::to_string(depth.focalPx) + " px out of range");
+  if (!(baselineMm > 0 && baselineMm * 1000 < 4294967296.0))
+    throw Error(dir + ": baseline " + std::to_string(baselineMm) + " mm out of range (P2(0,3) must be negative)");
+  mesh.focalQ8 = uint32_t(std::lround(depth.focalPx * 256));
+  mesh.baselineUm = uint32_t(std::lround(baselineMm * 1000));
+  eval::JsonWriter json;
+  json.beginObject().key("width").integer(size.width).key("height").integer(size.height);
+  json.key("grid").integer(grid).key("frac_bits").integer(kMeshFracBits);
+  json.key("nodes_x").integer(mesh.left.nodesX).key("nodes_y").integer(mesh.left.nodesY);
+  json.key("focal_px").real(depth.focalPx, 4).key("baseline_mm").real(baselineMm, 4);
+  json.key("disparity_offset_px").real(depth.disparityOffsetPx, 4);
+  int rowsNeeded = 0;
+  std::string summary;
+  json.key("images").beginArray();
+  for (const auto& [name, camera, m] :
+       {std::tuple<const char*, const eval::Camera&, const Mesh&>{"left", calibration.left, mesh.left},
+        {"right", calibration.right, mesh.right}}) {
+    const eval::MeshError error = eval::meshError(camera, m);
+    const RowSpan span = meshRowSpan(m);
+    rowsNeeded = std::max(rowsNeeded, span.rows);
+    json.beginObject().key("image").string(name).key("mesh_error_max_px").real(error.maxPx, 4);
+    json.key("mesh_error_at").beginArray().integer(error.x).integer(error.y).endArray();
+    json.key("row_lag").integer(span.lag).key("row_back").integer(span.back).key("rows").integer(span.rows).endObject();
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "  %s: mesh error at most %.4f px (at %d, %d; goal 0.0625), rows %d .. %+d: %d rows\n", name,
+                  error.maxPx, error.x, error.y, span.back, span.lag, span.rows);
+    summary += line;
+  }
+  json.endArray().key("rows_needed").integer(rowsNeeded).endObject();
+  if (rowsLimit > 0 && rowsNeeded > rowsLimit)
+    throw Error(dir + ": the calibration needs a line buffer of " + std::to_string(rowsNeeded) +
+                " rows, the build has " + std::to_string(rowsLimit) + " (--rows)");
+  writeResults(out, {{out + "/mesh.bin", encodeMeshFile(mesh)}, {out + "/mesh.json", json.str()}});
+  std::printf(
+      "sgm-eval calib-mesh: %dx%d, step %ld px, %dx%d nodes, f %.3f px, B %.3f mm, disparity offset %.3f px\n%s"
+      "wrote %s/mesh.bin, mesh.json\n",
+      size.width, size.height, grid, mesh.left.nodesX, mesh.left.nodesY, depth.focalPx, baselineMm,
+      depth.disparityOffsetPx, summary.c_str(), out.c_str());
+  return 0;
+}
+
+int commandRectify(const CliArgs& args) {
+  const StereoMesh mesh = readMeshFile(requiredText(args, "mesh", "FILE (from calib-mesh)"));
+  const cv::Mat left = readGray(requiredText(args, "left", "IMAGE"));
+  const cv::Mat right = readGray(requiredText(args, "right", "IMAGE"));
+  const std::string out = args.text("out", "build/rectify");
+  checkOutputDirectory(out);
+  const RectifiedImage l = rectify(left, mesh.left), r = rectify(right, mesh.right);
+  writeResults(out, {{out + "/left.png", encodePng(l.gray, out + "/left.png")},
+                     {out + "/right.png", encodePng(r.gray, out + "/right.png")}});
+  std::printf("sgm-eval rectify: %dx%d, valid %.2f%% (left), %.2f%% (right); wrote %s/left.png, right.png\n", left.cols,
+              left.rows, 100.0 * cv::countNonZero(l.valid) / double(l.valid.total()),
+              100.0 * cv::countNonZero(r.valid) / double(r.valid.total()), out.c_str());
+  return 0;
+}
+
+int commandRawScene(const CliArgs& args) {
+  const cv::Mat left = readGray(requiredText(args, "left", "IMAGE (rectified)"));
+  const cv::Mat right = readGray(requiredText(args, "right", "IMAGE (rectified)"));
+  if (left.size() != right.size()) throw Error("the left and right images differ in size");
+  const double baseline = args.real("baseline-mm", 160, 1, 10000);
+  const std::string out = args.text("out", "build/raw-scene");
+  checkOutputDirectory(out);
+  const eval::StereoCalibration calibration = eval::syntheticCalibration(left.cols, left.rows, baseline);
+  const cv::Mat rawLeft = eval::rawFromRectified(left, calibration.left);
+  const cv::Mat rawRight = eval::rawFromRectified(right, calibration.right);
+  writeResults(out, {{out + "/left.png", encodePng(rawLeft, out + "/left.png")},
+                     {out + "/right.png", encodePng(rawRight, out + "/right.png")}});
+  eval::writeCalibration(out, calibration);
+  std::printf(
+      "sgm-eval raw-scene: %dx%d, baseline %.1f mm; wrote %s/left.png, right.png, intrinsics.yml, extrinsics.yml\n",
+      left.cols, left.rows, baseline, out.c_str());
+  return 0;
+}
+
 struct Command {
   const char* name;
   int (*run)(const CliArgs&);
@@ -226,6 +359,9 @@ std::vector<Command> commands() {
       {"bench", commandBench, {"data", "out", "scene", "repeats"}},
       {"pool", commandPool, poolOptions},
       {"datasheet", commandDatasheet, {"build", "out", "readme"}},
+      {"calib-mesh", commandCalibMesh, {"calib", "size", "size-of", "grid", "unit-mm", "rows", "out"}},
+      {"rectify", commandRectify, {"mesh", "left", "right", "out"}},
+      {"raw-scene", commandRawScene, {"left", "right", "baseline-mm", "out"}},
   };
 }
 
@@ -233,7 +369,8 @@ std::vector<Command> commands() {
 
 int main(int argc, char** argv) {
   try {
-    if (argc < 2) throw Error("missing command: run, table, bench, pool or datasheet (see --help)");
+    if (argc < 2)
+      throw Error("missing command: run, table, bench, pool, datasheet, calib-mesh, rectify or raw-scene (see --help)");
     if (std::string(argv[1]) == "--help") {
       std::cout << kUsage;
       return 0;
