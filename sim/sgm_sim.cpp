@@ -80,8 +80,8 @@ int main(int argc, char** argv) {
       throw Error("LR tolerance " + std::to_string(params.lrTolerance) + " exceeds the core's 3-bit input");
     if (params.experimental())
       throw Error(
-          "--right-path without --right-block, --subpixel-fit linear, --mgm, --median-gate, --p1-paths "
-          "and --snap-edge are golden-only experiments, not in the core");
+          "--right-path without --right-block, --subpixel-fit linear, --mgm, --median-gate, --p1-paths, "
+          "--snap-edge and --lr-store-bits are golden-only experiments, not in the core");
     if (params.edgeReset.threshold && !Vsgm_top_sgm_top::EDGE_RESET)
       throw Error("this simulator is built without the path restart (sgm_top EDGE_RESET = 0): give --edge-reset 0");
     if (params.rightPathWeight && params.rightPathBlock != kRightBlock)

@@ -60,6 +60,9 @@ TEST(Experiments, OffByDefaultAndNotInAnyPreset) {
   sgm::Params g = p;  // the gated median and per-path P1: golden-only
   g.medianGate = 32;
   EXPECT_TRUE(g.experimental());
+  g = p;  // the narrower stored Lr: golden-only
+  g.lrStoreBits = 8;
+  EXPECT_TRUE(g.experimental());
   g = p;
   g.p1PathPercent[2] = 200;
   EXPECT_TRUE(g.experimental());
@@ -407,6 +410,62 @@ sgm::CliArgs pipelineCli(std::vector<std::string> args) {
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   return sgm::CliArgs(int(argv.size()), argv.data(), sgm::CliArgs::pipelineOptions());
+}
+
+// The narrower stored Lr: the 45/90/135-degree paths read the row above's Lr - min Lr saturated
+// at 2^N - 1; exact from 2^N - 1 >= P2' on.
+TEST(LrStoreBits, MatchesItsDefinitionAndWideIsTheWholeLr) {
+  const int w = 23, h = 7, nd = 9, p1 = 10, p2 = 120;
+  std::mt19937 rng(5);
+  CostVolume c(w, h, nd);
+  for (auto& v : c.data) v = uint8_t(rng() % 60);
+  cv::Mat gray(h, w, CV_8UC1);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) gray.at<uint8_t>(y, x) = uint8_t(rng() % 64);
+  const sgm::P2Table table = sgm::makeP2Table(p1, p2);
+  const auto reference = [&](int bits) {
+    const uint16_t cap = uint16_t((1 << bits) - 1);
+    PathVolume sum(w, h, nd);
+    const int weights[sgm::kPathCount] = {3, 2, 3, 2};
+    for (int i = 0; i < sgm::kPathCount; ++i) {
+      const sgm::PathDirection r = sgm::kPathDirections[i];
+      PathVolume lr(w, h, nd);
+      std::vector<uint16_t> mins(size_t(w) * h, 0), prev(size_t(nd) + 2, sgm::kPathSentinel);
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+          const int px = x + r.dx, py = y + r.dy;
+          uint16_t& m = mins[size_t(y) * w + x];
+          if (px < 0 || px >= w || py < 0) {
+            m = sgm::pathStart(c.at(x, y), nd, lr.at(x, y));
+          } else {
+            const bool stored = r.dy != 0;
+            const uint16_t minPrev = mins[size_t(py) * w + px];
+            for (int d = 0; d < nd; ++d) {
+              const uint16_t v = lr.at(px, py)[d];
+              prev[size_t(d) + 1] = stored ? uint16_t(minPrev + std::min<int>(v - minPrev, cap)) : v;
+            }
+            const int dI = std::abs(int(gray.at<uint8_t>(y, x)) - int(gray.at<uint8_t>(py, px)));
+            m = sgm::pathStep(c.at(x, y), prev.data() + 1, minPrev, nd, p1, table[dI], lr.at(x, y));
+          }
+          for (int d = 0; d < nd; ++d) sum.at(x, y)[d] = uint16_t(sum.at(x, y)[d] + weights[i] * lr.at(x, y)[d]);
+        }
+    }
+    return sum;
+  };
+  const auto aggregate = [&](int bits) {
+    return sgm::aggregateCost(c, gray, p1, p2, sgm::P2Mode::kKnee, sgm::PathWeighting::k3232, 0, false, 0, nullptr,
+                              sgm::EdgeReset{}, bits);
+  };
+  const PathVolume whole = aggregate(0);
+  EXPECT_EQ(aggregate(7).data, whole.data);  // 127 >= P2' = 120: exact
+  for (int bits : {4, 5, 6}) {
+    SCOPED_TRACE(bits);
+    const PathVolume narrow = aggregate(bits);
+    EXPECT_EQ(narrow.data, reference(bits).data);
+    EXPECT_NE(narrow.data, whole.data);
+  }
+  const sgm::CliArgs cli = pipelineCli({"prog", "--lr-store-bits", "3"});
+  expectError([&] { cli.pipelineParams().validate(); }, {"stored Lr bits 3 out of range"});
 }
 
 TEST(Experiments, OptionsAndRanges) {

@@ -298,7 +298,7 @@ std::string goldenParamsText(const Params& p) {
             std::to_string(p.medianGate) + ", P1 per path " + std::to_string(p.p1PathPercent[0]) + "," +
             std::to_string(p.p1PathPercent[1]) + "," + std::to_string(p.p1PathPercent[2]) + "," +
             std::to_string(p.p1PathPercent[3]) + "," + std::to_string(p.p1PathPercent[4]) + " %, snap edge " +
-            std::to_string(p.snapEdge);
+            std::to_string(p.snapEdge) + ", stored Lr bits " + std::to_string(p.lrStoreBits);
   return text;
 }
 
@@ -327,6 +327,7 @@ void writeGoldenParamFields(JsonWriter& j, const Params& p) {
   for (const int percent : p.p1PathPercent) j.integer(percent);
   j.endArray();
   j.key("snap_edge").integer(p.snapEdge);              // 0: off (every drop snaps)
+  j.key("lr_store_bits").integer(p.lrStoreBits);       // 0: off (the whole Lr)
   j.key("edge_reset").integer(p.edgeReset.threshold);  // 0: off
   j.key("edge_reset_length").integer(p.edgeReset.length);
   j.key("edge_reset_paths").beginArray();

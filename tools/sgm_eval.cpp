@@ -69,6 +69,7 @@ const char* kUsage =
     "                  equiangular fit) --mgm on|off (raster MGM) --median-gate T (median over pixels within\n"
     "                  T gray levels of the centre) --p1-paths A,B,C,D,E (P1 per path in %: 0, 45, 90, 135 deg, fifth)\n"
     "                  --snap-edge T (edge snapping only onto an intensity step of at least T, with --snap on)\n"
+    "                  --lr-store-bits N (the 45/90/135-degree paths read the row above's Lr saturated to N bits)\n"
     "--delta X sets the error threshold (default 1); --out defaults to build/eval;\n"
     "--scenes a,b (run, table, pool) keeps only those scenes; --half A|B (pool) keeps one half of the\n"
     "cross-validation split (per set, scenes sorted by name alternate A, B).\n";

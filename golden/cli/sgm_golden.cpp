@@ -33,6 +33,7 @@ const char* kUsage =
     "                  [--median-gate T] the median takes only pixels within T gray levels of the centre\n"
     "                  [--p1-paths A,B,C,D,E] P1 per path in % (0, 45, 90, 135 degrees, the fifth path)\n"
     "                  [--snap-edge T] edge snapping only onto an intensity step of at least T (with --snap on)\n"
+    "                  [--lr-store-bits N] the 45/90/135-degree paths read the row above's Lr saturated to N bits\n"
     "Writes PREFIX_disp16.png (disparity x 256, 0 = invalid), PREFIX_disp8.png\n"
     "(the paper's [0, 255] scaling) and PREFIX_color.png. PREFIX defaults to 'disparity'.\n";
 

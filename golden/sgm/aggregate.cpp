@@ -74,7 +74,7 @@ class PathState {
   static constexpr int kRows = 4;
 
   PathState(int width, int disparities, const cv::Mat& gray, int pathIndex, int p1, const P2Table& p2Table,
-            bool mgm = false, const EdgeReset& edgeReset = EdgeReset{})
+            bool mgm = false, const EdgeReset& edgeReset = EdgeReset{}, int lrStoreBits = 0)
       : width_(width),
         disparities_(disparities),
         gray_(gray),
@@ -87,7 +87,8 @@ class PathState {
         stride_(disparities + 2),
         rows_(size_t(kRows) * width * stride_, kPathSentinel),
         mins_(size_t(kRows) * width, 0),
-        since_(reset_.threshold ? size_t(kRows) * width : 0, 0) {}
+        since_(reset_.threshold ? size_t(kRows) * width : 0, 0),
+        storeCap_(lrStoreBits > 0 && kPathDirections[pathIndex].dy != 0 ? uint16_t((1 << lrStoreBits) - 1) : 0) {}
 
   // Computes Lr(x, y, .) from C(x, y, .) and returns it (valid for kRows - 1 more rows).
   const uint16_t* step(int x, int y, const uint8_t* cost) {
@@ -106,6 +107,16 @@ class PathState {
         minLr(x, y) = pathStart(cost, disparities_, out);
         return out;
       }
+    }
+    if (storeCap_ && py != y) {  // golden-only: the row above's Lr as a narrower memory holds it
+      thread_local std::vector<uint16_t> stored;
+      stored.assign(size_t(disparities_) + 2, kPathSentinel);
+      const uint16_t* prev = lr(px, py);
+      const uint16_t minPrev = minLr(px, py);
+      for (int d = 0; d < disparities_; ++d)
+        stored[size_t(d) + 1] = uint16_t(minPrev + std::min<uint16_t>(uint16_t(prev[d] - minPrev), storeCap_));
+      minLr(x, y) = pathStepInline(cost, stored.data() + 1, minPrev, disparities_, p1_, p2Table_[dI], out);
+      return out;
     }
     minLr(x, y) = pathStepInline(cost, lr(px, py), minLr(px, py), disparities_, p1_, p2Table_[dI], out);
     return out;
@@ -158,6 +169,7 @@ class PathState {
   const int stride_;
   std::vector<uint16_t> rows_, mins_;
   std::vector<uint8_t> since_;  // stepsSinceEdge per pixel (with a restart only)
+  const uint16_t storeCap_;     // golden-only Params::lrStoreBits: Lr - min Lr of the row above, saturated; 0 = off
 };
 
 }  // namespace
@@ -211,7 +223,7 @@ void waitUntil(const std::atomic<int>& counter, int value) {
 
 void aggregateRows(int width, int height, int nd, const cv::Mat& gray, int p1, int p2, P2Mode p2Mode,
                    PathWeighting weights, const CostRowFn& costRow, const SumRowFn& sink, int rightPathWeight, bool mgm,
-                   int rightPathBlock, const int* p1PathPercent, const EdgeReset& edgeReset) {
+                   int rightPathBlock, const int* p1PathPercent, const EdgeReset& edgeReset, int lrStoreBits) {
   const int* w = pathWeights(weights);
   // Each path's P1 and P2 table (the golden-only per-path P1; one P1 for all in the core).
   int pathP1[kPathCount + 1];
@@ -223,7 +235,7 @@ void aggregateRows(int width, int height, int nd, const cv::Mat& gray, int p1, i
   }
   std::vector<PathState> paths;
   for (int i = 0; i < kPathCount; ++i)
-    paths.emplace_back(width, nd, gray, i, pathP1[i], tables[size_t(i)], mgm, edgeReset);
+    paths.emplace_back(width, nd, gray, i, pathP1[i], tables[size_t(i)], mgm, edgeReset, lrStoreBits);
   // Two workers split every row at column `split`: the left worker computes
   // C and all four paths of columns 0 .. split-1, the right worker those of
   // split .. W-1 and then hands the whole row of S on. The left worker runs
@@ -287,7 +299,7 @@ PathVolume pathCost(const CostVolume& cost, const cv::Mat& grayLeft, int pathInd
 
 PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1, int p2, P2Mode p2Mode,
                          PathWeighting weights, int rightPathWeight, bool mgm, int rightPathBlock,
-                         const int* p1PathPercent, const EdgeReset& edgeReset) {
+                         const int* p1PathPercent, const EdgeReset& edgeReset, int lrStoreBits) {
   PathVolume sum(cost.width, cost.height, cost.depth);
   const size_t rowSize = size_t(cost.width) * cost.depth;
   aggregateRows(
@@ -296,7 +308,7 @@ PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1
         std::copy(cost.at(x0, y), cost.at(x0, y) + size_t(x1 - x0) * cost.depth, row + size_t(x0) * cost.depth);
       },
       [&](int, int y, const uint16_t* row) { std::copy_n(row, rowSize, sum.at(0, y)); }, rightPathWeight, mgm,
-      rightPathBlock, p1PathPercent, edgeReset);
+      rightPathBlock, p1PathPercent, edgeReset, lrStoreBits);
   return sum;
 }
 

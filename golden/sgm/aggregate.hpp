@@ -55,10 +55,14 @@ PathVolume pathCost(const CostVolume& cost, const cv::Mat& grayLeft, int pathInd
 // (golden-only; nullptr = 100 each): P1 of each path (0, 45, 90, 135 degrees, the fifth)
 // in percent of p1, each path's P2r from its own P1. edgeReset (the path restart; threshold 0 =
 // off): the paths it marks start again (Lr = C) within `length` steps of a strong edge.
+// lrStoreBits = N (golden-only, 0 = off): the 45, 90 and 135 degree paths read the row
+// above's Lr as a path memory of N bits relative to the pixel's minimum would hold it,
+// min Lr + min(Lr - min Lr, 2^N - 1); S takes every Lr whole. Exact for 2^N - 1 >= P2'
+// (eq. (1) never takes a value beyond min Lr + P2r), so N = 8 is exact for every P2' <= 255.
 PathVolume aggregateCost(const CostVolume& cost, const cv::Mat& grayLeft, int p1, int p2, P2Mode p2Mode = P2Mode::kKnee,
                          PathWeighting weights = PathWeighting::k3232, int rightPathWeight = 0, bool mgm = false,
                          int rightPathBlock = 0, const int* p1PathPercent = nullptr,
-                         const EdgeReset& edgeReset = EdgeReset{});
+                         const EdgeReset& edgeReset = EdgeReset{}, int lrStoreBits = 0);
 
 // The streaming form used by the pipeline: rows in order, never more than a
 // few rows of C and S in memory, the work of each row split over two workers.
@@ -71,7 +75,7 @@ using SumRowFn = std::function<void(int worker, int y, const uint16_t* row)>;
 void aggregateRows(int width, int height, int disparities, const cv::Mat& grayLeft, int p1, int p2, P2Mode p2Mode,
                    PathWeighting weights, const CostRowFn& costRow, const SumRowFn& sink, int rightPathWeight = 0,
                    bool mgm = false, int rightPathBlock = 0, const int* p1PathPercent = nullptr,
-                   const EdgeReset& edgeReset = EdgeReset{});
+                   const EdgeReset& edgeReset = EdgeReset{}, int lrStoreBits = 0);
 
 // The fifth path over one row: Lr for r = (1, 0), from x = W-1 down to 0,
 // added to sum (W x D) with the given weight. cost is the row of C, grayRow the row of

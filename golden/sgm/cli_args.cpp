@@ -79,7 +79,7 @@ const std::set<std::string>& CliArgs::pipelineOptions() {
                                               "ad-cap", "right-path", "right-block", "edge-reset", "edge-reset-len",
                                               "edge-reset-paths",
                                               // golden-only experiments (not in the RTL)
-                                              "subpixel-fit", "mgm", "median-gate", "p1-paths", "snap-edge"};
+                                              "subpixel-fit", "mgm", "median-gate", "p1-paths", "snap-edge", "lr-store-bits"};
   return names;
 }
 
@@ -113,6 +113,7 @@ Params CliArgs::pipelineParams(Params p) const {
   p.uniqueness = int(integer("uniqueness", p.uniqueness, 0, 99));
   p.medianGate = int(integer("median-gate", p.medianGate, 0, 255));
   p.snapEdge = int(integer("snap-edge", p.snapEdge, 0, 255));
+  p.lrStoreBits = int(integer("lr-store-bits", p.lrStoreBits, 0, kMaxLrStoreBits));
   p.adWeight = int(integer("ad-weight", p.adWeight, 0, kMaxAdWeight));
   p.adCap = int(integer("ad-cap", p.adCap, 0, kMaxAdCap));
   if (const std::string fit = text("subpixel-fit", p.linearSubpixel ? "linear" : "parabola");

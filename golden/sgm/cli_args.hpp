@@ -30,7 +30,7 @@ class CliArgs {
   // --fill, --snap, --median, --census, --p2-mode, --weights and --preset into params, and the
   // golden-only experiments (not in the RTL, off by default): --right-path W, --right-block B,
   // --subpixel-fit parabola|linear, --mgm on|off, --median-gate T, --p1-paths A,B,C,D,E,
-  // --snap-edge T, --edge-reset T, --edge-reset-len R, --edge-reset-paths A,B,C,D,E. --preset (default | four-path | paper) replaces
+  // --snap-edge T, --lr-store-bits N, --edge-reset T, --edge-reset-len R, --edge-reset-paths A,B,C,D,E. --preset (default | four-path | paper) replaces
   // base (D excepted) before the other options apply, so they override it; --mode also
   // brings that mode's default P1 / P2' (defaultParams), which --p1 / --p2 override,
   // and a mode without a census switches the AD term off.

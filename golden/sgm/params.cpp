@@ -74,7 +74,8 @@ bool Params::operator==(const Params& o) const {
          p2Mode == o.p2Mode && weights == o.weights && rightPathWeight == o.rightPathWeight &&
          rightPathBlock == o.rightPathBlock && uniqueness == o.uniqueness && adWeight == o.adWeight &&
          adCap == o.adCap && linearSubpixel == o.linearSubpixel && mgm == o.mgm && medianGate == o.medianGate &&
-         p1PathPercent == o.p1PathPercent && snapEdge == o.snapEdge && edgeReset == o.edgeReset;
+         p1PathPercent == o.p1PathPercent && snapEdge == o.snapEdge && edgeReset == o.edgeReset &&
+         lrStoreBits == o.lrStoreBits;
 }
 
 const std::vector<std::string>& presetNames() {
@@ -168,6 +169,10 @@ void Params::validate() const {
   if (medianGate < 0 || medianGate > 255)
     throw Error("median gate " + std::to_string(medianGate) + " out of range 0..255");
   if (snapEdge < 0 || snapEdge > 255) throw Error("snap edge " + std::to_string(snapEdge) + " out of range 0..255");
+  if (lrStoreBits != 0 && (lrStoreBits < kMinLrStoreBits || lrStoreBits > kMaxLrStoreBits))
+    throw Error("stored Lr bits " + std::to_string(lrStoreBits) + " out of range " + std::to_string(kMinLrStoreBits) +
+                ".." + std::to_string(kMaxLrStoreBits) + " (0 off)");
+  if (lrStoreBits && mgm) throw Error("--lr-store-bits does not combine with --mgm");
   if (edgeReset.threshold < 0 || edgeReset.threshold > 255)
     throw Error("edge reset " + std::to_string(edgeReset.threshold) + " out of range 0..255");
   if (edgeReset.length < 1 || edgeReset.length > kMaxEdgeResetLength)

@@ -28,7 +28,7 @@ PipelineStages runPipelineStages(const cv::Mat& gl, const cv::Mat& gr, const Par
       addAdTerm(gl, gr, y, 0, gl.cols, params.disparities, params.adWeight, params.adCap, st.cost.at(0, y));
   st.aggregated = aggregateCost(st.cost, gl, params.p1, params.p2, params.p2Mode, params.weights,
                                 params.rightPathWeight, params.mgm, params.rightPathBlock, params.p1PathPercent.data(),
-                                params.edgeReset);
+                                params.edgeReset, params.lrStoreBits);
   st.selected = selectDisparity(st.aggregated, params);
   st.filled = params.fill ? fillHoles(st.selected) : st.selected;
   st.snapped = params.snap ? snapEdges(st.filled, gl, params.snapEdge) : st.filled;
@@ -65,7 +65,8 @@ DisparityMap runPipeline(const cv::Mat& gl, const cv::Mat& gr, const Params& par
       [&](int worker, int y, const uint16_t* sum) {
         selectors[worker].select(sum, selected.disp.ptr<uint16_t>(y), selected.valid.ptr<uint8_t>(y));
       },
-      params.rightPathWeight, params.mgm, params.rightPathBlock, params.p1PathPercent.data(), params.edgeReset);
+      params.rightPathWeight, params.mgm, params.rightPathBlock, params.p1PathPercent.data(), params.edgeReset,
+      params.lrStoreBits);
   const DisparityMap filled = params.fill ? fillHoles(selected) : selected;
   const DisparityMap snapped = params.snap ? snapEdges(filled, gl, params.snapEdge) : filled;
   return params.median ? median5x5(snapped, gl, params.medianGate) : snapped;

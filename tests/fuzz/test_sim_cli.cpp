@@ -113,6 +113,8 @@ TEST_F(SgmSimCli, ParametersTheBuildOrTheCoreCannotTake) {
       {{"--p1-paths", "200,100"}, "--p1-paths expects five percentages"},
       {{"--snap", "on", "--snap-edge", "96"}, "golden-only experiments, not in the core"},
       {{"--snap-edge", "256"}, "--snap-edge=256 out of range"},
+      {{"--lr-store-bits", "8"}, "golden-only experiments, not in the core"},
+      {{"--lr-store-bits", "3"}, "stored Lr bits 3 out of range"},
       {{"--edge-reset", "256"}, "--edge-reset=256 out of range"},
       {{"--edge-reset", "48", "--edge-reset-len", "0"}, "--edge-reset-len=0 out of range"},
       {{"--edge-reset", "48", "--edge-reset-paths", "1,1,2,1,1"}, "--edge-reset-paths expects five flags 0..1"},
