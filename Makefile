@@ -78,6 +78,7 @@ help:
 	@echo "make coverage      line and toggle coverage of rtl/ -> build/coverage/"
 	@echo "make mutate        plant each bug of tests/mutate/mutations.txt in a copy of rtl/, run the tests -> build/mutate/ (MUTATE_ONLY=id,id)"
 	@echo "make datasheet     docs/datasheet.md (DATASHEET=...) and README's summary from the measured JSON reports under build/"
+	@echo "make eval-confidence  the error of the most confident pixels on the pool (the confidence map ranks errors)"
 	@echo "make raw-scenes    raw camera pairs made from the scenes (known calibration), their rectification meshes and the golden model on the way back"
 	@echo "make regmap        sw/include/sgm_regs.h, rtl/sgm_regmap.svh, docs/registers.md from regmap/sgm_regmap.def; make regmap-check"
 	@echo "make param-checks  every module's parameter checks fire on an illegal value; the legal sets elaborate"

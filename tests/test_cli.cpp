@@ -505,6 +505,17 @@ TEST_F(SgmEvalCli, PoolWritesItsReports) {
   EXPECT_NE(res.out.find("middlebury"), std::string::npos) << res.out;
 }
 
+TEST_F(SgmEvalCli, ConfidenceWritesItsReports) {
+  const std::string data = goodScene();
+  std::ofstream(data + "/synthetic/meta.txt") << "gt_scale: 4\nndisp: 16\nset: synth\n";
+  const ChildResult res = run("sgm-eval", {"confidence", "--pool", data, "--out", root_ + "/r"});
+  ASSERT_EQ(res.rc, 0) << res.err;
+  EXPECT_EQ(entries(root_ + "/r"), (std::set<std::string>{"confidence.json", "confidence.md", "confidence.png"}));
+  EXPECT_NE(res.out.find("most confident 50 %"), std::string::npos) << res.out;
+  expectOneLineError(run("sgm-eval", {"confidence", "--pool", data, "--half", "A", "--out", out_ + "/q"}), "sgm-eval",
+                     "--half");
+}
+
 TEST_F(SgmEvalCli, RunsOnASyntheticScene) {
   const std::string data = goodScene();
   const ChildResult res = run("sgm-eval", {"run", "--data", data, "--d", "16"});

@@ -161,6 +161,36 @@ TEST(SelectDisparity, LeftRightCheckTolerance) {
   EXPECT_EQ(dispRow(m, 0), (V{16, 16, 32, 16, 16}));
 }
 
+TEST(Confidence, RatioOfTheSecondBestBeyondTheNeighbours) {
+  // S1 = 10 at d = 2; d = 1 and 3 are its neighbours (not counted); S2 = 30 at d = 5.
+  const uint16_t s[] = {40, 11, 10, 12, 50, 30};
+  EXPECT_EQ(sgm::confidence(s, 6, 2), (20 << 8) / 31);  // floor(5120 / 31) = 165
+  EXPECT_EQ(sgm::confidence(s, 6, 2), 165);
+  const uint16_t flat[] = {7, 7, 7, 7};
+  EXPECT_EQ(sgm::confidence(flat, 4, 0), 0);
+  const uint16_t peak[] = {0, 900, 65535, 65535};  // the largest: 255 at S1 = 0, S2 = 65535
+  EXPECT_EQ(sgm::confidence(peak, 4, 0), 255);
+  const uint16_t three[] = {5, 9, 8};  // no k with |k - d| > 1 for d = 1: 0
+  EXPECT_EQ(sgm::confidence(three, 3, 1), 0);
+}
+
+TEST(Confidence, SelectionGivesZeroWhereInvalid) {
+  const std::vector<std::vector<int>> row1(5, {0, 5, 9});
+  const PathVolume s = makeVolume({kRow0, row1});
+  cv::Mat confidence;
+  const DisparityMap m = sgm::selectDisparity(s, selectParams(false, 0), &confidence);
+  ASSERT_EQ(confidence.type(), CV_8UC1);
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 5; ++x) {
+      const uint16_t* sp = s.at(x, y);
+      const int d = sgm::winnerTakeAll(sp, s.depth);
+      EXPECT_EQ(confidence.at<uint8_t>(y, x), m.valid.at<uint8_t>(y, x) ? sgm::confidence(sp, s.depth, d) : 0)
+          << x << "," << y;
+    }
+  EXPECT_EQ(confidence.at<uint8_t>(0, 0), 0);              // x - d < 0: invalid
+  EXPECT_EQ(confidence.at<uint8_t>(1, 2), (9 << 8) / 10);  // S = [0, 5, 9] at d = 0: S2 = 9
+}
+
 TEST(SelectDisparity, SubpixelOnlyInsideTheRange) {
   const std::vector<std::vector<int>> row1(5, {0, 5, 9});
   const PathVolume s = makeVolume({kRow0, row1});

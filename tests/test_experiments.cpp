@@ -13,6 +13,7 @@
 
 #include "expect_error.hpp"
 #include "eval_lib.hpp"
+#include "report_confidence.hpp"
 #include "synthetic_scene.hpp"
 
 #include <gtest/gtest.h>
@@ -466,6 +467,30 @@ TEST(LrStoreBits, MatchesItsDefinitionAndWideIsTheWholeLr) {
   }
   const sgm::CliArgs cli = pipelineCli({"prog", "--lr-store-bits", "3"});
   expectError([&] { cli.pipelineParams().validate(); }, {"stored Lr bits 3 out of range"});
+}
+
+// The confidence map: the same from the streaming pipeline and the staged one.
+TEST(Confidence, StreamingEqualsStagesAndRanksTheErrors) {
+  const sgm::eval::Scene scene = sgm::synth::toEvalScene(sgm::synth::makeSyntheticScene(96, 48, 14, 3), "s");
+  sgm::Params p;
+  p.disparities = 16;
+  cv::Mat streamed;
+  sgm::runPipeline(scene.left, scene.right, p, &streamed);
+  const sgm::PipelineStages staged = sgm::runPipelineStages(scene.left, scene.right, p);
+  ASSERT_FALSE(streamed.empty());
+  EXPECT_EQ(cv::countNonZero(streamed != staged.confidence), 0);
+  EXPECT_EQ(cv::countNonZero(staged.confidence & (staged.selected.valid == 0)), 0);  // 0 where invalid
+  EXPECT_GT(cv::countNonZero(staged.confidence), 0);
+}
+
+TEST(Confidence, ErrorOfTheMostConfidentSharesTies) {
+  // Confidences 9, 9, 5, 5, 5, 5, 1, 1; errors 0, 0, 1, 0, 0, 0, 1, 1.
+  const std::vector<uint8_t> c = {9, 5, 1, 5, 9, 5, 1, 5}, e = {0, 1, 1, 0, 0, 0, 1, 0};
+  EXPECT_DOUBLE_EQ(sgm::eval::errorOfMostConfident(c, e, 0.25), 0);
+  // Half: both 9s and two of the four 5s (a quarter of them wrong): 0.5 errors in 4.
+  EXPECT_DOUBLE_EQ(sgm::eval::errorOfMostConfident(c, e, 0.5), 100.0 * 0.5 / 4);
+  EXPECT_DOUBLE_EQ(sgm::eval::errorOfMostConfident(c, e, 1.0), 100.0 * 3 / 8);
+  EXPECT_DOUBLE_EQ(sgm::eval::errorOfMostConfident({}, {}, 0.5), 0);
 }
 
 TEST(Experiments, OptionsAndRanges) {

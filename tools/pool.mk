@@ -23,6 +23,19 @@ eval-pool-ci: golden
 
 TEST_EXTRA += eval-pool-ci
 
+# `make eval-confidence`: how well the confidence map ranks the errors on the pool (sgm-eval
+# confidence: the error of the most confident 10 .. 100 % of the pixels per scene) ->
+# build/eval/confidence.md, confidence.json, confidence.png; POOL_SCENES, POOL_FLAGS as above.
+# eval-confidence-ci: the two scenes of eval-pool-ci.
+.PHONY: eval-confidence eval-confidence-ci
+eval-confidence: golden
+	@if [ -d "$(POOL)" ]; then 	   $(BIN)/sgm-eval confidence --pool "$(POOL)" --out $(BUILD)/eval $(if $(POOL_SCENES),--scenes $(POOL_SCENES)) $(POOL_FLAGS); 	 else echo "eval-confidence: skipped: POOL=$(POOL) is not a directory (README, 'Data')"; fi
+
+eval-confidence-ci: golden
+	@if [ -d "$(POOL)/map" ] && [ -d "$(POOL)/kitti2012_000070" ]; then 	   $(BIN)/sgm-eval confidence --pool "$(POOL)" --out $(BUILD)/eval-confidence-ci --scenes $(POOL_CI_SCENES); 	 else echo "eval-confidence-ci: skipped: POOL=$(POOL) has no map and kitti2012_000070 scenes (README, 'Data')"; fi
+
+TEST_EXTRA += eval-confidence-ci
+
 # `make eval-pool-rtl`: the verilated core (D = 128, MAX_WIDTH = 1280, the `make sim` build)
 # on pool scenes at full size, one Middlebury and one KITTI pair (1242 px wide) by default;
 # sgm-sim compares every output pixel with the golden model and exits non-zero on the first

@@ -3,6 +3,7 @@
 // Middlebury scenes: the paper's eq. (5) error ratio, Table I, timing.
 #include "calibration.hpp"
 #include "datasheet.hpp"
+#include "report_confidence.hpp"
 #include "eval_lib.hpp"
 #include "report_bench.hpp"
 #include "report_chart.hpp"
@@ -40,6 +41,9 @@ const char* kUsage =
     "                                                      without one): Middlebury bad-1 nonocc, KITTI D1,\n"
     "                                                      per-set means, OpenCV strict and valid-only, \"today\"\n"
     "                                                      (the four-path preset) beside -> pool.md, pool.json, pool.png\n"
+    "       sgm-eval confidence --pool DIR [--out DIR] [--scenes a,b] [pipeline options]\n"
+    "                                                      the error of the most confident 10 .. 100 % of the pixels\n"
+    "                                                      per scene (sparsification) -> confidence.md, .json, .png\n"
     "       sgm-eval datasheet [--build DIR] [--out FILE]  the datasheet from the measured JSON reports under\n"
     "                                                      DIR (default build) -> FILE (default docs/datasheet.md)\n"
     "                  [--readme FILE]                     and the generated summary section of FILE (README.md)\n"
@@ -209,6 +213,23 @@ int commandPool(const CliArgs& args) {
   return 0;
 }
 
+int commandConfidence(const CliArgs& args) {
+  std::vector<Scene> scenes = loadAll(args, "pool");
+  const std::string out = outDir(args);
+  const double delta = args.real("delta", 1.0, 0.0, 1000.0);
+  const int fallback = int(args.integer("d", Params{}.disparities, kMinDisparities, kMaxDisparities));
+  const eval::ConfidenceReport report = eval::computeConfidence(scenes, args.pipelineParams(), fallback, delta);
+  if (report.rows.empty()) throw Error("no scene with ground truth");
+  writeResults(out, {{out + "/confidence.md", eval::confidenceMarkdown(report)},
+                     {out + "/confidence.json", eval::confidenceJson(report)},
+                     {out + "/confidence.png", encodePng(eval::confidenceChart(report), out + "/confidence.png")}});
+  for (const auto& [group, mean] : report.means)
+    std::printf("%-11s error of the most confident 50 %%: %.2f %%, 90 %%: %.2f %%, all: %.2f %%\n", group.c_str(),
+                mean[4], mean[8], mean.back());
+  std::printf("wrote %s/confidence.md, confidence.json, confidence.png\n", out.c_str());
+  return 0;
+}
+
 int commandDatasheet(const CliArgs& args) {
   const std::string build = args.text("build", "build");
   const std::string out = args.text("out", "docs/datasheet.md");
@@ -354,11 +375,14 @@ std::vector<Command> commands() {
   runOptions.insert({"data", "out", "delta", "scenes"});
   std::set<std::string> poolOptions = CliArgs::pipelineOptions();
   poolOptions.insert({"pool", "out", "delta", "scenes", "half", "opencv"});
+  std::set<std::string> confidenceOptions = CliArgs::pipelineOptions();
+  confidenceOptions.insert({"pool", "out", "delta", "scenes"});
   return {
       {"run", commandRun, runOptions},
       {"table", commandTable, {"data", "out", "d", "delta", "scenes"}},
       {"bench", commandBench, {"data", "out", "scene", "repeats"}},
       {"pool", commandPool, poolOptions},
+      {"confidence", commandConfidence, confidenceOptions},
       {"datasheet", commandDatasheet, {"build", "out", "readme"}},
       {"calib-mesh", commandCalibMesh, {"calib", "size", "size-of", "grid", "unit-mm", "rows", "out"}},
       {"rectify", commandRectify, {"mesh", "left", "right", "out"}},
@@ -371,7 +395,8 @@ std::vector<Command> commands() {
 int main(int argc, char** argv) {
   try {
     if (argc < 2)
-      throw Error("missing command: run, table, bench, pool, datasheet, calib-mesh, rectify or raw-scene (see --help)");
+      throw Error(
+          "missing command: run, table, bench, pool, confidence, datasheet, calib-mesh, rectify or raw-scene (see --help)");
     if (std::string(argv[1]) == "--help") {
       std::cout << kUsage;
       return 0;

@@ -74,12 +74,12 @@ bool CliArgs::onOff(const std::string& name, bool fallback) const {
 }
 
 const std::set<std::string>& CliArgs::pipelineOptions() {
-  static const std::set<std::string> names = {"d", "p1", "p2", "mode", "subpixel", "lr", "fill", "snap", "median",
-                                              "census", "p2-mode", "weights", "preset", "uniqueness", "ad-weight",
-                                              "ad-cap", "right-path", "right-block", "edge-reset", "edge-reset-len",
-                                              "edge-reset-paths",
-                                              // golden-only experiments (not in the RTL)
-                                              "subpixel-fit", "mgm", "median-gate", "p1-paths", "snap-edge", "lr-store-bits"};
+  static const std::set<std::string> names = {
+      "d", "p1", "p2", "mode", "subpixel", "lr", "fill", "snap", "median", "census", "p2-mode", "weights", "preset",
+      "uniqueness", "ad-weight", "ad-cap", "right-path", "right-block", "edge-reset", "edge-reset-len",
+      "edge-reset-paths",
+      // golden-only experiments (not in the RTL)
+      "subpixel-fit", "mgm", "median-gate", "p1-paths", "snap-edge", "lr-store-bits"};
   return names;
 }
 

@@ -57,10 +57,19 @@ bool isUnique(const uint16_t* s, int disparities, int d, int ratio) {
   return true;
 }
 
+int confidence(const uint16_t* s, int disparities, int d) {
+  const uint32_t best = s[d];
+  uint32_t second = 0xffffffff;
+  for (int k = 0; k < disparities; ++k)
+    if (std::abs(k - d) > 1) second = std::min<uint32_t>(second, s[k]);
+  if (second == 0xffffffff) return 0;
+  return int(((second - best) << 8) / (second + 1));
+}
+
 RowSelector::RowSelector(int width, int disparities, const Params& params)
     : width_(width), disparities_(disparities), params_(params), rightKey_(width) {}
 
-void RowSelector::select(const uint16_t* sumRow, uint16_t* dispRow, uint8_t* validRow) {
+void RowSelector::select(const uint16_t* sumRow, uint16_t* dispRow, uint8_t* validRow, uint8_t* confidenceRow) {
   const int w = width_, nd = disparities_;
   const bool check = params_.lrTolerance >= 0;
   if (check) {
@@ -86,14 +95,18 @@ void RowSelector::select(const uint16_t* sumRow, uint16_t* dispRow, uint8_t* val
     dispRow[x] = uint16_t(fixed);
     validRow[x] = (!check || (x - d >= 0 && std::abs(rightD - d) <= params_.lrTolerance)) &&
                   (!params_.uniqueness || isUnique(sp, nd, d, params_.uniqueness));
+    if (confidenceRow) confidenceRow[x] = uint8_t(validRow[x] ? confidence(sp, nd, d) : 0);
   }
 }
 
-DisparityMap selectDisparity(const PathVolume& s, const Params& params) {
+DisparityMap selectDisparity(const PathVolume& s, const Params& params, cv::Mat* confidence) {
   DisparityMap out{cv::Mat(s.height, s.width, CV_16UC1), cv::Mat(s.height, s.width, CV_8UC1)};
+  if (confidence) confidence->create(s.height, s.width, CV_8UC1);
   parallelFor(s.height, [&](int y0, int y1) {
     RowSelector selector(s.width, s.depth, params);
-    for (int y = y0; y < y1; ++y) selector.select(s.at(0, y), out.disp.ptr<uint16_t>(y), out.valid.ptr<uint8_t>(y));
+    for (int y = y0; y < y1; ++y)
+      selector.select(s.at(0, y), out.disp.ptr<uint16_t>(y), out.valid.ptr<uint8_t>(y),
+                      confidence ? confidence->ptr<uint8_t>(y) : nullptr);
   });
   return out;
 }

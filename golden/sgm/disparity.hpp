@@ -33,12 +33,18 @@ int rightDisparity(const PathVolume& s, int xr, int y);
 // S(k) with |k - d| > 1 has S(k) (100 - ratio) < 100 S(d); always at ratio 0.
 bool isUnique(const uint16_t* s, int disparities, int d, int ratio);
 
+// Confidence of the winner d of s (docs/algorithm.md section 7b): with S1 = S(d) and S2 the
+// smallest S(k) with |k - d| > 1 (S1 when there is none), floor(256 (S2 - S1) / (S2 + 1)),
+// 0 .. 255.
+int confidence(const uint16_t* s, int disparities, int d);
+
 // WTA (+ sub-pixel when enabled) and the left-right check when tolerance >= 0,
-// one row at a time from row y of S (W x D, pixel-major).
+// one row at a time from row y of S (W x D, pixel-major); confidenceRow (when given)
+// receives each pixel's confidence, 0 where the pixel is invalid.
 class RowSelector {
  public:
   RowSelector(int width, int disparities, const Params& params);
-  void select(const uint16_t* sumRow, uint16_t* dispRow, uint8_t* validRow);
+  void select(const uint16_t* sumRow, uint16_t* dispRow, uint8_t* validRow, uint8_t* confidenceRow = nullptr);
 
  private:
   const int width_, disparities_;
@@ -46,8 +52,8 @@ class RowSelector {
   std::vector<uint32_t> rightKey_;  // min (S, d) key per right pixel, indexed W-1-xr
 };
 
-// The same over a whole volume.
-DisparityMap selectDisparity(const PathVolume& s, const Params& params);
+// The same over a whole volume (and the confidence map, CV_8UC1, when asked for).
+DisparityMap selectDisparity(const PathVolume& s, const Params& params, cv::Mat* confidence = nullptr);
 
 // Hole filling along each row: an invalid pixel keeps its own disparity when it
 // is within kFillAgree (1 px) of the nearest valid disparity to its left or to

@@ -85,7 +85,7 @@ constexpr int kMaxRightPathBlock = 4096;  // fifth path's block (Params::rightPa
 constexpr int kMaxAdWeight = 15;          // AD term weight (Params::adWeight, 4 bits in the RTL)
 constexpr int kMinP1PathPercent = 25, kMaxP1PathPercent = 400;  // golden-only per-path P1 (Params::p1PathPercent)
 constexpr int kMaxEdgeResetLength = 15;                         // the path restart (Params::edgeReset.length)
-constexpr int kMinLrStoreBits = 4, kMaxLrStoreBits = 12;  // golden-only Params::lrStoreBits (0 = off)
+constexpr int kMinLrStoreBits = 4, kMaxLrStoreBits = 12;        // golden-only Params::lrStoreBits (0 = off)
 constexpr int kMaxAdCap = 255;                                  // AD term truncation (Params::adCap, 8 bits)
 constexpr int kAdShift =
     3;  // AD term = adWeight * min(AD, adCap) >> kAdShift                 // keeps kPathWeightSum * (Cmax + P2') < 2^16
@@ -144,7 +144,8 @@ struct Params {
   bool mgm = false;             // raster-order MGM: each path averages two causal neighbours
   int medianGate = 0;           // the median takes only window pixels within this gray distance of the centre; 0 = off
   int snapEdge = 0;             // edge snapping acts only when its strongest step |I(k) - I(k-1)| >= this; 0 = always
-  int lrStoreBits = 0;  // the 45/90/135-degree paths read the row above's Lr - min Lr saturated to this many bits; 0 = off
+  int lrStoreBits =
+      0;  // the 45/90/135-degree paths read the row above's Lr - min Lr saturated to this many bits; 0 = off
   // P1 per path in percent of p1 (0, 45, 90, 135 degrees, the fifth path); each path's P2r = max(its P1, ...).
   std::array<int, kPathCount + 1> p1PathPercent = {100, 100, 100, 100, 100};
   int pathP1(int path) const { return p1 * p1PathPercent[size_t(path)] / 100; }

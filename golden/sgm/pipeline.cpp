@@ -29,14 +29,14 @@ PipelineStages runPipelineStages(const cv::Mat& gl, const cv::Mat& gr, const Par
   st.aggregated = aggregateCost(st.cost, gl, params.p1, params.p2, params.p2Mode, params.weights,
                                 params.rightPathWeight, params.mgm, params.rightPathBlock, params.p1PathPercent.data(),
                                 params.edgeReset, params.lrStoreBits);
-  st.selected = selectDisparity(st.aggregated, params);
+  st.selected = selectDisparity(st.aggregated, params, &st.confidence);
   st.filled = params.fill ? fillHoles(st.selected) : st.selected;
   st.snapped = params.snap ? snapEdges(st.filled, gl, params.snapEdge) : st.filled;
   st.result = params.median ? median5x5(st.snapped, gl, params.medianGate) : st.snapped;
   return st;
 }
 
-DisparityMap runPipeline(const cv::Mat& gl, const cv::Mat& gr, const Params& params) {
+DisparityMap runPipeline(const cv::Mat& gl, const cv::Mat& gr, const Params& params, cv::Mat* confidence) {
   checkInput(gl, gr, params);
   const int w = gl.cols, h = gl.rows, nd = params.disparities;
   // Hardware modes stream C from the census images row by row; the software
@@ -59,11 +59,13 @@ DisparityMap runPipeline(const cv::Mat& gl, const cv::Mat& gr, const Params& par
     };
   }
   DisparityMap selected{cv::Mat(h, w, CV_16UC1), cv::Mat(h, w, CV_8UC1)};
+  if (confidence) confidence->create(h, w, CV_8UC1);
   RowSelector selectors[2] = {RowSelector(w, nd, params), RowSelector(w, nd, params)};  // one per worker
   aggregateRows(
       w, h, nd, gl, params.p1, params.p2, params.p2Mode, params.weights, costRow,
       [&](int worker, int y, const uint16_t* sum) {
-        selectors[worker].select(sum, selected.disp.ptr<uint16_t>(y), selected.valid.ptr<uint8_t>(y));
+        selectors[worker].select(sum, selected.disp.ptr<uint16_t>(y), selected.valid.ptr<uint8_t>(y),
+                                 confidence ? confidence->ptr<uint8_t>(y) : nullptr);
       },
       params.rightPathWeight, params.mgm, params.rightPathBlock, params.p1PathPercent.data(), params.edgeReset,
       params.lrStoreBits);

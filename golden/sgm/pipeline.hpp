@@ -18,6 +18,7 @@ struct PipelineStages {
   DisparityMap filled;    // after hole filling (== selected when filling is off)
   DisparityMap snapped;   // after edge snapping (== filled when snapping is off)
   DisparityMap result;    // after the median (== snapped when the median is off)
+  cv::Mat confidence;     // CV_8UC1, section 7b: from the selection, 0 where it was invalid
 };
 
 // Throws Error for bad input: size mismatch, non-gray images, images smaller
@@ -25,6 +26,8 @@ struct PipelineStages {
 void checkInput(const cv::Mat& grayLeft, const cv::Mat& grayRight, const Params& params);
 
 PipelineStages runPipelineStages(const cv::Mat& grayLeft, const cv::Mat& grayRight, const Params& params);
-DisparityMap runPipeline(const cv::Mat& grayLeft, const cv::Mat& grayRight, const Params& params);
+// The streaming pipeline; confidence (when given) receives the confidence map (section 7b).
+DisparityMap runPipeline(const cv::Mat& grayLeft, const cv::Mat& grayRight, const Params& params,
+                         cv::Mat* confidence = nullptr);
 
 }  // namespace sgm
