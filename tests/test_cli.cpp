@@ -542,6 +542,16 @@ TEST_F(SgmEvalCli, RawSceneToMeshToRectifiedPair) {
                          raw + "/right.png", "--out", rect});
   ASSERT_EQ(res.rc, 0) << res.err;
   EXPECT_EQ(entries(rect), (std::set<std::string>{"left.png", "right.png"}));
+  // sgm-golden on the raw pair through the mesh: rectified pair, disparity, confidence, depth.
+  const std::string golden = root_ + "/gen/golden";
+  std::filesystem::create_directories(golden);
+  res = run("sgm-golden", {raw + "/left.png", raw + "/right.png", "--mesh", mesh + "/mesh.bin", "--d", "16",
+                           "--confidence", "on", "--out", golden + "/r"});
+  ASSERT_EQ(res.rc, 0) << res.err;
+  EXPECT_EQ(entries(golden), (std::set<std::string>{"r_color.png", "r_confidence.png", "r_depth16.png", "r_disp16.png",
+                                                    "r_disp8.png", "r_rectified_left.png", "r_rectified_right.png"}));
+  expectOneLineError(run("sgm-golden", {in("left.png"), in("right.png"), "--mesh", mesh + "/mesh.bin"}), "sgm-golden",
+                     "96x64");
   // The errors: each one line, nothing written.
   const std::string none = out_ + "/none";
   expectOneLineError(run("sgm-eval", {"calib-mesh", "--calib", raw, "--out", none}), "sgm-eval", "--size");

@@ -3,13 +3,18 @@
 // map as 16-bit PNG (disparity x 256), the paper's 8-bit rendering and a
 // colour-mapped PNG.
 #include "sgm/cli_args.hpp"
+#include "sgm/depth.hpp"
 #include "sgm/image_io.hpp"
 #include "sgm/pipeline.hpp"
+#include "sgm/rectify.hpp"
 
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace {
 
@@ -34,6 +39,11 @@ const char* kUsage =
     "                  [--p1-paths A,B,C,D,E] P1 per path in % (0, 45, 90, 135 degrees, the fifth path)\n"
     "                  [--snap-edge T] edge snapping only onto an intensity step of at least T (with --snap on)\n"
     "                  [--lr-store-bits N] the 45/90/135-degree paths read the row above's Lr saturated to N bits\n"
+    "                  [--confidence on|off] also PREFIX_confidence.png (docs/algorithm.md section 7b)\n"
+    "                  [--mesh FILE] LEFT and RIGHT are a raw camera pair: rectified first through the meshes\n"
+    "                                of FILE (sgm-eval calib-mesh; section 13), a pixel whose left source lies\n"
+    "                                outside the image invalid; also PREFIX_rectified_{left,right}.png and\n"
+    "                                PREFIX_depth16.png (mm from the file's f and B, 0 = invalid; section 10b)\n"
     "Writes PREFIX_disp16.png (disparity x 256, 0 = invalid), PREFIX_disp8.png\n"
     "(the paper's [0, 255] scaling) and PREFIX_color.png. PREFIX defaults to 'disparity'.\n";
 
@@ -42,7 +52,7 @@ const char* kUsage =
 int main(int argc, char** argv) {
   try {
     auto options = sgm::CliArgs::pipelineOptions();
-    options.insert("out");
+    options.insert({"out", "confidence", "mesh"});
     const sgm::CliArgs args(argc, argv, options, {"help"});
     if (args.has("help")) {
       std::cout << kUsage;
@@ -56,21 +66,46 @@ int main(int argc, char** argv) {
     const std::filesystem::path outDir = std::filesystem::path(prefix).parent_path();
     if (!outDir.empty() && !std::filesystem::is_directory(outDir))
       throw sgm::Error("cannot write '" + prefix + "_disp16.png': directory '" + outDir.string() + "' does not exist");
-    const cv::Mat left = sgm::readGray(args.positional()[0]);
-    const cv::Mat right = sgm::readGray(args.positional()[1]);
+    const bool withConfidence = args.onOff("confidence", false);
+    const std::string meshPath = args.text("mesh", "");
+    if (args.has("mesh") && meshPath.empty()) throw sgm::Error("empty --mesh file name");
+    cv::Mat left = sgm::readGray(args.positional()[0]);
+    cv::Mat right = sgm::readGray(args.positional()[1]);
+    std::vector<std::pair<std::string, cv::Mat>> outputs;
+    sgm::StereoMesh mesh;
+    cv::Mat leftValid;
+    if (!meshPath.empty()) {
+      mesh = sgm::readMeshFile(meshPath);
+      const sgm::RectifiedImage l = sgm::rectify(left, mesh.left), r = sgm::rectify(right, mesh.right);
+      left = l.gray, right = r.gray, leftValid = l.valid;
+      outputs.push_back({prefix + "_rectified_left.png", left});
+      outputs.push_back({prefix + "_rectified_right.png", right});
+    }
 
     const auto start = std::chrono::steady_clock::now();
-    const sgm::DisparityMap map = sgm::runPipeline(left, right, params);
+    cv::Mat confidence;
+    sgm::DisparityMap map = sgm::runPipeline(left, right, params, &confidence);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (!leftValid.empty()) {  // section 13: no disparity where the left source is outside the raw image
+      map.valid &= leftValid;
+      confidence.setTo(0, leftValid == 0);
+    }
 
-    sgm::writePngs({{prefix + "_disp16.png", sgm::encodeDisparity16(map)},
-                    {prefix + "_disp8.png", sgm::encodeDisparity8(map, params.disparities)},
-                    {prefix + "_color.png", sgm::encodeDisparityColor(map, params.disparities)}});
+    outputs.push_back({prefix + "_disp16.png", sgm::encodeDisparity16(map)});
+    outputs.push_back({prefix + "_disp8.png", sgm::encodeDisparity8(map, params.disparities)});
+    outputs.push_back({prefix + "_color.png", sgm::encodeDisparityColor(map, params.disparities)});
+    if (withConfidence) outputs.push_back({prefix + "_confidence.png", confidence});
+    if (!meshPath.empty())
+      outputs.push_back({prefix + "_depth16.png", sgm::depthMap(map, mesh.focalQ8, mesh.baselineUm)});
+    sgm::writePngs(outputs);
     const double density = cv::countNonZero(map.valid) * 100.0 / double(map.valid.total());
     std::printf(
-        "sgm-golden: %dx%d D=%d mode=%s census=%s preset=%s: %.1f ms, density %.2f%%, wrote %s_{disp16,disp8,color}.png\n",
+        "sgm-golden: %dx%d D=%d mode=%s census=%s preset=%s: %.1f ms, density %.2f%%, wrote %s_{disp16,disp8,color%s}.png\n",
         left.cols, left.rows, params.disparities, sgm::costModeName(params.mode), sgm::censusWindowName(params.census),
-        sgm::presetName(params).c_str(), ms, density, prefix.c_str());
+        sgm::presetName(params).c_str(), ms, density, prefix.c_str(),
+        (std::string(withConfidence ? ",confidence" : "") +
+         (meshPath.empty() ? "" : ",rectified_left,rectified_right,depth16"))
+            .c_str());
     return 0;
   } catch (const std::exception& e) {
     return sgm::reportError("sgm-golden", e);
