@@ -82,6 +82,9 @@ int main(int argc, char** argv) {
       throw Error(
           "--right-path without --right-block, --subpixel-fit linear, --mgm, --median-gate, --p1-paths, "
           "--snap-edge and --lr-store-bits are golden-only experiments, not in the core");
+    if (params.minDisparity)
+      throw Error("--dmin " + std::to_string(params.minDisparity) +
+                  ": the core has no minimum disparity (give --dmin 0)");
     if (params.edgeReset.threshold && !Vsgm_top_sgm_top::EDGE_RESET)
       throw Error("this simulator is built without the path restart (sgm_top EDGE_RESET = 0): give --edge-reset 0");
     if (params.rightPathWeight && params.rightPathBlock != kRightBlock)

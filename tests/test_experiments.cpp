@@ -493,6 +493,53 @@ TEST(Confidence, ErrorOfTheMostConfidentSharesTies) {
   EXPECT_DOUBLE_EQ(sgm::eval::errorOfMostConfident({}, {}, 0.5), 0);
 }
 
+// The minimum disparity (section 3): left x against right x - dmin - d, the output the true disparity.
+TEST(MinDisparity, SearchesFromDminAndGivesTheTrueDisparity) {
+  const sgm::synth::SyntheticScene base = sgm::synth::makeSyntheticScene(128, 64, 12, 9);
+  const int shift = 10;  // every true disparity + 10: 10 .. 22
+  cv::Mat right(base.right.size(), CV_8UC1);
+  for (int y = 0; y < right.rows; ++y)
+    for (int x = 0; x < right.cols; ++x) right.at<uint8_t>(y, x) = base.right.at<uint8_t>(y, std::min(127, x + shift));
+  sgm::Params p;
+  p.disparities = 16;
+  p.minDisparity = shift;
+  const sgm::PipelineStages staged = sgm::runPipelineStages(base.left, right, p);
+  const sgm::DisparityMap streamed = sgm::runPipeline(base.left, right, p);
+  EXPECT_EQ(cv::countNonZero(streamed.disp != staged.result.disp), 0);
+  EXPECT_EQ(cv::countNonZero(streamed.valid != staged.result.valid), 0);
+  // C(x, d) is the cost of a search over dmin + D at dmin + d (Cmax and the AD term's largest outside).
+  sgm::Params wideParams = p;
+  wideParams.minDisparity = 0, wideParams.disparities = shift + 16;
+  const sgm::PipelineStages wide = sgm::runPipelineStages(base.left, right, wideParams);
+  for (int y = 0; y < 64; y += 7)
+    for (int x = 0; x < 128; x += 3)
+      for (int d = 0; d < 16; ++d) ASSERT_EQ(staged.cost.at(x, y)[d], wide.cost.at(x, y)[shift + d]) << x << "," << y;
+  // The selection (LR check on) has no pixel whose match x - dmin - d leaves the image.
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < shift; ++x) EXPECT_EQ(staged.selected.valid.at<uint8_t>(y, x), 0) << x << "," << y;
+  // Against the ground truth (3 px; the scene's slants and noise make bad-1 high everywhere): dmin = 10
+  // on the shifted pair does as well as dmin = 0 on the original one; dmin = 0 (0 .. 15) cannot.
+  const auto bad = [&](const sgm::DisparityMap& m, int gtShift) {
+    int wrong = 0, counted = 0;
+    for (int y = 4; y < 60; ++y)
+      for (int x = 32; x < 118; ++x) {
+        if (!base.nonocc.at<uint8_t>(y, x)) continue;
+        ++counted;
+        const float d = m.valid.at<uint8_t>(y, x) ? m.disp.at<uint16_t>(y, x) / 16.f : -1.f;
+        wrong += std::abs(d - (base.gt.at<float>(y, x) + gtShift)) > 3;
+      }
+    return 100.0 * wrong / counted;
+  };
+  sgm::Params zero = p;
+  zero.minDisparity = 0;
+  const double original = bad(sgm::runPipeline(base.left, base.right, zero), 0);
+  const double found = bad(streamed, shift), missed = bad(sgm::runPipeline(base.left, right, zero), shift);
+  EXPECT_NEAR(found, original, 2.0);
+  EXPECT_GT(missed, found + 20.0);
+  std::cout << "[ figures  ] error (3 px) on the original pair: " << original << " %; shifted by " << shift << ": dmin "
+            << shift << " " << found << " %, dmin 0 " << missed << " %\n";
+}
+
 TEST(Experiments, OptionsAndRanges) {
   const sgm::Params p = pipelineCli({"prog", "--right-path", "3", "--right-block", "48", "--uniqueness", "10",
                                      "--ad-weight", "8", "--ad-cap", "16", "--subpixel-fit", "linear"})

@@ -24,6 +24,8 @@ const char* kUsage =
     "                  [--lr TOL|off] [--fill on|off] [--snap on|off] [--median on|off]\n"
     "                  [--census 9x5|9x9] [--p2-mode knee|paper] [--weights 3232|equal]\n"
     "                  [--preset default|four-path|paper]  (options after a preset override it)\n"
+    "                  [--dmin N] the search covers N .. N + D - 1 (0 .. 255; default 0); the output is the\n"
+    "                             true disparity\n"
     "                  [--right-path W] fifth path from the right, weight W (0..8; default 4)\n"
     "                  [--right-block B] that path per block of B px with one block of look-ahead\n"
     "                                    (default 64, the core's RIGHT_BLOCK; 0: the whole row, golden-only)\n"
@@ -92,8 +94,9 @@ int main(int argc, char** argv) {
     }
 
     outputs.push_back({prefix + "_disp16.png", sgm::encodeDisparity16(map)});
-    outputs.push_back({prefix + "_disp8.png", sgm::encodeDisparity8(map, params.disparities)});
-    outputs.push_back({prefix + "_color.png", sgm::encodeDisparityColor(map, params.disparities)});
+    const int range = params.minDisparity + params.disparities;  // the largest disparity + 1
+    outputs.push_back({prefix + "_disp8.png", sgm::encodeDisparity8(map, range)});
+    outputs.push_back({prefix + "_color.png", sgm::encodeDisparityColor(map, range)});
     if (withConfidence) outputs.push_back({prefix + "_confidence.png", confidence});
     if (!meshPath.empty())
       outputs.push_back({prefix + "_depth16.png", sgm::depthMap(map, mesh.focalQ8, mesh.baselineUm)});

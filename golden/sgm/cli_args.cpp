@@ -76,7 +76,7 @@ bool CliArgs::onOff(const std::string& name, bool fallback) const {
 const std::set<std::string>& CliArgs::pipelineOptions() {
   static const std::set<std::string> names = {
       "d", "p1", "p2", "mode", "subpixel", "lr", "fill", "snap", "median", "census", "p2-mode", "weights", "preset",
-      "uniqueness", "ad-weight", "ad-cap", "right-path", "right-block", "edge-reset", "edge-reset-len",
+      "uniqueness", "ad-weight", "ad-cap", "right-path", "right-block", "edge-reset", "edge-reset-len", "dmin",
       "edge-reset-paths",
       // golden-only experiments (not in the RTL)
       "subpixel-fit", "mgm", "median-gate", "p1-paths", "snap-edge", "lr-store-bits"};
@@ -95,6 +95,7 @@ Params CliArgs::pipelineParams(Params p) const {
     if (!isHardwareMode(p.mode)) p.adWeight = 0;  // the AD term needs a census mode (--ad-weight after it is checked)
   }
   p.disparities = int(integer("d", p.disparities, kMinDisparities, kMaxDisparities));
+  p.minDisparity = int(integer("dmin", p.minDisparity, 0, kMaxMinDisparity));
   p.p1 = int(integer("p1", p.p1, 0, kMaxPenalty));
   p.p2 = int(integer("p2", p.p2, 0, kMaxPenalty));
   p.subpixel = onOff("subpixel", p.subpixel);

@@ -87,13 +87,15 @@ void RowSelector::select(const uint16_t* sumRow, uint16_t* dispRow, uint8_t* val
   for (int x = 0; x < w; ++x) {
     const uint16_t* sp = sumRow + size_t(x) * nd;
     const int d = winnerTakeAll(sp, nd);
-    int fixed = d * kSubpixelOne;
+    int fixed = (params_.minDisparity + d) * kSubpixelOne;  // section 3: the true disparity
     if (params_.subpixel && d > 0 && d < nd - 1)
       fixed += params_.linearSubpixel ? subpixelOffsetLinear(sp[d - 1], sp[d], sp[d + 1])
                                       : subpixelOffset(sp[d - 1], sp[d], sp[d + 1]);
-    const int rightD = check && x - d >= 0 ? int(rightKey_[w - 1 - (x - d)] & 0xff) : 0;
+    // Right pixel x - dmin - d; the keys are indexed by x - d (the search's own frame).
+    const bool inside = x - d - params_.minDisparity >= 0;
+    const int rightD = check && inside ? int(rightKey_[w - 1 - (x - d)] & 0xff) : 0;
     dispRow[x] = uint16_t(fixed);
-    validRow[x] = (!check || (x - d >= 0 && std::abs(rightD - d) <= params_.lrTolerance)) &&
+    validRow[x] = (!check || (inside && std::abs(rightD - d) <= params_.lrTolerance)) &&
                   (!params_.uniqueness || isUnique(sp, nd, d, params_.uniqueness));
     if (confidenceRow) confidenceRow[x] = uint8_t(validRow[x] ? confidence(sp, nd, d) : 0);
   }

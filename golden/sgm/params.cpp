@@ -75,7 +75,7 @@ bool Params::operator==(const Params& o) const {
          rightPathBlock == o.rightPathBlock && uniqueness == o.uniqueness && adWeight == o.adWeight &&
          adCap == o.adCap && linearSubpixel == o.linearSubpixel && mgm == o.mgm && medianGate == o.medianGate &&
          p1PathPercent == o.p1PathPercent && snapEdge == o.snapEdge && edgeReset == o.edgeReset &&
-         lrStoreBits == o.lrStoreBits;
+         lrStoreBits == o.lrStoreBits && minDisparity == o.minDisparity;
 }
 
 const std::vector<std::string>& presetNames() {
@@ -173,6 +173,9 @@ void Params::validate() const {
     throw Error("stored Lr bits " + std::to_string(lrStoreBits) + " out of range " + std::to_string(kMinLrStoreBits) +
                 ".." + std::to_string(kMaxLrStoreBits) + " (0 off)");
   if (lrStoreBits && mgm) throw Error("--lr-store-bits does not combine with --mgm");
+  if (minDisparity < 0 || minDisparity > kMaxMinDisparity)
+    throw Error("minimum disparity " + std::to_string(minDisparity) + " out of range 0.." +
+                std::to_string(kMaxMinDisparity));
   if (edgeReset.threshold < 0 || edgeReset.threshold > 255)
     throw Error("edge reset " + std::to_string(edgeReset.threshold) + " out of range 0..255");
   if (edgeReset.length < 1 || edgeReset.length > kMaxEdgeResetLength)

@@ -85,8 +85,10 @@ constexpr int kMaxRightPathBlock = 4096;  // fifth path's block (Params::rightPa
 constexpr int kMaxAdWeight = 15;          // AD term weight (Params::adWeight, 4 bits in the RTL)
 constexpr int kMinP1PathPercent = 25, kMaxP1PathPercent = 400;  // golden-only per-path P1 (Params::p1PathPercent)
 constexpr int kMaxEdgeResetLength = 15;                         // the path restart (Params::edgeReset.length)
-constexpr int kMinLrStoreBits = 4, kMaxLrStoreBits = 12;        // golden-only Params::lrStoreBits (0 = off)
-constexpr int kMaxAdCap = 255;                                  // AD term truncation (Params::adCap, 8 bits)
+constexpr int kMinLrStoreBits = 4, kMaxLrStoreBits = 12;
+constexpr int kMaxMinDisparity =
+    255;  // Params::minDisparity (dmin), 0 .. 255        // golden-only Params::lrStoreBits (0 = off)
+constexpr int kMaxAdCap = 255;  // AD term truncation (Params::adCap, 8 bits)
 constexpr int kAdShift =
     3;  // AD term = adWeight * min(AD, adCap) >> kAdShift                 // keeps kPathWeightSum * (Cmax + P2') < 2^16
 
@@ -138,6 +140,9 @@ struct Params {
   // The path restart at strong edges (in the core with sgm_top EDGE_RESET = 1): T 40, R 6,
   // every path but 90 degrees (docs/notes/accuracy-pool.md, "The path restart at strong edges").
   EdgeReset edgeReset{40, 6, {1, 1, 0, 1, 1}};
+  // The minimum disparity dmin (docs/algorithm.md section 3): the search covers dmin .. dmin + D - 1
+  // (left x against right x - dmin - d) and the output is the true disparity. The core has none yet.
+  int minDisparity = 0;
   // Golden-only experiments (issue 15, docs/algorithm.md section 12): NOT in the RTL,
   // every one off by default, so Params{} and the presets stay bit-exact with the core.
   bool linearSubpixel = false;  // sub-pixel by the equiangular (V) fit instead of the parabola

@@ -8,6 +8,16 @@
 
 namespace sgm {
 
+namespace {
+
+// Section 3, the minimum disparity: C(x, d) of the search dmin .. dmin + D - 1 is the cost at
+// dmin + d of a search over dmin + D disparities (wide holds that row, W x (dmin + D)).
+void keepFromMinDisparity(const uint8_t* wide, int x0, int x1, int nd, int dmin, uint8_t* row) {
+  for (int x = x0; x < x1; ++x) std::copy_n(wide + size_t(x) * (nd + dmin) + dmin, nd, row + size_t(x) * nd);
+}
+
+}  // namespace
+
 void checkInput(const cv::Mat& gl, const cv::Mat& gr, const Params& params) {
   params.validate();
   if (gl.type() != CV_8UC1 || gr.type() != CV_8UC1) throw Error("internal: pipeline needs 8-bit gray images");
@@ -22,10 +32,18 @@ void checkInput(const cv::Mat& gl, const cv::Mat& gr, const Params& params) {
 PipelineStages runPipelineStages(const cv::Mat& gl, const cv::Mat& gr, const Params& params) {
   checkInput(gl, gr, params);
   PipelineStages st;
-  st.cost = computeCost(gl, gr, params.mode, params.disparities, params.census);
+  const int searched = params.minDisparity + params.disparities;
+  CostVolume wide = computeCost(gl, gr, params.mode, searched, params.census);
   if (params.adWeight)
     for (int y = 0; y < gl.rows; ++y)
-      addAdTerm(gl, gr, y, 0, gl.cols, params.disparities, params.adWeight, params.adCap, st.cost.at(0, y));
+      addAdTerm(gl, gr, y, 0, gl.cols, searched, params.adWeight, params.adCap, wide.at(0, y));
+  if (params.minDisparity) {
+    st.cost = CostVolume(gl.cols, gl.rows, params.disparities);
+    for (int y = 0; y < gl.rows; ++y)
+      keepFromMinDisparity(wide.at(0, y), 0, gl.cols, params.disparities, params.minDisparity, st.cost.at(0, y));
+  } else {
+    st.cost = std::move(wide);
+  }
   st.aggregated = aggregateCost(st.cost, gl, params.p1, params.p2, params.p2Mode, params.weights,
                                 params.rightPathWeight, params.mgm, params.rightPathBlock, params.p1PathPercent.data(),
                                 params.edgeReset, params.lrStoreBits);
@@ -44,18 +62,23 @@ DisparityMap runPipeline(const cv::Mat& gl, const cv::Mat& gr, const Params& par
   std::vector<Census> censusLeft, censusRight;
   CostVolume volume;
   CostRowFn costRow;
+  const int dmin = params.minDisparity, searched = dmin + nd;
   if (isHardwareMode(params.mode)) {
     censusLeft = censusTransform(gl, params.census);
     censusRight = censusTransform(gr, params.census);
     costRow = [&](int y, int x0, int x1, uint8_t* row) {
-      censusCostRow(params.mode, params.census, &censusLeft[size_t(y) * w], &censusRight[size_t(y) * w], w, x0, x1, nd,
-                    row);
-      if (params.adWeight) addAdTerm(gl, gr, y, x0, x1, nd, params.adWeight, params.adCap, row);
+      thread_local std::vector<uint8_t> wide;
+      uint8_t* out = row;
+      if (dmin) wide.resize(size_t(w) * searched), out = wide.data();
+      censusCostRow(params.mode, params.census, &censusLeft[size_t(y) * w], &censusRight[size_t(y) * w], w, x0, x1,
+                    searched, out);
+      if (params.adWeight) addAdTerm(gl, gr, y, x0, x1, searched, params.adWeight, params.adCap, out);
+      if (dmin) keepFromMinDisparity(out, x0, x1, nd, dmin, row);
     };
   } else {
-    volume = computeCost(gl, gr, params.mode, nd, params.census);
+    volume = computeCost(gl, gr, params.mode, searched, params.census);
     costRow = [&](int y, int x0, int x1, uint8_t* row) {
-      std::copy(volume.at(x0, y), volume.at(x0, y) + size_t(x1 - x0) * nd, row + size_t(x0) * nd);
+      keepFromMinDisparity(volume.at(0, y), x0, x1, nd, dmin, row);
     };
   }
   DisparityMap selected{cv::Mat(h, w, CV_16UC1), cv::Mat(h, w, CV_8UC1)};

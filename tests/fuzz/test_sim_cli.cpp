@@ -114,6 +114,8 @@ TEST_F(SgmSimCli, ParametersTheBuildOrTheCoreCannotTake) {
       {{"--snap", "on", "--snap-edge", "96"}, "golden-only experiments, not in the core"},
       {{"--snap-edge", "256"}, "--snap-edge=256 out of range"},
       {{"--lr-store-bits", "8"}, "golden-only experiments, not in the core"},
+      {{"--dmin", "4"}, "the core has no minimum disparity"},
+      {{"--dmin", "256"}, "--dmin=256 out of range"},
       {{"--lr-store-bits", "3"}, "stored Lr bits 3 out of range"},
       {{"--edge-reset", "256"}, "--edge-reset=256 out of range"},
       {{"--edge-reset", "48", "--edge-reset-len", "0"}, "--edge-reset-len=0 out of range"},
