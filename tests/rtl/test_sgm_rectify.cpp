@@ -116,11 +116,13 @@ Result runFrame(Top& top, const Frame& f, std::mt19937& rng, double gap, double 
     if (top->m_tvalid_o && top->m_tready_i) {
       const int y = int(out / w), x = int(out % w);
       const int gray = want.gray.at<uint8_t>(y, x), outside = want.valid.at<uint8_t>(y, x) ? 0 : 1;
-      const std::string where = f.name + " stage sgm_rectify pixel (x=" + std::to_string(x) + ", y=" + std::to_string(y) + ")";
+      const std::string where = f.name + " stage sgm_rectify pixel (x=" + std::to_string(x) +
+                                ", y=" + std::to_string(y) + ")";
       if (check && r.mismatch.empty()) {
         if (int(top->m_tdata_o) != gray || int(top->m_outside_o) != outside)
           r.mismatch = where + ": expected gray " + std::to_string(gray) + " outside " + std::to_string(outside) +
-                       ", got " + std::to_string(int(top->m_tdata_o)) + " outside " + std::to_string(int(top->m_outside_o));
+                       ", got " + std::to_string(int(top->m_tdata_o)) + " outside " +
+                       std::to_string(int(top->m_outside_o));
       }
       if (r.mismatch.empty() && (bool(top->m_tuser_o) != (out == 0) || bool(top->m_tlast_o) != (x == w - 1)))
         r.mismatch = where + ": tuser " + std::to_string(int(top->m_tuser_o)) + " tlast " +
@@ -163,7 +165,8 @@ TEST_F(SgmRectify, FramesBackToBackEveryPixelAgainstTheGoldenModel) {
   Top top("sgm_rectify_frames");
   start(top);
   std::mt19937 rng(11);
-  const int sizes[][2] = {{kMaxWidth, kMaxHeight}, {kMaxWidth - 3, kMaxHeight / 2 + 1}, {17, 9}, {kMaxWidth / 2 + 5, 24}};
+  const int sizes[][2] = {
+      {kMaxWidth, kMaxHeight}, {kMaxWidth - 3, kMaxHeight / 2 + 1}, {17, 9}, {kMaxWidth / 2 + 5, 24}};
   for (int pass = 0; pass < 2; ++pass)
     for (const auto& size : sizes) {
       const double gap = pass ? 0.3 : 0.0, stall = pass ? 0.3 : 0.0;
@@ -221,7 +224,9 @@ TEST_F(SgmRectify, MeshSwapsOnlyAtTheStartOfFrame) {
       top.tick();
       if (took) ++in;
       if (written <= nodes) ++written;
-      ASSERT_EQ(bool(top->mesh_swap_pending_o), written > nodes) << "swap pending after the request only, written " << written << " of " << nodes << ", in " << in << ", out " << out;
+      ASSERT_EQ(bool(top->mesh_swap_pending_o), written > nodes)
+          << "swap pending after the request only, written " << written << " of " << nodes << ", in " << in << ", out "
+          << out;
     }
     top->mesh_we_i = 0, top->mesh_swap_i = 0, top->s_tvalid_i = 0;
   }
