@@ -27,6 +27,9 @@
 //   [90:83]    EDGE_RESET.T               EDGE_RESET[7:0]
 //   [94:91]    EDGE_RESET.LEN             EDGE_RESET[11:8]
 //   [99:95]    EDGE_RESET.PATHS           EDGE_RESET[20:16]
+//   [101:100]  OUTPUT.MODE                OUTPUT[1:0]
+//   [125:102]  DEPTH_FOCAL.F              DEPTH_FOCAL[23:0]
+//   [149:126]  DEPTH_BASELINE.B           DEPTH_BASELINE[23:0]
 //
 // Declarations of the compilation unit, guarded: every file that reads the word includes
 // this file at its top, before its module (the ports use CFG_W). Localparams and functions
@@ -34,7 +37,7 @@
 `ifndef SGM_CFG_SVH
 `define SGM_CFG_SVH
 
-localparam int CFG_W = 100;  // bits of the word
+localparam int CFG_W = 150;  // bits of the word
 
 localparam int CFG_FRAME_SIZE_WIDTH_LSB = 0;
 localparam int CFG_FRAME_SIZE_WIDTH_W = 16;
@@ -136,11 +139,26 @@ localparam int CFG_EDGE_RESET_PATHS_W = 5;
 localparam int CFG_EDGE_RESET_PATHS_MIN = 0;
 localparam int CFG_EDGE_RESET_PATHS_MAX = 31;
 
+localparam int CFG_OUTPUT_MODE_LSB = 100;
+localparam int CFG_OUTPUT_MODE_W = 2;
+localparam int CFG_OUTPUT_MODE_MIN = 0;
+localparam int CFG_OUTPUT_MODE_MAX = 1;
+
+localparam int CFG_DEPTH_FOCAL_F_LSB = 102;
+localparam int CFG_DEPTH_FOCAL_F_W = 24;
+localparam int CFG_DEPTH_FOCAL_F_MIN = 0;
+localparam int CFG_DEPTH_FOCAL_F_MAX = 16777215;
+
+localparam int CFG_DEPTH_BASELINE_B_LSB = 126;
+localparam int CFG_DEPTH_BASELINE_B_W = 24;
+localparam int CFG_DEPTH_BASELINE_B_MIN = 0;
+localparam int CFG_DEPTH_BASELINE_B_MAX = 16777215;
+
 // The word of the golden model's defaults (every field's DEFAULT: what a build with every
 // lever runs, sgm::Params{}) and of the four-path preset (FOUR_PATH: any other build), each
 // with the frame size 0: set FRAME_SIZE's fields to use one (docs/integration.md).
-localparam logic [CFG_W-1:0] CFG_DEFAULT = 100'hDB140F29D4314C81800000000;
-localparam logic [CFG_W-1:0] CFG_FOUR_PATH = 100'hFA800039D0014641200000000;
+localparam logic [CFG_W-1:0] CFG_DEFAULT = 150'h0000000000000DB140F29D4314C81800000000;
+localparam logic [CFG_W-1:0] CFG_FOUR_PATH = 150'h0000000000000FA800039D0014641200000000;
 
 // Every field of c at most its MAX (the fields whose legal range ends below their top). The
 // lower bounds above 0, the bounds of the build and the rules across fields are
@@ -148,7 +166,8 @@ localparam logic [CFG_W-1:0] CFG_FOUR_PATH = 100'hFA800039D0014641200000000;
 function automatic logic cfg_below_max(input logic [CFG_W-1:0] c);
   cfg_below_max = c[CFG_PENALTY_RIGHT_WEIGHT_LSB +: CFG_PENALTY_RIGHT_WEIGHT_W] <= 4'd8 &&
                   c[CFG_CONFIG_MODE_LSB +: CFG_CONFIG_MODE_W] <= 2'd2 &&
-                  c[CFG_CONFIG_UNIQUENESS_LSB +: CFG_CONFIG_UNIQUENESS_W] <= 7'd99;
+                  c[CFG_CONFIG_UNIQUENESS_LSB +: CFG_CONFIG_UNIQUENESS_W] <= 7'd99 &&
+                  c[CFG_OUTPUT_MODE_LSB +: CFG_OUTPUT_MODE_W] <= 2'd1;
 endfunction
 
 // Every field whose build parameter (NEEDS) the build lacks at 0: has_<need> is 1 when the
@@ -158,11 +177,13 @@ function automatic logic cfg_levers_built(
     input logic has_ad_term,
     input logic has_right_block,
     input logic has_uniqueness,
-    input logic has_edge_reset);
+    input logic has_edge_reset,
+    input logic has_depth);
   cfg_levers_built = (has_ad_term || c[CFG_PENALTY_AD_WEIGHT_LSB +: CFG_PENALTY_AD_WEIGHT_W] == 4'd0) &&
                      (has_right_block || c[CFG_PENALTY_RIGHT_WEIGHT_LSB +: CFG_PENALTY_RIGHT_WEIGHT_W] == 4'd0) &&
                      (has_uniqueness || c[CFG_CONFIG_UNIQUENESS_LSB +: CFG_CONFIG_UNIQUENESS_W] == 7'd0) &&
-                     (has_edge_reset || c[CFG_EDGE_RESET_T_LSB +: CFG_EDGE_RESET_T_W] == 8'd0);
+                     (has_edge_reset || c[CFG_EDGE_RESET_T_LSB +: CFG_EDGE_RESET_T_W] == 8'd0) &&
+                     (has_depth || c[CFG_OUTPUT_MODE_LSB +: CFG_OUTPUT_MODE_W] == 2'd0);
 endfunction
 
 `endif  // SGM_CFG_SVH

@@ -29,13 +29,16 @@ localparam logic [ADDR_W-1:0] ADDR_LAST_SIZE    /*verilator public*/ = ADDR_W'('
 localparam logic [ADDR_W-1:0] ADDR_EDGE_RESET   /*verilator public*/ = ADDR_W'('h44);
 localparam logic [ADDR_W-1:0] ADDR_IRQ_ENABLE   /*verilator public*/ = ADDR_W'('h48);
 localparam logic [ADDR_W-1:0] ADDR_IRQ_STATUS   /*verilator public*/ = ADDR_W'('h4C);
+localparam logic [ADDR_W-1:0] ADDR_OUTPUT       /*verilator public*/ = ADDR_W'('h50);
+localparam logic [ADDR_W-1:0] ADDR_DEPTH_FOCAL  /*verilator public*/ = ADDR_W'('h54);
+localparam logic [ADDR_W-1:0] ADDR_DEPTH_BASELINE /*verilator public*/ = ADDR_W'('h58);
 
 localparam int ID_VERSION_LSB /*verilator public*/ = 0;
 localparam int ID_VERSION_W = 8;
 localparam int ID_MAGIC_LSB /*verilator public*/ = 8;
 localparam int ID_MAGIC_W = 24;
 localparam logic [31:0] ID_MASK = 32'hFFFFFFFF;
-localparam logic [31:0] ID_VALUE /*verilator public*/ = {24'h53474D, 8'd5};
+localparam logic [31:0] ID_VALUE /*verilator public*/ = {24'h53474D, 8'd6};
 localparam int D_VALUE_LSB /*verilator public*/ = 0;
 localparam int D_VALUE_W = 32;
 localparam logic [31:0] D_MASK = 32'hFFFFFFFF;
@@ -69,10 +72,12 @@ localparam int FEATURES_RIGHT_PATH_LSB /*verilator public*/ = 2;
 localparam int FEATURES_RIGHT_PATH_W = 1;
 localparam int FEATURES_EDGE_RESET_LSB /*verilator public*/ = 3;
 localparam int FEATURES_EDGE_RESET_W = 1;
+localparam int FEATURES_DEPTH_LSB /*verilator public*/ = 4;
+localparam int FEATURES_DEPTH_W = 1;
 localparam int FEATURES_RIGHT_BLOCK_LSB /*verilator public*/ = 8;
 localparam int FEATURES_RIGHT_BLOCK_W = 4;
-localparam logic [31:0] FEATURES_MASK = 32'h00000F0F;
-localparam logic [31:0] FEATURES_VALUE /*verilator public*/ = {20'd0, 4'(RIGHT_BLOCK != 0 ? $clog2(RIGHT_BLOCK) : 0), 4'd0, 1'(EDGE_RESET != 0), 1'(RIGHT_BLOCK != 0), 1'(AD_TERM != 0), 1'(UNIQUENESS != 0)};
+localparam logic [31:0] FEATURES_MASK = 32'h00000F1F;
+localparam logic [31:0] FEATURES_VALUE /*verilator public*/ = {20'd0, 4'(RIGHT_BLOCK != 0 ? $clog2(RIGHT_BLOCK) : 0), 3'd0, 1'(DEPTH != 0), 1'(EDGE_RESET != 0), 1'(RIGHT_BLOCK != 0), 1'(AD_TERM != 0), 1'(UNIQUENESS != 0)};
 localparam int CTRL_ENABLE_LSB /*verilator public*/ = 0;
 localparam int CTRL_ENABLE_W = 1;
 localparam int CTRL_SOFT_RESET_LSB /*verilator public*/ = 1;
@@ -168,6 +173,15 @@ localparam int IRQ_STATUS_FRAME_DONE_W = 1;
 localparam int IRQ_STATUS_ERROR_LSB /*verilator public*/ = 1;
 localparam int IRQ_STATUS_ERROR_W = 1;
 localparam logic [31:0] IRQ_STATUS_MASK = 32'h00000003;
+localparam int OUTPUT_MODE_LSB /*verilator public*/ = 0;
+localparam int OUTPUT_MODE_W = 2;
+localparam logic [31:0] OUTPUT_MASK = 32'h00000003;
+localparam int DEPTH_FOCAL_F_LSB /*verilator public*/ = 0;
+localparam int DEPTH_FOCAL_F_W = 24;
+localparam logic [31:0] DEPTH_FOCAL_MASK = 32'h00FFFFFF;
+localparam int DEPTH_BASELINE_B_LSB /*verilator public*/ = 0;
+localparam int DEPTH_BASELINE_B_W = 24;
+localparam logic [31:0] DEPTH_BASELINE_MASK = 32'h00FFFFFF;
 
 localparam int MIN_HEIGHT = 9;  // shortest frame of every build (sgm_stream_ctrl)
 localparam int ERROR_KINDS = 4;  // error kinds (ERROR, ERROR_COUNT)
@@ -179,8 +193,14 @@ function automatic logic [CFG_W-1:0] cfg_from_regs(
     input logic [31:0] reg_frame_size,
     input logic [31:0] reg_penalty,
     input logic [31:0] reg_config,
-    input logic [31:0] reg_edge_reset);
+    input logic [31:0] reg_edge_reset,
+    input logic [31:0] reg_output,
+    input logic [31:0] reg_depth_focal,
+    input logic [31:0] reg_depth_baseline);
   cfg_from_regs = {
+    reg_depth_baseline[23:0],    // DEPTH_BASELINE.B, word [149:126]
+    reg_depth_focal[23:0],       // DEPTH_FOCAL.F, word [125:102]
+    reg_output[1:0],             // OUTPUT.MODE, word [101:100]
     reg_edge_reset[20:16],       // EDGE_RESET.PATHS, word [99:95]
     reg_edge_reset[11:8],        // EDGE_RESET.LEN, word [94:91]
     reg_edge_reset[7:0],         // EDGE_RESET.T, word [90:83]
@@ -210,7 +230,8 @@ function automatic logic reg_defined(input logic [ADDR_W-1:0] a);
     ADDR_CENSUS, ADDR_MIN_WIDTH, ADDR_LANES, ADDR_FEATURES,
     ADDR_CTRL, ADDR_FRAME_SIZE, ADDR_PENALTY, ADDR_CONFIG,
     ADDR_STATUS, ADDR_FRAMES, ADDR_ERROR, ADDR_ERROR_COUNT,
-    ADDR_LAST_SIZE, ADDR_EDGE_RESET, ADDR_IRQ_ENABLE, ADDR_IRQ_STATUS:
+    ADDR_LAST_SIZE, ADDR_EDGE_RESET, ADDR_IRQ_ENABLE, ADDR_IRQ_STATUS,
+    ADDR_OUTPUT, ADDR_DEPTH_FOCAL, ADDR_DEPTH_BASELINE:
       reg_defined = 1'b1;
     default: reg_defined = 1'b0;
   endcase

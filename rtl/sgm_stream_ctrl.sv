@@ -20,7 +20,7 @@
 // for a run-time lever the build lacks (a uniqueness ratio other than 0 with
 // UNIQUENESS = 0, an AD weight other than 0 with AD_TERM = 0, a fifth-path weight
 // other than 0 with RIGHT_PATH = 0, a path restart threshold other than 0 with
-// EDGE_RESET = 0), a fifth-path weight above 8 or a path restart with length 0.
+// EDGE_RESET = 0, a depth output with DEPTH = 0), a fifth-path weight above 8 or a path restart with length 0.
 //
 // The configuration is one packed word, the frame configuration word cfg_i
 // (rtl/sgm_cfg.svh, generated from regmap/sgm_regmap.def): sampled whole with the
@@ -41,10 +41,10 @@
 // FRAME_SIZE's 16-bit fields can hold, 65535), NB census bits (the
 // cost word holds 0 .. 2^CBITS - 1, CBITS = bits of 2 NB), XW/YW column/row
 // bits (rows count on past the frame while flushing: MAX_HEIGHT + flush rows
-// must fit YW bits), DW disparity bits (DW <= 15), FIFO_DEPTH,
-// UNIQUENESS, AD_TERM, RIGHT_PATH and EDGE_RESET (sgm_top's: whether the build
-// has the uniqueness test, the AD term, the fifth path, the path restart at strong
-// edges; 0 rejects frames that set them).
+// must fit YW bits), FIFO_DEPTH, UNIQUENESS, AD_TERM, RIGHT_PATH, EDGE_RESET and
+// DEPTH (sgm_top's: whether the build has the uniqueness test, the AD term, the fifth
+// path, the path restart at strong edges, the depth output; 0 rejects frames that set
+// them).
 // Throughput: one beat per cycle in both directions when the output is ready.
 module sgm_stream_ctrl #(
   parameter int MAX_WIDTH  = 1280,
@@ -53,12 +53,12 @@ module sgm_stream_ctrl #(
   parameter int NB         = 44,
   parameter int XW         = 11,
   parameter int YW         = 11,
-  parameter int DW         = 10,
   parameter int FIFO_DEPTH = 4,
   parameter int UNIQUENESS = 1,
   parameter int AD_TERM    = 1,
   parameter int RIGHT_PATH = 0,
-  parameter int EDGE_RESET = 0
+  parameter int EDGE_RESET = 0,
+  parameter int DEPTH      = 0
 ) (
   input  wire                 clk_i,
   input  wire                 rst_ni,
@@ -68,7 +68,7 @@ module sgm_stream_ctrl #(
   input  wire                 s_tlast_i,
   input  wire                 s_tvalid_i,
   output logic                s_tready_o,
-  // Output stream: tdata = {valid, zeros, disparity[DW-1:0]} (disparity in 1/16 px).
+  // Output stream: tdata = the pipeline's output word (res_word_i).
   output logic [15:0]         m_tdata_o,
   output logic                m_tuser_o,
   output logic                m_tlast_o,
@@ -92,8 +92,7 @@ module sgm_stream_ctrl #(
   output logic                sof_o,         // the slot is the frame's first: (col_o, row_o) = (0, 0)
   // Pipeline result of the current slot: a frame pixel when res_valid_i.
   input  wire                 res_valid_i,
-  input  wire  [DW-1:0]       res_disp_i,
-  input  wire                 res_ok_i,      // the pixel's validity flag
+  input  wire  [15:0]         res_word_i,    // the output word (sgm_depth: disparity or depth)
   // Status.
   output logic                busy_o,        // a frame is in flight
   output logic                frame_done_o,  // one-cycle pulse: last output beat of a frame queued
@@ -127,9 +126,6 @@ module sgm_stream_ctrl #(
   if (!(YW >= $clog2(MAX_HEIGHT + 16))) begin : g_bad_yw
     $error("sgm_stream_ctrl: YW = %0d: YW must hold MAX_HEIGHT = %0d and the flush rows (at least $clog2(MAX_HEIGHT + 16) bits)", YW, MAX_HEIGHT);
   end
-  if (!(DW >= 5 && DW <= 15)) begin : g_bad_dw
-    $error("sgm_stream_ctrl: DW = %0d: DW must be from 5 to 15 (4 fractional bits; the output word has 15 data bits)", DW);
-  end
   if (!(FIFO_DEPTH >= 2)) begin : g_bad_fifo_depth
     $error("sgm_stream_ctrl: FIFO_DEPTH = %0d: FIFO_DEPTH must be at least 2", FIFO_DEPTH);
   end
@@ -144,6 +140,9 @@ module sgm_stream_ctrl #(
   end
   if (!(EDGE_RESET == 0 || EDGE_RESET == 1)) begin : g_bad_edge_reset
     $error("sgm_stream_ctrl: EDGE_RESET = %0d: EDGE_RESET must be 0 or 1", EDGE_RESET);
+  end
+  if (!(DEPTH == 0 || DEPTH == 1)) begin : g_bad_depth
+    $error("sgm_stream_ctrl: DEPTH = %0d: DEPTH must be 0 or 1", DEPTH);
   end
 `endif
 
@@ -204,7 +203,7 @@ module sgm_stream_ctrl #(
                 cfg_p2 >= cfg_p1 && ad_fits &&
                 (cfg_reset_t == 8'd0 || 32'(cfg_reset_len) >= CFG_EDGE_RESET_LEN_MIN) &&
                 cfg_below_max(cfg_i) &&
-                cfg_levers_built(cfg_i, AD_TERM != 0, RIGHT_PATH != 0, UNIQUENESS != 0, EDGE_RESET != 0);
+                cfg_levers_built(cfg_i, AD_TERM != 0, RIGHT_PATH != 0, UNIQUENESS != 0, EDGE_RESET != 0, DEPTH != 0);
   logic [CFG_W:0] pend_q [0:1];  // {in range, the word}
   always_ff @(posedge clk_i) begin
     if (in_push && s_tuser_i) pend_q[in_wr_q] <= {cfg_ok, cfg_i};
@@ -436,8 +435,7 @@ module sgm_stream_ctrl #(
       wr_q    <= '0;
     end else begin
       if (push) begin
-        fifo_q[wr_q] <= {out_x_q == '0 && out_y_q == '0, out_eol_q, res_ok_i,
-                         {(15 - DW){1'b0}}, res_disp_i};
+        fifo_q[wr_q] <= {out_x_q == '0 && out_y_q == '0, out_eol_q, res_word_i};
         wr_q         <= wr_q == FAW'(FIFO_DEPTH - 1) ? '0 : wr_q + 1'b1;
       end
       if (pop) rd_q <= rd_q == FAW'(FIFO_DEPTH - 1) ? '0 : rd_q + 1'b1;

@@ -7,7 +7,8 @@
 //
 //   s_axis (left + right gray) -> sgm_stream_ctrl [-> sgm_lane_deal, LANES > 1] -> 2 x sgm_census_unit
 //   -> sgm_cost_volume (D PEs) -> sgm_path_engine (4 paths, S) -> sgm_wta
-//   -> sgm_lr_check -> sgm_hole_fill -> sgm_edge_snap -> sgm_median5x5 -> sgm_stream_ctrl -> m_axis
+//   -> sgm_lr_check -> sgm_hole_fill -> sgm_edge_snap -> sgm_median5x5 [-> sgm_depth, DEPTH = 1]
+//   -> sgm_stream_ctrl -> m_axis
 //
 // Parameters: D disparities (a power of two from 16 to 256; built and tested at 16, 32,
 // 64, 128), MAX_WIDTH (>= MIN_FRAME_WIDTH), MAX_HEIGHT (>= 9) (public to
@@ -35,6 +36,11 @@
 // EDGE_RESET = 1 builds the path restart at strong edges (docs/rtl.md; run-time
 // EDGE_RESET.T, 0 = off, LEN and PATHS; the default); 0 leaves it out, and a frame
 // with T != 0 is dropped with error_o[3].
+// DEPTH = 1 builds the depth output (sgm_depth, docs/algorithm.md section 10b): run-time
+// OUTPUT.MODE selects the output word, the disparity or the depth in mm from
+// DEPTH_FOCAL.F and DEPTH_BASELINE.B, exact to the LSB; it adds its LATENCY (20 slots)
+// behind the median. 0 leaves it out (the default), and a frame that asks for depth is
+// dropped with error_o[3].
 // Configuration: cfg_i, the frame configuration word (rtl/sgm_cfg.svh, generated from
 // regmap/sgm_regmap.def; its fields are the read-write fields of sgm_axi's FRAME_SIZE,
 // PENALTY, CONFIG and EDGE_RESET, docs/registers.md), taken at each start of frame by
@@ -59,6 +65,7 @@ module sgm_top #(
   parameter int AD_TERM    /*verilator public*/ = 1,  // the AD term is built (0: not)
   parameter int RIGHT_BLOCK /*verilator public*/ = 64,  // the fifth path's block B (a power of two >= 2), 0: not built
   parameter int EDGE_RESET /*verilator public*/ = 1,  // the path restart at strong edges is built (0: not)
+  parameter int DEPTH      /*verilator public*/ = 0,  // the depth output is built (0: not)
   localparam int XW        = $clog2(MAX_WIDTH + 1),
   // Lanes (docs/lanes.md "The top's wiring at K lanes"). The engine's
   // SKEW (sgm_path_engine owns the formula; mirrored here for the deal, checked
@@ -107,8 +114,8 @@ module sgm_top #(
   input  wire          s_tlast_i,   // end of line
   input  wire          s_tvalid_i,
   output logic         s_tready_o,
-  // Output stream: one disparity per beat, same framing.
-  output logic [15:0]  m_tdata_o,   // {valid, zeros, disparity x 16}
+  // Output stream: one word per beat, same framing.
+  output logic [15:0]  m_tdata_o,   // {valid, zeros, disparity x 16}, or the depth in mm (OUTPUT.MODE)
   output logic         m_tuser_o,
   output logic         m_tlast_o,
   output logic         m_tvalid_o,
@@ -157,6 +164,9 @@ module sgm_top #(
   if (!(EDGE_RESET == 0 || EDGE_RESET == 1)) begin : g_bad_edge_reset
     $error("sgm_top: EDGE_RESET = %0d: EDGE_RESET must be 0 or 1", EDGE_RESET);
   end
+  if (!(DEPTH == 0 || DEPTH == 1)) begin : g_bad_depth
+    $error("sgm_top: DEPTH = %0d: DEPTH must be 0 or 1", DEPTH);
+  end
   if (!(RIGHT_BLOCK == 0 || (RIGHT_BLOCK >= 2 && (RIGHT_BLOCK & (RIGHT_BLOCK - 1)) == 0))) begin : g_bad_right_block
     $error("sgm_top: RIGHT_BLOCK = %0d: RIGHT_BLOCK must be 0 (no fifth path) or a power of two >= 2", RIGHT_BLOCK);
   end
@@ -176,9 +186,9 @@ module sgm_top #(
   logic [CFG_W-1:0] cfg;
   wire  [CFG_FRAME_SIZE_WIDTH_W+CFG_FRAME_SIZE_HEIGHT_W-1:0] unused_cfg_size =
       {cfg[CFG_FRAME_SIZE_HEIGHT_LSB +: CFG_FRAME_SIZE_HEIGHT_W], cfg[CFG_FRAME_SIZE_WIDTH_LSB +: CFG_FRAME_SIZE_WIDTH_W]};
-  logic          lut_start, lut_ready;
-  logic          res_valid, res_ok;
-  logic [DW-1:0] res_disp;
+  logic          lut_start, lut_ready, lut_ready_core;
+  logic          res_valid;
+  logic [15:0]   res_word;
 
   sgm_stream_ctrl #(
     .MAX_WIDTH (MAX_WIDTH),
@@ -187,12 +197,12 @@ module sgm_top #(
     .NB        (NB),
     .XW        (XW),
     .YW        (RW),
-    .DW        (DW),
     .FIFO_DEPTH(4),
     .UNIQUENESS(UNIQUENESS),
     .AD_TERM   (AD_TERM),
     .RIGHT_PATH(RIGHT_PATH),
-    .EDGE_RESET(EDGE_RESET)
+    .EDGE_RESET(EDGE_RESET),
+    .DEPTH     (DEPTH)
   ) u_ctrl (
     .clk_i         (clk_i),
     .rst_ni        (rst_ni),
@@ -219,8 +229,7 @@ module sgm_top #(
     .row_o         (row0),
     .sof_o         (sof0),
     .res_valid_i   (res_valid),
-    .res_disp_i    (res_disp),
-    .res_ok_i      (res_ok),
+    .res_word_i    (res_word),
     .busy_o        (busy_o),
     .frame_done_o  (frame_done_o),
     .error_o       (error_o),
@@ -433,7 +442,7 @@ module sgm_top #(
       .p2_i        (cfg[CFG_PENALTY_P2_LSB +: CFG_PENALTY_P2_W]),
       .p2_mode_i   (cfg[CFG_CONFIG_P2_PAPER_LSB]),
       .lut_ready_i (lut_ready_paths),
-      .lut_ready_o (lut_ready),
+      .lut_ready_o (lut_ready_core),
       .cost_i      (cost),
       .gray_i      (gray2),
       .col_i       (col2),
@@ -443,7 +452,7 @@ module sgm_top #(
       .l5w_o       (l5w)
     );
   end else begin : g_four
-    assign lut_ready = lut_ready_paths;
+    assign lut_ready_core = lut_ready_paths;
     assign {cost_e, valid2_e} = {cost, valid2};
     assign {lane_col_e, lane_row_e, lane_centre_e, lane_nbr_e, lane_valid_e} =
            {lane_col, lane_row, lane_centre, lane_nbr, lane_valid};
@@ -637,6 +646,8 @@ module sgm_top #(
   );
 
   // ------------------------------------------------------------ median
+  logic [DW-1:0] med_disp;
+  logic          med_ok, med_valid;
   logic [XW-1:0] unused_col8;
   logic [RW-1:0] unused_row8;
 
@@ -652,12 +663,43 @@ module sgm_top #(
     .in_valid_i  (snap_valid),
     .col_i       (col7),
     .row_i       (row7),
-    .disp_o      (res_disp),
-    .valid_o     (res_ok),
+    .disp_o      (med_disp),
+    .valid_o     (med_ok),
     .col_o       (unused_col8),
     .row_o       (unused_row8),
-    .out_valid_o (res_valid)
+    .out_valid_o (med_valid)
   );
+
+  // ------------------------------------------------------------ output word
+  // With the depth output the frame's first slot also waits for K = F B (sgm_depth's
+  // ready_o: the P2 table's ready and its product's, which takes up to 24 cycles after
+  // lut_start). OUTPUT.MODE's upper bit is 0 in every frame the core takes (cfg_below_max).
+  if (DEPTH != 0) begin : g_depth
+    wire unused_mode_high = cfg[CFG_OUTPUT_MODE_LSB + 1];
+    sgm_depth #(.DW(DW)) u_depth (
+      .clk_i       (clk_i),
+      .rst_ni      (rst_ni),
+      .en_i        (en),
+      .depth_en_i  (cfg[CFG_OUTPUT_MODE_LSB]),
+      .focal_i     (cfg[CFG_DEPTH_FOCAL_F_LSB +: CFG_DEPTH_FOCAL_F_W]),
+      .baseline_i  (cfg[CFG_DEPTH_BASELINE_B_LSB +: CFG_DEPTH_BASELINE_B_W]),
+      .start_i     (lut_start),
+      .ready_i     (lut_ready_core),
+      .ready_o     (lut_ready),
+      .disp_i      (med_disp),
+      .valid_i     (med_ok),
+      .in_valid_i  (med_valid),
+      .word_o      (res_word),
+      .out_valid_o (res_valid)
+    );
+  end else begin : g_disparity
+    assign lut_ready = lut_ready_core;
+    assign res_word  = {med_ok, 15'(med_disp)};
+    assign res_valid = med_valid;
+    wire [CFG_OUTPUT_MODE_W+CFG_DEPTH_FOCAL_F_W+CFG_DEPTH_BASELINE_B_W-1:0] unused_cfg_depth =
+        {cfg[CFG_OUTPUT_MODE_LSB +: CFG_OUTPUT_MODE_W], cfg[CFG_DEPTH_FOCAL_F_LSB +: CFG_DEPTH_FOCAL_F_W],
+         cfg[CFG_DEPTH_BASELINE_B_LSB +: CFG_DEPTH_BASELINE_B_W]};
+  end
 
 endmodule
 `default_nettype wire

@@ -13,10 +13,11 @@
 # The tag names a build by every parameter that differs from sgm_top's default, in a fixed
 # order; D and MAX_WIDTH always:
 #
-#   d<D>-w<MAX_WIDTH>[-h<MAX_HEIGHT>][-c9x<CENSUS_H>][-k<LANES>][-u<UNIQUENESS>][-ad<AD_TERM>][-rb<RIGHT_BLOCK>][-er<EDGE_RESET>]
+#   d<D>-w<MAX_WIDTH>[-h<MAX_HEIGHT>][-c9x<CENSUS_H>][-k<LANES>][-u<UNIQUENESS>][-ad<AD_TERM>][-rb<RIGHT_BLOCK>][-er<EDGE_RESET>][-z<DEPTH>]
 #
 #   d64-w1280                 sgm_top's defaults (H 1024, 9x5 census, one lane, both levers,
-#                             the fifth path in blocks of 64, the path restart built)
+#                             the fifth path in blocks of 64, the path restart built, no
+#                             depth output)
 #   d64-w1024-k6-rb0-er0      the `make pnr` core (six lanes, four paths, no restart)
 #   d16-w128-u0-ad0-rb0-er0   the lean build
 #
@@ -38,8 +39,8 @@
 #   $(call core_spec_of,PREFIX)   the spec of the variables PREFIX<NAME> that are set
 #                                 (PNR_ -> PNR_D, PNR_MAX_WIDTH, ...; empty -> D, MAX_WIDTH, ...)
 
-CORE_PARAMS   := D MAX_WIDTH MAX_HEIGHT CENSUS_H LANES UNIQUENESS AD_TERM RIGHT_BLOCK EDGE_RESET
-CORE_DEFAULTS := D=64 MAX_WIDTH=1280 MAX_HEIGHT=1024 CENSUS_H=5 LANES=1 UNIQUENESS=1 AD_TERM=1 RIGHT_BLOCK=64 EDGE_RESET=1
+CORE_PARAMS   := D MAX_WIDTH MAX_HEIGHT CENSUS_H LANES UNIQUENESS AD_TERM RIGHT_BLOCK EDGE_RESET DEPTH
+CORE_DEFAULTS := D=64 MAX_WIDTH=1280 MAX_HEIGHT=1024 CENSUS_H=5 LANES=1 UNIQUENESS=1 AD_TERM=1 RIGHT_BLOCK=64 EDGE_RESET=1 DEPTH=0
 # The tag's letters (D and MAX_WIDTH always named; CENSUS_H as the window, c9x9).
 CORE_TAG_D := d
 CORE_TAG_MAX_WIDTH := w
@@ -50,6 +51,7 @@ CORE_TAG_UNIQUENESS := u
 CORE_TAG_AD_TERM := ad
 CORE_TAG_RIGHT_BLOCK := rb
 CORE_TAG_EDGE_RESET := er
+CORE_TAG_DEPTH := z
 
 core_empty      :=
 core_space      := $(core_empty) $(core_empty)
@@ -78,6 +80,7 @@ UNIQUENESS  ?= $(call core_default,UNIQUENESS)
 AD_TERM     ?= $(call core_default,AD_TERM)
 RIGHT_BLOCK ?= $(if $(filter paper four-path,$(PRESET)),0,$(call core_default,RIGHT_BLOCK))
 EDGE_RESET  ?= $(call core_default,EDGE_RESET)
+DEPTH       ?= $(call core_default,DEPTH)
 CENSUS      ?= $(if $(filter paper,$(PRESET)),9x9,9x5)
 CENSUS_H     = $(if $(filter 9x9,$(CENSUS)),9,$(if $(filter 9x5,$(CENSUS)),5,$(error CENSUS=$(CENSUS): expected 9x5 or 9x9)))
 # The build those knobs name (make sim, make synth; make bench at its own MAX_WIDTH).

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // sgm-sim: streams a stereo pair through the verilated sgm_top, runs the
 // golden model on the same pair in the same process, compares every output
-// pixel, and writes disparity PNGs, a side-by-side picture and report.json.
+// pixel, and writes disparity PNGs, a side-by-side picture and report.json (with
+// --output depth, a build with DEPTH = 1: the depth words as depth16.png and a depth
+// picture instead of the disparity pictures).
 #include "Vsgm_top.h"
 #include "Vsgm_top_sgm_top.h"
 #include "core_harness.hpp"
@@ -10,6 +12,7 @@
 #include "report_json.hpp"
 
 #include "sgm/cli_args.hpp"
+#include "sgm/depth.hpp"
 #include "sgm/image_io.hpp"
 #include "sgm/pipeline.hpp"
 
@@ -38,7 +41,8 @@ const char* kUsage =
     "usage: sgm-sim [--left L --right R [--gt G] [--gt-scale S]] [--out DIR] [--stall P] [--seed N]\n"
     "               [--frames N] [--preset default|four-path|paper] [pipeline options]\n"
     "Pipeline options as sgm-golden's (--d --p1 --p2 --mode --subpixel --lr --fill --snap\n"
-    "--median --census --p2-mode --weights; not the golden-only experiments); options after\n"
+    "--median --census --p2-mode --weights --output --focal --baseline; not the golden-only\n"
+    "experiments); options after\n"
     "--preset override it. The census window must be the build's (make sim CENSUS=9x9 or\n"
     "PRESET=paper builds 9x9).\n"
     "Without --left/--right runs the default scene: the Middlebury Aloe pair shipped by\n"
@@ -85,6 +89,9 @@ int main(int argc, char** argv) {
     if (params.minDisparity)
       throw Error("--dmin " + std::to_string(params.minDisparity) +
                   ": the core has no minimum disparity (give --dmin 0)");
+    const bool depthOut = params.output == OutputMode::kDepth;
+    if (depthOut && !Vsgm_top_sgm_top::DEPTH)
+      throw Error("this simulator is built without the depth output (make sim DEPTH=1 builds one)");
     if (params.edgeReset.threshold && !Vsgm_top_sgm_top::EDGE_RESET)
       throw Error("this simulator is built without the path restart (sgm_top EDGE_RESET = 0): give --edge-reset 0");
     if (params.rightPathWeight && params.rightPathBlock != kRightBlock)
@@ -134,7 +141,7 @@ int main(int argc, char** argv) {
     std::string firstMismatch;
     for (int k = 0; k < frames; ++k) {
       long m = 0;
-      const std::string text = tb::compareMaps(golden, outputs[k].map, "sgm_top output", &m);
+      const std::string text = tb::compareOutput(golden, params, outputs[k], "sgm_top output", &m);
       if (firstMismatch.empty() && !text.empty()) firstMismatch = "frame " + std::to_string(k) + ": " + text;
       mismatches += m;
     }
@@ -144,20 +151,26 @@ int main(int argc, char** argv) {
     const long pixels = long(w) * h;
 
     const float maxD = float(params.disparities - 1);
-    std::vector<std::pair<std::string, cv::Mat>> pictures = {
-        {out + "/disparity16.png", encodeDisparity16(rtl)},
-        {out + "/disparity8.png", encodeDisparity8(rtl, params.disparities)},
-        {out + "/disparity_color.png", encodeDisparityColor(rtl, params.disparities)}};
-    if (scene.hasGroundTruth())
-      pictures.push_back({out + "/sidebyside.png", eval::sideBySide(scene, eval::toFloat(rtl), maxD)});
+    std::vector<std::pair<std::string, cv::Mat>> pictures;
+    if (depthOut) {  // the core sent depth words: no disparity to draw or score
+      char title[96];
+      std::snprintf(title, sizeof title, "depth (f %.1f px, B %.1f mm)", params.focalQ8 / 256.0,
+                    params.baselineUm / 1000.0);
+      pictures = {{out + "/depth16.png", outputs[0].words},
+                  {out + "/depth_color.png", eval::depthPicture(outputs[0].words, title)}};
+    } else {
+      pictures = {{out + "/disparity16.png", encodeDisparity16(rtl)},
+                  {out + "/disparity8.png", encodeDisparity8(rtl, params.disparities)},
+                  {out + "/disparity_color.png", encodeDisparityColor(rtl, params.disparities)}};
+      if (scene.hasGroundTruth())
+        pictures.push_back({out + "/sidebyside.png", eval::sideBySide(scene, eval::toFloat(rtl), maxD)});
+    }
     if (mismatches) {  // where the core differs from the golden model: white
+      const cv::Mat expected = outputWords(golden, params);
       cv::Mat where(h, w, CV_8UC1);
       for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
-          where.at<uint8_t>(y, x) = rtl.disp.at<uint16_t>(y, x) != golden.disp.at<uint16_t>(y, x) ||
-                                            rtl.valid.at<uint8_t>(y, x) != golden.valid.at<uint8_t>(y, x)
-                                        ? 255
-                                        : 0;
+          where.at<uint8_t>(y, x) = outputs[0].words.at<uint16_t>(y, x) != expected.at<uint16_t>(y, x) ? 255 : 0;
       pictures.push_back({out + "/mismatch.png", where});
     }
 
@@ -180,6 +193,11 @@ int main(int argc, char** argv) {
     json.key("p2").integer(params.p2);
     json.key("p2_mode").string(p2ModeName(params.p2Mode));
     json.key("weights").string(pathWeightingName(params.weights));
+    json.key("output").string(outputModeName(params.output));
+    if (depthOut) {
+      json.key("focal_q8").integer(params.focalQ8);
+      json.key("baseline_um").integer(params.baselineUm);
+    }
     json.key("stall").real(stall);
     json.key("seed").integer(seed);
     json.key("cycles").integer(long(cycles));
@@ -190,7 +208,7 @@ int main(int argc, char** argv) {
     json.key("sim_seconds").real(seconds);
     json.key("frame_errors").integer(long(outputs[0].errors));
     std::optional<eval::ErrorFigures> figures;
-    if (scene.hasGroundTruth()) {
+    if (scene.hasGroundTruth() && !depthOut) {
       figures = eval::evaluate(eval::toFloat(rtl), scene);
       const eval::ErrorFigures& f = *figures;
       json.key("err_nonocc").real(f.errNonocc);

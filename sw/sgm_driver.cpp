@@ -25,6 +25,10 @@ uint32_t Driver::encodeEdgeReset(const FrameConfig& f) {
          SGM_PUT(EDGE_RESET_PATHS, f.edgeResetPaths);
 }
 
+uint32_t Driver::encodeOutput(const FrameConfig& f) { return SGM_PUT(OUTPUT_MODE, f.output); }
+uint32_t Driver::encodeDepthFocal(const FrameConfig& f) { return SGM_PUT(DEPTH_FOCAL_F, f.focalQ8); }
+uint32_t Driver::encodeDepthBaseline(const FrameConfig& f) { return SGM_PUT(DEPTH_BASELINE_B, f.baselineUm); }
+
 bool Driver::sizeFits(const Identity& id, uint32_t width, uint32_t height) {
   return width >= id.minWidth && width <= id.maxWidth && height >= SGM_FRAME_SIZE_HEIGHT_MIN && height <= id.maxHeight;
 }
@@ -33,7 +37,8 @@ bool Driver::featuresFit(const Identity& id, const FrameConfig& f) {
   return (f.uniqueness == 0 || (id.features & SGM_FEATURES_UNIQUENESS)) &&
          (f.adWeight == 0 || (id.features & SGM_FEATURES_AD_TERM)) &&
          (f.rightWeight == 0 || (id.features & SGM_FEATURES_RIGHT_PATH)) &&
-         (f.edgeReset == 0 || (id.features & SGM_FEATURES_EDGE_RESET));
+         (f.edgeReset == 0 || (id.features & SGM_FEATURES_EDGE_RESET)) &&
+         (f.output != SGM_OUTPUT_MODE_DEPTH || (id.features & SGM_FEATURES_DEPTH));
 }
 
 uint32_t Driver::rightBlock(const Identity& id) {
@@ -65,15 +70,20 @@ void Driver::configure(const FrameConfig& f) {
   write(SGM_REG_PENALTY, encodePenalty(f));
   write(SGM_REG_CONFIG, encodeConfig(f));
   write(SGM_REG_EDGE_RESET, encodeEdgeReset(f));
+  write(SGM_REG_OUTPUT, encodeOutput(f));
+  write(SGM_REG_DEPTH_FOCAL, encodeDepthFocal(f));
+  write(SGM_REG_DEPTH_BASELINE, encodeDepthBaseline(f));
   write(SGM_REG_CTRL, ctrl & ~SGM_CTRL_HOLD);
 }
 
 FrameConfig Driver::readConfig() {
   const uint32_t size = read(SGM_REG_FRAME_SIZE), penalty = read(SGM_REG_PENALTY), config = read(SGM_REG_CONFIG);
-  return decode(size, penalty, config, read(SGM_REG_EDGE_RESET));
+  const uint32_t edge = read(SGM_REG_EDGE_RESET), output = read(SGM_REG_OUTPUT);
+  return decode(size, penalty, config, edge, output, read(SGM_REG_DEPTH_FOCAL), read(SGM_REG_DEPTH_BASELINE));
 }
 
-FrameConfig Driver::decode(uint32_t size, uint32_t penalty, uint32_t config, uint32_t edge) {
+FrameConfig Driver::decode(uint32_t size, uint32_t penalty, uint32_t config, uint32_t edge, uint32_t output,
+                           uint32_t focal, uint32_t baseline) {
   FrameConfig f;
   f.width = SGM_GET(size, FRAME_SIZE_WIDTH);
   f.height = SGM_GET(size, FRAME_SIZE_HEIGHT);
@@ -95,6 +105,9 @@ FrameConfig Driver::decode(uint32_t size, uint32_t penalty, uint32_t config, uin
   f.edgeReset = SGM_GET(edge, EDGE_RESET_T);
   f.edgeResetLength = SGM_GET(edge, EDGE_RESET_LEN);
   f.edgeResetPaths = SGM_GET(edge, EDGE_RESET_PATHS);
+  f.output = SGM_GET(output, OUTPUT_MODE);
+  f.focalQ8 = SGM_GET(focal, DEPTH_FOCAL_F);
+  f.baselineUm = SGM_GET(baseline, DEPTH_BASELINE_B);
   return f;
 }
 

@@ -21,6 +21,7 @@
 #   SYNTH_AD_TERM    AD_TERM, the AD term built (1, the default) or not (0)
 #   SYNTH_RIGHT_BLOCK RIGHT_BLOCK, the fifth path's block (0, the default: not built)
 #   SYNTH_EDGE_RESET EDGE_RESET, the path restart at strong edges built (1) or not (0);
+#   SYNTH_DEPTH      DEPTH, the depth output built (1) or not (0; empty: sgm_top's default);
 #                    empty (the default): sgm_top's own default
 #   SYNTH_OUT        output directory of this target (created by make)
 #   SYNTH_DEFINES    Verilog macros to define, space-separated (the ECP5 flow:
@@ -47,6 +48,7 @@ set uniqueness [env_or SYNTH_UNIQUENESS 1]
 set ad_term    [env_or SYNTH_AD_TERM 1]
 set right_block [env_or SYNTH_RIGHT_BLOCK 0]
 set edge_reset [env_or SYNTH_EDGE_RESET ""]
+set depth      [env_or SYNTH_DEPTH ""]
 set out        [env_or SYNTH_OUT build/synth]
 set defines    [env_or SYNTH_DEFINES ""]
 
@@ -57,6 +59,7 @@ yosys read_verilog -sv {*}[lmap m $defines {string cat -D $m}] {*}[lsort [glob $
 yosys chparam -set D $d -set MAX_WIDTH $max_width -set MAX_HEIGHT $max_height -set CENSUS_H $census_h -set LANES $lanes \
   -set UNIQUENESS $uniqueness -set AD_TERM $ad_term -set RIGHT_BLOCK $right_block sgm_top
 if {$edge_reset ne ""} { yosys chparam -set EDGE_RESET $edge_reset sgm_top }
+if {$depth ne ""} { yosys chparam -set DEPTH $depth sgm_top }
 yosys hierarchy -check -top sgm_top
 yosys proc
 yosys tee -o $out/check.txt check

@@ -5,7 +5,7 @@
 // broken handshake or framing rule, or a core that stops moving, throws
 // sgm::Error naming the cycle and the rule. A frame may reset the core in its
 // middle (FrameInput::resetAfterBeats). The golden comparison is done by the
-// caller (compareMaps).
+// caller (compareMaps, compareOutput).
 //
 // The harness drives sgm_top's frame configuration word cfg_i when the model has it
 // (packed by tb/hardware_config.hpp from the generated table of the word); a model
@@ -21,6 +21,7 @@
 #include "port_bits.hpp"
 #include "verilated_top.hpp"
 
+#include "sgm/depth.hpp"
 #include "sgm/image_io.hpp"
 #include "sgm/params.hpp"
 
@@ -67,7 +68,8 @@ struct FrameInput {
 };
 
 struct FrameOutput {
-  DisparityMap map;           // what the core produced
+  DisparityMap map;           // what the core produced, read as disparity words (OUTPUT.MODE = DISPARITY)
+  cv::Mat words;              // the output words as they came (CV_16UC1)
   uint64_t firstInCycle = 0;  // cycle of the frame's first input handshake
   uint64_t lastOutCycle = 0;  // cycle of its last output handshake
   unsigned errors = 0;        // error_o when the frame was done
@@ -88,6 +90,31 @@ inline std::string compareMaps(const DisparityMap& expected, const DisparityMap&
         std::ostringstream msg;
         msg << "stage " << stage << ": first mismatch at (x=" << x << ", y=" << y << "): expected disparity " << ed
             << "/16 valid " << ev << ", got " << gd << "/16 valid " << gv;
+        first = msg.str();
+      }
+    }
+  if (mismatches) *mismatches = count;
+  return first;
+}
+
+// First differing output word of a frame against the golden model's map and the frame's
+// output mode (sgm::outputWords), as one line, or "" when equal. In disparity mode the
+// same as compareMaps; in depth mode the words, naming the stage sgm_depth.
+inline std::string compareOutput(const DisparityMap& golden, const Params& params, const FrameOutput& got,
+                                 const std::string& stage, long* mismatches = nullptr) {
+  if (params.output != OutputMode::kDepth) return compareMaps(golden, got.map, stage, mismatches);
+  const cv::Mat expected = outputWords(golden, params);
+  std::string first;
+  long count = 0;
+  for (int y = 0; y < expected.rows; ++y)
+    for (int x = 0; x < expected.cols; ++x) {
+      const int e = expected.at<uint16_t>(y, x), g = got.words.at<uint16_t>(y, x);
+      if (e == g) continue;
+      if (count++ == 0) {
+        std::ostringstream msg;
+        msg << "stage " << stage << " (sgm_depth, F " << params.focalQ8 << "/256 px, B " << params.baselineUm
+            << " um): first mismatch at (x=" << x << ", y=" << y << "): expected depth " << e << " mm (disparity "
+            << golden.disp.at<uint16_t>(y, x) << "/16 valid " << int(golden.valid.at<uint8_t>(y, x)) << "), got " << g;
         first = msg.str();
       }
     }
@@ -209,8 +236,7 @@ class CoreHarness {
       if (progress && (top_.cycles() & 0xfffff) == 0) progress(sink_.beats().size() - sinkStart, outputCount);
     }
     for (size_t k = begin; k < owing; ++k)
-      if (!frames[k].dropped)
-        out[k].map = decode(sinkStart + outFirst[k - begin], frames[k].left.cols, frames[k].left.rows);
+      if (!frames[k].dropped) decode(sinkStart + outFirst[k - begin], frames[k].left.cols, frames[k].left.rows, out[k]);
     if (resets) {
       top_->s_tvalid_i = 0;
       top_.reset();
@@ -257,14 +283,15 @@ class CoreHarness {
     for (size_t i = 0; i < word.size(); ++i) setWord(top_->cfg_i, int(i), word[i]);
   }
 
-  DisparityMap decode(size_t first, int w, int h) {
-    DisparityMap map{cv::Mat(h, w, CV_16UC1), cv::Mat(h, w, CV_8UC1)};
+  void decode(size_t first, int w, int h, FrameOutput& out) {
+    out.map = DisparityMap{cv::Mat(h, w, CV_16UC1), cv::Mat(h, w, CV_8UC1)};
+    out.words = cv::Mat(h, w, CV_16UC1);
     for (int i = 0; i < w * h; ++i) {
       const Beat& b = sink_.beats()[first + i];
-      map.disp.at<uint16_t>(i / w, i % w) = uint16_t(b.data & 0x7fff);
-      map.valid.at<uint8_t>(i / w, i % w) = uint8_t(b.data >> 15);
+      out.words.at<uint16_t>(i / w, i % w) = uint16_t(b.data);
+      out.map.disp.at<uint16_t>(i / w, i % w) = uint16_t(b.data & 0x7fff);
+      out.map.valid.at<uint8_t>(i / w, i % w) = uint8_t(b.data >> 15);
     }
-    return map;
   }
 
   VerilatedTop<Model> top_;

@@ -90,12 +90,18 @@ Params drawParams(Rng& rng) {
   p.edgeReset.threshold = rng.chance(0.5) ? 0 : rng.uniform(1, 160);
   p.edgeReset.length = rng.uniform(1, kMaxEdgeResetLength);
   for (int& on : p.edgeReset.paths) on = rng.chance(0.7);
+  // The depth output: a quarter of the frames, any f and B (the extremes now and then).
+  p.output = rng.chance(0.25) ? OutputMode::kDepth : OutputMode::kDisparity;
+  constexpr int kDepthParamMax = (1 << kDepthParamBits) - 1;
+  p.focalQ8 = rng.chance(0.1) ? (rng.chance(0.5) ? 1 : kDepthParamMax) : rng.uniform(1, kDepthParamMax);
+  p.baselineUm = rng.chance(0.1) ? (rng.chance(0.5) ? 0 : kDepthParamMax) : rng.uniform(1, kDepthParamMax);
   // A lever the build lacks (sgm_top UNIQUENESS / AD_TERM / EDGE_RESET = 0, RIGHT_BLOCK = 0)
   // stays off: drawn all the same, so that a case is the same in every build but for it.
   if (!Vsgm_top_sgm_top::UNIQUENESS) p.uniqueness = 0;
   if (!Vsgm_top_sgm_top::AD_TERM) p.adWeight = 0;
   if (!Vsgm_top_sgm_top::RIGHT_BLOCK) p.rightPathWeight = 0;
   if (!Vsgm_top_sgm_top::EDGE_RESET) p.edgeReset.threshold = 0;
+  if (!Vsgm_top_sgm_top::DEPTH) p.output = OutputMode::kDisparity;
   return p;
 }
 
@@ -107,6 +113,8 @@ std::string paramText(const Params& p) {
     << " uniqueness=" << p.uniqueness << " ad=" << p.adWeight << "/" << p.adCap << " right=" << p.rightPathWeight << "/"
     << p.rightPathBlock << " restart=" << p.edgeReset.threshold << "/" << p.edgeReset.length << "/";
   for (int on : p.edgeReset.paths) t << on;
+  t << " output=" << outputModeName(p.output);
+  if (p.output == OutputMode::kDepth) t << "/" << p.focalQ8 << "/" << p.baselineUm;
   return t.str();
 }
 
@@ -188,11 +196,13 @@ struct Totals {
 
 // Compares a good frame; "" or the first mismatch with the mismatch counts
 // against the golden stages (which stage the core's output agrees with).
-std::string checkGoodFrame(const tb::FrameInput& in, const tb::FrameOutput& out) {
+// result: the golden output map (what the core's words encode).
+std::string checkGoodFrame(const tb::FrameInput& in, const tb::FrameOutput& out, DisparityMap& result) {
   const PipelineStages golden = runPipelineStages(in.left, in.right, in.params);
+  result = golden.result;
   long mismatches = 0;
-  const std::string first = tb::compareMaps(golden.result, out.map, "sgm_top output", &mismatches);
-  if (first.empty()) return first;
+  const std::string first = tb::compareOutput(golden.result, in.params, out, "sgm_top output", &mismatches);
+  if (first.empty() || in.params.output == OutputMode::kDepth) return first;
   long afterLr = 0, afterFill = 0;
   tb::compareMaps(golden.selected, out.map, "", &afterLr);
   tb::compareMaps(golden.filled, out.map, "", &afterFill);
@@ -226,10 +236,10 @@ std::string runCase(const Case& c, Totals& totals) {
       ++totals.malformed;
       continue;
     }
-    const std::string mismatch = checkGoodFrame(f.input, outputs[k]);
+    DisparityMap map;  // the core's map: equal to the golden one, as checked
+    const std::string mismatch = checkGoodFrame(f.input, outputs[k], map);
     if (!mismatch.empty()) return where + mismatch;
-    totals.badNonocc +=
-        eval::evaluate(eval::toFloat(outputs[k].map), synth::toEvalScene(f.scene, "synthetic")).errNonocc;
+    totals.badNonocc += eval::evaluate(eval::toFloat(map), synth::toEvalScene(f.scene, "synthetic")).errNonocc;
     ++totals.goodFrames;
     totals.pixels += long(f.input.left.total());
     totals.combinations.insert(paramCombination(f.input.params));

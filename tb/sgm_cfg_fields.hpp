@@ -24,9 +24,9 @@ struct CfgField {
   uint32_t (*golden)(const Params& p, int w, int h);
 };
 
-constexpr int kCfgWidth = 100;  // CFG_W, SGM_CFG_W
+constexpr int kCfgWidth = 150;  // CFG_W, SGM_CFG_W
 
-inline const std::array<CfgField, 20> kCfgFields = {{
+inline const std::array<CfgField, 23> kCfgFields = {{
     {"FRAME_SIZE_WIDTH", 0x24, 0, 16, 0,
      []([[maybe_unused]] const Params& p, [[maybe_unused]] int w, [[maybe_unused]] int h) { return uint32_t(w); }},
     {"FRAME_SIZE_HEIGHT", 0x24, 16, 16, 16,
@@ -67,6 +67,12 @@ inline const std::array<CfgField, 20> kCfgFields = {{
      []([[maybe_unused]] const Params& p, [[maybe_unused]] int w, [[maybe_unused]] int h) { return uint32_t(p.edgeReset.length); }},
     {"EDGE_RESET_PATHS", 0x44, 16, 5, 95,
      []([[maybe_unused]] const Params& p, [[maybe_unused]] int w, [[maybe_unused]] int h) { return uint32_t(flagBits(p.edgeReset.paths)); }},
+    {"OUTPUT_MODE", 0x50, 0, 2, 100,
+     []([[maybe_unused]] const Params& p, [[maybe_unused]] int w, [[maybe_unused]] int h) { return uint32_t(int(p.output)); }},
+    {"DEPTH_FOCAL_F", 0x54, 0, 24, 102,
+     []([[maybe_unused]] const Params& p, [[maybe_unused]] int w, [[maybe_unused]] int h) { return uint32_t(p.focalQ8); }},
+    {"DEPTH_BASELINE_B", 0x58, 0, 24, 126,
+     []([[maybe_unused]] const Params& p, [[maybe_unused]] int w, [[maybe_unused]] int h) { return uint32_t(p.baselineUm); }},
 }};
 
 }  // namespace sgm::tb

@@ -29,7 +29,7 @@ REGRESS_CI_SEED    ?= 1
 REGRESS_CI_FRAMES  ?= 300
 REGRESS_VFLAGS     ?= -O3 --x-assign unique --x-initial unique
 REGRESS_CORE        = D=$(REGRESS_D) MAX_WIDTH=$(REGRESS_MAX_WIDTH) LANES=$(REGRESS_LANES)
-REGRESS_CI_CORE    := D=16 MAX_WIDTH=128
+REGRESS_CI_CORE    := D=16 MAX_WIDTH=128 DEPTH=1
 REGRESS_CI_K2_CORE := D=16 MAX_WIDTH=128 LANES=2
 REGRESS_BIN         = $(BIN)/sgm-regress-$(call core_tag,$(REGRESS_CORE))
 REGRESS_CI_BIN     := $(BIN)/sgm-regress-$(call core_tag,$(REGRESS_CI_CORE))

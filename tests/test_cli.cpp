@@ -4,6 +4,7 @@
 // must exit non-zero with exactly one stderr line "<tool>: error: ..." and
 // leave no output file behind.
 #include "sgm/cli_args.hpp"
+#include "sgm/depth.hpp"
 #include "sgm/image_io.hpp"
 #include "sgm/pipeline.hpp"
 
@@ -314,6 +315,29 @@ TEST_F(SgmGoldenCli, HelpExitsZero) {
   EXPECT_NE(r.out.find("usage: sgm-golden"), std::string::npos);
   EXPECT_TRUE(r.err.empty());
   EXPECT_TRUE(entries(out_).empty());
+}
+
+// --output depth (the core's OUTPUT.MODE) also writes PREFIX_depth16.png: the library's
+// outputWords for f = F/256 px and B um.
+TEST_F(SgmGoldenCli, DepthOutputWritesTheDepthWords) {
+  expectOneLineError(run("sgm-golden", {in("left.png"), in("right.png"), "--out", out_ + "/bad", "--output", "range"}),
+                     "sgm-golden", "unknown output 'range'");
+  expectOneLineError(
+      run("sgm-golden", {in("left.png"), in("right.png"), "--out", out_ + "/bad", "--focal", "16777216"}), "sgm-golden",
+      "--focal");
+  const ChildResult r = run("sgm-golden", {in("left.png"), in("right.png"), "--out", out_ + "/res", "--d", "16",
+                                           "--output", "depth", "--focal", "179200", "--baseline", "60000"});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_EQ(entries(out_),
+            (std::set<std::string>{"res_disp16.png", "res_disp8.png", "res_color.png", "res_depth16.png"}));
+  sgm::Params p;
+  p.disparities = 16, p.output = sgm::OutputMode::kDepth, p.focalQ8 = 179200, p.baselineUm = 60000;
+  const cv::Mat expected = sgm::outputWords(
+      sgm::runPipeline(sgm::readGray(in("left.png")), sgm::readGray(in("right.png")), p), p);
+  const cv::Mat z = cv::imread(out_ + "/res_depth16.png", cv::IMREAD_UNCHANGED);
+  ASSERT_EQ(z.type(), CV_16UC1);
+  EXPECT_EQ(cv::countNonZero(z != expected), 0);
+  EXPECT_GT(cv::countNonZero(z == 14000), 40 * 30 / 2);  // 700 px x 60 mm / 3 px
 }
 
 TEST_F(SgmGoldenCli, SuccessWritesThreePngsMatchingTheLibrary) {

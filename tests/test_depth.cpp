@@ -52,3 +52,26 @@ TEST(Depth, MapKeepsInvalidAtZero) {
   EXPECT_EQ(z.at<uint16_t>(0, 2), sgm::kDepthMax);
   expectError([] { sgm::depthMm(1u << 24, 1, 1); }, {"depth parameters out of range"});
 }
+
+// The core's output words (OUTPUT.MODE): the disparity word {valid, zeros, disparity x 16},
+// or the depth map; the output selection is no part of a preset.
+TEST(Depth, OutputWordsFollowTheMode) {
+  sgm::DisparityMap map{cv::Mat(1, 3, CV_16UC1), cv::Mat(1, 3, CV_8UC1)};
+  map.disp.at<uint16_t>(0, 0) = 42 * 16 + 3, map.valid.at<uint8_t>(0, 0) = 1;
+  map.disp.at<uint16_t>(0, 1) = 17, map.valid.at<uint8_t>(0, 1) = 0;
+  map.disp.at<uint16_t>(0, 2) = 0, map.valid.at<uint8_t>(0, 2) = 1;
+  sgm::Params p;
+  cv::Mat words = sgm::outputWords(map, p);
+  EXPECT_EQ(words.at<uint16_t>(0, 0), 0x8000 | (42 * 16 + 3));
+  EXPECT_EQ(words.at<uint16_t>(0, 1), 17);
+  EXPECT_EQ(words.at<uint16_t>(0, 2), 0x8000);
+  p.output = sgm::OutputMode::kDepth, p.focalQ8 = 700 * 256, p.baselineUm = 120000;
+  words = sgm::outputWords(map, p);
+  EXPECT_EQ(cv::countNonZero(words != sgm::depthMap(map, 700 * 256, 120000)), 0);
+  EXPECT_EQ(sgm::presetName(p), "default");
+  EXPECT_EQ(sgm::parseOutputMode("depth"), sgm::OutputMode::kDepth);
+  EXPECT_EQ(std::string(sgm::outputModeName(sgm::OutputMode::kDisparity)), "disparity");
+  expectError([] { sgm::parseOutputMode("confidence"); }, {"unknown output 'confidence'"});
+  p.focalQ8 = 1 << sgm::kDepthParamBits;
+  expectError([&] { p.validate(); }, {"depth parameters out of range"});
+}

@@ -115,4 +115,10 @@ cv::Mat errorMap(const cv::Mat& disparity, const Scene& scene, double delta = 1.
 // disparity colour bar (px) under the two disparity panels and the error map's legend.
 cv::Mat sideBySide(const Scene& scene, const cv::Mat& disparity, float maxDisparity, double delta = 1.0);
 
+// A depth map for people (CV_16UC1 in mm, 0 = invalid, as the core's depth words):
+// near red to far blue over the 2nd .. 98th percentile of the valid depths below the
+// saturation (65535, drawn blue), invalid black,
+// with the title above and a colour bar in mm below.
+cv::Mat depthPicture(const cv::Mat& depthMm, const std::string& title);
+
 }  // namespace sgm::eval

@@ -46,6 +46,9 @@ const char* kUsage =
     "                                of FILE (sgm-eval calib-mesh; section 13), a pixel whose left source lies\n"
     "                                outside the image invalid; also PREFIX_rectified_{left,right}.png and\n"
     "                                PREFIX_depth16.png (mm from the file's f and B, 0 = invalid; section 10b)\n"
+    "                  [--output disparity|depth] [--focal F] [--baseline B] the core's output word\n"
+    "                                (register OUTPUT.MODE); depth also writes PREFIX_depth16.png from f = F/256 px\n"
+    "                                and B um (default 0, or the --mesh file's)\n"
     "Writes PREFIX_disp16.png (disparity x 256, 0 = invalid), PREFIX_disp8.png\n"
     "(the paper's [0, 255] scaling) and PREFIX_color.png. PREFIX defaults to 'disparity'.\n";
 
@@ -61,7 +64,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (args.positional().size() != 2) throw sgm::Error("expected two images, LEFT and RIGHT (see --help)");
-    const sgm::Params params = args.pipelineParams();
+    sgm::Params params = args.pipelineParams();
     const std::string prefix = args.text("out", "disparity");
     if (prefix.empty()) throw sgm::Error("empty --out prefix");
     // Checked before the work: sgm-golden creates no directories.
@@ -78,6 +81,9 @@ int main(int argc, char** argv) {
     cv::Mat leftValid;
     if (!meshPath.empty()) {
       mesh = sgm::readMeshFile(meshPath);
+      if (!args.has("focal")) params.focalQ8 = int(mesh.focalQ8);
+      if (!args.has("baseline")) params.baselineUm = int(mesh.baselineUm);
+      params.validate();
       const sgm::RectifiedImage l = sgm::rectify(left, mesh.left), r = sgm::rectify(right, mesh.right);
       left = l.gray, right = r.gray, leftValid = l.valid;
       outputs.push_back({prefix + "_rectified_left.png", left});
@@ -98,8 +104,10 @@ int main(int argc, char** argv) {
     outputs.push_back({prefix + "_disp8.png", sgm::encodeDisparity8(map, range)});
     outputs.push_back({prefix + "_color.png", sgm::encodeDisparityColor(map, range)});
     if (withConfidence) outputs.push_back({prefix + "_confidence.png", confidence});
-    if (!meshPath.empty())
-      outputs.push_back({prefix + "_depth16.png", sgm::depthMap(map, mesh.focalQ8, mesh.baselineUm)});
+    const bool withDepth = !meshPath.empty() || params.output == sgm::OutputMode::kDepth;
+    if (withDepth)
+      outputs.push_back(
+          {prefix + "_depth16.png", sgm::depthMap(map, uint32_t(params.focalQ8), uint32_t(params.baselineUm))});
     sgm::writePngs(outputs);
     const double density = cv::countNonZero(map.valid) * 100.0 / double(map.valid.total());
     std::printf(
@@ -107,7 +115,7 @@ int main(int argc, char** argv) {
         left.cols, left.rows, params.disparities, sgm::costModeName(params.mode), sgm::censusWindowName(params.census),
         sgm::presetName(params).c_str(), ms, density, prefix.c_str(),
         (std::string(withConfidence ? ",confidence" : "") +
-         (meshPath.empty() ? "" : ",rectified_left,rectified_right,depth16"))
+         (meshPath.empty() ? "" : ",rectified_left,rectified_right") + (withDepth ? ",depth16" : ""))
             .c_str());
     return 0;
   } catch (const std::exception& e) {

@@ -29,4 +29,14 @@ cv::Mat depthMap(const DisparityMap& map, uint32_t focalQ8, uint32_t baselineUm)
   return depth;
 }
 
+cv::Mat outputWords(const DisparityMap& map, const Params& params) {
+  if (params.output == OutputMode::kDepth) return depthMap(map, uint32_t(params.focalQ8), uint32_t(params.baselineUm));
+  cv::Mat words(map.disp.size(), CV_16UC1);
+  for (int y = 0; y < words.rows; ++y)
+    for (int x = 0; x < words.cols; ++x)
+      words.at<uint16_t>(
+          y, x) = uint16_t((map.valid.at<uint8_t>(y, x) ? 0x8000u : 0u) | (map.disp.at<uint16_t>(y, x) & 0x7fffu));
+  return words;
+}
+
 }  // namespace sgm

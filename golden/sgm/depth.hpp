@@ -4,6 +4,7 @@
 #pragma once
 
 #include "sgm/image_io.hpp"
+#include "sgm/params.hpp"
 
 #include <opencv2/core.hpp>
 
@@ -12,8 +13,8 @@
 namespace sgm {
 
 // The depth parameters as the registers hold them.
-constexpr int kFocalBits = 24;     // f in 1/256 px: up to 65535.996 px
-constexpr int kBaselineBits = 24;  // B in micrometres: up to 16.78 m
+constexpr int kFocalBits = kDepthParamBits;     // f in 1/256 px: up to 65535.996 px
+constexpr int kBaselineBits = kDepthParamBits;  // B in micrometres: up to 16.78 m
 constexpr uint16_t kDepthMax = 0xffff;
 
 // Z in mm for a disparity of dispQ4 / 16 px: round(f B / d) with f = focalQ8 / 256 px and
@@ -24,5 +25,10 @@ uint16_t depthMm(uint32_t focalQ8, uint32_t baselineUm, uint32_t dispQ4);
 
 // The depth map (CV_16UC1): depthMm of every valid pixel, 0 where the map is invalid.
 cv::Mat depthMap(const DisparityMap& map, uint32_t focalQ8, uint32_t baselineUm);
+
+// The core's output words (CV_16UC1) for a map and the parameters' output mode: with
+// OutputMode::kDisparity {valid, zeros, disparity x 16} (section 10), with kDepth
+// depthMap(map, focalQ8, baselineUm).
+cv::Mat outputWords(const DisparityMap& map, const Params& params);
 
 }  // namespace sgm

@@ -68,6 +68,14 @@ PathWeighting parsePathWeighting(const std::string& name) {
   throw Error("unknown path weights '" + name + "' (expected 3232 or equal)");
 }
 
+const char* outputModeName(OutputMode mode) { return mode == OutputMode::kDepth ? "depth" : "disparity"; }
+
+OutputMode parseOutputMode(const std::string& name) {
+  if (name == "disparity") return OutputMode::kDisparity;
+  if (name == "depth") return OutputMode::kDepth;
+  throw Error("unknown output '" + name + "' (expected disparity or depth)");
+}
+
 bool Params::operator==(const Params& o) const {
   return disparities == o.disparities && p1 == o.p1 && p2 == o.p2 && mode == o.mode && subpixel == o.subpixel &&
          lrTolerance == o.lrTolerance && fill == o.fill && snap == o.snap && median == o.median && census == o.census &&
@@ -75,7 +83,8 @@ bool Params::operator==(const Params& o) const {
          rightPathBlock == o.rightPathBlock && uniqueness == o.uniqueness && adWeight == o.adWeight &&
          adCap == o.adCap && linearSubpixel == o.linearSubpixel && mgm == o.mgm && medianGate == o.medianGate &&
          p1PathPercent == o.p1PathPercent && snapEdge == o.snapEdge && edgeReset == o.edgeReset &&
-         lrStoreBits == o.lrStoreBits && minDisparity == o.minDisparity;
+         lrStoreBits == o.lrStoreBits && minDisparity == o.minDisparity && output == o.output && focalQ8 == o.focalQ8 &&
+         baselineUm == o.baselineUm;
 }
 
 const std::vector<std::string>& presetNames() {
@@ -119,6 +128,8 @@ std::string presetName(const Params& params) {
   for (const std::string& name : presetNames()) {
     Params preset = presetParams(name);
     preset.disparities = params.disparities;  // a preset fixes the algorithm, not the build's D
+    preset.output = params.output;            // nor the output word
+    preset.focalQ8 = params.focalQ8, preset.baselineUm = params.baselineUm;
     if (params == preset) return name;
   }
   return "custom";
@@ -176,6 +187,9 @@ void Params::validate() const {
   if (minDisparity < 0 || minDisparity > kMaxMinDisparity)
     throw Error("minimum disparity " + std::to_string(minDisparity) + " out of range 0.." +
                 std::to_string(kMaxMinDisparity));
+  if (focalQ8 < 0 || focalQ8 >= 1 << kDepthParamBits || baselineUm < 0 || baselineUm >= 1 << kDepthParamBits)
+    throw Error("depth parameters out of range: f " + std::to_string(focalQ8) + "/256 px, B " +
+                std::to_string(baselineUm) + " um (0.." + std::to_string((1 << kDepthParamBits) - 1) + " each)");
   if (edgeReset.threshold < 0 || edgeReset.threshold > 255)
     throw Error("edge reset " + std::to_string(edgeReset.threshold) + " out of range 0..255");
   if (edgeReset.length < 1 || edgeReset.length > kMaxEdgeResetLength)

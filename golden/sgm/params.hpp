@@ -40,6 +40,14 @@ enum class PathWeighting { k3232, kEqual };
 const char* pathWeightingName(PathWeighting weighting);     // "3232", "equal"
 PathWeighting parsePathWeighting(const std::string& name);  // "3232", "3,2,3,2" or "equal"
 
+// The core's output word (docs/algorithm.md sections 10 and 10b; register OUTPUT.MODE): the
+// disparity {valid, zeros, disparity x 16}, or the depth in mm (a core built with sgm_top
+// DEPTH = 1), 0 = invalid.
+enum class OutputMode { kDisparity = 0, kDepth = 1 };
+const char* outputModeName(OutputMode mode);          // "disparity", "depth"
+OutputMode parseOutputMode(const std::string& name);  // throws Error on unknown names
+constexpr int kDepthParamBits = 24;                   // Params::focalQ8 and baselineUm (registers DEPTH_*)
+
 // Matching-cost modes. The first three exist in the RTL; the others are
 // software-only, kept to reproduce the paper's Table I.
 enum class CostMode { kRt, kRsad, kUnified, kSad, kBt, kSadRt };
@@ -143,6 +151,12 @@ struct Params {
   // The minimum disparity dmin (docs/algorithm.md section 3): the search covers dmin .. dmin + D - 1
   // (left x against right x - dmin - d) and the output is the true disparity. The core has none yet.
   int minDisparity = 0;
+  // The output word and the depth's frame constants (docs/algorithm.md section 10b): f in 1/256 px
+  // and B in micrometres, each 0 .. 2^24 - 1 (sgm-eval calib-mesh gives both). They change what
+  // the core sends, not the disparities: a preset is the same preset with any of them.
+  OutputMode output = OutputMode::kDisparity;
+  int focalQ8 = 0;
+  int baselineUm = 0;
   // Golden-only experiments (issue 15, docs/algorithm.md section 12): NOT in the RTL,
   // every one off by default, so Params{} and the presets stay bit-exact with the core.
   bool linearSubpixel = false;  // sub-pixel by the equiangular (V) fit instead of the parabola

@@ -35,7 +35,8 @@ struct Identity {
   uint32_t features = 0;             // SGM_FEATURES_* bits: the run-time levers the build has
 };
 
-// One frame's run-time configuration (the fields of FRAME_SIZE, PENALTY, CONFIG, EDGE_RESET).
+// One frame's run-time configuration (the fields of FRAME_SIZE, PENALTY, CONFIG, EDGE_RESET,
+// OUTPUT, DEPTH_FOCAL, DEPTH_BASELINE).
 struct FrameConfig {
   uint32_t width = 0, height = 0;
   // Defaults: the golden model's, as the registers of a build with every lever reset to
@@ -59,6 +60,11 @@ struct FrameConfig {
   // path flags (bit k: path k, 0, 45, 90, 135 degrees, the fifth).
   uint32_t edgeReset = SGM_EDGE_RESET_T_DEFAULT, edgeResetLength = SGM_EDGE_RESET_LEN_DEFAULT;
   uint32_t edgeResetPaths = SGM_EDGE_RESET_PATHS_DEFAULT;
+  // The output word: SGM_OUTPUT_MODE_DISPARITY or SGM_OUTPUT_MODE_DEPTH (a build with
+  // SGM_FEATURES_DEPTH), the depth from f in 1/256 px and B in micrometres (24 bits each;
+  // sgm-eval calib-mesh prints both).
+  uint32_t output = SGM_OUTPUT_MODE_DISPARITY;
+  uint32_t focalQ8 = 0, baselineUm = 0;
 
   // The four-path defaults (golden preset "four-path"), for builds without those levers.
   static FrameConfig fourPath() {
@@ -112,9 +118,9 @@ class Driver {
   static bool sizeFits(const Identity& id, uint32_t width, uint32_t height);
   // Whether the build of this identity has every lever the frame sets (the core drops a
   // frame with uniqueness != 0 without SGM_FEATURES_UNIQUENESS, adWeight != 0 without
-  // SGM_FEATURES_AD_TERM, rightWeight != 0 without SGM_FEATURES_RIGHT_PATH, or edgeReset != 0
-  // without SGM_FEATURES_EDGE_RESET, and flags
-  // ERROR.CONFIG).
+  // SGM_FEATURES_AD_TERM, rightWeight != 0 without SGM_FEATURES_RIGHT_PATH, edgeReset != 0
+  // without SGM_FEATURES_EDGE_RESET, or the depth output without SGM_FEATURES_DEPTH, and
+  // flags ERROR.CONFIG).
   static bool featuresFit(const Identity& id, const FrameConfig& frame);
   // The fifth path's block B of the build (0: the build has no fifth path).
   static uint32_t rightBlock(const Identity& id);
@@ -122,8 +128,12 @@ class Driver {
   static uint32_t encodePenalty(const FrameConfig& frame);
   static uint32_t encodeConfig(const FrameConfig& frame);
   static uint32_t encodeEdgeReset(const FrameConfig& frame);
-  // The configuration the four registers' values hold (readConfig reads them).
-  static FrameConfig decode(uint32_t frameSize, uint32_t penalty, uint32_t config, uint32_t edgeReset);
+  static uint32_t encodeOutput(const FrameConfig& frame);
+  static uint32_t encodeDepthFocal(const FrameConfig& frame);
+  static uint32_t encodeDepthBaseline(const FrameConfig& frame);
+  // The configuration the seven registers' values hold (readConfig reads them).
+  static FrameConfig decode(uint32_t frameSize, uint32_t penalty, uint32_t config, uint32_t edgeReset, uint32_t output,
+                            uint32_t depthFocal, uint32_t depthBaseline);
 
  private:
   uint32_t read(uint32_t offset) { return bus_.read(offset); }

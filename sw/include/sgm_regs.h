@@ -39,14 +39,17 @@
 #define SGM_REG_EDGE_RESET         0x44u
 #define SGM_REG_IRQ_ENABLE         0x48u
 #define SGM_REG_IRQ_STATUS         0x4Cu
+#define SGM_REG_OUTPUT             0x50u
+#define SGM_REG_DEPTH_FOCAL        0x54u
+#define SGM_REG_DEPTH_BASELINE     0x58u
 
 /* ---- ID (0x00): identification: "SGM" and the map version */
-/* VERSION [7:0] RO: map version: 5 (4 had no EDGE_RESET, 3 no FEATURES, 2 no CONFIG.UNIQUENESS, 1 no MIN_WIDTH and LANES) */
+/* VERSION [7:0] RO: map version: 6 (5 had no OUTPUT, DEPTH_FOCAL and DEPTH_BASELINE, 4 no EDGE_RESET, 3 no FEATURES, 2 no CONFIG.UNIQUENESS, 1 no MIN_WIDTH and LANES) */
 #define SGM_ID_VERSION_SHIFT 0
 #define SGM_ID_VERSION_WIDTH 8
 #define SGM_ID_VERSION_MASK 0x000000FFu
-#define SGM_ID_VERSION_MIN 5u
-#define SGM_ID_VERSION_MAX 5u
+#define SGM_ID_VERSION_MIN 6u
+#define SGM_ID_VERSION_MAX 6u
 /* MAGIC [31:8] RO: "SGM" in ASCII */
 #define SGM_ID_MAGIC_SHIFT 8
 #define SGM_ID_MAGIC_WIDTH 24
@@ -54,7 +57,7 @@
 #define SGM_ID_MAGIC_MIN 5457741u
 #define SGM_ID_MAGIC_MAX 5457741u
 #define SGM_ID_MASK 0xFFFFFFFFu
-#define SGM_ID_VALUE 0x53474D05u
+#define SGM_ID_VALUE 0x53474D06u
 
 /* ---- D (0x04): disparities of the build */
 /* VALUE [31:0] RO: D */
@@ -145,13 +148,20 @@
 #define SGM_FEATURES_EDGE_RESET (1u << 3)
 #define SGM_FEATURES_EDGE_RESET_MIN 0u
 #define SGM_FEATURES_EDGE_RESET_MAX 1u
+/* DEPTH [4] RO: the depth output, OUTPUT.MODE = DEPTH (sgm_top DEPTH) */
+#define SGM_FEATURES_DEPTH_SHIFT 4
+#define SGM_FEATURES_DEPTH_WIDTH 1
+#define SGM_FEATURES_DEPTH_MASK 0x00000010u
+#define SGM_FEATURES_DEPTH (1u << 4)
+#define SGM_FEATURES_DEPTH_MIN 0u
+#define SGM_FEATURES_DEPTH_MAX 1u
 /* RIGHT_BLOCK [11:8] RO: log2 of the fifth path's block B (0 without it) */
 #define SGM_FEATURES_RIGHT_BLOCK_SHIFT 8
 #define SGM_FEATURES_RIGHT_BLOCK_WIDTH 4
 #define SGM_FEATURES_RIGHT_BLOCK_MASK 0x00000F00u
 #define SGM_FEATURES_RIGHT_BLOCK_MIN 0u
 #define SGM_FEATURES_RIGHT_BLOCK_MAX 15u
-#define SGM_FEATURES_MASK 0x00000F0Fu
+#define SGM_FEATURES_MASK 0x00000F1Fu
 
 /* ---- CTRL (0x20): control */
 /* ENABLE [0] RW: 0: a start-of-frame beat is held back (the core stops at a frame boundary) */
@@ -472,10 +482,39 @@
 #define SGM_IRQ_STATUS_ERROR (1u << 1)
 #define SGM_IRQ_STATUS_MASK 0x00000003u
 
+/* ---- OUTPUT (0x50): what the output stream's word holds */
+/* MODE [1:0] RW: the output word; 2 and 3 drop the frame */
+#define SGM_OUTPUT_MODE_SHIFT 0
+#define SGM_OUTPUT_MODE_WIDTH 2
+#define SGM_OUTPUT_MODE_MASK 0x00000003u
+#define SGM_OUTPUT_MODE_MIN 0u
+#define SGM_OUTPUT_MODE_MAX 1u
+#define SGM_OUTPUT_MODE_DISPARITY 0u /* {valid, zeros, disparity x 16} (docs/algorithm.md section 10) */
+#define SGM_OUTPUT_MODE_DEPTH 1u /* the depth in mm, 0 = invalid, 65535 at and beyond the far limit (section 10b; needs FEATURES.DEPTH) */
+#define SGM_OUTPUT_MASK 0x00000003u
+
+/* ---- DEPTH_FOCAL (0x54): the rectified focal length for the depth output */
+/* F [23:0] RW: f in 1/256 px (sgm-eval calib-mesh writes it) */
+#define SGM_DEPTH_FOCAL_F_SHIFT 0
+#define SGM_DEPTH_FOCAL_F_WIDTH 24
+#define SGM_DEPTH_FOCAL_F_MASK 0x00FFFFFFu
+#define SGM_DEPTH_FOCAL_F_MIN 0u
+#define SGM_DEPTH_FOCAL_F_MAX 16777215u
+#define SGM_DEPTH_FOCAL_MASK 0x00FFFFFFu
+
+/* ---- DEPTH_BASELINE (0x58): the baseline for the depth output */
+/* B [23:0] RW: B in micrometres (sgm-eval calib-mesh writes it) */
+#define SGM_DEPTH_BASELINE_B_SHIFT 0
+#define SGM_DEPTH_BASELINE_B_WIDTH 24
+#define SGM_DEPTH_BASELINE_B_MASK 0x00FFFFFFu
+#define SGM_DEPTH_BASELINE_B_MIN 0u
+#define SGM_DEPTH_BASELINE_B_MAX 16777215u
+#define SGM_DEPTH_BASELINE_MASK 0x00FFFFFFu
+
 /* ---- the frame configuration word: sgm_top's cfg_i (rtl/sgm_cfg.svh), SGM_CFG_W bits, bit 0
  * first; field F of register R at bits [SGM_CFG_R_F_LSB +: SGM_R_F_WIDTH] (docs/registers.md). */
-#define SGM_CFG_W 100u
-#define SGM_CFG_WORDS 4u /* 32-bit words of the word */
+#define SGM_CFG_W 150u
+#define SGM_CFG_WORDS 5u /* 32-bit words of the word */
 #define SGM_CFG_FRAME_SIZE_WIDTH_LSB 0u
 #define SGM_CFG_FRAME_SIZE_HEIGHT_LSB 16u
 #define SGM_CFG_PENALTY_P1_LSB 32u
@@ -496,6 +535,9 @@
 #define SGM_CFG_EDGE_RESET_T_LSB 83u
 #define SGM_CFG_EDGE_RESET_LEN_LSB 91u
 #define SGM_CFG_EDGE_RESET_PATHS_LSB 95u
+#define SGM_CFG_OUTPUT_MODE_LSB 100u
+#define SGM_CFG_DEPTH_FOCAL_F_LSB 102u
+#define SGM_CFG_DEPTH_BASELINE_B_LSB 126u
 
 /* ---- constants */
 #define SGM_MIN_HEIGHT 9u /* shortest frame of every build (sgm_stream_ctrl) */

@@ -76,7 +76,7 @@ module tb_stream_ctrl #(
   wire [SLOT-1:0] slot_out = pipe_q[(LAT-1)*SLOT +: SLOT];
 
   sgm_stream_ctrl #(
-    .MAX_WIDTH(200), .MIN_WIDTH(16), .MAX_HEIGHT(200), .XW(XW), .YW(YW), .DW(DW), .FIFO_DEPTH(4)
+    .MAX_WIDTH(200), .MIN_WIDTH(16), .MAX_HEIGHT(200), .XW(XW), .YW(YW), .FIFO_DEPTH(4)
   ) u_ctrl (
     .clk_i, .rst_ni,
     .s_tdata_i, .s_tuser_i, .s_tlast_i, .s_tvalid_i, .s_tready_o,
@@ -84,7 +84,7 @@ module tb_stream_ctrl #(
     .cfg_i, .cfg_o(unused_cfg), .width_o(width), .height_o(height),
     .lut_start_o(lut_start), .lut_ready_i(fill_q == '0),
     .en_o, .pix_left_o(pix_l), .pix_right_o(pix_r), .col_o(col), .row_o(row), .sof_o(sof),
-    .res_valid_i(slot_out[SLOT-1]), .res_disp_i(slot_out[1 +: DW]), .res_ok_i(slot_out[0]),
+    .res_valid_i(slot_out[SLOT-1]), .res_word_i({slot_out[0], 15'(slot_out[1 +: DW])}),
     .busy_o, .frame_done_o, .error_o, .error_set_o
   );
 

@@ -6,7 +6,7 @@
 // Assumed: the first cycle is in reset; the input stream follows AXI4-Stream (s_tvalid_i
 // low in reset, held until s_tready_o with tdata, tuser and tlast unchanged). Everything
 // else is free in every cycle: the configuration inputs, m_tready_i, lut_ready_i and the
-// pipeline's result (res_valid_i, res_disp_i, res_ok_i). With SGM_FORMAL_PIPE (the
+// pipeline's result (res_valid_i, res_word_i). With SGM_FORMAL_PIPE (the
 // stream_ctrl_live task) the pipeline follows its contract instead (docs/rtl.md, "The
 // step stream"): a slot's result comes F_LAT slots after the slot, res_valid_i high exactly
 // for the results of frame pixels, and m_tready_i is high (a sink that takes every beat).

@@ -37,7 +37,7 @@ constexpr uint32_t log2Of(uint32_t v) { return v > 1 ? 1 + log2Of(v / 2) : 0; }
 constexpr uint32_t kFeatures =
     (Rtl::UNIQUENESS ? SGM_FEATURES_UNIQUENESS : 0u) | (Rtl::AD_TERM ? SGM_FEATURES_AD_TERM : 0u) |
     (Rtl::RIGHT_BLOCK ? SGM_FEATURES_RIGHT_PATH | log2Of(Rtl::RIGHT_BLOCK) << SGM_FEATURES_RIGHT_BLOCK_SHIFT : 0u) |
-    (Rtl::EDGE_RESET ? SGM_FEATURES_EDGE_RESET : 0u);
+    (Rtl::EDGE_RESET ? SGM_FEATURES_EDGE_RESET : 0u) | (Rtl::DEPTH ? SGM_FEATURES_DEPTH : 0u);
 
 // The settings with every lever the build lacks off (bit-exact frames run what the build has).
 sgm::Params withBuildLevers(sgm::Params p) {
@@ -45,6 +45,7 @@ sgm::Params withBuildLevers(sgm::Params p) {
   if (!Rtl::AD_TERM) p.adWeight = 0;
   if (!Rtl::RIGHT_BLOCK) p.rightPathWeight = 0;
   if (!Rtl::EDGE_RESET) p.edgeReset.threshold = 0;
+  if (!Rtl::DEPTH) p.output = sgm::OutputMode::kDisparity;
   return p;
 }
 
@@ -72,13 +73,21 @@ FrameInput scene(int w, int h, uint32_t seed, const sgm::Params& p) {
 // of what it decoded gives the same registers back (a field the driver lacks stops the test).
 drv::FrameConfig frameConfig(const sgm::Params& p, cv::Size size) {
   const sgm::tb::HardwareConfig c = sgm::tb::hardwareConfig(p, size.width, size.height);
-  const uint32_t regs[4] = {c.reg(SGM_REG_FRAME_SIZE), c.reg(SGM_REG_PENALTY), c.reg(SGM_REG_CONFIG),
-                            c.reg(SGM_REG_EDGE_RESET)};
-  const drv::FrameConfig f = drv::Driver::decode(regs[0], regs[1], regs[2], regs[3]);
-  const uint32_t back[4] = {drv::Driver::encodeSize(f.width, f.height), drv::Driver::encodePenalty(f),
-                            drv::Driver::encodeConfig(f), drv::Driver::encodeEdgeReset(f)};
-  const char* names[4] = {"FRAME_SIZE", "PENALTY", "CONFIG", "EDGE_RESET"};
-  for (int r = 0; r < 4; ++r)
+  constexpr int kRegs = 7;
+  const uint32_t regs[kRegs] = {c.reg(SGM_REG_FRAME_SIZE),    c.reg(SGM_REG_PENALTY), c.reg(SGM_REG_CONFIG),
+                                c.reg(SGM_REG_EDGE_RESET),    c.reg(SGM_REG_OUTPUT),  c.reg(SGM_REG_DEPTH_FOCAL),
+                                c.reg(SGM_REG_DEPTH_BASELINE)};
+  const drv::FrameConfig f = drv::Driver::decode(regs[0], regs[1], regs[2], regs[3], regs[4], regs[5], regs[6]);
+  const uint32_t back[kRegs] = {drv::Driver::encodeSize(f.width, f.height),
+                                drv::Driver::encodePenalty(f),
+                                drv::Driver::encodeConfig(f),
+                                drv::Driver::encodeEdgeReset(f),
+                                drv::Driver::encodeOutput(f),
+                                drv::Driver::encodeDepthFocal(f),
+                                drv::Driver::encodeDepthBaseline(f)};
+  const char* names[kRegs] = {"FRAME_SIZE", "PENALTY",     "CONFIG",        "EDGE_RESET",
+                              "OUTPUT",     "DEPTH_FOCAL", "DEPTH_BASELINE"};
+  for (int r = 0; r < kRegs; ++r)
     if (back[r] != regs[r]) {
       char what[160];
       std::snprintf(what, sizeof what, "%s 0x%08X encoded back by the driver as 0x%08X", names[r], regs[r], back[r]);
@@ -138,8 +147,8 @@ struct AxiCore {
   void expectBitExact(const std::vector<FrameInput>& frames, const std::string& what) {
     const std::vector<sgm::tb::FrameOutput> out = core.run(frames);
     for (size_t k = 0; k < frames.size(); ++k)
-      EXPECT_EQ(sgm::tb::compareMaps(sgm::runPipeline(frames[k].left, frames[k].right, frames[k].params), out[k].map,
-                                     "sgm_axi output"),
+      EXPECT_EQ(sgm::tb::compareOutput(sgm::runPipeline(frames[k].left, frames[k].right, frames[k].params),
+                                       frames[k].params, out[k], "sgm_axi output"),
                 "")
           << what << ", frame " << k;
   }
@@ -181,12 +190,16 @@ TEST(SgmAxi, RtlOffsetsAndResetValuesMatchTheHeader) {
       {"EDGE_RESET", {Rtl::ADDR_EDGE_RESET, SGM_REG_EDGE_RESET}},
       {"IRQ_ENABLE", {Rtl::ADDR_IRQ_ENABLE, SGM_REG_IRQ_ENABLE}},
       {"IRQ_STATUS", {Rtl::ADDR_IRQ_STATUS, SGM_REG_IRQ_STATUS}},
+      {"OUTPUT", {Rtl::ADDR_OUTPUT, SGM_REG_OUTPUT}},
+      {"DEPTH_FOCAL", {Rtl::ADDR_DEPTH_FOCAL, SGM_REG_DEPTH_FOCAL}},
+      {"DEPTH_BASELINE", {Rtl::ADDR_DEPTH_BASELINE, SGM_REG_DEPTH_BASELINE}},
       {"ID_VALUE", {Rtl::ID_VALUE, SGM_ID_VALUE}},
       {"FEATURES_UNIQUENESS", {1u << Rtl::FEATURES_UNIQUENESS_LSB, SGM_FEATURES_UNIQUENESS}},
       {"FEATURES_AD_TERM", {1u << Rtl::FEATURES_AD_TERM_LSB, SGM_FEATURES_AD_TERM}},
       {"FEATURES_RIGHT_PATH", {1u << Rtl::FEATURES_RIGHT_PATH_LSB, SGM_FEATURES_RIGHT_PATH}},
       {"FEATURES_RIGHT_BLOCK", {uint32_t(Rtl::FEATURES_RIGHT_BLOCK_LSB), SGM_FEATURES_RIGHT_BLOCK_SHIFT}},
       {"FEATURES_EDGE_RESET", {1u << Rtl::FEATURES_EDGE_RESET_LSB, SGM_FEATURES_EDGE_RESET}},
+      {"FEATURES_DEPTH", {1u << Rtl::FEATURES_DEPTH_LSB, SGM_FEATURES_DEPTH}},
       {"EDGE_RESET_RESET", {Rtl::EDGE_RESET_RESET, kEdgeResetReset}},
       {"FEATURES_VALUE", {Rtl::FEATURES_VALUE, kFeatures}},
       {"PENALTY_RESET", {Rtl::PENALTY_RESET, kPenaltyReset}},
@@ -255,6 +268,9 @@ std::vector<RegisterSpec> registers() {
       {"EDGE_RESET", SGM_REG_EDGE_RESET, kEdgeResetReset, SGM_EDGE_RESET_MASK},
       {"IRQ_ENABLE", SGM_REG_IRQ_ENABLE, 0, SGM_IRQ_ENABLE_MASK},
       {"IRQ_STATUS", SGM_REG_IRQ_STATUS, 0, 0},  // W1C: its own test
+      {"OUTPUT", SGM_REG_OUTPUT, 0, SGM_OUTPUT_MASK},
+      {"DEPTH_FOCAL", SGM_REG_DEPTH_FOCAL, 0, SGM_DEPTH_FOCAL_MASK},
+      {"DEPTH_BASELINE", SGM_REG_DEPTH_BASELINE, 0, SGM_DEPTH_BASELINE_MASK},
   };
 }
 
@@ -332,21 +348,26 @@ TEST(SgmAxi, FeaturesAgreeWithTheCore) {
   right.p2 = 200;
   sgm::Params restart = withBuildLevers(defaults());  // the path restart at strong edges
   restart.edgeReset = sgm::EdgeReset{30, 6, {1, 1, 0, 1, 1}};
+  sgm::Params depth = withBuildLevers(defaults());  // the depth output
+  depth.output = sgm::OutputMode::kDepth, depth.focalQ8 = 600 * 256, depth.baselineUm = 75000;
   EXPECT_EQ(drv::Driver::rightBlock(id), uint32_t(Rtl::RIGHT_BLOCK));
   const int w = 40, h = 11;
   uint32_t seed = 30;
-  for (const sgm::Params& p : {unique, ad, right, restart}) {
+  for (const sgm::Params& p : {unique, ad, right, restart, depth}) {
     const drv::FrameConfig config = frameConfig(p, {w, h});
     const bool fits = drv::Driver::featuresFit(id, config);
-    const uint32_t lever = p.edgeReset.threshold ? SGM_FEATURES_EDGE_RESET
-                           : p.uniqueness        ? SGM_FEATURES_UNIQUENESS
-                           : p.adWeight          ? SGM_FEATURES_AD_TERM
-                                                 : SGM_FEATURES_RIGHT_PATH;
+    const bool asksDepth = p.output == sgm::OutputMode::kDepth;
+    const uint32_t lever = asksDepth               ? SGM_FEATURES_DEPTH
+                           : p.edgeReset.threshold ? SGM_FEATURES_EDGE_RESET
+                           : p.uniqueness          ? SGM_FEATURES_UNIQUENESS
+                           : p.adWeight            ? SGM_FEATURES_AD_TERM
+                                                   : SGM_FEATURES_RIGHT_PATH;
     EXPECT_EQ(fits, (kFeatures & lever) != 0);
-    const std::string what = p.edgeReset.threshold ? "path restart T 30"
-                             : p.uniqueness        ? "uniqueness 30"
-                             : p.adWeight          ? "AD weight 5"
-                                                   : "fifth path weight 4";
+    const std::string what = asksDepth               ? "depth output"
+                             : p.edgeReset.threshold ? "path restart T 30"
+                             : p.uniqueness          ? "uniqueness 30"
+                             : p.adWeight            ? "AD weight 5"
+                                                     : "fifth path weight 4";
     if (fits) {
       c.expectBitExact({scene(w, h, ++seed, p)}, what + " in a build that has it");
       EXPECT_EQ(c.driver.errors().sticky, 0u) << what;
@@ -464,7 +485,7 @@ TEST(SgmAxi, UndefinedAddressesAnswerSlverrAndChangeNothing) {
     EXPECT_EQ(read.data, 0u) << "read 0x" << std::hex << a;
     EXPECT_EQ(c.bus.write(a, 0xFFFFFFFFu).resp, sgm::tb::kAxilSlvErr) << "write 0x" << std::hex << a;
   }
-  EXPECT_EQ(undefined, 64 - 20);
+  EXPECT_EQ(undefined, 64 - 23);  // the 23 registers of regmap/sgm_regmap.def
   for (size_t k = 0; k < registers().size(); ++k)
     EXPECT_EQ(c.bus.read(registers()[k].offset).data, before[k]) << registers()[k].name;
   // Address bits [1:0] are ignored.

@@ -11,6 +11,8 @@
 // lacks off, and LeversTheBuildLacksAreDroppedThenGoodFrame expects the frames that
 // ask for it dropped. A build with the fifth path (RIGHT_BLOCK = B) and both levers runs
 // our defaults in blocks of B, a build without any of them the four-path preset.
+// A build with the depth output (DEPTH = 1) runs DepthOutputIsExact: depth frames with
+// several f and B between disparity frames, every word against sgm::outputWords.
 #include "Vsgm_top.h"
 #include "Vsgm_top_sgm_top.h"
 #include "core_harness.hpp"
@@ -48,6 +50,7 @@ constexpr bool kUniqueness = Vsgm_top_sgm_top::UNIQUENESS != 0;  // the build ha
 constexpr bool kAdTerm = Vsgm_top_sgm_top::AD_TERM != 0;         // the build has the AD term
 constexpr int kRightBlock = Vsgm_top_sgm_top::RIGHT_BLOCK;       // the fifth path's block (0: not built)
 constexpr bool kEdgeReset = Vsgm_top_sgm_top::EDGE_RESET != 0;   // the build has the path restart
+constexpr bool kDepth = Vsgm_top_sgm_top::DEPTH != 0;            // the build has the depth output
 constexpr bool kLean = !kUniqueness || !kAdTerm;
 
 // The settings with every lever the build lacks off (bit-exact tests run what the build
@@ -58,13 +61,14 @@ sgm::Params withBuildLevers(sgm::Params p) {
   if (!kRightBlock) p.rightPathWeight = 0;
   p.rightPathBlock = p.rightPathWeight ? kRightBlock : 0;
   if (!kEdgeReset) p.edgeReset.threshold = 0;
+  if (!kDepth) p.output = sgm::OutputMode::kDisparity;
   return p;
 }
 
 // Whether the core drops a frame of these settings for a lever its build lacks.
 bool asksMissingLever(const sgm::Params& p) {
   return (p.uniqueness && !kUniqueness) || (p.adWeight && !kAdTerm) || (p.rightPathWeight && !kRightBlock) ||
-         (p.edgeReset.threshold && !kEdgeReset);
+         (p.edgeReset.threshold && !kEdgeReset) || (p.output == sgm::OutputMode::kDepth && !kDepth);
 }
 
 // A textured left image and a right image shifted by a few pixels plus noise.
@@ -102,7 +106,7 @@ void expectBitExact(Harness& core, const std::vector<FrameInput>& frames, const 
     EXPECT_EQ(outputs[k].aborted, std::count(cut.begin(), cut.end(), k) == 1) << what << ", frame " << k;
     if (outputs[k].aborted) continue;
     const sgm::DisparityMap golden = sgm::runPipeline(frames[k].left, frames[k].right, frames[k].params);
-    EXPECT_EQ(sgm::tb::compareMaps(golden, outputs[k].map, "sgm_top output"), "")
+    EXPECT_EQ(sgm::tb::compareOutput(golden, frames[k].params, outputs[k], "sgm_top output"), "")
         << what << ", frame " << k << " (" << frames[k].left.cols << "x" << frames[k].left.rows << ")";
     EXPECT_EQ(outputs[k].errors, 0u) << what << ", frame " << k;
   }
@@ -179,7 +183,9 @@ TEST(SgmTop, OutOfRangeConfigurationIsDroppedThenGoodFrame) {
       {"uniqueness 127", syntheticPair(kMinWidth + 1, 10, rng, hardwareDefaults())},
       {"AD term beyond the cost word", syntheticPair(kMinWidth + 2, 9, rng, hardwareDefaults())},
       {"fifth-path weight 9", syntheticPair(kMinWidth + 1, 9, rng, hardwareDefaults())},
-      {"path restart length 0", syntheticPair(kMinWidth + 2, 10, rng, hardwareDefaults())}};
+      {"path restart length 0", syntheticPair(kMinWidth + 2, 10, rng, hardwareDefaults())},
+      {"output mode 2", syntheticPair(kMinWidth + 1, 9, rng, hardwareDefaults())},
+      {"output mode 3", syntheticPair(kMinWidth + 3, 10, rng, hardwareDefaults())}};
   std::vector<FrameInput> frames = {syntheticPair(kMinWidth, 9, rng, equal)};
   for (size_t i = 0; i < bad.size(); ++i) {
     frames.push_back(bad[i].second);
@@ -189,6 +195,8 @@ TEST(SgmTop, OutOfRangeConfigurationIsDroppedThenGoodFrame) {
     if (bad[i].first == "uniqueness 100") codes["CONFIG_UNIQUENESS"] = 100;
     if (bad[i].first == "uniqueness 127") codes["CONFIG_UNIQUENESS"] = 127;
     if (bad[i].first == "fifth-path weight 9") codes["PENALTY_RIGHT_WEIGHT"] = 9;
+    if (bad[i].first == "output mode 2") codes["OUTPUT_MODE"] = 2;  // dropped in every build
+    if (bad[i].first == "output mode 3") codes["OUTPUT_MODE"] = 3;
     if (bad[i].first == "path restart length 0") {  // T 30 with R 0 (dropped in every build)
       frames.back().params.edgeReset.threshold = 30;
       codes["EDGE_RESET_LEN"] = 0;
@@ -201,6 +209,7 @@ TEST(SgmTop, OutOfRangeConfigurationIsDroppedThenGoodFrame) {
     good.uniqueness = i == 6 ? 99 : 0;  // the largest ratio in range, after the first out of range
     if (i == 9) good.rightPathWeight = sgm::kMaxRightPathWeight;            // the largest weight, after one above it
     if (i == 10) good.edgeReset = sgm::EdgeReset{255, 1, {1, 1, 1, 1, 1}};  // the largest T, the shortest R
+    if (i == 11) good.output = sgm::OutputMode::kDepth, good.focalQ8 = 400 * 256, good.baselineUm = 50000;
     if (i == 8) {  // weight 15 with the largest cap the build's cost word leaves this mode
       good.adWeight = 15, good.adCap = sgm::largestAdCap(good.mode, good.census, 15);
     }
@@ -214,8 +223,8 @@ TEST(SgmTop, OutOfRangeConfigurationIsDroppedThenGoodFrame) {
       EXPECT_EQ(out[k].errors, 8u) << what << ": error_o";
       continue;
     }
-    EXPECT_EQ(sgm::tb::compareMaps(sgm::runPipeline(frames[k].left, frames[k].right, frames[k].params), out[k].map,
-                                   "sgm_top output"),
+    EXPECT_EQ(sgm::tb::compareOutput(sgm::runPipeline(frames[k].left, frames[k].right, frames[k].params),
+                                     frames[k].params, out[k], "sgm_top output"),
               "")
         << what << " (after " << (k ? bad[k / 2 - 1].first : "reset") << ")";
     EXPECT_EQ(out[k].errors, 0u) << what;
@@ -313,6 +322,9 @@ TEST(SgmTop, LeversTheBuildLacksAreDroppedThenGoodFrame) {
   sgm::Params restart = hardwareDefaults(), restartOff = hardwareDefaults();
   restart.edgeReset = sgm::EdgeReset{1, 4, {1, 0, 1, 0, 0}};      // T 1: the smallest that asks for it
   restartOff.edgeReset = sgm::EdgeReset{0, 15, {1, 1, 1, 1, 1}};  // T 0: off, whatever R and the flags
+  sgm::Params depth = hardwareDefaults(), depthOff = hardwareDefaults();
+  depth.output = sgm::OutputMode::kDepth, depth.focalQ8 = 1 << 17, depth.baselineUm = 120000;
+  depthOff.focalQ8 = (1 << 24) - 1, depthOff.baselineUm = 7;  // disparity words: f and B unused
   const std::vector<std::pair<std::string, sgm::Params>> asks = {{"uniqueness 25", unique},
                                                                  {"uniqueness 1", unique1},
                                                                  {"AD weight 4 cap 30", ad},
@@ -321,7 +333,9 @@ TEST(SgmTop, LeversTheBuildLacksAreDroppedThenGoodFrame) {
                                                                  {"AD cap 255 weight 0", capOnly},
                                                                  {"fifth path weight 4", right},
                                                                  {"path restart T 1", restart},
-                                                                 {"path restart T 0, R 15, every flag", restartOff}};
+                                                                 {"path restart T 0, R 15, every flag", restartOff},
+                                                                 {"depth output", depth},
+                                                                 {"disparity output with f and B", depthOff}};
   std::vector<FrameInput> frames = {syntheticPair(kMinWidth + 2, 9, rng, hardwareDefaults())};
   std::vector<std::string> what = {"first good frame"};
   for (const auto& [name, p] : asks) {
@@ -337,17 +351,53 @@ TEST(SgmTop, LeversTheBuildLacksAreDroppedThenGoodFrame) {
   for (size_t k = 0; k < frames.size(); ++k) {
     const std::string build = std::string(" (UNIQUENESS=") + (kUniqueness ? "1" : "0") +
                               ", AD_TERM=" + (kAdTerm ? "1" : "0") + ", RIGHT_BLOCK=" + std::to_string(kRightBlock) +
-                              ", EDGE_RESET=" + (kEdgeReset ? "1" : "0") + ")";
+                              ", EDGE_RESET=" + (kEdgeReset ? "1" : "0") + ", DEPTH=" + (kDepth ? "1" : "0") + ")";
     if (frames[k].dropped) {
       EXPECT_EQ(out[k].errors, 8u) << what[k] << build << ": error_o of a frame asking for a lever the build lacks";
       continue;
     }
-    EXPECT_EQ(sgm::tb::compareMaps(sgm::runPipeline(frames[k].left, frames[k].right, frames[k].params), out[k].map,
-                                   "sgm_top output"),
+    EXPECT_EQ(sgm::tb::compareOutput(sgm::runPipeline(frames[k].left, frames[k].right, frames[k].params),
+                                     frames[k].params, out[k], "sgm_top output"),
               "")
         << what[k] << build;
     EXPECT_EQ(out[k].errors, 0u) << what[k] << build;
   }
+}
+
+// The depth output (DEPTH = 1): frames in depth mode with f and B that give every kind of
+// word (saturated at 65535 near d = 0 or for every pixel, 1 for every pixel, the range in
+// between) between disparity frames, back to back with stalls: every word equals
+// sgm::outputWords of the golden map, and the disparity frames stay bit-exact.
+TEST(SgmTop, DepthOutputIsExact) {
+  if (!kDepth) GTEST_SKIP() << "this build has no depth output (sgm_top DEPTH = 0)";
+  std::mt19937 rng(47);
+  const sgm::Params base = hardwareDefaults();
+  auto depthParams = [&](int focalQ8, int baselineUm) {
+    sgm::Params p = base;
+    p.output = sgm::OutputMode::kDepth, p.focalQ8 = focalQ8, p.baselineUm = baselineUm;
+    return p;
+  };
+  const std::vector<sgm::Params> params = {base,
+                                           depthParams(700 * 256, 60000),  // 700 px, 60 mm: 65535 below 0.64 px
+                                           depthParams((1 << 24) - 1, (1 << 24) - 1),  // K near 2^48: 65535 everywhere
+                                           depthParams(1, 1),                          // 1 mm everywhere
+                                           depthParams(1000 * 256 + 17, 1003),         // about 1000 / d mm
+                                           depthParams(3 * 256, 2000000),              // 3 px, 2 m
+                                           base};
+  std::vector<FrameInput> frames;
+  for (size_t k = 0; k < params.size(); ++k)
+    frames.push_back(syntheticPair(kMinWidth + int(k % 3), 9 + int(k % 4), rng, params[k]));
+  Harness core("sgm_top_depth", 47, {0.2, 0.3});
+  const std::vector<sgm::tb::FrameOutput> out = core.run(frames);
+  for (size_t k = 0; k < frames.size(); ++k) {
+    const sgm::DisparityMap golden = sgm::runPipeline(frames[k].left, frames[k].right, frames[k].params);
+    EXPECT_EQ(sgm::tb::compareOutput(golden, frames[k].params, out[k], "sgm_top output"), "") << "frame " << k;
+    EXPECT_EQ(out[k].errors, 0u) << "frame " << k;
+  }
+  // The words are depth words: the saturating frame is 65535 wherever the golden map is valid.
+  const cv::Mat saturated = sgm::outputWords(sgm::runPipeline(frames[2].left, frames[2].right, frames[2].params),
+                                             frames[2].params);
+  EXPECT_GT(cv::countNonZero(saturated == 65535), 0);
 }
 
 // Every malformed kind, in two places each, between good frames: the core
