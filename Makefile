@@ -138,9 +138,10 @@ golden: $(BIN)/sgm-golden $(BIN)/sgm-eval
 # make sim [LEFT=... RIGHT=... [GT=...] [GT_SCALE=...]] [OUT=build/sim] [D=64] [MAX_WIDTH=1280]
 #          [STALL=0.0] [SEED=1] [FRAMES=1] [TRACE=1] [PRESET=default|four-path|paper] [CENSUS=9x5|9x9] [LANES=1]
 #          [RIGHT_BLOCK=64 [RIGHT_WEIGHT=]] [MAX_HEIGHT=1024] [UNIQUENESS=1] [AD_TERM=1] [EDGE_RESET=1]
-#          [DEPTH=0 [OUTPUT=depth FOCAL=F BASELINE=B]]
+#          [DEPTH=0 [OUTPUT=depth FOCAL=F BASELINE=B]] [MIN_DISPARITY=0 [DMIN=N]]
 # DEPTH=1 builds the depth output; OUTPUT=depth runs it with f = F/256 px and B um (sgm-sim
-# --output depth --focal F --baseline B: writes depth16.png and depth_color.png).
+# --output depth --focal F --baseline B: writes depth16.png and depth_color.png);
+# MIN_DISPARITY=1 builds the minimum disparity, DMIN=N runs it (sgm-sim --dmin N).
 # The program is sim/sgm_sim.cpp; CENSUS sets the core's census window (-GCENSUS_H),
 # PRESET=paper implies CENSUS=9x9 and runs sgm-sim --preset paper. LANES = K row lanes
 # (-GLANES, docs/lanes.md; also taken by make synth). RIGHT_BLOCK = B builds the
@@ -163,7 +164,8 @@ SIM_ARGS   = --out $(OUT) --d $(D) $(if $(PRESET),--preset $(PRESET)) $(if $(fil
              $(if $(GT),--gt $(GT)) $(if $(GT_SCALE),--gt-scale $(GT_SCALE)) $(if $(STALL),--stall $(STALL)) \
              $(if $(SEED),--seed $(SEED)) $(if $(FRAMES),--frames $(FRAMES)) \
              $(if $(RIGHT_WEIGHT),--right-path $(RIGHT_WEIGHT) --right-block $(RIGHT_BLOCK)) \
-             $(if $(OUTPUT),--output $(OUTPUT)) $(if $(FOCAL),--focal $(FOCAL)) $(if $(BASELINE),--baseline $(BASELINE))
+             $(if $(OUTPUT),--output $(OUTPUT)) $(if $(FOCAL),--focal $(FOCAL)) $(if $(BASELINE),--baseline $(BASELINE)) \
+             $(if $(DMIN),--dmin $(DMIN))
 SIM_VFLAGS = -O3 --x-assign fast --x-initial fast
 
 # Any build/bin/sgm-sim-<tag>[-suffix] builds the core of SIM_CORE; the recipe stops unless
@@ -266,9 +268,9 @@ $(eval $(call rtl_test,top-d16-k3-9x9,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGH
 $(eval $(call rtl_test,top-d16-lean,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GUNIQUENESS=0 -GAD_TERM=0 -GEDGE_RESET=0 -GRIGHT_BLOCK=0 -CFLAGS -DSGM_D=16))
 # The fifth path in blocks (sgm_top RIGHT_BLOCK): blocks of 8 at one lane, of 16 at two lanes
 # (its defaults run weight 4; the settings, parameter sets and regression vary it); the first
-# also has the depth output (DEPTH = 1).
-$(eval $(call rtl_test,top-d16-rb8,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GRIGHT_BLOCK=8 -GEDGE_RESET=1 -GDEPTH=1 -CFLAGS -DSGM_D=16))
-$(eval $(call rtl_test,top-d16-k2-rb16,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GLANES=2 -GRIGHT_BLOCK=16 -GEDGE_RESET=1 -CFLAGS -DSGM_D=16))
+# also has the depth output (DEPTH = 1), both the minimum disparity (MIN_DISPARITY = 1).
+$(eval $(call rtl_test,top-d16-rb8,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GRIGHT_BLOCK=8 -GEDGE_RESET=1 -GDEPTH=1 -GMIN_DISPARITY=1 -CFLAGS -DSGM_D=16))
+$(eval $(call rtl_test,top-d16-k2-rb16,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GLANES=2 -GRIGHT_BLOCK=16 -GEDGE_RESET=1 -GMIN_DISPARITY=1 -CFLAGS -DSGM_D=16))
 # The reference builds (scripts/refs.mk), each whole (its D, lanes, MAX_WIDTH, features and,
 # for the ECP5 ones, the ECP5 flow's register-chain delays): what `make pnr-ref` routes is
 # what is tested, with frames up to its MAX_WIDTH.
@@ -283,7 +285,7 @@ $(foreach r,$(REF_NAMES),$(eval $(BIN)/rtl-ref-$(r): scripts/refs.mk))
 # its FEATURES back and has the frames that ask for a missing lever dropped.
 $(eval $(call rtl_test,axi-d16,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
 $(eval $(call rtl_test,axi-d16-lean,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GUNIQUENESS=0 -GAD_TERM=0 -GEDGE_RESET=0 -GRIGHT_BLOCK=0 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
-$(eval $(call rtl_test,axi-d16-rb16,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GRIGHT_BLOCK=16 -GEDGE_RESET=1 -GDEPTH=1 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
+$(eval $(call rtl_test,axi-d16-rb16,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GRIGHT_BLOCK=16 -GEDGE_RESET=1 -GDEPTH=1 -GMIN_DISPARITY=1 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
 $(BIN)/rtl-axi-d16 $(BIN)/rtl-axi-d16-lean $(BIN)/rtl-axi-d16-rb16: sw/sgm_driver.cpp $(wildcard sw/include/*.h*)
 $(eval $(call rtl_test,path-engine-d16,sgm_path_engine,-GD=16 -GMAX_WIDTH=128 -GXW=8 -GYW=8 -GEDGE_RESET=1 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,path-engine-d64,sgm_path_engine,-GD=64 -GMAX_WIDTH=512 -GXW=10 -GYW=10 -GGRAY_LEAD=0 -GEDGE_RESET=1 -CFLAGS -DSGM_D=64 -CFLAGS -DSGM_YW=10))
@@ -354,7 +356,7 @@ lint: | check-tools
 	done; echo "lint: $(words $(RTL_MODULES)) modules clean"
 	@# sgm_top is wiring only: the hierarchical synthesis flows (synth/common.tcl) synthesise
 	@# its stage modules and keep none of the top's own logic (nextpnr then meets raw cells).
-	@mkdir -p $(BUILD); for g in "" "-set RIGHT_BLOCK 8" "-set LANES 2" "-set LANES 2 -set RIGHT_BLOCK 8" "-set DEPTH 1"; do \
+	@mkdir -p $(BUILD); for g in "" "-set RIGHT_BLOCK 8" "-set LANES 2" "-set LANES 2 -set RIGHT_BLOCK 8" "-set DEPTH 1 -set MIN_DISPARITY 1"; do \
 	  yosys -q -p "read_verilog -sv $(RTL_SRC); chparam -set D 16 -set MAX_WIDTH 128 -set MAX_HEIGHT 64 $$g sgm_top; \
 	    hierarchy -top sgm_top; proc; tee -q -o $(BUILD)/lint-top-cells.txt select -list sgm_top/t:\$$* sgm_top/t:\$$paramod* %d" \
 	    > /dev/null 2>&1 || { echo "lint: yosys could not elaborate sgm_top ($$g)"; exit 1; }; \

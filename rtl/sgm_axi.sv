@@ -10,13 +10,13 @@
 //
 //   identification  ID, D, MAX_WIDTH, MAX_HEIGHT, CENSUS, MIN_WIDTH, LANES, FEATURES (read-only)
 //   control         CTRL (enable, soft reset, hold), FRAME_SIZE, PENALTY, CONFIG,
-//                   EDGE_RESET, OUTPUT, DEPTH_FOCAL, DEPTH_BASELINE
+//                   EDGE_RESET, OUTPUT, DEPTH_FOCAL, DEPTH_BASELINE, MIN_DISPARITY
 //   status          STATUS (busy), FRAMES, ERROR (sticky, W1C), ERROR_COUNT,
 //                   LAST_SIZE
 //   interrupt       IRQ_ENABLE, IRQ_STATUS (W1C); irq_o = |(status & enable)
 //
 // Configuration: the bus writes FRAME_SIZE, PENALTY, CONFIG, EDGE_RESET, OUTPUT,
-// DEPTH_FOCAL and DEPTH_BASELINE (shadow registers). While CTRL.HOLD is 0 they are
+// DEPTH_FOCAL, DEPTH_BASELINE and MIN_DISPARITY (shadow registers). While CTRL.HOLD is 0 they are
 // copied every cycle into the active set, the frame configuration word that drives
 // sgm_top's cfg_i (cfg_from_regs packs the registers' fields), and sgm_top takes the
 // active set at the handshake of a frame's first beat, so a write in the middle of a
@@ -30,8 +30,8 @@
 // writes to read-only registers are ignored with OKAY.
 //
 // Parameters: D, MAX_WIDTH, MAX_HEIGHT, CENSUS_H, LANES, UNIQUENESS, AD_TERM,
-// RIGHT_BLOCK, EDGE_RESET, DEPTH as sgm_top (FEATURES reads back the last five); ADDR_W
-// AXI address bits.
+// RIGHT_BLOCK, EDGE_RESET, DEPTH, MIN_DISPARITY as sgm_top (FEATURES reads back the
+// last six); ADDR_W AXI address bits.
 // Latency and throughput: those of sgm_top; register responses one cycle
 // after the request.
 module sgm_axi #(
@@ -45,6 +45,7 @@ module sgm_axi #(
   parameter int RIGHT_BLOCK /*verilator public*/ = 64,
   parameter int EDGE_RESET /*verilator public*/ = 1,
   parameter int DEPTH      /*verilator public*/ = 0,
+  parameter int MIN_DISPARITY /*verilator public*/ = 0,
   parameter int ADDR_W     = 8,
   localparam int XW        = $clog2(MAX_WIDTH + 1),
   localparam int YW        = $clog2(MAX_HEIGHT + 16)
@@ -93,7 +94,7 @@ module sgm_axi #(
   // so its builds, of legal parameters only, leave the checks out).
 `ifndef __ICARUS__
   if (!(ADDR_W >= 7 && ADDR_W <= 32)) begin : g_bad_addr_w
-    $error("sgm_axi: ADDR_W = %0d: ADDR_W must be from 7 to 32 (the registers span byte offsets 0x00 .. 0x58)", ADDR_W);
+    $error("sgm_axi: ADDR_W = %0d: ADDR_W must be from 7 to 32 (the registers span byte offsets 0x00 .. 0x5C)", ADDR_W);
   end
 `endif
 
@@ -170,6 +171,7 @@ module sgm_axi #(
   wire wr_output      = reg_we && waddr == ADDR_OUTPUT;
   wire wr_focal       = reg_we && waddr == ADDR_DEPTH_FOCAL;
   wire wr_baseline    = reg_we && waddr == ADDR_DEPTH_BASELINE;
+  wire wr_dmin        = reg_we && waddr == ADDR_MIN_DISPARITY;
   wire wr_irq_status  = reg_we && waddr == ADDR_IRQ_STATUS;
 
   assign reg_werr = !reg_defined(waddr);
@@ -177,7 +179,7 @@ module sgm_axi #(
 
   // ------------------------------------------------------------ control registers
   logic [31:0] ctrl_q, frame_size_q, penalty_q, config_q, edge_reset_q, irq_enable_q;
-  logic [31:0] output_q, focal_q, baseline_q;
+  logic [31:0] output_q, focal_q, baseline_q, dmin_q;
   logic [$clog2(SOFT_RESET_CYCLES + 1)-1:0] soft_reset_q;
 
   always_ff @(posedge clk_i) begin
@@ -191,6 +193,7 @@ module sgm_axi #(
       output_q     <= '0;
       focal_q      <= '0;
       baseline_q   <= '0;
+      dmin_q       <= '0;
       soft_reset_q <= '0;
     end else begin
       if (wr_ctrl) ctrl_q <= merge(ctrl_q, reg_wdata, wmask, CTRL_MASK);
@@ -202,6 +205,7 @@ module sgm_axi #(
       if (wr_output) output_q <= merge(output_q, reg_wdata, wmask, OUTPUT_MASK);
       if (wr_focal) focal_q <= merge(focal_q, reg_wdata, wmask, DEPTH_FOCAL_MASK);
       if (wr_baseline) baseline_q <= merge(baseline_q, reg_wdata, wmask, DEPTH_BASELINE_MASK);
+      if (wr_dmin) dmin_q <= merge(dmin_q, reg_wdata, wmask, MIN_DISPARITY_MASK);
       if (wr_ctrl && wset[CTRL_SOFT_RESET_LSB]) soft_reset_q <= ($bits(soft_reset_q))'(SOFT_RESET_CYCLES);
       else if (soft_reset_q != '0) soft_reset_q <= soft_reset_q - 1'b1;
     end
@@ -218,9 +222,10 @@ module sgm_axi #(
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni)
-      act_cfg <= cfg_from_regs(32'd0, PENALTY_RESET, CONFIG_RESET, EDGE_RESET_RESET, 32'd0, 32'd0, 32'd0);
+      act_cfg <= cfg_from_regs(32'd0, PENALTY_RESET, CONFIG_RESET, EDGE_RESET_RESET, 32'd0, 32'd0, 32'd0, 32'd0);
     else if (!hold)
-      act_cfg <= cfg_from_regs(frame_size_q, penalty_q, config_q, edge_reset_q, output_q, focal_q, baseline_q);
+      act_cfg <= cfg_from_regs(frame_size_q, penalty_q, config_q, edge_reset_q, output_q, focal_q, baseline_q,
+                               dmin_q);
   end
 
   // ------------------------------------------------------------ core
@@ -237,7 +242,8 @@ module sgm_axi #(
 
   sgm_top #(
     .D(D), .MAX_WIDTH(MAX_WIDTH), .MAX_HEIGHT(MAX_HEIGHT), .CENSUS_H(CENSUS_H), .LANES(LANES), .UNIQUENESS(UNIQUENESS),
-    .AD_TERM(AD_TERM), .RIGHT_BLOCK(RIGHT_BLOCK), .EDGE_RESET(EDGE_RESET), .DEPTH(DEPTH)
+    .AD_TERM(AD_TERM), .RIGHT_BLOCK(RIGHT_BLOCK), .EDGE_RESET(EDGE_RESET), .DEPTH(DEPTH),
+    .MIN_DISPARITY(MIN_DISPARITY)
   ) u_core (
     .clk_i         (clk_i),
     .rst_ni        (rst_ni && !core_reset),
@@ -324,6 +330,7 @@ module sgm_axi #(
       ADDR_OUTPUT:      reg_rdata = output_q;
       ADDR_DEPTH_FOCAL: reg_rdata = focal_q;
       ADDR_DEPTH_BASELINE: reg_rdata = baseline_q;
+      ADDR_MIN_DISPARITY: reg_rdata = dmin_q;
       default:          reg_rdata = 32'd0;
     endcase
   end

@@ -24,13 +24,22 @@
 // a (K - 1)-word distributed RAM at a rotating pointer), s2 .. s4
 // the three PE stages (sgm_cost_pe).
 //
+// MIN_DISPARITY = 1 builds the minimum disparity (docs/algorithm.md section 3): C(p, d)
+// compares left x with right x - dmin - d, so the right entry enters the delay line
+// dmin K slots late: for dmin K >= 3 from a memory of 2^ceil(log2(256 K)) entries written
+// every slot and read dmin K - 2 slots behind (a synchronous read and one more register),
+// for dmin K = 1, 2 from two registers; and PE d is outside when x - dmin - d < 0
+// (its bound d + dmin registered, dmin_i being a constant of the frame). 0: none, dmin_i
+// unused.
+//
 // AD_TERM = 0 builds no AD term: the PEs without it (sgm_cost_pe), the delay
 // line without the gray (NB + RKW bit taps), no weight, cap or left gray
 // registers; the AD inputs are ignored (sgm_stream_ctrl drops frames that ask
 // for the term). The latency is the same.
 //
 // Parameters: D disparities, CW column bits, NB census bits (44 for the 9x5 census,
-// 80 for the 9x9), LANES (K >= 1), AD_TERM (1: the AD term is built, 0: not);
+// 80 for the 9x9), LANES (K >= 1), AD_TERM (1: the AD term is built, 0: not),
+// MIN_DISPARITY (1: the minimum disparity is built, 0: not);
 // RKW rank bits and CBITS cost bits follow.
 // Latency: LATENCY = 4 slots (1 + the PE's 3) for every parameter value:
 // cost_o, col_o, valid_o during slot t belong to the input of slot t - 4.
@@ -41,6 +50,7 @@ module sgm_cost_volume #(
   parameter int  NB    = 44,
   parameter int  LANES /*verilator public*/ = 1,
   parameter int  AD_TERM /*verilator public*/ = 1,
+  parameter int  MIN_DISPARITY /*verilator public*/ = 0,
   localparam int RKW   = $clog2(NB + 1),
   localparam int CBITS = $clog2(2 * NB + 1)
 ) (
@@ -48,6 +58,7 @@ module sgm_cost_volume #(
   input  wire              rst_ni,
   input  wire              en_i,
   input  wire  [1:0]       mode_i,
+  input  wire  [7:0]       dmin_i,       // the minimum disparity, a constant of the frame
   input  wire  [3:0]       ad_weight_i,  // AD term weight W (0: off), with the slot
   input  wire  [7:0]       ad_cap_i,     // AD term cap T, with the slot
   input  wire  [7:0]       lgray_i,      // left centre gray (the census unit's centre_o)
@@ -83,6 +94,9 @@ module sgm_cost_volume #(
   if (!(AD_TERM == 0 || AD_TERM == 1)) begin : g_bad_ad_term
     $error("sgm_cost_volume: AD_TERM = %0d: AD_TERM must be 0 or 1", AD_TERM);
   end
+  if (!(MIN_DISPARITY == 0 || MIN_DISPARITY == 1)) begin : g_bad_min_disparity
+    $error("sgm_cost_volume: MIN_DISPARITY = %0d: MIN_DISPARITY must be 0 or 1", MIN_DISPARITY);
+  end
 `endif
 
   localparam int LATENCY /*verilator public*/ = 4;
@@ -96,6 +110,7 @@ module sgm_cost_volume #(
   logic [1:0]    mode1_q, mode2_q;
   logic          valid1_q, valid2_q, valid3_q;
   logic [EW-1:0]       tap0_q;  // tap 0
+  wire  [EW-1:0]       right_in, right_shifted;
   logic [(D-1)*EW-1:0] taps_q;  // taps 1 .. D-1
   wire  [D*EW-1:0]     line = {taps_q, tap0_q};
 
@@ -130,15 +145,45 @@ module sgm_cost_volume #(
         adw2_q   <= adw1_q;
       end
     end
-    always_ff @(posedge clk_i) begin
-      if (en_i) tap0_q <= {rgray_i, rrank_i, rcensus_i};
-    end
+    assign right_in = {rgray_i, rrank_i, rcensus_i};
   end else begin : g_no_ad
     assign {lgray1_q, adcap1_q, adlo1_q, adhi1_q, adw2_q} = '0;
-    always_ff @(posedge clk_i) begin
-      if (en_i) tap0_q <= {rrank_i, rcensus_i};
-    end
+    assign right_in = {rrank_i, rcensus_i};
     wire unused_ad = ^{lgray_i, rgray_i, ad_cap_i, ad_weight_i};
+  end
+
+  // The right entry of dmin K slots before this one (MIN_DISPARITY = 1), else this slot's.
+  if (MIN_DISPARITY != 0) begin : g_shift
+    localparam int SAW = $clog2(256 * LANES);  // dmin K - 2 < 2^SAW
+    localparam int SKW = $clog2(255 * LANES + 1);
+    logic [EW-1:0]  shift_mem [0:(1 << SAW) - 1];
+    logic [SAW-1:0] wr_ptr_q;
+    logic [EW-1:0]  rd_q, rd2_q, in1_q, in2_q;
+    logic [SKW-1:0] lag_q;  // dmin K, a constant of the frame
+    always_ff @(posedge clk_i) begin
+      lag_q <= SKW'(dmin_i) * SKW'(LANES);
+    end
+    always_ff @(posedge clk_i) begin
+      if (!rst_ni) wr_ptr_q <= '0;
+      else if (en_i) wr_ptr_q <= wr_ptr_q + 1'b1;
+    end
+    always_ff @(posedge clk_i) begin
+      if (en_i) begin
+        shift_mem[wr_ptr_q] <= right_in;
+        rd_q  <= shift_mem[wr_ptr_q - SAW'(lag_q - SKW'(2))];  // written dmin K - 2 slots ago
+        rd2_q <= rd_q;
+        in1_q <= right_in;
+        in2_q <= in1_q;
+      end
+    end
+    assign right_shifted = lag_q == '0 ? right_in : lag_q == SKW'(1) ? in1_q : lag_q == SKW'(2) ? in2_q : rd2_q;
+  end else begin : g_no_shift
+    assign right_shifted = right_in;
+    wire unused_dmin = ^dmin_i;
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (en_i) tap0_q <= right_shifted;
   end
 
   // Tap d of slot n + 1 = tap d - 1 of slot n - (K - 1): taps 1 .. D-1 are taps
@@ -153,14 +198,26 @@ module sgm_cost_volume #(
 
   // ------------------------------------------------------------ s2 .. s4: PEs
   for (genvar d = 0; d < D; d++) begin : g_pe
-    wire outside;  // x - d < 0
+    wire outside;  // x - dmin - d < 0
     wire [7:0] rgray;  // the right gray at x - d (AD_TERM = 0: none)
     if (AD_TERM != 0) begin : g_gray
       assign rgray = line[d*EW+NB+RKW +: GW];
     end else begin : g_no_gray
       assign rgray = '0;
     end
-    if (d == 0) begin : g_d0
+    if (MIN_DISPARITY != 0) begin : g_dmin
+      // The bound d + dmin (up to 510) registered: the comparison is one register's.
+      localparam int BW = (CW > 9 ? CW : 9) + 1;
+      logic [BW-1:0] bound_q;
+      logic          outside_q;
+      always_ff @(posedge clk_i) begin
+        bound_q <= BW'(d) + BW'(dmin_i);
+      end
+      always_ff @(posedge clk_i) begin
+        if (en_i) outside_q <= BW'(col_i) < bound_q;
+      end
+      assign outside = outside_q;
+    end else if (d == 0) begin : g_d0
       assign outside = 1'b0;
     end else begin : g_dn
       // Decided on col_i and registered beside col1_q: each PE's flag is one

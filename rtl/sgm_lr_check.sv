@@ -4,7 +4,9 @@
 // pixel per slot, with the right disparities computed from the same S:
 //
 //   dR(xr) = argmin over d = 0 .. min(D-1, W-1-xr) of S(xr+d, d)  (ties: smallest d)
-//   left (x, y) with winner d is valid iff x - d >= 0 and |dR(x-d) - d| <= tol_i
+//   left (x, y) with winner d is valid iff x - dmin - d >= 0 and |dR(x-d) - d| <= tol_i
+//   (dmin = dmin_i, the minimum disparity, 0 in a build without it; d and dR in the
+//   search's own frame, 0 .. D-1, as docs/algorithm.md section 7 has them)
 //   (check_en_i = 0: every pixel valid), and in either case only if the WTA
 //   side's unique_i said the winner is unique (sgm_wta: uniqueness ratio).
 //
@@ -64,7 +66,7 @@
 //   R1  read the left word (x, y-1): on r1_word RAM_LATENCY slots later
 //   R2  xr = x - d; read dR (xr, y-1) (a wrapped address when x < d: not used):
 //       on r2_dr RAM_LATENCY slots later
-//   R3  valid = (!check_en || (x >= d && |dR - d| <= tol)) && unique; output registers.
+//   R3  valid = (!check_en || (x >= dmin + d && |dR - d| <= tol)) && unique; output registers.
 // Order of memory accesses (slot = S-side slot, a write at slot t is visible
 // to reads at slots > t; the dR read of left pixel x is at slot x + 3 of its row):
 //   * dR(xr), xr <= W-D, of row y is written at slot (xr + D, y) and read no
@@ -122,6 +124,7 @@ module sgm_lr_check #(
   input  wire  [CW-1:0]    width_i,
   input  wire  [RW-1:0]    height_i,
   input  wire  [2:0]       tol_i,        // tolerance in px
+  input  wire  [7:0]       dmin_i,       // the minimum disparity (a constant of the frame)
   input  wire              check_en_i,   // 0: every pixel valid
   // S side: aggregated costs S(d) = s_i[d*SW +: SW] of the slot's pixel.
   input  wire  [D*SW-1:0]  s_i,
@@ -156,8 +159,8 @@ module sgm_lr_check #(
   if (!(D >= 16 && D <= 256 && (D & (D - 1)) == 0)) begin : g_bad_d
     $error("sgm_lr_check: D = %0d: D must be a power of two from 16 to 256", D);
   end
-  if (!(DW == $clog2(D) + 4)) begin : g_bad_dw
-    $error("sgm_lr_check: DW = %0d: DW must be $clog2(D) + 4 = %0d (the disparity and 4 fractional bits)", DW, $clog2(D) + 4);
+  if (!(DW == $clog2(D) + 4 || DW == $clog2(D + 256) + 4)) begin : g_bad_dw
+    $error("sgm_lr_check: DW = %0d: DW must be $clog2(D) + 4 = %0d, or $clog2(D + 256) + 4 with the minimum disparity (the disparity and 4 fractional bits)", DW, $clog2(D) + 4);
   end
   if (!(MAX_WIDTH >= D && MAX_WIDTH >= 16)) begin : g_bad_max_width
     $error("sgm_lr_check: MAX_WIDTH = %0d: MAX_WIDTH must be at least max(D, 16) (D = %0d)", MAX_WIDTH, D);
@@ -386,7 +389,8 @@ module sgm_lr_check #(
   // ------------------------------------------------------------ R2: the dR word
   logic          r1_real_q;   // the pipeline of the real flag, RAM_LATENCY slots (reset)
   wire  [LD-1:0] r1_d    = r1_word[DW +: LD];
-  wire           r1_ok   = r1_col >= CW'(r1_d);          // x - d >= 0
+  // x - dmin - d >= 0 (dmin_i: the minimum disparity, 0 without it; a constant of the frame)
+  wire           r1_ok   = (CW + 9)'(r1_col) >= (CW + 9)'(r1_d) + (CW + 9)'(dmin_i);
   wire  [CW-1:0] r1_xr   = r1_col - CW'(r1_d);
   wire           r1_real = r1_real_q && r1_word[LW];  // (x, y-1) was a pixel of this frame
   wire           r1_uniq;  // the winner passed the uniqueness test (not built: always)

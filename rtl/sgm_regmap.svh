@@ -32,6 +32,7 @@ localparam logic [ADDR_W-1:0] ADDR_IRQ_STATUS   /*verilator public*/ = ADDR_W'('
 localparam logic [ADDR_W-1:0] ADDR_OUTPUT       /*verilator public*/ = ADDR_W'('h50);
 localparam logic [ADDR_W-1:0] ADDR_DEPTH_FOCAL  /*verilator public*/ = ADDR_W'('h54);
 localparam logic [ADDR_W-1:0] ADDR_DEPTH_BASELINE /*verilator public*/ = ADDR_W'('h58);
+localparam logic [ADDR_W-1:0] ADDR_MIN_DISPARITY /*verilator public*/ = ADDR_W'('h5C);
 
 localparam int ID_VERSION_LSB /*verilator public*/ = 0;
 localparam int ID_VERSION_W = 8;
@@ -74,10 +75,12 @@ localparam int FEATURES_EDGE_RESET_LSB /*verilator public*/ = 3;
 localparam int FEATURES_EDGE_RESET_W = 1;
 localparam int FEATURES_DEPTH_LSB /*verilator public*/ = 4;
 localparam int FEATURES_DEPTH_W = 1;
+localparam int FEATURES_MIN_DISPARITY_LSB /*verilator public*/ = 5;
+localparam int FEATURES_MIN_DISPARITY_W = 1;
 localparam int FEATURES_RIGHT_BLOCK_LSB /*verilator public*/ = 8;
 localparam int FEATURES_RIGHT_BLOCK_W = 4;
-localparam logic [31:0] FEATURES_MASK = 32'h00000F1F;
-localparam logic [31:0] FEATURES_VALUE /*verilator public*/ = {20'd0, 4'(RIGHT_BLOCK != 0 ? $clog2(RIGHT_BLOCK) : 0), 3'd0, 1'(DEPTH != 0), 1'(EDGE_RESET != 0), 1'(RIGHT_BLOCK != 0), 1'(AD_TERM != 0), 1'(UNIQUENESS != 0)};
+localparam logic [31:0] FEATURES_MASK = 32'h00000F3F;
+localparam logic [31:0] FEATURES_VALUE /*verilator public*/ = {20'd0, 4'(RIGHT_BLOCK != 0 ? $clog2(RIGHT_BLOCK) : 0), 2'd0, 1'(MIN_DISPARITY != 0), 1'(DEPTH != 0), 1'(EDGE_RESET != 0), 1'(RIGHT_BLOCK != 0), 1'(AD_TERM != 0), 1'(UNIQUENESS != 0)};
 localparam int CTRL_ENABLE_LSB /*verilator public*/ = 0;
 localparam int CTRL_ENABLE_W = 1;
 localparam int CTRL_SOFT_RESET_LSB /*verilator public*/ = 1;
@@ -182,6 +185,9 @@ localparam logic [31:0] DEPTH_FOCAL_MASK = 32'h00FFFFFF;
 localparam int DEPTH_BASELINE_B_LSB /*verilator public*/ = 0;
 localparam int DEPTH_BASELINE_B_W = 24;
 localparam logic [31:0] DEPTH_BASELINE_MASK = 32'h00FFFFFF;
+localparam int MIN_DISPARITY_DMIN_LSB /*verilator public*/ = 0;
+localparam int MIN_DISPARITY_DMIN_W = 8;
+localparam logic [31:0] MIN_DISPARITY_MASK = 32'h000000FF;
 
 localparam int MIN_HEIGHT = 9;  // shortest frame of every build (sgm_stream_ctrl)
 localparam int ERROR_KINDS = 4;  // error kinds (ERROR, ERROR_COUNT)
@@ -196,8 +202,10 @@ function automatic logic [CFG_W-1:0] cfg_from_regs(
     input logic [31:0] reg_edge_reset,
     input logic [31:0] reg_output,
     input logic [31:0] reg_depth_focal,
-    input logic [31:0] reg_depth_baseline);
+    input logic [31:0] reg_depth_baseline,
+    input logic [31:0] reg_min_disparity);
   cfg_from_regs = {
+    reg_min_disparity[7:0],      // MIN_DISPARITY.DMIN, word [157:150]
     reg_depth_baseline[23:0],    // DEPTH_BASELINE.B, word [149:126]
     reg_depth_focal[23:0],       // DEPTH_FOCAL.F, word [125:102]
     reg_output[1:0],             // OUTPUT.MODE, word [101:100]
@@ -231,7 +239,7 @@ function automatic logic reg_defined(input logic [ADDR_W-1:0] a);
     ADDR_CTRL, ADDR_FRAME_SIZE, ADDR_PENALTY, ADDR_CONFIG,
     ADDR_STATUS, ADDR_FRAMES, ADDR_ERROR, ADDR_ERROR_COUNT,
     ADDR_LAST_SIZE, ADDR_EDGE_RESET, ADDR_IRQ_ENABLE, ADDR_IRQ_STATUS,
-    ADDR_OUTPUT, ADDR_DEPTH_FOCAL, ADDR_DEPTH_BASELINE:
+    ADDR_OUTPUT, ADDR_DEPTH_FOCAL, ADDR_DEPTH_BASELINE, ADDR_MIN_DISPARITY:
       reg_defined = 1'b1;
     default: reg_defined = 1'b0;
   endcase

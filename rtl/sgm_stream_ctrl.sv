@@ -20,7 +20,8 @@
 // for a run-time lever the build lacks (a uniqueness ratio other than 0 with
 // UNIQUENESS = 0, an AD weight other than 0 with AD_TERM = 0, a fifth-path weight
 // other than 0 with RIGHT_PATH = 0, a path restart threshold other than 0 with
-// EDGE_RESET = 0, a depth output with DEPTH = 0), a fifth-path weight above 8 or a path restart with length 0.
+// EDGE_RESET = 0, a depth output with DEPTH = 0, a minimum disparity with MIN_DISPARITY
+// = 0), a fifth-path weight above 8 or a path restart with length 0.
 //
 // The configuration is one packed word, the frame configuration word cfg_i
 // (rtl/sgm_cfg.svh, generated from regmap/sgm_regmap.def): sampled whole with the
@@ -41,10 +42,10 @@
 // FRAME_SIZE's 16-bit fields can hold, 65535), NB census bits (the
 // cost word holds 0 .. 2^CBITS - 1, CBITS = bits of 2 NB), XW/YW column/row
 // bits (rows count on past the frame while flushing: MAX_HEIGHT + flush rows
-// must fit YW bits), FIFO_DEPTH, UNIQUENESS, AD_TERM, RIGHT_PATH, EDGE_RESET and
-// DEPTH (sgm_top's: whether the build has the uniqueness test, the AD term, the fifth
-// path, the path restart at strong edges, the depth output; 0 rejects frames that set
-// them).
+// must fit YW bits), FIFO_DEPTH, UNIQUENESS, AD_TERM, RIGHT_PATH, EDGE_RESET, DEPTH and
+// MIN_DISPARITY (sgm_top's: whether the build has the uniqueness test, the AD term, the
+// fifth path, the path restart at strong edges, the depth output, the minimum disparity;
+// 0 rejects frames that set them).
 // Throughput: one beat per cycle in both directions when the output is ready.
 module sgm_stream_ctrl #(
   parameter int MAX_WIDTH  = 1280,
@@ -58,7 +59,8 @@ module sgm_stream_ctrl #(
   parameter int AD_TERM    = 1,
   parameter int RIGHT_PATH = 0,
   parameter int EDGE_RESET = 0,
-  parameter int DEPTH      = 0
+  parameter int DEPTH      = 0,
+  parameter int MIN_DISPARITY = 0
 ) (
   input  wire                 clk_i,
   input  wire                 rst_ni,
@@ -144,6 +146,9 @@ module sgm_stream_ctrl #(
   if (!(DEPTH == 0 || DEPTH == 1)) begin : g_bad_depth
     $error("sgm_stream_ctrl: DEPTH = %0d: DEPTH must be 0 or 1", DEPTH);
   end
+  if (!(MIN_DISPARITY == 0 || MIN_DISPARITY == 1)) begin : g_bad_min_disparity
+    $error("sgm_stream_ctrl: MIN_DISPARITY = %0d: MIN_DISPARITY must be 0 or 1", MIN_DISPARITY);
+  end
 `endif
 
   typedef enum logic [2:0] {IDLE, FILL, RUN, PAD, FLUSH} state_e;
@@ -203,7 +208,8 @@ module sgm_stream_ctrl #(
                 cfg_p2 >= cfg_p1 && ad_fits &&
                 (cfg_reset_t == 8'd0 || 32'(cfg_reset_len) >= CFG_EDGE_RESET_LEN_MIN) &&
                 cfg_below_max(cfg_i) &&
-                cfg_levers_built(cfg_i, AD_TERM != 0, RIGHT_PATH != 0, UNIQUENESS != 0, EDGE_RESET != 0, DEPTH != 0);
+                cfg_levers_built(cfg_i, AD_TERM != 0, RIGHT_PATH != 0, UNIQUENESS != 0, EDGE_RESET != 0, DEPTH != 0,
+                                 MIN_DISPARITY != 0);
   logic [CFG_W:0] pend_q [0:1];  // {in range, the word}
   always_ff @(posedge clk_i) begin
     if (in_push && s_tuser_i) pend_q[in_wr_q] <= {cfg_ok, cfg_i};

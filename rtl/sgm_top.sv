@@ -41,6 +41,12 @@
 // DEPTH_FOCAL.F and DEPTH_BASELINE.B, exact to the LSB; it adds its LATENCY (20 slots)
 // behind the median. 0 leaves it out (the default), and a frame that asks for depth is
 // dropped with error_o[3].
+// MIN_DISPARITY = 1 builds the minimum disparity (docs/algorithm.md section 3): run-time
+// MIN_DISPARITY.DMIN = dmin, 0 .. 255; the search covers dmin .. dmin + D - 1 (the right
+// image enters sgm_cost_volume's delay line dmin pixels late, a memory of 256 K entries),
+// the LR check's bound is x - dmin - d >= 0, and the disparity is the true one from the WTA
+// on (DW = ceil(log2(D + 256)) + 4 bits in the stages behind it). 0 leaves it out (the
+// default), and a frame with dmin != 0 is dropped with error_o[3].
 // Configuration: cfg_i, the frame configuration word (rtl/sgm_cfg.svh, generated from
 // regmap/sgm_regmap.def; its fields are the read-write fields of sgm_axi's FRAME_SIZE,
 // PENALTY, CONFIG and EDGE_RESET, docs/registers.md), taken at each start of frame by
@@ -66,6 +72,7 @@ module sgm_top #(
   parameter int RIGHT_BLOCK /*verilator public*/ = 64,  // the fifth path's block B (a power of two >= 2), 0: not built
   parameter int EDGE_RESET /*verilator public*/ = 1,  // the path restart at strong edges is built (0: not)
   parameter int DEPTH      /*verilator public*/ = 0,  // the depth output is built (0: not)
+  parameter int MIN_DISPARITY /*verilator public*/ = 0,  // the minimum disparity is built (0: not)
   localparam int XW        = $clog2(MAX_WIDTH + 1),
   // Lanes (docs/lanes.md "The top's wiring at K lanes"). The engine's
   // SKEW (sgm_path_engine owns the formula; mirrored here for the deal, checked
@@ -99,7 +106,7 @@ module sgm_top #(
   localparam int RW        = $clog2(MAX_HEIGHT + 16 + (LANES == 1 ? 0 : 2 * LR_LAG_MAX + 2 * LANES + 4) +
                                     (RIGHT_PATH != 0 ? RP_LATENCY / MIN_FRAME_WIDTH + 2 : 0)),
   localparam int LD        = $clog2(D),
-  localparam int DW        = LD + 4,
+  localparam int DW        = (MIN_DISPARITY != 0 ? $clog2(D + 256) : LD) + 4,  // the true disparity, 1/16 px
   localparam int NB        = 9 * CENSUS_H - 1,            // census bits: 44 (9x5), 80 (9x9)
   localparam int RKW       = $clog2(NB + 1),              // rank 0 .. NB
   localparam int CBITS     = $clog2(2 * NB + 1),          // matching cost: Cmax = 2 NB (unified)
@@ -167,6 +174,9 @@ module sgm_top #(
   if (!(DEPTH == 0 || DEPTH == 1)) begin : g_bad_depth
     $error("sgm_top: DEPTH = %0d: DEPTH must be 0 or 1", DEPTH);
   end
+  if (!(MIN_DISPARITY == 0 || MIN_DISPARITY == 1)) begin : g_bad_min_disparity
+    $error("sgm_top: MIN_DISPARITY = %0d: MIN_DISPARITY must be 0 or 1", MIN_DISPARITY);
+  end
   if (!(RIGHT_BLOCK == 0 || (RIGHT_BLOCK >= 2 && (RIGHT_BLOCK & (RIGHT_BLOCK - 1)) == 0))) begin : g_bad_right_block
     $error("sgm_top: RIGHT_BLOCK = %0d: RIGHT_BLOCK must be 0 (no fifth path) or a power of two >= 2", RIGHT_BLOCK);
   end
@@ -202,7 +212,8 @@ module sgm_top #(
     .AD_TERM   (AD_TERM),
     .RIGHT_PATH(RIGHT_PATH),
     .EDGE_RESET(EDGE_RESET),
-    .DEPTH     (DEPTH)
+    .DEPTH     (DEPTH),
+    .MIN_DISPARITY(MIN_DISPARITY)
   ) u_ctrl (
     .clk_i         (clk_i),
     .rst_ni        (rst_ni),
@@ -242,6 +253,16 @@ module sgm_top #(
     .sig_i (en_ctrl),
     .sig_o (en)
   );
+
+  // The minimum disparity of the frame (0 in a build without it: the field is 0 in every
+  // frame such a build takes, and the LR check's bound then folds away).
+  logic [7:0] dmin;
+  if (MIN_DISPARITY != 0) begin : g_dmin
+    assign dmin = cfg[CFG_MIN_DISPARITY_DMIN_LSB +: CFG_MIN_DISPARITY_DMIN_W];
+  end else begin : g_no_dmin
+    assign dmin = 8'd0;
+    wire [CFG_MIN_DISPARITY_DMIN_W-1:0] unused_cfg_dmin = cfg[CFG_MIN_DISPARITY_DMIN_LSB +: CFG_MIN_DISPARITY_DMIN_W];
+  end
 
   assign frame_width_o  = width;
   assign frame_height_o = height[YW-1:0];
@@ -377,11 +398,14 @@ module sgm_top #(
   logic [XW-1:0]      col2;  // the engine takes the column COST_LATENCY slots earlier; the fifth path this one
   logic               valid2;
 
-  sgm_cost_volume #(.D(D), .CW(XW), .NB(NB), .LANES(LANES), .AD_TERM(AD_TERM)) u_cost (
+  sgm_cost_volume #(
+    .D(D), .CW(XW), .NB(NB), .LANES(LANES), .AD_TERM(AD_TERM), .MIN_DISPARITY(MIN_DISPARITY)
+  ) u_cost (
     .clk_i     (clk_i),
     .rst_ni    (rst_ni),
     .en_i      (en),
     .mode_i    (cfg[CFG_CONFIG_MODE_LSB +: CFG_CONFIG_MODE_W]),
+    .dmin_i    (dmin),
     .ad_weight_i(cfg[CFG_PENALTY_AD_WEIGHT_LSB +: CFG_PENALTY_AD_WEIGHT_W]),
     .ad_cap_i  (cfg[CFG_PENALTY_AD_CAP_LSB +: CFG_PENALTY_AD_CAP_W]),
     .lgray_i   (lane_centre),
@@ -522,10 +546,11 @@ module sgm_top #(
   logic [RW-1:0] row4;
   logic          valid4;
 
-  sgm_wta #(.D(D), .SW(SW), .CW(XW), .RW(RW), .UNIQUENESS(UNIQUENESS)) u_wta (
+  sgm_wta #(.D(D), .SW(SW), .CW(XW), .RW(RW), .UNIQUENESS(UNIQUENESS), .MIN_DISPARITY(MIN_DISPARITY)) u_wta (
     .clk_i      (clk_i),
     .rst_ni     (rst_ni),
     .en_i       (en),
+    .dmin_i     (dmin),
     .subpixel_i (cfg[CFG_CONFIG_SUBPIXEL_LSB]),
     .uniq_i     (cfg[CFG_CONFIG_UNIQUENESS_LSB +: CFG_CONFIG_UNIQUENESS_W]),
     .s_i        (sum),
@@ -564,6 +589,7 @@ module sgm_top #(
     .width_i     (width),
     .height_i    (height),
     .tol_i       (cfg[CFG_CONFIG_LR_TOL_LSB +: CFG_CONFIG_LR_TOL_W]),
+    .dmin_i      (dmin),
     .check_en_i  (cfg[CFG_CONFIG_LR_ENABLE_LSB]),
     .s_i         (sum),
     .col_i       (col3),

@@ -46,6 +46,11 @@
 //        bits 1..0, Q3: 3..2, Q2: 5..4, Q1: 6), 100 m = 64 m + 32 m + 4 m
 //        (P: 64 m + 32 m, Q3: + 4 m), compared in Q0.
 //
+// MIN_DISPARITY = 1 (the minimum disparity, docs/algorithm.md section 3): disp is the
+// true disparity, 16 (dmin + d*) +- q, dmin = dmin_i (a constant of the frame) added to d*
+// and d* - 1 in Q0 beside the last quotient bit; DW = ceil(log2(D + 256)) + 4 bits. d_o
+// stays the search's d* (0 .. D - 1). 0: DW = log2(D) + 4, dmin_i unused.
+//
 // UNIQUENESS = 0 builds no uniqueness test: the nodes carry {b, a, m, d} only
 // (no sec / exf / exl, no candidate selects), no product, no U pipeline;
 // unique_o is constant 1 and uniq_i is ignored (sgm_stream_ctrl drops frames
@@ -53,7 +58,7 @@
 //
 // Parameters: D disparities (a power of two from 16 to 256), SW width of S,
 // CW column bits, RW row bits of the slot position (passed through),
-// UNIQUENESS (1: the uniqueness test is built, 0: not).
+// UNIQUENESS (1: the uniqueness test is built, 0: not), MIN_DISPARITY (1: built, 0: not).
 // Latency: LATENCY = TREE_STAGES + 5 slots (D = 16: 9, 32: 10, 64: 11, 128: 12): the
 // result of the slot presented at enabled edge n is on the outputs after
 // enabled edge n + LATENCY - 1. Throughput: one pixel per slot.
@@ -64,8 +69,9 @@ module sgm_wta #(
   parameter int CW /*verilator public*/ = 11,
   parameter int RW /*verilator public*/ = 11,
   parameter int UNIQUENESS /*verilator public*/ = 1,
+  parameter int MIN_DISPARITY /*verilator public*/ = 0,
   localparam int LD          = $clog2(D),
-  localparam int DW          = LD + 4,
+  localparam int DW          = (MIN_DISPARITY != 0 ? $clog2(D + 256) : LD) + 4,
   localparam int TREE_STAGES = LD,                    // T0, T1 (levels 1, 2), levels 3 .. LD
   localparam int LATENCY     /*verilator public*/ = TREE_STAGES + 5
 ) (
@@ -74,6 +80,7 @@ module sgm_wta #(
   input  wire              en_i,
   input  wire              subpixel_i,   // per frame: sub-pixel refinement on
   input  wire  [6:0]       uniq_i,       // per frame: uniqueness ratio U in %, 0 .. 99 (0: off)
+  input  wire  [7:0]       dmin_i,       // per frame: the minimum disparity (MIN_DISPARITY = 1)
   // Slot input: S(d) = s_i[d*SW +: SW] and the position of the pixel.
   input  wire  [D*SW-1:0]  s_i,
   input  wire  [CW-1:0]    col_i,
@@ -332,10 +339,21 @@ module sgm_wta #(
   wire          q0 = rem0 >= QW'(div0);
   wire [3:0]    q  = ref0 ? hi0 | {3'b000, q0} : 4'd0;
 
+  // The true disparity's integer part: d* (and d* - 1) plus dmin.
+  wire [DW-5:0] d0_true, dm10_true;
+  if (MIN_DISPARITY != 0) begin : g_dmin
+    assign d0_true   = (DW-4)'(d0) + (DW-4)'(dmin_i);
+    assign dm10_true = (DW-4)'(dm10) + (DW-4)'(dmin_i);
+  end else begin : g_no_dmin
+    assign d0_true   = d0;
+    assign dm10_true = dm10;
+    wire unused_dmin = ^dmin_i;
+  end
+
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       d_o    <= d0;
-      disp_o <= neg0 && q != 4'd0 ? {dm10, 4'd0 - q} : {d0, q};
+      disp_o <= neg0 && q != 4'd0 ? {dm10_true, 4'd0 - q} : {d0_true, q};
     end
   end
 

@@ -13,11 +13,11 @@
 # The tag names a build by every parameter that differs from sgm_top's default, in a fixed
 # order; D and MAX_WIDTH always:
 #
-#   d<D>-w<MAX_WIDTH>[-h<MAX_HEIGHT>][-c9x<CENSUS_H>][-k<LANES>][-u<UNIQUENESS>][-ad<AD_TERM>][-rb<RIGHT_BLOCK>][-er<EDGE_RESET>][-z<DEPTH>]
+#   d<D>-w<MAX_WIDTH>[-h<MAX_HEIGHT>][-c9x<CENSUS_H>][-k<LANES>][-u<UNIQUENESS>][-ad<AD_TERM>][-rb<RIGHT_BLOCK>][-er<EDGE_RESET>][-z<DEPTH>][-dm<MIN_DISPARITY>]
 #
 #   d64-w1280                 sgm_top's defaults (H 1024, 9x5 census, one lane, both levers,
 #                             the fifth path in blocks of 64, the path restart built, no
-#                             depth output)
+#                             depth output or minimum disparity)
 #   d64-w1024-k6-rb0-er0      the `make pnr` core (six lanes, four paths, no restart)
 #   d16-w128-u0-ad0-rb0-er0   the lean build
 #
@@ -39,8 +39,8 @@
 #   $(call core_spec_of,PREFIX)   the spec of the variables PREFIX<NAME> that are set
 #                                 (PNR_ -> PNR_D, PNR_MAX_WIDTH, ...; empty -> D, MAX_WIDTH, ...)
 
-CORE_PARAMS   := D MAX_WIDTH MAX_HEIGHT CENSUS_H LANES UNIQUENESS AD_TERM RIGHT_BLOCK EDGE_RESET DEPTH
-CORE_DEFAULTS := D=64 MAX_WIDTH=1280 MAX_HEIGHT=1024 CENSUS_H=5 LANES=1 UNIQUENESS=1 AD_TERM=1 RIGHT_BLOCK=64 EDGE_RESET=1 DEPTH=0
+CORE_PARAMS   := D MAX_WIDTH MAX_HEIGHT CENSUS_H LANES UNIQUENESS AD_TERM RIGHT_BLOCK EDGE_RESET DEPTH MIN_DISPARITY
+CORE_DEFAULTS := D=64 MAX_WIDTH=1280 MAX_HEIGHT=1024 CENSUS_H=5 LANES=1 UNIQUENESS=1 AD_TERM=1 RIGHT_BLOCK=64 EDGE_RESET=1 DEPTH=0 MIN_DISPARITY=0
 # The tag's letters (D and MAX_WIDTH always named; CENSUS_H as the window, c9x9).
 CORE_TAG_D := d
 CORE_TAG_MAX_WIDTH := w
@@ -52,6 +52,7 @@ CORE_TAG_AD_TERM := ad
 CORE_TAG_RIGHT_BLOCK := rb
 CORE_TAG_EDGE_RESET := er
 CORE_TAG_DEPTH := z
+CORE_TAG_MIN_DISPARITY := dm
 
 core_empty      :=
 core_space      := $(core_empty) $(core_empty)
@@ -64,7 +65,7 @@ core_tag        = $(strip $(call core_check,$(1)))d$(call core_get,$(1),D)-w$(ca
 core_gflags     = $(foreach p,$(CORE_PARAMS),-G$(p)=$(call core_get,$(1),$(p)))
 core_chparam    = $(foreach p,$(CORE_PARAMS),-set $(p) $(call core_get,$(1),$(p)))
 core_env        = $(foreach p,$(CORE_PARAMS),$(2)$(p)=$(call core_get,$(1),$(p)))
-core_lc         = $(subst A,a,$(subst B,b,$(subst C,c,$(subst D,d,$(subst E,e,$(subst G,g,$(subst H,h,$(subst I,i,$(subst K,k,$(subst L,l,$(subst M,m,$(subst N,n,$(subst O,o,$(subst Q,q,$(subst R,r,$(subst S,s,$(subst T,t,$(subst U,u,$(subst W,w,$(subst X,x,$(1)))))))))))))))))))))
+core_lc         = $(subst A,a,$(subst B,b,$(subst C,c,$(subst D,d,$(subst E,e,$(subst F,f,$(subst G,g,$(subst H,h,$(subst I,i,$(subst J,j,$(subst K,k,$(subst L,l,$(subst M,m,$(subst N,n,$(subst O,o,$(subst P,p,$(subst Q,q,$(subst R,r,$(subst S,s,$(subst T,t,$(subst U,u,$(subst V,v,$(subst W,w,$(subst X,x,$(subst Y,y,$(subst Z,z,$(1)))))))))))))))))))))))))))
 core_meta       = echo "tag=$(call core_tag,$(1))"; $(foreach p,$(CORE_PARAMS),echo "$(call core_lc,$(p))=$(call core_get,$(1),$(p))";)
 core_meta_write = { $(call core_meta,$(1)) } > $(2)
 core_spec_of    = $(strip $(foreach p,$(CORE_PARAMS),$(if $(strip $($(1)$(p))),$(p)=$(strip $($(1)$(p))))))
@@ -81,6 +82,7 @@ AD_TERM     ?= $(call core_default,AD_TERM)
 RIGHT_BLOCK ?= $(if $(filter paper four-path,$(PRESET)),0,$(call core_default,RIGHT_BLOCK))
 EDGE_RESET  ?= $(call core_default,EDGE_RESET)
 DEPTH       ?= $(call core_default,DEPTH)
+MIN_DISPARITY ?= $(call core_default,MIN_DISPARITY)
 CENSUS      ?= $(if $(filter paper,$(PRESET)),9x9,9x5)
 CENSUS_H     = $(if $(filter 9x9,$(CENSUS)),9,$(if $(filter 9x5,$(CENSUS)),5,$(error CENSUS=$(CENSUS): expected 9x5 or 9x9)))
 # The build those knobs name (make sim, make synth; make bench at its own MAX_WIDTH).

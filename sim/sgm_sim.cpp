@@ -86,9 +86,9 @@ int main(int argc, char** argv) {
       throw Error(
           "--right-path without --right-block, --subpixel-fit linear, --mgm, --median-gate, --p1-paths, "
           "--snap-edge and --lr-store-bits are golden-only experiments, not in the core");
-    if (params.minDisparity)
+    if (params.minDisparity && !Vsgm_top_sgm_top::MIN_DISPARITY)
       throw Error("--dmin " + std::to_string(params.minDisparity) +
-                  ": the core has no minimum disparity (give --dmin 0)");
+                  ": this simulator is built without the minimum disparity (make sim MIN_DISPARITY=1 builds one)");
     const bool depthOut = params.output == OutputMode::kDepth;
     if (depthOut && !Vsgm_top_sgm_top::DEPTH)
       throw Error("this simulator is built without the depth output (make sim DEPTH=1 builds one)");
@@ -150,7 +150,8 @@ int main(int argc, char** argv) {
     const uint64_t allCycles = outputs.back().lastOutCycle - outputs[0].firstInCycle + 1;
     const long pixels = long(w) * h;
 
-    const float maxD = float(params.disparities - 1);
+    const int range = params.minDisparity + params.disparities;  // the largest disparity + 1
+    const float maxD = float(range - 1);
     std::vector<std::pair<std::string, cv::Mat>> pictures;
     if (depthOut) {  // the core sent depth words: no disparity to draw or score
       char title[96];
@@ -160,8 +161,8 @@ int main(int argc, char** argv) {
                   {out + "/depth_color.png", eval::depthPicture(outputs[0].words, title)}};
     } else {
       pictures = {{out + "/disparity16.png", encodeDisparity16(rtl)},
-                  {out + "/disparity8.png", encodeDisparity8(rtl, params.disparities)},
-                  {out + "/disparity_color.png", encodeDisparityColor(rtl, params.disparities)}};
+                  {out + "/disparity8.png", encodeDisparity8(rtl, range)},
+                  {out + "/disparity_color.png", encodeDisparityColor(rtl, range)}};
       if (scene.hasGroundTruth())
         pictures.push_back({out + "/sidebyside.png", eval::sideBySide(scene, eval::toFloat(rtl), maxD)});
     }

@@ -28,6 +28,7 @@ uint32_t Driver::encodeEdgeReset(const FrameConfig& f) {
 uint32_t Driver::encodeOutput(const FrameConfig& f) { return SGM_PUT(OUTPUT_MODE, f.output); }
 uint32_t Driver::encodeDepthFocal(const FrameConfig& f) { return SGM_PUT(DEPTH_FOCAL_F, f.focalQ8); }
 uint32_t Driver::encodeDepthBaseline(const FrameConfig& f) { return SGM_PUT(DEPTH_BASELINE_B, f.baselineUm); }
+uint32_t Driver::encodeMinDisparity(const FrameConfig& f) { return SGM_PUT(MIN_DISPARITY_DMIN, f.minDisparity); }
 
 bool Driver::sizeFits(const Identity& id, uint32_t width, uint32_t height) {
   return width >= id.minWidth && width <= id.maxWidth && height >= SGM_FRAME_SIZE_HEIGHT_MIN && height <= id.maxHeight;
@@ -38,7 +39,8 @@ bool Driver::featuresFit(const Identity& id, const FrameConfig& f) {
          (f.adWeight == 0 || (id.features & SGM_FEATURES_AD_TERM)) &&
          (f.rightWeight == 0 || (id.features & SGM_FEATURES_RIGHT_PATH)) &&
          (f.edgeReset == 0 || (id.features & SGM_FEATURES_EDGE_RESET)) &&
-         (f.output != SGM_OUTPUT_MODE_DEPTH || (id.features & SGM_FEATURES_DEPTH));
+         (f.output != SGM_OUTPUT_MODE_DEPTH || (id.features & SGM_FEATURES_DEPTH)) &&
+         (f.minDisparity == 0 || (id.features & SGM_FEATURES_MIN_DISPARITY));
 }
 
 uint32_t Driver::rightBlock(const Identity& id) {
@@ -73,17 +75,19 @@ void Driver::configure(const FrameConfig& f) {
   write(SGM_REG_OUTPUT, encodeOutput(f));
   write(SGM_REG_DEPTH_FOCAL, encodeDepthFocal(f));
   write(SGM_REG_DEPTH_BASELINE, encodeDepthBaseline(f));
+  write(SGM_REG_MIN_DISPARITY, encodeMinDisparity(f));
   write(SGM_REG_CTRL, ctrl & ~SGM_CTRL_HOLD);
 }
 
 FrameConfig Driver::readConfig() {
   const uint32_t size = read(SGM_REG_FRAME_SIZE), penalty = read(SGM_REG_PENALTY), config = read(SGM_REG_CONFIG);
   const uint32_t edge = read(SGM_REG_EDGE_RESET), output = read(SGM_REG_OUTPUT);
-  return decode(size, penalty, config, edge, output, read(SGM_REG_DEPTH_FOCAL), read(SGM_REG_DEPTH_BASELINE));
+  const uint32_t focal = read(SGM_REG_DEPTH_FOCAL), baseline = read(SGM_REG_DEPTH_BASELINE);
+  return decode(size, penalty, config, edge, output, focal, baseline, read(SGM_REG_MIN_DISPARITY));
 }
 
 FrameConfig Driver::decode(uint32_t size, uint32_t penalty, uint32_t config, uint32_t edge, uint32_t output,
-                           uint32_t focal, uint32_t baseline) {
+                           uint32_t focal, uint32_t baseline, uint32_t minDisparity) {
   FrameConfig f;
   f.width = SGM_GET(size, FRAME_SIZE_WIDTH);
   f.height = SGM_GET(size, FRAME_SIZE_HEIGHT);
@@ -108,6 +112,7 @@ FrameConfig Driver::decode(uint32_t size, uint32_t penalty, uint32_t config, uin
   f.output = SGM_GET(output, OUTPUT_MODE);
   f.focalQ8 = SGM_GET(focal, DEPTH_FOCAL_F);
   f.baselineUm = SGM_GET(baseline, DEPTH_BASELINE_B);
+  f.minDisparity = SGM_GET(minDisparity, MIN_DISPARITY_DMIN);
   return f;
 }
 

@@ -22,6 +22,7 @@
 #   SYNTH_RIGHT_BLOCK RIGHT_BLOCK, the fifth path's block (0, the default: not built)
 #   SYNTH_EDGE_RESET EDGE_RESET, the path restart at strong edges built (1) or not (0);
 #   SYNTH_DEPTH      DEPTH, the depth output built (1) or not (0; empty: sgm_top's default);
+#   SYNTH_MIN_DISPARITY MIN_DISPARITY, the minimum disparity built (1) or not (0; empty: the default);
 #                    empty (the default): sgm_top's own default
 #   SYNTH_OUT        output directory of this target (created by make)
 #   SYNTH_DEFINES    Verilog macros to define, space-separated (the ECP5 flow:
@@ -49,6 +50,7 @@ set ad_term    [env_or SYNTH_AD_TERM 1]
 set right_block [env_or SYNTH_RIGHT_BLOCK 0]
 set edge_reset [env_or SYNTH_EDGE_RESET ""]
 set depth      [env_or SYNTH_DEPTH ""]
+set min_disparity [env_or SYNTH_MIN_DISPARITY ""]
 set out        [env_or SYNTH_OUT build/synth]
 set defines    [env_or SYNTH_DEFINES ""]
 
@@ -60,6 +62,7 @@ yosys chparam -set D $d -set MAX_WIDTH $max_width -set MAX_HEIGHT $max_height -s
   -set UNIQUENESS $uniqueness -set AD_TERM $ad_term -set RIGHT_BLOCK $right_block sgm_top
 if {$edge_reset ne ""} { yosys chparam -set EDGE_RESET $edge_reset sgm_top }
 if {$depth ne ""} { yosys chparam -set DEPTH $depth sgm_top }
+if {$min_disparity ne ""} { yosys chparam -set MIN_DISPARITY $min_disparity sgm_top }
 yosys hierarchy -check -top sgm_top
 yosys proc
 yosys tee -o $out/check.txt check

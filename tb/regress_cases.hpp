@@ -95,6 +95,9 @@ Params drawParams(Rng& rng) {
   constexpr int kDepthParamMax = (1 << kDepthParamBits) - 1;
   p.focalQ8 = rng.chance(0.1) ? (rng.chance(0.5) ? 1 : kDepthParamMax) : rng.uniform(1, kDepthParamMax);
   p.baselineUm = rng.chance(0.1) ? (rng.chance(0.5) ? 0 : kDepthParamMax) : rng.uniform(1, kDepthParamMax);
+  // The minimum disparity: a third of the frames, 1 .. 3 (the cost volume's register paths
+  // and its shortest memory lag) or any up to 255.
+  p.minDisparity = rng.chance(0.67) ? 0 : rng.chance(0.5) ? rng.uniform(1, 3) : rng.uniform(4, kMaxMinDisparity);
   // A lever the build lacks (sgm_top UNIQUENESS / AD_TERM / EDGE_RESET = 0, RIGHT_BLOCK = 0)
   // stays off: drawn all the same, so that a case is the same in every build but for it.
   if (!Vsgm_top_sgm_top::UNIQUENESS) p.uniqueness = 0;
@@ -102,6 +105,7 @@ Params drawParams(Rng& rng) {
   if (!Vsgm_top_sgm_top::RIGHT_BLOCK) p.rightPathWeight = 0;
   if (!Vsgm_top_sgm_top::EDGE_RESET) p.edgeReset.threshold = 0;
   if (!Vsgm_top_sgm_top::DEPTH) p.output = OutputMode::kDisparity;
+  if (!Vsgm_top_sgm_top::MIN_DISPARITY) p.minDisparity = 0;
   return p;
 }
 
@@ -113,7 +117,7 @@ std::string paramText(const Params& p) {
     << " uniqueness=" << p.uniqueness << " ad=" << p.adWeight << "/" << p.adCap << " right=" << p.rightPathWeight << "/"
     << p.rightPathBlock << " restart=" << p.edgeReset.threshold << "/" << p.edgeReset.length << "/";
   for (int on : p.edgeReset.paths) t << on;
-  t << " output=" << outputModeName(p.output);
+  t << " dmin=" << p.minDisparity << " output=" << outputModeName(p.output);
   if (p.output == OutputMode::kDepth) t << "/" << p.focalQ8 << "/" << p.baselineUm;
   return t.str();
 }

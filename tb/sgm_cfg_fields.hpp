@@ -24,9 +24,9 @@ struct CfgField {
   uint32_t (*golden)(const Params& p, int w, int h);
 };
 
-constexpr int kCfgWidth = 150;  // CFG_W, SGM_CFG_W
+constexpr int kCfgWidth = 158;  // CFG_W, SGM_CFG_W
 
-inline const std::array<CfgField, 23> kCfgFields = {{
+inline const std::array<CfgField, 24> kCfgFields = {{
     {"FRAME_SIZE_WIDTH", 0x24, 0, 16, 0,
      []([[maybe_unused]] const Params& p, [[maybe_unused]] int w, [[maybe_unused]] int h) { return uint32_t(w); }},
     {"FRAME_SIZE_HEIGHT", 0x24, 16, 16, 16,
@@ -73,6 +73,8 @@ inline const std::array<CfgField, 23> kCfgFields = {{
      []([[maybe_unused]] const Params& p, [[maybe_unused]] int w, [[maybe_unused]] int h) { return uint32_t(p.focalQ8); }},
     {"DEPTH_BASELINE_B", 0x58, 0, 24, 126,
      []([[maybe_unused]] const Params& p, [[maybe_unused]] int w, [[maybe_unused]] int h) { return uint32_t(p.baselineUm); }},
+    {"MIN_DISPARITY_DMIN", 0x5C, 0, 8, 150,
+     []([[maybe_unused]] const Params& p, [[maybe_unused]] int w, [[maybe_unused]] int h) { return uint32_t(p.minDisparity); }},
 }};
 
 }  // namespace sgm::tb

@@ -36,7 +36,7 @@ struct Identity {
 };
 
 // One frame's run-time configuration (the fields of FRAME_SIZE, PENALTY, CONFIG, EDGE_RESET,
-// OUTPUT, DEPTH_FOCAL, DEPTH_BASELINE).
+// OUTPUT, DEPTH_FOCAL, DEPTH_BASELINE, MIN_DISPARITY).
 struct FrameConfig {
   uint32_t width = 0, height = 0;
   // Defaults: the golden model's, as the registers of a build with every lever reset to
@@ -65,6 +65,9 @@ struct FrameConfig {
   // sgm-eval calib-mesh prints both).
   uint32_t output = SGM_OUTPUT_MODE_DISPARITY;
   uint32_t focalQ8 = 0, baselineUm = 0;
+  // The minimum disparity dmin, 0 .. 255 (a build with SGM_FEATURES_MIN_DISPARITY): the
+  // search covers dmin .. dmin + D - 1 and the output is the true disparity.
+  uint32_t minDisparity = 0;
 
   // The four-path defaults (golden preset "four-path"), for builds without those levers.
   static FrameConfig fourPath() {
@@ -119,8 +122,8 @@ class Driver {
   // Whether the build of this identity has every lever the frame sets (the core drops a
   // frame with uniqueness != 0 without SGM_FEATURES_UNIQUENESS, adWeight != 0 without
   // SGM_FEATURES_AD_TERM, rightWeight != 0 without SGM_FEATURES_RIGHT_PATH, edgeReset != 0
-  // without SGM_FEATURES_EDGE_RESET, or the depth output without SGM_FEATURES_DEPTH, and
-  // flags ERROR.CONFIG).
+  // without SGM_FEATURES_EDGE_RESET, the depth output without SGM_FEATURES_DEPTH, or
+  // minDisparity != 0 without SGM_FEATURES_MIN_DISPARITY, and flags ERROR.CONFIG).
   static bool featuresFit(const Identity& id, const FrameConfig& frame);
   // The fifth path's block B of the build (0: the build has no fifth path).
   static uint32_t rightBlock(const Identity& id);
@@ -131,9 +134,10 @@ class Driver {
   static uint32_t encodeOutput(const FrameConfig& frame);
   static uint32_t encodeDepthFocal(const FrameConfig& frame);
   static uint32_t encodeDepthBaseline(const FrameConfig& frame);
-  // The configuration the seven registers' values hold (readConfig reads them).
+  static uint32_t encodeMinDisparity(const FrameConfig& frame);
+  // The configuration the eight registers' values hold (readConfig reads them).
   static FrameConfig decode(uint32_t frameSize, uint32_t penalty, uint32_t config, uint32_t edgeReset, uint32_t output,
-                            uint32_t depthFocal, uint32_t depthBaseline);
+                            uint32_t depthFocal, uint32_t depthBaseline, uint32_t minDisparity);
 
  private:
   uint32_t read(uint32_t offset) { return bus_.read(offset); }

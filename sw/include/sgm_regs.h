@@ -42,9 +42,10 @@
 #define SGM_REG_OUTPUT             0x50u
 #define SGM_REG_DEPTH_FOCAL        0x54u
 #define SGM_REG_DEPTH_BASELINE     0x58u
+#define SGM_REG_MIN_DISPARITY      0x5Cu
 
 /* ---- ID (0x00): identification: "SGM" and the map version */
-/* VERSION [7:0] RO: map version: 6 (5 had no OUTPUT, DEPTH_FOCAL and DEPTH_BASELINE, 4 no EDGE_RESET, 3 no FEATURES, 2 no CONFIG.UNIQUENESS, 1 no MIN_WIDTH and LANES) */
+/* VERSION [7:0] RO: map version: 6 (5 had no OUTPUT, DEPTH_FOCAL, DEPTH_BASELINE and MIN_DISPARITY, 4 no EDGE_RESET, 3 no FEATURES, 2 no CONFIG.UNIQUENESS, 1 no MIN_WIDTH and LANES) */
 #define SGM_ID_VERSION_SHIFT 0
 #define SGM_ID_VERSION_WIDTH 8
 #define SGM_ID_VERSION_MASK 0x000000FFu
@@ -155,13 +156,20 @@
 #define SGM_FEATURES_DEPTH (1u << 4)
 #define SGM_FEATURES_DEPTH_MIN 0u
 #define SGM_FEATURES_DEPTH_MAX 1u
+/* MIN_DISPARITY [5] RO: the minimum disparity, register MIN_DISPARITY (sgm_top MIN_DISPARITY) */
+#define SGM_FEATURES_MIN_DISPARITY_SHIFT 5
+#define SGM_FEATURES_MIN_DISPARITY_WIDTH 1
+#define SGM_FEATURES_MIN_DISPARITY_MASK 0x00000020u
+#define SGM_FEATURES_MIN_DISPARITY (1u << 5)
+#define SGM_FEATURES_MIN_DISPARITY_MIN 0u
+#define SGM_FEATURES_MIN_DISPARITY_MAX 1u
 /* RIGHT_BLOCK [11:8] RO: log2 of the fifth path's block B (0 without it) */
 #define SGM_FEATURES_RIGHT_BLOCK_SHIFT 8
 #define SGM_FEATURES_RIGHT_BLOCK_WIDTH 4
 #define SGM_FEATURES_RIGHT_BLOCK_MASK 0x00000F00u
 #define SGM_FEATURES_RIGHT_BLOCK_MIN 0u
 #define SGM_FEATURES_RIGHT_BLOCK_MAX 15u
-#define SGM_FEATURES_MASK 0x00000F1Fu
+#define SGM_FEATURES_MASK 0x00000F3Fu
 
 /* ---- CTRL (0x20): control */
 /* ENABLE [0] RW: 0: a start-of-frame beat is held back (the core stops at a frame boundary) */
@@ -511,9 +519,18 @@
 #define SGM_DEPTH_BASELINE_B_MAX 16777215u
 #define SGM_DEPTH_BASELINE_MASK 0x00FFFFFFu
 
+/* ---- MIN_DISPARITY (0x5C): the minimum disparity */
+/* DMIN [7:0] RW: dmin: the search covers dmin .. dmin + D - 1 and the output is the true disparity (needs FEATURES.MIN_DISPARITY) */
+#define SGM_MIN_DISPARITY_DMIN_SHIFT 0
+#define SGM_MIN_DISPARITY_DMIN_WIDTH 8
+#define SGM_MIN_DISPARITY_DMIN_MASK 0x000000FFu
+#define SGM_MIN_DISPARITY_DMIN_MIN 0u
+#define SGM_MIN_DISPARITY_DMIN_MAX 255u
+#define SGM_MIN_DISPARITY_MASK 0x000000FFu
+
 /* ---- the frame configuration word: sgm_top's cfg_i (rtl/sgm_cfg.svh), SGM_CFG_W bits, bit 0
  * first; field F of register R at bits [SGM_CFG_R_F_LSB +: SGM_R_F_WIDTH] (docs/registers.md). */
-#define SGM_CFG_W 150u
+#define SGM_CFG_W 158u
 #define SGM_CFG_WORDS 5u /* 32-bit words of the word */
 #define SGM_CFG_FRAME_SIZE_WIDTH_LSB 0u
 #define SGM_CFG_FRAME_SIZE_HEIGHT_LSB 16u
@@ -538,6 +555,7 @@
 #define SGM_CFG_OUTPUT_MODE_LSB 100u
 #define SGM_CFG_DEPTH_FOCAL_F_LSB 102u
 #define SGM_CFG_DEPTH_BASELINE_B_LSB 126u
+#define SGM_CFG_MIN_DISPARITY_DMIN_LSB 150u
 
 /* ---- constants */
 #define SGM_MIN_HEIGHT 9u /* shortest frame of every build (sgm_stream_ctrl) */

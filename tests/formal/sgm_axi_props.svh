@@ -14,7 +14,7 @@
 //   reset        after a reset cycle every register holds its reset value (registers.md),
 //                the active configuration too;
 //   RW           CTRL, FRAME_SIZE, PENALTY, CONFIG, EDGE_RESET, IRQ_ENABLE, OUTPUT,
-//                DEPTH_FOCAL, DEPTH_BASELINE change only by
+//                DEPTH_FOCAL, DEPTH_BASELINE, MIN_DISPARITY change only by
 //                a write to their address, which replaces the bits of its enabled byte
 //                lanes within the register's fields; reserved bits and CTRL.SOFT_RESET
 //                hold 0;
@@ -88,8 +88,8 @@
     if (f_past_valid && !$past(rst_ni)) begin
       assert (ctrl_q == 32'd0 && frame_size_q == 32'd0 && penalty_q == PENALTY_RESET && config_q == CONFIG_RESET &&
               edge_reset_q == EDGE_RESET_RESET && irq_enable_q == 32'd0 && output_q == 32'd0 &&
-              focal_q == 32'd0 && baseline_q == 32'd0);
-      assert (act_cfg == cfg_from_regs(32'd0, PENALTY_RESET, CONFIG_RESET, EDGE_RESET_RESET, 32'd0, 32'd0, 32'd0));
+              focal_q == 32'd0 && baseline_q == 32'd0 && dmin_q == 32'd0);
+      assert (act_cfg == cfg_from_regs(32'd0, PENALTY_RESET, CONFIG_RESET, EDGE_RESET_RESET, 32'd0, 32'd0, 32'd0, 32'd0));
       assert (error_q == '0 && irq_status_q == 2'd0 && error_count_q == 32'd0 && frames_q == 32'd0 &&
               last_size_q == 32'd0 && !core_reset);
     end
@@ -121,6 +121,9 @@
       assert (baseline_q == ($past(f_wr && f_wa == ADDR_DEPTH_BASELINE) ?
                              f_write($past(baseline_q), $past(s_axil_wdata_i), $past(f_lanes), DEPTH_BASELINE_MASK) :
                              $past(baseline_q)));
+      assert (dmin_q == ($past(f_wr && f_wa == ADDR_MIN_DISPARITY) ?
+                         f_write($past(dmin_q), $past(s_axil_wdata_i), $past(f_lanes), MIN_DISPARITY_MASK) :
+                         $past(dmin_q)));
       // W1C: an event in the cycle of its clear wins; no event is lost
       assert (error_q == (($past(error_q) & ~$past(f_err_clear)) | $past(error_event)));
       assert (($past(error_event) & ~error_q) == '0);
@@ -139,7 +142,7 @@
       end else begin
         // the word as the register map packs it; its frame size whole (16 bits each)
         assert (act_cfg == cfg_from_regs($past(frame_size_q), $past(penalty_q), $past(config_q), $past(edge_reset_q),
-                                         $past(output_q), $past(focal_q), $past(baseline_q)));
+                                         $past(output_q), $past(focal_q), $past(baseline_q), $past(dmin_q)));
         assert (act_cfg[CFG_FRAME_SIZE_WIDTH_LSB +: 16] == $past(f_width) &&
                 act_cfg[CFG_FRAME_SIZE_HEIGHT_LSB +: 16] == $past(f_height));
       end
@@ -168,7 +171,7 @@
       assert ((penalty_q & ~PENALTY_MASK) == 32'd0 && (config_q & ~CONFIG_MASK) == 32'd0);
       assert ((edge_reset_q & ~EDGE_RESET_MASK) == 32'd0 && (irq_enable_q & ~IRQ_ENABLE_MASK) == 32'd0);
       assert ((output_q & ~OUTPUT_MASK) == 32'd0 && (focal_q & ~DEPTH_FOCAL_MASK) == 32'd0 &&
-              (baseline_q & ~DEPTH_BASELINE_MASK) == 32'd0);
+              (baseline_q & ~DEPTH_BASELINE_MASK) == 32'd0 && (dmin_q & ~MIN_DISPARITY_MASK) == 32'd0);
     end
     assert (irq_o == ((irq_status_q[IRQ_STATUS_FRAME_DONE_LSB] && irq_enable_q[IRQ_ENABLE_FRAME_DONE_LSB]) ||
                       (irq_status_q[IRQ_STATUS_ERROR_LSB] && irq_enable_q[IRQ_ENABLE_ERROR_LSB])));
@@ -212,6 +215,7 @@
       ADDR_OUTPUT:      f_rvalue = output_q;
       ADDR_DEPTH_FOCAL: f_rvalue = focal_q;
       ADDR_DEPTH_BASELINE: f_rvalue = baseline_q;
+      ADDR_MIN_DISPARITY: f_rvalue = dmin_q;
       default:          f_rvalue = 32'd0;
     endcase
   end

@@ -17,6 +17,7 @@ module sgm_top #(
   parameter int RIGHT_BLOCK = 64,
   parameter int EDGE_RESET  = 1,
   parameter int DEPTH       = 0,
+  parameter int MIN_DISPARITY = 0,
   localparam int XW         = $clog2(MAX_WIDTH + 1),
   localparam int YW         = $clog2(MAX_HEIGHT + 16)
 ) (

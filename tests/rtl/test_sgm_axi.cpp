@@ -37,7 +37,8 @@ constexpr uint32_t log2Of(uint32_t v) { return v > 1 ? 1 + log2Of(v / 2) : 0; }
 constexpr uint32_t kFeatures =
     (Rtl::UNIQUENESS ? SGM_FEATURES_UNIQUENESS : 0u) | (Rtl::AD_TERM ? SGM_FEATURES_AD_TERM : 0u) |
     (Rtl::RIGHT_BLOCK ? SGM_FEATURES_RIGHT_PATH | log2Of(Rtl::RIGHT_BLOCK) << SGM_FEATURES_RIGHT_BLOCK_SHIFT : 0u) |
-    (Rtl::EDGE_RESET ? SGM_FEATURES_EDGE_RESET : 0u) | (Rtl::DEPTH ? SGM_FEATURES_DEPTH : 0u);
+    (Rtl::EDGE_RESET ? SGM_FEATURES_EDGE_RESET : 0u) | (Rtl::DEPTH ? SGM_FEATURES_DEPTH : 0u) |
+    (Rtl::MIN_DISPARITY ? SGM_FEATURES_MIN_DISPARITY : 0u);
 
 // The settings with every lever the build lacks off (bit-exact frames run what the build has).
 sgm::Params withBuildLevers(sgm::Params p) {
@@ -46,6 +47,7 @@ sgm::Params withBuildLevers(sgm::Params p) {
   if (!Rtl::RIGHT_BLOCK) p.rightPathWeight = 0;
   if (!Rtl::EDGE_RESET) p.edgeReset.threshold = 0;
   if (!Rtl::DEPTH) p.output = sgm::OutputMode::kDisparity;
+  if (!Rtl::MIN_DISPARITY) p.minDisparity = 0;
   return p;
 }
 
@@ -73,20 +75,22 @@ FrameInput scene(int w, int h, uint32_t seed, const sgm::Params& p) {
 // of what it decoded gives the same registers back (a field the driver lacks stops the test).
 drv::FrameConfig frameConfig(const sgm::Params& p, cv::Size size) {
   const sgm::tb::HardwareConfig c = sgm::tb::hardwareConfig(p, size.width, size.height);
-  constexpr int kRegs = 7;
-  const uint32_t regs[kRegs] = {c.reg(SGM_REG_FRAME_SIZE),    c.reg(SGM_REG_PENALTY), c.reg(SGM_REG_CONFIG),
-                                c.reg(SGM_REG_EDGE_RESET),    c.reg(SGM_REG_OUTPUT),  c.reg(SGM_REG_DEPTH_FOCAL),
-                                c.reg(SGM_REG_DEPTH_BASELINE)};
-  const drv::FrameConfig f = drv::Driver::decode(regs[0], regs[1], regs[2], regs[3], regs[4], regs[5], regs[6]);
+  constexpr int kRegs = 8;
+  const uint32_t regs[kRegs] = {c.reg(SGM_REG_FRAME_SIZE),     c.reg(SGM_REG_PENALTY),      c.reg(SGM_REG_CONFIG),
+                                c.reg(SGM_REG_EDGE_RESET),     c.reg(SGM_REG_OUTPUT),       c.reg(SGM_REG_DEPTH_FOCAL),
+                                c.reg(SGM_REG_DEPTH_BASELINE), c.reg(SGM_REG_MIN_DISPARITY)};
+  const drv::FrameConfig f = drv::Driver::decode(regs[0], regs[1], regs[2], regs[3], regs[4], regs[5], regs[6],
+                                                 regs[7]);
   const uint32_t back[kRegs] = {drv::Driver::encodeSize(f.width, f.height),
                                 drv::Driver::encodePenalty(f),
                                 drv::Driver::encodeConfig(f),
                                 drv::Driver::encodeEdgeReset(f),
                                 drv::Driver::encodeOutput(f),
                                 drv::Driver::encodeDepthFocal(f),
-                                drv::Driver::encodeDepthBaseline(f)};
-  const char* names[kRegs] = {"FRAME_SIZE", "PENALTY",     "CONFIG",        "EDGE_RESET",
-                              "OUTPUT",     "DEPTH_FOCAL", "DEPTH_BASELINE"};
+                                drv::Driver::encodeDepthBaseline(f),
+                                drv::Driver::encodeMinDisparity(f)};
+  const char* names[kRegs] = {"FRAME_SIZE", "PENALTY",     "CONFIG",         "EDGE_RESET",
+                              "OUTPUT",     "DEPTH_FOCAL", "DEPTH_BASELINE", "MIN_DISPARITY"};
   for (int r = 0; r < kRegs; ++r)
     if (back[r] != regs[r]) {
       char what[160];
@@ -193,6 +197,7 @@ TEST(SgmAxi, RtlOffsetsAndResetValuesMatchTheHeader) {
       {"OUTPUT", {Rtl::ADDR_OUTPUT, SGM_REG_OUTPUT}},
       {"DEPTH_FOCAL", {Rtl::ADDR_DEPTH_FOCAL, SGM_REG_DEPTH_FOCAL}},
       {"DEPTH_BASELINE", {Rtl::ADDR_DEPTH_BASELINE, SGM_REG_DEPTH_BASELINE}},
+      {"MIN_DISPARITY", {Rtl::ADDR_MIN_DISPARITY, SGM_REG_MIN_DISPARITY}},
       {"ID_VALUE", {Rtl::ID_VALUE, SGM_ID_VALUE}},
       {"FEATURES_UNIQUENESS", {1u << Rtl::FEATURES_UNIQUENESS_LSB, SGM_FEATURES_UNIQUENESS}},
       {"FEATURES_AD_TERM", {1u << Rtl::FEATURES_AD_TERM_LSB, SGM_FEATURES_AD_TERM}},
@@ -200,6 +205,7 @@ TEST(SgmAxi, RtlOffsetsAndResetValuesMatchTheHeader) {
       {"FEATURES_RIGHT_BLOCK", {uint32_t(Rtl::FEATURES_RIGHT_BLOCK_LSB), SGM_FEATURES_RIGHT_BLOCK_SHIFT}},
       {"FEATURES_EDGE_RESET", {1u << Rtl::FEATURES_EDGE_RESET_LSB, SGM_FEATURES_EDGE_RESET}},
       {"FEATURES_DEPTH", {1u << Rtl::FEATURES_DEPTH_LSB, SGM_FEATURES_DEPTH}},
+      {"FEATURES_MIN_DISPARITY", {1u << Rtl::FEATURES_MIN_DISPARITY_LSB, SGM_FEATURES_MIN_DISPARITY}},
       {"EDGE_RESET_RESET", {Rtl::EDGE_RESET_RESET, kEdgeResetReset}},
       {"FEATURES_VALUE", {Rtl::FEATURES_VALUE, kFeatures}},
       {"PENALTY_RESET", {Rtl::PENALTY_RESET, kPenaltyReset}},
@@ -271,6 +277,7 @@ std::vector<RegisterSpec> registers() {
       {"OUTPUT", SGM_REG_OUTPUT, 0, SGM_OUTPUT_MASK},
       {"DEPTH_FOCAL", SGM_REG_DEPTH_FOCAL, 0, SGM_DEPTH_FOCAL_MASK},
       {"DEPTH_BASELINE", SGM_REG_DEPTH_BASELINE, 0, SGM_DEPTH_BASELINE_MASK},
+      {"MIN_DISPARITY", SGM_REG_MIN_DISPARITY, 0, SGM_MIN_DISPARITY_MASK},
   };
 }
 
@@ -350,20 +357,24 @@ TEST(SgmAxi, FeaturesAgreeWithTheCore) {
   restart.edgeReset = sgm::EdgeReset{30, 6, {1, 1, 0, 1, 1}};
   sgm::Params depth = withBuildLevers(defaults());  // the depth output
   depth.output = sgm::OutputMode::kDepth, depth.focalQ8 = 600 * 256, depth.baselineUm = 75000;
+  sgm::Params dmin = withBuildLevers(defaults());  // the minimum disparity
+  dmin.minDisparity = 5;
   EXPECT_EQ(drv::Driver::rightBlock(id), uint32_t(Rtl::RIGHT_BLOCK));
   const int w = 40, h = 11;
   uint32_t seed = 30;
-  for (const sgm::Params& p : {unique, ad, right, restart, depth}) {
+  for (const sgm::Params& p : {unique, ad, right, restart, depth, dmin}) {
     const drv::FrameConfig config = frameConfig(p, {w, h});
     const bool fits = drv::Driver::featuresFit(id, config);
     const bool asksDepth = p.output == sgm::OutputMode::kDepth;
-    const uint32_t lever = asksDepth               ? SGM_FEATURES_DEPTH
+    const uint32_t lever = p.minDisparity          ? SGM_FEATURES_MIN_DISPARITY
+                           : asksDepth             ? SGM_FEATURES_DEPTH
                            : p.edgeReset.threshold ? SGM_FEATURES_EDGE_RESET
                            : p.uniqueness          ? SGM_FEATURES_UNIQUENESS
                            : p.adWeight            ? SGM_FEATURES_AD_TERM
                                                    : SGM_FEATURES_RIGHT_PATH;
     EXPECT_EQ(fits, (kFeatures & lever) != 0);
-    const std::string what = asksDepth               ? "depth output"
+    const std::string what = p.minDisparity          ? "minimum disparity 5"
+                             : asksDepth             ? "depth output"
                              : p.edgeReset.threshold ? "path restart T 30"
                              : p.uniqueness          ? "uniqueness 30"
                              : p.adWeight            ? "AD weight 5"
@@ -485,7 +496,7 @@ TEST(SgmAxi, UndefinedAddressesAnswerSlverrAndChangeNothing) {
     EXPECT_EQ(read.data, 0u) << "read 0x" << std::hex << a;
     EXPECT_EQ(c.bus.write(a, 0xFFFFFFFFu).resp, sgm::tb::kAxilSlvErr) << "write 0x" << std::hex << a;
   }
-  EXPECT_EQ(undefined, 64 - 23);  // the 23 registers of regmap/sgm_regmap.def
+  EXPECT_EQ(undefined, 64 - 24);  // the 24 registers of regmap/sgm_regmap.def
   for (size_t k = 0; k < registers().size(); ++k)
     EXPECT_EQ(c.bus.read(registers()[k].offset).data, before[k]) << registers()[k].name;
   // Address bits [1:0] are ignored.

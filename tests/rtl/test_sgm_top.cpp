@@ -44,13 +44,14 @@ using sgm::tb::Malformation;
 using sgm::tb::MalformedFrames;
 
 constexpr int kD = SGM_D;
-constexpr int kMaxWidth = Vsgm_top_sgm_top::MAX_WIDTH;           // of this build
-constexpr int kCensusH = Vsgm_top_sgm_top::CENSUS_H;             // 5 or 9
-constexpr bool kUniqueness = Vsgm_top_sgm_top::UNIQUENESS != 0;  // the build has the uniqueness ratio
-constexpr bool kAdTerm = Vsgm_top_sgm_top::AD_TERM != 0;         // the build has the AD term
-constexpr int kRightBlock = Vsgm_top_sgm_top::RIGHT_BLOCK;       // the fifth path's block (0: not built)
-constexpr bool kEdgeReset = Vsgm_top_sgm_top::EDGE_RESET != 0;   // the build has the path restart
-constexpr bool kDepth = Vsgm_top_sgm_top::DEPTH != 0;            // the build has the depth output
+constexpr int kMaxWidth = Vsgm_top_sgm_top::MAX_WIDTH;                // of this build
+constexpr int kCensusH = Vsgm_top_sgm_top::CENSUS_H;                  // 5 or 9
+constexpr bool kUniqueness = Vsgm_top_sgm_top::UNIQUENESS != 0;       // the build has the uniqueness ratio
+constexpr bool kAdTerm = Vsgm_top_sgm_top::AD_TERM != 0;              // the build has the AD term
+constexpr int kRightBlock = Vsgm_top_sgm_top::RIGHT_BLOCK;            // the fifth path's block (0: not built)
+constexpr bool kEdgeReset = Vsgm_top_sgm_top::EDGE_RESET != 0;        // the build has the path restart
+constexpr bool kDepth = Vsgm_top_sgm_top::DEPTH != 0;                 // the build has the depth output
+constexpr bool kMinDisparity = Vsgm_top_sgm_top::MIN_DISPARITY != 0;  // the build has the minimum disparity
 constexpr bool kLean = !kUniqueness || !kAdTerm;
 
 // The settings with every lever the build lacks off (bit-exact tests run what the build
@@ -62,13 +63,15 @@ sgm::Params withBuildLevers(sgm::Params p) {
   p.rightPathBlock = p.rightPathWeight ? kRightBlock : 0;
   if (!kEdgeReset) p.edgeReset.threshold = 0;
   if (!kDepth) p.output = sgm::OutputMode::kDisparity;
+  if (!kMinDisparity) p.minDisparity = 0;
   return p;
 }
 
 // Whether the core drops a frame of these settings for a lever its build lacks.
 bool asksMissingLever(const sgm::Params& p) {
   return (p.uniqueness && !kUniqueness) || (p.adWeight && !kAdTerm) || (p.rightPathWeight && !kRightBlock) ||
-         (p.edgeReset.threshold && !kEdgeReset) || (p.output == sgm::OutputMode::kDepth && !kDepth);
+         (p.edgeReset.threshold && !kEdgeReset) || (p.output == sgm::OutputMode::kDepth && !kDepth) ||
+         (p.minDisparity && !kMinDisparity);
 }
 
 // A textured left image and a right image shifted by a few pixels plus noise.
@@ -325,6 +328,8 @@ TEST(SgmTop, LeversTheBuildLacksAreDroppedThenGoodFrame) {
   sgm::Params depth = hardwareDefaults(), depthOff = hardwareDefaults();
   depth.output = sgm::OutputMode::kDepth, depth.focalQ8 = 1 << 17, depth.baselineUm = 120000;
   depthOff.focalQ8 = (1 << 24) - 1, depthOff.baselineUm = 7;  // disparity words: f and B unused
+  sgm::Params dmin1 = hardwareDefaults();
+  dmin1.minDisparity = 1;  // the smallest that asks for the lever
   const std::vector<std::pair<std::string, sgm::Params>> asks = {{"uniqueness 25", unique},
                                                                  {"uniqueness 1", unique1},
                                                                  {"AD weight 4 cap 30", ad},
@@ -335,7 +340,8 @@ TEST(SgmTop, LeversTheBuildLacksAreDroppedThenGoodFrame) {
                                                                  {"path restart T 1", restart},
                                                                  {"path restart T 0, R 15, every flag", restartOff},
                                                                  {"depth output", depth},
-                                                                 {"disparity output with f and B", depthOff}};
+                                                                 {"disparity output with f and B", depthOff},
+                                                                 {"minimum disparity 1", dmin1}};
   std::vector<FrameInput> frames = {syntheticPair(kMinWidth + 2, 9, rng, hardwareDefaults())};
   std::vector<std::string> what = {"first good frame"};
   for (const auto& [name, p] : asks) {
@@ -351,7 +357,8 @@ TEST(SgmTop, LeversTheBuildLacksAreDroppedThenGoodFrame) {
   for (size_t k = 0; k < frames.size(); ++k) {
     const std::string build = std::string(" (UNIQUENESS=") + (kUniqueness ? "1" : "0") +
                               ", AD_TERM=" + (kAdTerm ? "1" : "0") + ", RIGHT_BLOCK=" + std::to_string(kRightBlock) +
-                              ", EDGE_RESET=" + (kEdgeReset ? "1" : "0") + ", DEPTH=" + (kDepth ? "1" : "0") + ")";
+                              ", EDGE_RESET=" + (kEdgeReset ? "1" : "0") + ", DEPTH=" + (kDepth ? "1" : "0") +
+                              ", MIN_DISPARITY=" + (kMinDisparity ? "1" : "0") + ")";
     if (frames[k].dropped) {
       EXPECT_EQ(out[k].errors, 8u) << what[k] << build << ": error_o of a frame asking for a lever the build lacks";
       continue;
@@ -362,6 +369,46 @@ TEST(SgmTop, LeversTheBuildLacksAreDroppedThenGoodFrame) {
         << what[k] << build;
     EXPECT_EQ(out[k].errors, 0u) << what[k] << build;
   }
+}
+
+// The minimum disparity (MIN_DISPARITY = 1): pairs whose right image is shifted by dmin
+// more, searched from dmin (every dmin whose lag takes another path in the cost volume's
+// shift: 1 and 2 from registers, 3 the shortest through its memory, then larger ones up to
+// 255, beyond the frame), between frames at dmin 0, back to back with stalls: bit-exact,
+// and the shifted pair finds the original pair's disparities.
+TEST(SgmTop, MinDisparityIsExact) {
+  if (!kMinDisparity) GTEST_SKIP() << "this build has no minimum disparity (sgm_top MIN_DISPARITY = 0)";
+  std::mt19937 rng(48);
+  std::vector<FrameInput> frames;
+  for (const int dmin : {0, 1, 2, 3, 7, 0, 29, 255, 0}) {
+    sgm::Params p = withBuildLevers(hardwareDefaults());
+    p.minDisparity = dmin;
+    const int w = std::max(kMinWidth, std::min(kMaxWidth, dmin + kD + 24));
+    FrameInput f = syntheticPair(w, 9 + dmin % 4, rng, p);
+    // The right image moved left by dmin: every disparity dmin larger.
+    cv::Mat shifted(f.right.size(), CV_8UC1);
+    for (int y = 0; y < shifted.rows; ++y)
+      for (int x = 0; x < shifted.cols; ++x)
+        shifted.at<uint8_t>(y, x) = x + dmin < w ? f.right.at<uint8_t>(y, x + dmin) : uint8_t(rng());
+    f.right = shifted;
+    frames.push_back(f);
+  }
+  Harness core("sgm_top_dmin", 48, {0.2, 0.2});
+  const std::vector<sgm::tb::FrameOutput> out = core.run(frames);
+  for (size_t k = 0; k < frames.size(); ++k) {
+    const sgm::DisparityMap golden = sgm::runPipeline(frames[k].left, frames[k].right, frames[k].params);
+    EXPECT_EQ(sgm::tb::compareOutput(golden, frames[k].params, out[k], "sgm_top output"), "")
+        << "frame " << k << ", dmin " << frames[k].params.minDisparity;
+    EXPECT_EQ(out[k].errors, 0u) << "frame " << k;
+  }
+  // dmin 29 on a 29-pixel shift: disparities of at least 29 px where valid.
+  const sgm::DisparityMap& m = out[6].map;
+  int below = 0, valid = 0;
+  for (int y = 0; y < m.disp.rows; ++y)
+    for (int x = 0; x < m.disp.cols; ++x)
+      if (m.valid.at<uint8_t>(y, x)) ++valid, below += m.disp.at<uint16_t>(y, x) < 29 * 16;
+  EXPECT_GT(valid, 0);
+  EXPECT_EQ(below, 0);
 }
 
 // The depth output (DEPTH = 1): frames in depth mode with f and B that give every kind of
