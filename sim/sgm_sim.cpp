@@ -194,6 +194,7 @@ int main(int argc, char** argv) {
     json.key("p2").integer(params.p2);
     json.key("p2_mode").string(p2ModeName(params.p2Mode));
     json.key("weights").string(pathWeightingName(params.weights));
+    json.key("min_disparity").integer(params.minDisparity);
     json.key("output").string(outputModeName(params.output));
     if (depthOut) {
       json.key("focal_q8").integer(params.focalQ8);

@@ -149,7 +149,8 @@ struct Params {
   // every path but 90 degrees (docs/notes/accuracy-pool.md, "The path restart at strong edges").
   EdgeReset edgeReset{40, 6, {1, 1, 0, 1, 1}};
   // The minimum disparity dmin (docs/algorithm.md section 3): the search covers dmin .. dmin + D - 1
-  // (left x against right x - dmin - d) and the output is the true disparity. The core has none yet.
+  // (left x against right x - dmin - d) and the output is the true disparity. In the core with
+  // sgm_top MIN_DISPARITY = 1 (register MIN_DISPARITY).
   int minDisparity = 0;
   // The output word and the depth's frame constants (docs/algorithm.md section 10b): f in 1/256 px
   // and B in micrometres, each 0 .. 2^24 - 1 (sgm-eval calib-mesh gives both). They change what
