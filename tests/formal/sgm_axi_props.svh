@@ -46,7 +46,7 @@
   wire f_past_valid = f_t != 2'd0;
 
   // The last register of the (dense) map.
-  localparam logic [ADDR_W-1:0] F_LAST = ADDR_IRQ_STATUS;
+  localparam logic [ADDR_W-1:0] F_LAST = ADDR_MIN_DISPARITY;
 
   // A write accepted on the bus, its word address, the mask of its enabled byte lanes,
   // the bits it writes as 1 in them; a read accepted and its word address.
