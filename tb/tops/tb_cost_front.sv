@@ -119,6 +119,7 @@ module tb_cost_front #(
     .rst_ni    (rst_ni),
     .en_i      (en_i),
     .mode_i    (mode_c),
+    .dmin_i    (8'd0),  // the minimum disparity: whole-core tests (MIN_DISPARITY builds)
     .ad_weight_i(adw_c),
     .ad_cap_i  (adt_c),
     .lgray_i   (l_centre),

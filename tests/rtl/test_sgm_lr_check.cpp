@@ -113,6 +113,7 @@ void runFrames(Top& top, const std::vector<Frame>& frames, uint32_t seed, int la
         m.width_i = junk() & ((1u << kCW) - 1);
         m.height_i = junk() & ((1u << kRW) - 1);
         m.tol_i = junk() & 7;
+        m.dmin_i = 0;  // the minimum disparity: whole-core tests (MIN_DISPARITY builds)
         m.check_en_i = junk() & 1;
         m.d_i = junk() % kD;
         m.disp_i = junk() & ((1u << kDW) - 1);
@@ -163,6 +164,7 @@ void runFrames(Top& top, const std::vector<Frame>& frames, uint32_t seed, int la
             m.width_i = w;
             m.height_i = h;
             m.tol_i = f.tol < 0 ? junk() & 7 : f.tol;
+            m.dmin_i = 0;
             m.check_en_i = f.tol >= 0;
             // WTA side: the slot `lag` enabled slots earlier.
             const Slot* ws = driver.source(lag + 1);

@@ -142,6 +142,7 @@ class LrLanes {
       top_->width_i = w;
       top_->height_i = h;
       top_->tol_i = f.tol < 0 ? rng_() & 7 : f.tol;
+      top_->dmin_i = 0;  // the minimum disparity: whole-core tests (MIN_DISPARITY builds)
       top_->check_en_i = f.tol >= 0;
       sgm::tb::slotAfterIdle(top_, rng_, idle_);
       reads.emplace_back(rcol, rrow);
