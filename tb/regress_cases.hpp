@@ -192,7 +192,8 @@ Case drawCase(uint64_t master, uint64_t index, int maxHeight) {
 
 struct Totals {
   long cases = 0, failed = 0, goodFrames = 0, pixels = 0, malformed = 0, resets = 0;
-  double badNonocc = 0;  // sum over good frames of bad-1.0 (nonocc) vs the scene ground truth
+  long depthFrames = 0, minDisparityFrames = 0;  // good frames with the depth output, with dmin != 0
+  double badNonocc = 0;                          // sum over good frames of bad-1.0 (nonocc) vs the scene ground truth
   std::set<std::string> kinds, sourceStalls, sinkStalls;
   std::set<int> combinations, widths;
   int minHeight = 1 << 30, maxHeight = 0;
@@ -247,6 +248,8 @@ std::string runCase(const Case& c, Totals& totals) {
     ++totals.goodFrames;
     totals.pixels += long(f.input.left.total());
     totals.combinations.insert(paramCombination(f.input.params));
+    totals.depthFrames += f.input.params.output == OutputMode::kDepth;
+    totals.minDisparityFrames += f.input.params.minDisparity != 0;
     totals.widths.insert(f.input.left.cols);
     totals.minHeight = std::min(totals.minHeight, f.input.left.rows);
     totals.maxHeight = std::max(totals.maxHeight, f.input.left.rows);
