@@ -49,7 +49,8 @@
 // default), and a frame with dmin != 0 is dropped with error_o[3].
 // Configuration: cfg_i, the frame configuration word (rtl/sgm_cfg.svh, generated from
 // regmap/sgm_regmap.def; its fields are the read-write fields of sgm_axi's FRAME_SIZE,
-// PENALTY, CONFIG and EDGE_RESET, docs/registers.md), taken at each start of frame by
+// PENALTY, CONFIG, EDGE_RESET, OUTPUT, DEPTH_FOCAL, DEPTH_BASELINE and MIN_DISPARITY,
+// docs/registers.md), taken at each start of frame by
 // sgm_stream_ctrl, which checks it and latches it whole; this module slices the latched
 // word for the stages by the generated CFG_<REGISTER>_<FIELD>_LSB / _W.
 // Frame constraints: MIN_FRAME_WIDTH (max(D, 16); with many lanes at least the
