@@ -24,6 +24,9 @@
 # Before its first use, every test runs once on the unmutated tree (the
 # build/bin/ binaries of this checkout): a test that fails there would kill anything.
 # --check only validates the list (every text found exactly once).
+# MUTATE_TESTS=name,name (environment) restricts the tests tried to those listed (e.g. the
+# builds that have a mutated option: MUTATE_TESTS=rtl-top-d16-rb8,formal-stream_ctrl_prove),
+# for a quick run of a few mutations; `make mutate` tries every test.
 #
 # Writes DIR/report.md and DIR/report.json (default DIR build/mutate): mutations,
 # killed, survived, equivalent, invalid, kill_ratio and one row per mutation (id, file,
@@ -171,6 +174,7 @@ tests_of_file() {
     mods=("$(basename "$f" .sv)")
   fi
   for t in "${order[@]}"; do
+    [[ -z "${MUTATE_TESTS:-}" || ",$MUTATE_TESTS," == *",$t,"* ]] || continue
     for m in "${mods[@]}"; do [[ " ${tests_of[$m]:-} " == *" $t "* ]] && { out+="$t "; break; }; done
   done
   echo "$out"
