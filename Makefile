@@ -245,6 +245,9 @@ $(eval $(call rtl_test,edge-snap,sgm_edge_snap,))
 $(eval $(call rtl_test,edge-snap-d64,sgm_edge_snap,-GDW=10 -GMAX_WIDTH=512))
 $(eval $(call rtl_test,median5x5,sgm_median5x5,))
 $(eval $(call rtl_test,median5x5-d64,sgm_median5x5,-GDW=10 -GMAX_WIDTH=512))
+# sgm_depth (docs/algorithm.md section 10b) at the widest disparity word of the builds (13 bits:
+# D = 256, or the minimum disparity).
+$(eval $(call rtl_test,depth-dw13,sgm_depth,-GDW=13))
 # sgm_rectify (docs/algorithm.md section 13): mesh steps of 8 and 4 px, line buffers of 16 and 8 rows.
 $(eval $(call rtl_test,rectify-g8-r16,sgm_rectify,-GMAX_WIDTH=96 -GMAX_HEIGHT=48 -GROWS=16 -GGRID_LOG2=3))
 $(eval $(call rtl_test,rectify-g4-r8,sgm_rectify,-GMAX_WIDTH=61 -GMAX_HEIGHT=40 -GROWS=8 -GGRID_LOG2=2))

@@ -25,7 +25,7 @@
 // bits, the word) in both modes. Throughput: one pixel per enabled slot (en_i).
 // Cost (Yosys 0.23, DW = 10, synth_ecp5): docs/notes/synthesis-log.md.
 module sgm_depth #(
-  parameter int DW = 10,
+  parameter int DW /*verilator public*/ = 10,
   localparam int LATENCY = 20
 ) (
   input  wire         clk_i,
