@@ -79,11 +79,11 @@ TEST(SgmDepth, EveryWordAgainstTheGoldenDepth) {
   top.reset();
   std::mt19937 rng(10);
   std::vector<std::pair<uint32_t, uint32_t>> constants = {
-      {700 * 256, 60000},                  // 700 px, 60 mm
-      {(1u << 24) - 1, (1u << 24) - 1},    // K near 2^48: 65535 everywhere
-      {1, 1},                              // 1 mm everywhere
-      {0, 120000},                         // f = 0: 1 mm
-      {1000 * 256 + 17, 1003},             // about 1000 / d mm
+      {700 * 256, 60000},                // 700 px, 60 mm
+      {(1u << 24) - 1, (1u << 24) - 1},  // K near 2^48: 65535 everywhere
+      {1, 1},                            // 1 mm everywhere
+      {0, 120000},                       // f = 0: 1 mm
+      {1000 * 256 + 17, 1003},           // about 1000 / d mm
   };
   for (uint32_t k = 1; k <= 8; ++k) constants.push_back({1u << 20, 1000 * k});  // floor(N / 2^16) = V at dq = k
   for (int i = 0; i < 6; ++i) constants.push_back({rng() % (1u << 24), rng() % (1u << 24)});
