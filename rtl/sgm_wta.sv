@@ -103,6 +103,9 @@ module sgm_wta #(
   if (!(D >= 16 && D <= 256 && (D & (D - 1)) == 0)) begin : g_bad_d
     $error("sgm_wta: D = %0d: D must be a power of two from 16 to 256", D);
   end
+  if (!(MIN_DISPARITY == 0 || MIN_DISPARITY == 1)) begin : g_bad_min_disparity
+    $error("sgm_wta: MIN_DISPARITY = %0d: MIN_DISPARITY must be 0 or 1", MIN_DISPARITY);
+  end
   if (!(SW >= 1)) begin : g_bad_sw
     $error("sgm_wta: SW = %0d: SW must be at least 1", SW);
   end
