@@ -139,6 +139,11 @@ golden: $(BIN)/sgm-golden $(BIN)/sgm-eval
 #          [STALL=0.0] [SEED=1] [FRAMES=1] [TRACE=1] [PRESET=default|four-path|paper] [CENSUS=9x5|9x9] [LANES=1]
 #          [RIGHT_BLOCK=64 [RIGHT_WEIGHT=]] [MAX_HEIGHT=1024] [UNIQUENESS=1] [AD_TERM=1] [EDGE_RESET=1]
 #          [DEPTH=0 [OUTPUT=depth FOCAL=F BASELINE=B]] [MIN_DISPARITY=0 [DMIN=N]]
+#          [CALIB=DIR [UNIT_MM=U]] [RECTIFY=0 [RECTIFY_ROWS=32] [RECTIFY_GRID_LOG2=4]]
+# CALIB=DIR: LEFT and RIGHT are a raw camera pair and DIR its OpenCV calibration
+# (intrinsics.yml, extrinsics.yml); it builds the rectification (RECTIFY=1: a line buffer
+# of RECTIFY_ROWS rows, mesh steps of 2^RECTIFY_GRID_LOG2 px) and runs sgm-sim --calib DIR
+# (3 frames back to back; the ground truth GT is in the rectified frame).
 # DEPTH=1 builds the depth output; OUTPUT=depth runs it with f = F/256 px and B um (sgm-sim
 # --output depth --focal F --baseline B: writes depth16.png and depth_color.png);
 # MIN_DISPARITY=1 builds the minimum disparity, DMIN=N runs it (sgm-sim --dmin N).
@@ -165,7 +170,7 @@ SIM_ARGS   = --out $(OUT) --d $(D) $(if $(PRESET),--preset $(PRESET)) $(if $(fil
              $(if $(SEED),--seed $(SEED)) $(if $(FRAMES),--frames $(FRAMES)) \
              $(if $(RIGHT_WEIGHT),--right-path $(RIGHT_WEIGHT) --right-block $(RIGHT_BLOCK)) \
              $(if $(OUTPUT),--output $(OUTPUT)) $(if $(FOCAL),--focal $(FOCAL)) $(if $(BASELINE),--baseline $(BASELINE)) \
-             $(if $(DMIN),--dmin $(DMIN))
+             $(if $(DMIN),--dmin $(DMIN)) $(if $(CALIB),--calib $(CALIB)) $(if $(UNIT_MM),--unit-mm $(UNIT_MM))
 SIM_VFLAGS = -O3 --x-assign fast --x-initial fast
 
 # Any build/bin/sgm-sim-<tag>[-suffix] builds the core of SIM_CORE; the recipe stops unless
@@ -248,9 +253,9 @@ $(eval $(call rtl_test,median5x5-d64,sgm_median5x5,-GDW=10 -GMAX_WIDTH=512))
 # sgm_depth (docs/algorithm.md section 10b) at the widest disparity word of the builds (13 bits:
 # D = 256, or the minimum disparity).
 $(eval $(call rtl_test,depth-dw13,sgm_depth,-GDW=13))
-# sgm_rectify (docs/algorithm.md section 13): mesh steps of 8 and 4 px, line buffers of 16 and 8 rows.
-$(eval $(call rtl_test,rectify-g8-r16,sgm_rectify,-GMAX_WIDTH=96 -GMAX_HEIGHT=48 -GROWS=16 -GGRID_LOG2=3))
-$(eval $(call rtl_test,rectify-g4-r8,sgm_rectify,-GMAX_WIDTH=61 -GMAX_HEIGHT=40 -GROWS=8 -GGRID_LOG2=2))
+# sgm_rectify (docs/algorithm.md section 13): mesh steps of 8 and 4 px, line buffers of 16 and 8 rows, two and one channels.
+$(eval $(call rtl_test,rectify-g8-r16,sgm_rectify,-GMAX_WIDTH=96 -GMAX_HEIGHT=48 -GROWS=16 -GGRID_LOG2=3 -GCHANNELS=2 -GINFO_W=16))
+$(eval $(call rtl_test,rectify-g4-r8,sgm_rectify,-GMAX_WIDTH=61 -GMAX_HEIGHT=40 -GROWS=8 -GGRID_LOG2=2 -GINFO_W=3))
 # Whole-core builds: small MAX_HEIGHT (384 at D = 64: the tallest Middlebury scene, venus, has
 # 383 rows) so that the whole-core test sends frames of MAX_WIDTH x MAX_HEIGHT quickly.
 $(eval $(call rtl_test,top-d16,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -CFLAGS -DSGM_D=16))
@@ -271,9 +276,10 @@ $(eval $(call rtl_test,top-d16-k3-9x9,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGH
 $(eval $(call rtl_test,top-d16-lean,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GUNIQUENESS=0 -GAD_TERM=0 -GEDGE_RESET=0 -GRIGHT_BLOCK=0 -CFLAGS -DSGM_D=16))
 # The fifth path in blocks (sgm_top RIGHT_BLOCK): blocks of 8 at one lane, of 16 at two lanes
 # (its defaults run weight 4; the settings, parameter sets and regression vary it); the first
-# also has the depth output (DEPTH = 1), both the minimum disparity (MIN_DISPARITY = 1).
-$(eval $(call rtl_test,top-d16-rb8,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GRIGHT_BLOCK=8 -GEDGE_RESET=1 -GDEPTH=1 -GMIN_DISPARITY=1 -CFLAGS -DSGM_D=16))
-$(eval $(call rtl_test,top-d16-k2-rb16,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GLANES=2 -GRIGHT_BLOCK=16 -GEDGE_RESET=1 -GMIN_DISPARITY=1 -CFLAGS -DSGM_D=16))
+# also has the depth output (DEPTH = 1), both the minimum disparity (MIN_DISPARITY = 1) and the
+# rectification (RECTIFY = 1: line buffers of 16 rows and mesh steps of 8 px, 8 rows and 4 px).
+$(eval $(call rtl_test,top-d16-rb8,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GRIGHT_BLOCK=8 -GEDGE_RESET=1 -GDEPTH=1 -GMIN_DISPARITY=1 -GRECTIFY=1 -GRECTIFY_ROWS=16 -GRECTIFY_GRID_LOG2=3 -CFLAGS -DSGM_D=16))
+$(eval $(call rtl_test,top-d16-k2-rb16,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GLANES=2 -GRIGHT_BLOCK=16 -GEDGE_RESET=1 -GMIN_DISPARITY=1 -GRECTIFY=1 -GRECTIFY_ROWS=8 -GRECTIFY_GRID_LOG2=2 -CFLAGS -DSGM_D=16))
 # The reference builds (scripts/refs.mk), each whole (its D, lanes, MAX_WIDTH, features and,
 # for the ECP5 ones, the ECP5 flow's register-chain delays): what `make pnr-ref` routes is
 # what is tested, with frames up to its MAX_WIDTH.
@@ -288,7 +294,7 @@ $(foreach r,$(REF_NAMES),$(eval $(BIN)/rtl-ref-$(r): scripts/refs.mk))
 # its FEATURES back and has the frames that ask for a missing lever dropped.
 $(eval $(call rtl_test,axi-d16,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
 $(eval $(call rtl_test,axi-d16-lean,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GUNIQUENESS=0 -GAD_TERM=0 -GEDGE_RESET=0 -GRIGHT_BLOCK=0 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
-$(eval $(call rtl_test,axi-d16-rb16,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GRIGHT_BLOCK=16 -GEDGE_RESET=1 -GDEPTH=1 -GMIN_DISPARITY=1 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
+$(eval $(call rtl_test,axi-d16-rb16,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GRIGHT_BLOCK=16 -GEDGE_RESET=1 -GDEPTH=1 -GMIN_DISPARITY=1 -GRECTIFY=1 -GRECTIFY_ROWS=16 -GRECTIFY_GRID_LOG2=3 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
 $(BIN)/rtl-axi-d16 $(BIN)/rtl-axi-d16-lean $(BIN)/rtl-axi-d16-rb16: sw/sgm_driver.cpp $(wildcard sw/include/*.h*)
 $(eval $(call rtl_test,path-engine-d16,sgm_path_engine,-GD=16 -GMAX_WIDTH=128 -GXW=8 -GYW=8 -GEDGE_RESET=1 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,path-engine-d64,sgm_path_engine,-GD=64 -GMAX_WIDTH=512 -GXW=10 -GYW=10 -GGRAY_LEAD=0 -GEDGE_RESET=1 -CFLAGS -DSGM_D=64 -CFLAGS -DSGM_YW=10))
@@ -359,13 +365,14 @@ lint: | check-tools
 	done; echo "lint: $(words $(RTL_MODULES)) modules clean"
 	@# sgm_top is wiring only: the hierarchical synthesis flows (synth/common.tcl) synthesise
 	@# its stage modules and keep none of the top's own logic (nextpnr then meets raw cells).
-	@mkdir -p $(BUILD); for g in "" "-set RIGHT_BLOCK 8" "-set LANES 2" "-set LANES 2 -set RIGHT_BLOCK 8" "-set DEPTH 1 -set MIN_DISPARITY 1"; do \
+	@mkdir -p $(BUILD); for g in "" "-set RIGHT_BLOCK 8" "-set LANES 2" "-set LANES 2 -set RIGHT_BLOCK 8" "-set DEPTH 1 -set MIN_DISPARITY 1" \
+	  "-set RECTIFY 1 -set RECTIFY_ROWS 16 -set RECTIFY_GRID_LOG2 3" "-set RECTIFY 1 -set LANES 2"; do \
 	  yosys -q -p "read_verilog -sv $(RTL_SRC); chparam -set D 16 -set MAX_WIDTH 128 -set MAX_HEIGHT 64 $$g sgm_top; \
 	    hierarchy -top sgm_top; proc; tee -q -o $(BUILD)/lint-top-cells.txt select -list sgm_top/t:\$$* sgm_top/t:\$$paramod* %d" \
 	    > /dev/null 2>&1 || { echo "lint: yosys could not elaborate sgm_top ($$g)"; exit 1; }; \
 	  if [ -s $(BUILD)/lint-top-cells.txt ]; then echo "lint: sgm_top ($$g) has logic of its own (keep it in a module):"; \
 	    cat $(BUILD)/lint-top-cells.txt; exit 1; fi; \
-	done; echo "lint: sgm_top is wiring only (5 configurations)"
+	done; echo "lint: sgm_top is wiring only (7 configurations)"
 
 # ---------------------------------------------------------------- tests
 $(BIN)/unit-tests: $(TEST_OBJ) $(EVAL_OBJ) $(GOLDEN_LIB)

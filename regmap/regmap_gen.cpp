@@ -409,11 +409,12 @@ std::string svHeader() {
     }
     o << "  };\nendfunction\n";
   }
-  o << "\nfunction automatic logic reg_defined(input logic [ADDR_W-1:0] a);\n  case (a)\n";
+  // An OR of comparisons, not a case: Yosys 0.70 (proc_rom) turns a case of many constant
+  // items into a ROM, whose contents a k-induction leaves free.
+  o << "\nfunction automatic logic reg_defined(input logic [ADDR_W-1:0] a);\n  reg_defined =";
   for (size_t i = 0; i < registers.size(); ++i)
-    o << (i % 4 == 0 ? "    " : " ") << "ADDR_" << registers[i].name << (i + 1 < registers.size() ? "," : ":")
-      << (i % 4 == 3 || i + 1 == registers.size() ? "\n" : "");
-  o << "      reg_defined = 1'b1;\n    default: reg_defined = 1'b0;\n  endcase\nendfunction\n\n`endif  // SGM_REGMAP_SVH\n";
+    o << (i == 0 ? " " : i % 4 == 0 ? "\n      || " : " || ") << "a == ADDR_" << registers[i].name;
+  o << ";\nendfunction\n\n`endif  // SGM_REGMAP_SVH\n";
   return o.str();
 }
 

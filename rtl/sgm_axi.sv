@@ -10,13 +10,14 @@
 //
 //   identification  ID, D, MAX_WIDTH, MAX_HEIGHT, CENSUS, MIN_WIDTH, LANES, FEATURES (read-only)
 //   control         CTRL (enable, soft reset, hold), FRAME_SIZE, PENALTY, CONFIG,
-//                   EDGE_RESET, OUTPUT, DEPTH_FOCAL, DEPTH_BASELINE, MIN_DISPARITY
+//                   EDGE_RESET, OUTPUT, DEPTH_FOCAL, DEPTH_BASELINE, MIN_DISPARITY, RECTIFY
+//   meshes          MESH_ADDR, MESH_U, MESH_V (a write stores the node), MESH_CTRL
 //   status          STATUS (busy), FRAMES, ERROR (sticky, W1C), ERROR_COUNT,
 //                   LAST_SIZE
 //   interrupt       IRQ_ENABLE, IRQ_STATUS (W1C); irq_o = |(status & enable)
 //
 // Configuration: the bus writes FRAME_SIZE, PENALTY, CONFIG, EDGE_RESET, OUTPUT,
-// DEPTH_FOCAL, DEPTH_BASELINE and MIN_DISPARITY (shadow registers). While CTRL.HOLD is 0 they are
+// DEPTH_FOCAL, DEPTH_BASELINE, MIN_DISPARITY and RECTIFY (shadow registers). While CTRL.HOLD is 0 they are
 // copied every cycle into the active set, the frame configuration word that drives
 // sgm_top's cfg_i (cfg_from_regs packs the registers' fields), and sgm_top takes the
 // active set at the handshake of a frame's first beat, so a write in the middle of a
@@ -26,12 +27,17 @@
 // s_tuser_i is high), so the core stops at a frame boundary; a frame already
 // started runs to its end. CTRL.SOFT_RESET = 1 resets sgm_top (not the
 // registers) for SOFT_RESET_CYCLES cycles, with the input stream held.
+// The rectification's meshes (RECTIFY = 1): a write of MESH_V stores the node (MESH_U,
+// MESH_V) at MESH_ADDR (column, row, image) into the mesh copy not in use and steps
+// MESH_ADDR.COL; MESH_CTRL.SWAP makes the written copy the one used from the next start of
+// frame; MESH_CTRL.PENDING is 1 until the core's output runs on it (no mesh write meanwhile).
+// Without RECTIFY the mesh registers read and write as registers and reach nothing.
 // Undefined addresses answer SLVERR (reads return 0, writes are ignored);
 // writes to read-only registers are ignored with OKAY.
 //
 // Parameters: D, MAX_WIDTH, MAX_HEIGHT, CENSUS_H, LANES, UNIQUENESS, AD_TERM,
-// RIGHT_BLOCK, EDGE_RESET, DEPTH, MIN_DISPARITY as sgm_top (FEATURES reads back the
-// last six); ADDR_W AXI address bits.
+// RIGHT_BLOCK, EDGE_RESET, DEPTH, MIN_DISPARITY, RECTIFY, RECTIFY_ROWS, RECTIFY_GRID_LOG2 as
+// sgm_top (FEATURES reads back all but the first five); ADDR_W AXI address bits.
 // Latency and throughput: those of sgm_top; register responses one cycle
 // after the request.
 module sgm_axi #(
@@ -46,6 +52,9 @@ module sgm_axi #(
   parameter int EDGE_RESET /*verilator public*/ = 1,
   parameter int DEPTH      /*verilator public*/ = 0,
   parameter int MIN_DISPARITY /*verilator public*/ = 0,
+  parameter int RECTIFY    /*verilator public*/ = 0,
+  parameter int RECTIFY_ROWS /*verilator public*/ = 32,
+  parameter int RECTIFY_GRID_LOG2 /*verilator public*/ = 4,
   parameter int ADDR_W     = 8,
   localparam int XW        = $clog2(MAX_WIDTH + 1),
   localparam int YW        = $clog2(MAX_HEIGHT + 16)
@@ -94,7 +103,7 @@ module sgm_axi #(
   // so its builds, of legal parameters only, leave the checks out).
 `ifndef __ICARUS__
   if (!(ADDR_W >= 7 && ADDR_W <= 32)) begin : g_bad_addr_w
-    $error("sgm_axi: ADDR_W = %0d: ADDR_W must be from 7 to 32 (the registers span byte offsets 0x00 .. 0x5C)", ADDR_W);
+    $error("sgm_axi: ADDR_W = %0d: ADDR_W must be from 7 to 32 (the registers span byte offsets 0x00 .. 0x70)", ADDR_W);
   end
 `endif
 
@@ -172,6 +181,11 @@ module sgm_axi #(
   wire wr_focal       = reg_we && waddr == ADDR_DEPTH_FOCAL;
   wire wr_baseline    = reg_we && waddr == ADDR_DEPTH_BASELINE;
   wire wr_dmin        = reg_we && waddr == ADDR_MIN_DISPARITY;
+  wire wr_rectify     = reg_we && waddr == ADDR_RECTIFY;
+  wire wr_mesh_addr   = reg_we && waddr == ADDR_MESH_ADDR;
+  wire wr_mesh_u      = reg_we && waddr == ADDR_MESH_U;
+  wire wr_mesh_v      = reg_we && waddr == ADDR_MESH_V;
+  wire wr_mesh_ctrl   = reg_we && waddr == ADDR_MESH_CTRL;
   wire wr_irq_status  = reg_we && waddr == ADDR_IRQ_STATUS;
 
   assign reg_werr = !reg_defined(waddr);
@@ -179,7 +193,8 @@ module sgm_axi #(
 
   // ------------------------------------------------------------ control registers
   logic [31:0] ctrl_q, frame_size_q, penalty_q, config_q, edge_reset_q, irq_enable_q;
-  logic [31:0] output_q, focal_q, baseline_q, dmin_q;
+  logic [31:0] output_q, focal_q, baseline_q, dmin_q, rectify_q, mesh_addr_q, mesh_u_q, mesh_v_q;
+  logic        mesh_we_q, mesh_swap_q;
   logic [$clog2(SOFT_RESET_CYCLES + 1)-1:0] soft_reset_q;
 
   always_ff @(posedge clk_i) begin
@@ -194,6 +209,12 @@ module sgm_axi #(
       focal_q      <= '0;
       baseline_q   <= '0;
       dmin_q       <= '0;
+      rectify_q    <= '0;
+      mesh_addr_q  <= '0;
+      mesh_u_q     <= '0;
+      mesh_v_q     <= '0;
+      mesh_we_q    <= 1'b0;
+      mesh_swap_q  <= 1'b0;
       soft_reset_q <= '0;
     end else begin
       if (wr_ctrl) ctrl_q <= merge(ctrl_q, reg_wdata, wmask, CTRL_MASK);
@@ -206,6 +227,15 @@ module sgm_axi #(
       if (wr_focal) focal_q <= merge(focal_q, reg_wdata, wmask, DEPTH_FOCAL_MASK);
       if (wr_baseline) baseline_q <= merge(baseline_q, reg_wdata, wmask, DEPTH_BASELINE_MASK);
       if (wr_dmin) dmin_q <= merge(dmin_q, reg_wdata, wmask, MIN_DISPARITY_MASK);
+      if (wr_rectify) rectify_q <= merge(rectify_q, reg_wdata, wmask, RECTIFY_MASK);
+      if (wr_mesh_u) mesh_u_q <= merge(mesh_u_q, reg_wdata, wmask, MESH_U_MASK);
+      if (wr_mesh_v) mesh_v_q <= merge(mesh_v_q, reg_wdata, wmask, MESH_V_MASK);
+      // A write of MESH_V stores the node (the cycle after, from the registers) and steps the column.
+      mesh_we_q   <= wr_mesh_v;
+      mesh_swap_q <= wr_mesh_ctrl && wset[MESH_CTRL_SWAP_LSB];
+      if (wr_mesh_addr) mesh_addr_q <= merge(mesh_addr_q, reg_wdata, wmask, MESH_ADDR_MASK);
+      else if (mesh_we_q)
+        mesh_addr_q[MESH_ADDR_COL_LSB +: MESH_ADDR_COL_W] <= mesh_addr_q[MESH_ADDR_COL_LSB +: MESH_ADDR_COL_W] + 1'b1;
       if (wr_ctrl && wset[CTRL_SOFT_RESET_LSB]) soft_reset_q <= ($bits(soft_reset_q))'(SOFT_RESET_CYCLES);
       else if (soft_reset_q != '0) soft_reset_q <= soft_reset_q - 1'b1;
     end
@@ -222,10 +252,10 @@ module sgm_axi #(
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni)
-      act_cfg <= cfg_from_regs(32'd0, PENALTY_RESET, CONFIG_RESET, EDGE_RESET_RESET, 32'd0, 32'd0, 32'd0, 32'd0);
+      act_cfg <= cfg_from_regs(32'd0, PENALTY_RESET, CONFIG_RESET, EDGE_RESET_RESET, 32'd0, 32'd0, 32'd0, 32'd0, 32'd0);
     else if (!hold)
       act_cfg <= cfg_from_regs(frame_size_q, penalty_q, config_q, edge_reset_q, output_q, focal_q, baseline_q,
-                               dmin_q);
+                               dmin_q, rectify_q);
   end
 
   // ------------------------------------------------------------ core
@@ -237,13 +267,15 @@ module sgm_axi #(
   logic [XW-1:0] frame_width;
   logic [YW-1:0] frame_height;
   logic [XW-1:0] core_min_width;
+  logic        mesh_pending, mesh_row_miss;
 
   assign s_tready_o = core_tready && !hold_input;
 
   sgm_top #(
     .D(D), .MAX_WIDTH(MAX_WIDTH), .MAX_HEIGHT(MAX_HEIGHT), .CENSUS_H(CENSUS_H), .LANES(LANES), .UNIQUENESS(UNIQUENESS),
     .AD_TERM(AD_TERM), .RIGHT_BLOCK(RIGHT_BLOCK), .EDGE_RESET(EDGE_RESET), .DEPTH(DEPTH),
-    .MIN_DISPARITY(MIN_DISPARITY)
+    .MIN_DISPARITY(MIN_DISPARITY), .RECTIFY(RECTIFY), .RECTIFY_ROWS(RECTIFY_ROWS),
+    .RECTIFY_GRID_LOG2(RECTIFY_GRID_LOG2)
   ) u_core (
     .clk_i         (clk_i),
     .rst_ni        (rst_ni && !core_reset),
@@ -258,6 +290,15 @@ module sgm_axi #(
     .m_tvalid_o    (m_tvalid_o),
     .m_tready_i    (m_tready_i),
     .cfg_i         (act_cfg),
+    .mesh_we_i     (mesh_we_q),
+    .mesh_channel_i(mesh_addr_q[MESH_ADDR_RIGHT_LSB]),
+    .mesh_row_i    (mesh_addr_q[MESH_ADDR_ROW_LSB +: MESH_ADDR_ROW_W]),
+    .mesh_col_i    (mesh_addr_q[MESH_ADDR_COL_LSB +: MESH_ADDR_COL_W]),
+    .mesh_u_i      (mesh_u_q[MESH_U_U_LSB +: MESH_U_U_W]),
+    .mesh_v_i      (mesh_v_q[MESH_V_V_LSB +: MESH_V_V_W]),
+    .mesh_swap_i   (mesh_swap_q),
+    .mesh_swap_pending_o(mesh_pending),
+    .rect_row_miss_o(mesh_row_miss),
     .busy_o        (busy),
     .frame_done_o  (frame_done),
     .error_o       (error),
@@ -331,6 +372,12 @@ module sgm_axi #(
       ADDR_DEPTH_FOCAL: reg_rdata = focal_q;
       ADDR_DEPTH_BASELINE: reg_rdata = baseline_q;
       ADDR_MIN_DISPARITY: reg_rdata = dmin_q;
+      ADDR_RECTIFY:     reg_rdata = rectify_q;
+      ADDR_MESH_ADDR:   reg_rdata = mesh_addr_q;
+      ADDR_MESH_U:      reg_rdata = mesh_u_q;
+      ADDR_MESH_V:      reg_rdata = mesh_v_q;
+      ADDR_MESH_CTRL:   reg_rdata = 32'(mesh_pending) << MESH_CTRL_PENDING_LSB |
+                                    32'(mesh_row_miss) << MESH_CTRL_ROW_MISS_LSB;
       default:          reg_rdata = 32'd0;
     endcase
   end

@@ -31,6 +31,8 @@
 //   [125:102]  DEPTH_FOCAL.F              DEPTH_FOCAL[23:0]
 //   [149:126]  DEPTH_BASELINE.B           DEPTH_BASELINE[23:0]
 //   [157:150]  MIN_DISPARITY.DMIN         MIN_DISPARITY[7:0]
+//   [158]      RECTIFY.ENABLE             RECTIFY[0]
+//   [166:159]  RECTIFY.LAG                RECTIFY[15:8]
 //
 // Declarations of the compilation unit, guarded: every file that reads the word includes
 // this file at its top, before its module (the ports use CFG_W). Localparams and functions
@@ -38,7 +40,7 @@
 `ifndef SGM_CFG_SVH
 `define SGM_CFG_SVH
 
-localparam int CFG_W = 158;  // bits of the word
+localparam int CFG_W = 167;  // bits of the word
 
 localparam int CFG_FRAME_SIZE_WIDTH_LSB = 0;
 localparam int CFG_FRAME_SIZE_WIDTH_W = 16;
@@ -160,11 +162,21 @@ localparam int CFG_MIN_DISPARITY_DMIN_W = 8;
 localparam int CFG_MIN_DISPARITY_DMIN_MIN = 0;
 localparam int CFG_MIN_DISPARITY_DMIN_MAX = 255;
 
+localparam int CFG_RECTIFY_ENABLE_LSB = 158;
+localparam int CFG_RECTIFY_ENABLE_W = 1;
+localparam int CFG_RECTIFY_ENABLE_MIN = 0;
+localparam int CFG_RECTIFY_ENABLE_MAX = 1;
+
+localparam int CFG_RECTIFY_LAG_LSB = 159;
+localparam int CFG_RECTIFY_LAG_W = 8;
+localparam int CFG_RECTIFY_LAG_MIN = 0;
+localparam int CFG_RECTIFY_LAG_MAX = 254;
+
 // The word of the golden model's defaults (every field's DEFAULT: what a build with every
 // lever runs, sgm::Params{}) and of the four-path preset (FOUR_PATH: any other build), each
 // with the frame size 0: set FRAME_SIZE's fields to use one (docs/integration.md).
-localparam logic [CFG_W-1:0] CFG_DEFAULT = 158'h000000000000000DB140F29D4314C81800000000;
-localparam logic [CFG_W-1:0] CFG_FOUR_PATH = 158'h000000000000000FA800039D0014641200000000;
+localparam logic [CFG_W-1:0] CFG_DEFAULT = 167'h00000000000000000DB140F29D4314C81800000000;
+localparam logic [CFG_W-1:0] CFG_FOUR_PATH = 167'h00000000000000000FA800039D0014641200000000;
 
 // Every field of c at most its MAX (the fields whose legal range ends below their top). The
 // lower bounds above 0, the bounds of the build and the rules across fields are
@@ -173,7 +185,8 @@ function automatic logic cfg_below_max(input logic [CFG_W-1:0] c);
   cfg_below_max = c[CFG_PENALTY_RIGHT_WEIGHT_LSB +: CFG_PENALTY_RIGHT_WEIGHT_W] <= 4'd8 &&
                   c[CFG_CONFIG_MODE_LSB +: CFG_CONFIG_MODE_W] <= 2'd2 &&
                   c[CFG_CONFIG_UNIQUENESS_LSB +: CFG_CONFIG_UNIQUENESS_W] <= 7'd99 &&
-                  c[CFG_OUTPUT_MODE_LSB +: CFG_OUTPUT_MODE_W] <= 2'd1;
+                  c[CFG_OUTPUT_MODE_LSB +: CFG_OUTPUT_MODE_W] <= 2'd1 &&
+                  c[CFG_RECTIFY_LAG_LSB +: CFG_RECTIFY_LAG_W] <= 8'd254;
 endfunction
 
 // Every field whose build parameter (NEEDS) the build lacks at 0: has_<need> is 1 when the
@@ -185,13 +198,16 @@ function automatic logic cfg_levers_built(
     input logic has_uniqueness,
     input logic has_edge_reset,
     input logic has_depth,
-    input logic has_min_disparity);
+    input logic has_min_disparity,
+    input logic has_rectify);
   cfg_levers_built = (has_ad_term || c[CFG_PENALTY_AD_WEIGHT_LSB +: CFG_PENALTY_AD_WEIGHT_W] == 4'd0) &&
                      (has_right_block || c[CFG_PENALTY_RIGHT_WEIGHT_LSB +: CFG_PENALTY_RIGHT_WEIGHT_W] == 4'd0) &&
                      (has_uniqueness || c[CFG_CONFIG_UNIQUENESS_LSB +: CFG_CONFIG_UNIQUENESS_W] == 7'd0) &&
                      (has_edge_reset || c[CFG_EDGE_RESET_T_LSB +: CFG_EDGE_RESET_T_W] == 8'd0) &&
                      (has_depth || c[CFG_OUTPUT_MODE_LSB +: CFG_OUTPUT_MODE_W] == 2'd0) &&
-                     (has_min_disparity || c[CFG_MIN_DISPARITY_DMIN_LSB +: CFG_MIN_DISPARITY_DMIN_W] == 8'd0);
+                     (has_min_disparity || c[CFG_MIN_DISPARITY_DMIN_LSB +: CFG_MIN_DISPARITY_DMIN_W] == 8'd0) &&
+                     (has_rectify || c[CFG_RECTIFY_ENABLE_LSB +: CFG_RECTIFY_ENABLE_W] == 1'd0) &&
+                     (has_rectify || c[CFG_RECTIFY_LAG_LSB +: CFG_RECTIFY_LAG_W] == 8'd0);
 endfunction
 
 `endif  // SGM_CFG_SVH

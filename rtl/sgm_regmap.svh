@@ -33,13 +33,18 @@ localparam logic [ADDR_W-1:0] ADDR_OUTPUT       /*verilator public*/ = ADDR_W'('
 localparam logic [ADDR_W-1:0] ADDR_DEPTH_FOCAL  /*verilator public*/ = ADDR_W'('h54);
 localparam logic [ADDR_W-1:0] ADDR_DEPTH_BASELINE /*verilator public*/ = ADDR_W'('h58);
 localparam logic [ADDR_W-1:0] ADDR_MIN_DISPARITY /*verilator public*/ = ADDR_W'('h5C);
+localparam logic [ADDR_W-1:0] ADDR_RECTIFY      /*verilator public*/ = ADDR_W'('h60);
+localparam logic [ADDR_W-1:0] ADDR_MESH_ADDR    /*verilator public*/ = ADDR_W'('h64);
+localparam logic [ADDR_W-1:0] ADDR_MESH_U       /*verilator public*/ = ADDR_W'('h68);
+localparam logic [ADDR_W-1:0] ADDR_MESH_V       /*verilator public*/ = ADDR_W'('h6C);
+localparam logic [ADDR_W-1:0] ADDR_MESH_CTRL    /*verilator public*/ = ADDR_W'('h70);
 
 localparam int ID_VERSION_LSB /*verilator public*/ = 0;
 localparam int ID_VERSION_W = 8;
 localparam int ID_MAGIC_LSB /*verilator public*/ = 8;
 localparam int ID_MAGIC_W = 24;
 localparam logic [31:0] ID_MASK = 32'hFFFFFFFF;
-localparam logic [31:0] ID_VALUE /*verilator public*/ = {24'h53474D, 8'd6};
+localparam logic [31:0] ID_VALUE /*verilator public*/ = {24'h53474D, 8'd7};
 localparam int D_VALUE_LSB /*verilator public*/ = 0;
 localparam int D_VALUE_W = 32;
 localparam logic [31:0] D_MASK = 32'hFFFFFFFF;
@@ -77,10 +82,16 @@ localparam int FEATURES_DEPTH_LSB /*verilator public*/ = 4;
 localparam int FEATURES_DEPTH_W = 1;
 localparam int FEATURES_MIN_DISPARITY_LSB /*verilator public*/ = 5;
 localparam int FEATURES_MIN_DISPARITY_W = 1;
+localparam int FEATURES_RECTIFY_LSB /*verilator public*/ = 6;
+localparam int FEATURES_RECTIFY_W = 1;
 localparam int FEATURES_RIGHT_BLOCK_LSB /*verilator public*/ = 8;
 localparam int FEATURES_RIGHT_BLOCK_W = 4;
-localparam logic [31:0] FEATURES_MASK = 32'h00000F3F;
-localparam logic [31:0] FEATURES_VALUE /*verilator public*/ = {20'd0, 4'(RIGHT_BLOCK != 0 ? $clog2(RIGHT_BLOCK) : 0), 2'd0, 1'(MIN_DISPARITY != 0), 1'(DEPTH != 0), 1'(EDGE_RESET != 0), 1'(RIGHT_BLOCK != 0), 1'(AD_TERM != 0), 1'(UNIQUENESS != 0)};
+localparam int FEATURES_RECTIFY_ROWS_LSB /*verilator public*/ = 12;
+localparam int FEATURES_RECTIFY_ROWS_W = 4;
+localparam int FEATURES_RECTIFY_GRID_LSB /*verilator public*/ = 16;
+localparam int FEATURES_RECTIFY_GRID_W = 3;
+localparam logic [31:0] FEATURES_MASK = 32'h0007FF7F;
+localparam logic [31:0] FEATURES_VALUE /*verilator public*/ = {13'd0, 3'(RECTIFY != 0 ? RECTIFY_GRID_LOG2 : 0), 4'(RECTIFY != 0 ? $clog2(RECTIFY_ROWS) : 0), 4'(RIGHT_BLOCK != 0 ? $clog2(RIGHT_BLOCK) : 0), 1'd0, 1'(RECTIFY != 0), 1'(MIN_DISPARITY != 0), 1'(DEPTH != 0), 1'(EDGE_RESET != 0), 1'(RIGHT_BLOCK != 0), 1'(AD_TERM != 0), 1'(UNIQUENESS != 0)};
 localparam int CTRL_ENABLE_LSB /*verilator public*/ = 0;
 localparam int CTRL_ENABLE_W = 1;
 localparam int CTRL_SOFT_RESET_LSB /*verilator public*/ = 1;
@@ -188,6 +199,31 @@ localparam logic [31:0] DEPTH_BASELINE_MASK = 32'h00FFFFFF;
 localparam int MIN_DISPARITY_DMIN_LSB /*verilator public*/ = 0;
 localparam int MIN_DISPARITY_DMIN_W = 8;
 localparam logic [31:0] MIN_DISPARITY_MASK = 32'h000000FF;
+localparam int RECTIFY_ENABLE_LSB /*verilator public*/ = 0;
+localparam int RECTIFY_ENABLE_W = 1;
+localparam int RECTIFY_LAG_LSB /*verilator public*/ = 8;
+localparam int RECTIFY_LAG_W = 8;
+localparam logic [31:0] RECTIFY_MASK = 32'h0000FF01;
+localparam int MESH_ADDR_COL_LSB /*verilator public*/ = 0;
+localparam int MESH_ADDR_COL_W = 12;
+localparam int MESH_ADDR_ROW_LSB /*verilator public*/ = 12;
+localparam int MESH_ADDR_ROW_W = 12;
+localparam int MESH_ADDR_RIGHT_LSB /*verilator public*/ = 24;
+localparam int MESH_ADDR_RIGHT_W = 1;
+localparam logic [31:0] MESH_ADDR_MASK = 32'h01FFFFFF;
+localparam int MESH_U_U_LSB /*verilator public*/ = 0;
+localparam int MESH_U_U_W = 18;
+localparam logic [31:0] MESH_U_MASK = 32'h0003FFFF;
+localparam int MESH_V_V_LSB /*verilator public*/ = 0;
+localparam int MESH_V_V_W = 18;
+localparam logic [31:0] MESH_V_MASK = 32'h0003FFFF;
+localparam int MESH_CTRL_SWAP_LSB /*verilator public*/ = 0;
+localparam int MESH_CTRL_SWAP_W = 1;
+localparam int MESH_CTRL_PENDING_LSB /*verilator public*/ = 1;
+localparam int MESH_CTRL_PENDING_W = 1;
+localparam int MESH_CTRL_ROW_MISS_LSB /*verilator public*/ = 2;
+localparam int MESH_CTRL_ROW_MISS_W = 1;
+localparam logic [31:0] MESH_CTRL_MASK = 32'h00000006;
 
 localparam int MIN_HEIGHT = 9;  // shortest frame of every build (sgm_stream_ctrl)
 localparam int ERROR_KINDS = 4;  // error kinds (ERROR, ERROR_COUNT)
@@ -203,8 +239,11 @@ function automatic logic [CFG_W-1:0] cfg_from_regs(
     input logic [31:0] reg_output,
     input logic [31:0] reg_depth_focal,
     input logic [31:0] reg_depth_baseline,
-    input logic [31:0] reg_min_disparity);
+    input logic [31:0] reg_min_disparity,
+    input logic [31:0] reg_rectify);
   cfg_from_regs = {
+    reg_rectify[15:8],           // RECTIFY.LAG, word [166:159]
+    reg_rectify[0],              // RECTIFY.ENABLE, word [158]
     reg_min_disparity[7:0],      // MIN_DISPARITY.DMIN, word [157:150]
     reg_depth_baseline[23:0],    // DEPTH_BASELINE.B, word [149:126]
     reg_depth_focal[23:0],       // DEPTH_FOCAL.F, word [125:102]
@@ -233,16 +272,14 @@ function automatic logic [CFG_W-1:0] cfg_from_regs(
 endfunction
 
 function automatic logic reg_defined(input logic [ADDR_W-1:0] a);
-  case (a)
-    ADDR_ID, ADDR_D, ADDR_MAX_WIDTH, ADDR_MAX_HEIGHT,
-    ADDR_CENSUS, ADDR_MIN_WIDTH, ADDR_LANES, ADDR_FEATURES,
-    ADDR_CTRL, ADDR_FRAME_SIZE, ADDR_PENALTY, ADDR_CONFIG,
-    ADDR_STATUS, ADDR_FRAMES, ADDR_ERROR, ADDR_ERROR_COUNT,
-    ADDR_LAST_SIZE, ADDR_EDGE_RESET, ADDR_IRQ_ENABLE, ADDR_IRQ_STATUS,
-    ADDR_OUTPUT, ADDR_DEPTH_FOCAL, ADDR_DEPTH_BASELINE, ADDR_MIN_DISPARITY:
-      reg_defined = 1'b1;
-    default: reg_defined = 1'b0;
-  endcase
+  reg_defined = a == ADDR_ID || a == ADDR_D || a == ADDR_MAX_WIDTH || a == ADDR_MAX_HEIGHT
+      || a == ADDR_CENSUS || a == ADDR_MIN_WIDTH || a == ADDR_LANES || a == ADDR_FEATURES
+      || a == ADDR_CTRL || a == ADDR_FRAME_SIZE || a == ADDR_PENALTY || a == ADDR_CONFIG
+      || a == ADDR_STATUS || a == ADDR_FRAMES || a == ADDR_ERROR || a == ADDR_ERROR_COUNT
+      || a == ADDR_LAST_SIZE || a == ADDR_EDGE_RESET || a == ADDR_IRQ_ENABLE || a == ADDR_IRQ_STATUS
+      || a == ADDR_OUTPUT || a == ADDR_DEPTH_FOCAL || a == ADDR_DEPTH_BASELINE || a == ADDR_MIN_DISPARITY
+      || a == ADDR_RECTIFY || a == ADDR_MESH_ADDR || a == ADDR_MESH_U || a == ADDR_MESH_V
+      || a == ADDR_MESH_CTRL;
 endfunction
 
 `endif  // SGM_REGMAP_SVH

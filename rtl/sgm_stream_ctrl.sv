@@ -21,7 +21,8 @@
 // UNIQUENESS = 0, an AD weight other than 0 with AD_TERM = 0, a fifth-path weight
 // other than 0 with RIGHT_PATH = 0, a path restart threshold other than 0 with
 // EDGE_RESET = 0, a depth output with DEPTH = 0, a minimum disparity with MIN_DISPARITY
-// = 0), a fifth-path weight above 8 or a path restart with length 0.
+// = 0, a rectification with RECTIFY = 0), a fifth-path weight above 8, a path restart with
+// length 0 or a rectification lag above RECTIFY_ROWS - 2.
 //
 // The configuration is one packed word, the frame configuration word cfg_i
 // (rtl/sgm_cfg.svh, generated from regmap/sgm_regmap.def): sampled whole with the
@@ -43,9 +44,11 @@
 // cost word holds 0 .. 2^CBITS - 1, CBITS = bits of 2 NB), XW/YW column/row
 // bits (rows count on past the frame while flushing: MAX_HEIGHT + flush rows
 // must fit YW bits), FIFO_DEPTH, UNIQUENESS, AD_TERM, RIGHT_PATH, EDGE_RESET, DEPTH and
-// MIN_DISPARITY (sgm_top's: whether the build has the uniqueness test, the AD term, the
-// fifth path, the path restart at strong edges, the depth output, the minimum disparity;
-// 0 rejects frames that set them).
+// MIN_DISPARITY, RECTIFY (sgm_top's: whether the build has the uniqueness test, the AD term,
+// the fifth path, the path restart at strong edges, the depth output, the minimum disparity,
+// the rectification; 0 rejects frames that set them), RECTIFY_ROWS (its line buffer rows).
+// s_tside_i is a flag beside each beat that comes out with the beat's slot (side_o; sgm_top:
+// the rectification's outside flag of the left pixel).
 // Throughput: one beat per cycle in both directions when the output is ready.
 module sgm_stream_ctrl #(
   parameter int MAX_WIDTH  = 1280,
@@ -60,7 +63,9 @@ module sgm_stream_ctrl #(
   parameter int RIGHT_PATH = 0,
   parameter int EDGE_RESET = 0,
   parameter int DEPTH      = 0,
-  parameter int MIN_DISPARITY = 0
+  parameter int MIN_DISPARITY = 0,
+  parameter int RECTIFY    = 0,
+  parameter int RECTIFY_ROWS = 32
 ) (
   input  wire                 clk_i,
   input  wire                 rst_ni,
@@ -70,6 +75,7 @@ module sgm_stream_ctrl #(
   input  wire                 s_tlast_i,
   input  wire                 s_tvalid_i,
   output logic                s_tready_o,
+  input  wire                 s_tside_i,     // a flag beside the beat, given with its slot (side_o)
   // Output stream: tdata = the pipeline's output word (res_word_i).
   output logic [15:0]         m_tdata_o,
   output logic                m_tuser_o,
@@ -92,6 +98,7 @@ module sgm_stream_ctrl #(
   output logic [XW-1:0]       col_o,
   output logic [YW-1:0]       row_o,
   output logic                sof_o,         // the slot is the frame's first: (col_o, row_o) = (0, 0)
+  output logic                side_o,        // the slot's beat's s_tside_i (0 in a slot of no beat)
   // Pipeline result of the current slot: a frame pixel when res_valid_i.
   input  wire                 res_valid_i,
   input  wire  [15:0]         res_word_i,    // the output word (sgm_depth: disparity or depth)
@@ -149,6 +156,9 @@ module sgm_stream_ctrl #(
   if (!(MIN_DISPARITY == 0 || MIN_DISPARITY == 1)) begin : g_bad_min_disparity
     $error("sgm_stream_ctrl: MIN_DISPARITY = %0d: MIN_DISPARITY must be 0 or 1", MIN_DISPARITY);
   end
+  if (!(RECTIFY == 0 || RECTIFY == 1)) begin : g_bad_rectify
+    $error("sgm_stream_ctrl: RECTIFY = %0d: RECTIFY must be 0 or 1", RECTIFY);
+  end
 `endif
 
   typedef enum logic [2:0] {IDLE, FILL, RUN, PAD, FLUSH} state_e;
@@ -157,6 +167,7 @@ module sgm_stream_ctrl #(
   // ---------------------------------------------------------------- input buffer
   // Two entries, so that s_tready_o and every enable below come from registers.
   logic [17:0] ibuf_q [0:1];  // {tuser, tlast, tdata}
+  logic        side_q [0:1];  // the beat's s_tside_i
   logic [1:0]  in_count_q;
   logic        in_rd_q, in_wr_q;
   wire         in_push  = s_tvalid_i && s_tready_o;
@@ -199,6 +210,7 @@ module sgm_stream_ctrl #(
   wire [CFG_PENALTY_AD_CAP_W-1:0]    cfg_ad_cap    = cfg_i[CFG_PENALTY_AD_CAP_LSB +: CFG_PENALTY_AD_CAP_W];
   wire [CFG_EDGE_RESET_T_W-1:0]      cfg_reset_t   = cfg_i[CFG_EDGE_RESET_T_LSB +: CFG_EDGE_RESET_T_W];
   wire [CFG_EDGE_RESET_LEN_W-1:0]    cfg_reset_len = cfg_i[CFG_EDGE_RESET_LEN_LSB +: CFG_EDGE_RESET_LEN_W];
+  wire [CFG_RECTIFY_LAG_W-1:0]       cfg_rect_lag  = cfg_i[CFG_RECTIFY_LAG_LSB +: CFG_RECTIFY_LAG_W];
   wire [11:0] ad_max  = 12'(cfg_ad_weight) * 12'(cfg_ad_cap);
   wire [9:0]  ad_cmax = cfg_mode == 2'd2 ? 10'(2 * NB) : 10'(NB);
   wire        ad_fits = ad_cmax + 10'(ad_max[11:3]) <= 10'((1 << CBITS) - 1);
@@ -208,8 +220,9 @@ module sgm_stream_ctrl #(
                 cfg_p2 >= cfg_p1 && ad_fits &&
                 (cfg_reset_t == 8'd0 || 32'(cfg_reset_len) >= CFG_EDGE_RESET_LEN_MIN) &&
                 cfg_below_max(cfg_i) &&
+                (RECTIFY == 0 || 32'(cfg_rect_lag) <= RECTIFY_ROWS - 2) &&
                 cfg_levers_built(cfg_i, AD_TERM != 0, RIGHT_PATH != 0, UNIQUENESS != 0, EDGE_RESET != 0, DEPTH != 0,
-                                 MIN_DISPARITY != 0);
+                                 MIN_DISPARITY != 0, RECTIFY != 0);
   logic [CFG_W:0] pend_q [0:1];  // {in range, the word}
   always_ff @(posedge clk_i) begin
     if (in_push && s_tuser_i) pend_q[in_wr_q] <= {cfg_ok, cfg_i};
@@ -293,6 +306,7 @@ module sgm_stream_ctrl #(
     if (slot) begin
       pix_left_o  <= take ? head[7:0] : 8'd0;
       pix_right_o <= take ? head[15:8] : 8'd0;
+      side_o      <= take && side_q[in_rd_q];
       col_o       <= x_q;
       row_o       <= y_q;
       sof_o       <= first_px;  // a flag beside the position (no comparison behind col_o / row_o)
@@ -387,6 +401,7 @@ module sgm_stream_ctrl #(
     end else begin
       if (in_push) begin
         ibuf_q[in_wr_q] <= {s_tuser_i, s_tlast_i, s_tdata_i};
+        side_q[in_wr_q] <= s_tside_i;
         in_wr_q         <= ~in_wr_q;
       end
       if (in_pop) in_rd_q <= ~in_rd_q;

@@ -74,6 +74,9 @@ module sgm_top #(
   parameter int EDGE_RESET /*verilator public*/ = 1,  // the path restart at strong edges is built (0: not)
   parameter int DEPTH      /*verilator public*/ = 0,  // the depth output is built (0: not)
   parameter int MIN_DISPARITY /*verilator public*/ = 0,  // the minimum disparity is built (0: not)
+  parameter int RECTIFY    /*verilator public*/ = 0,  // the rectification in the stream is built (0: not)
+  parameter int RECTIFY_ROWS /*verilator public*/ = 32,  // its line buffer rows R (a power of two, 4 .. 256)
+  parameter int RECTIFY_GRID_LOG2 /*verilator public*/ = 4,  // its mesh step G = 2^RECTIFY_GRID_LOG2 px (2 .. 6)
   localparam int XW        = $clog2(MAX_WIDTH + 1),
   // Lanes (docs/lanes.md "The top's wiring at K lanes"). The engine's
   // SKEW (sgm_path_engine owns the formula; mirrored here for the deal, checked
@@ -130,6 +133,18 @@ module sgm_top #(
   input  wire          m_tready_i,
   // Configuration: the frame configuration word (rtl/sgm_cfg.svh), latched at start of frame.
   input  wire [CFG_W-1:0] cfg_i,
+  // The rectification's meshes (RECTIFY = 1; sgm_rectify: a node (u, v) of image channel 0
+  // (left) or 1 (right), written into the copy not in use while mesh_swap_pending_o is low,
+  // then mesh_swap_i; tie to 0 without it).
+  input  wire          mesh_we_i,
+  input  wire          mesh_channel_i,
+  input  wire  [11:0]  mesh_row_i,
+  input  wire  [11:0]  mesh_col_i,
+  input  wire  [17:0]  mesh_u_i,       // 1/32 px, signed
+  input  wire  [17:0]  mesh_v_i,
+  input  wire          mesh_swap_i,
+  output logic         mesh_swap_pending_o,
+  output logic         rect_row_miss_o,  // the frame's calibration reads a row the buffer no longer holds
   // Status.
   output logic         busy_o,
   output logic         frame_done_o,
@@ -178,6 +193,9 @@ module sgm_top #(
   if (!(MIN_DISPARITY == 0 || MIN_DISPARITY == 1)) begin : g_bad_min_disparity
     $error("sgm_top: MIN_DISPARITY = %0d: MIN_DISPARITY must be 0 or 1", MIN_DISPARITY);
   end
+  if (!(RECTIFY == 0 || RECTIFY == 1)) begin : g_bad_rectify
+    $error("sgm_top: RECTIFY = %0d: RECTIFY must be 0 or 1", RECTIFY);
+  end
   if (!(RIGHT_BLOCK == 0 || (RIGHT_BLOCK >= 2 && (RIGHT_BLOCK & (RIGHT_BLOCK - 1)) == 0))) begin : g_bad_right_block
     $error("sgm_top: RIGHT_BLOCK = %0d: RIGHT_BLOCK must be 0 (no fifth path) or a power of two >= 2", RIGHT_BLOCK);
   end
@@ -201,6 +219,120 @@ module sgm_top #(
   logic          res_valid;
   logic [15:0]   res_word;
 
+  // ------------------------------------------------------------ rectification
+  // With RECTIFY = 1 the input pair goes through sgm_rectify (two channels: left in bits 7:0,
+  // right in 15:8) before the stream controller, which then sees rectified frames with the
+  // configuration word each raw frame came with (sgm_rectify's side band: a frame's word
+  // travels with it through the line buffer's lag). The framing of the raw input is checked
+  // by sgm_rectify (error kinds 0 .. 2; its output frames are always whole); the left
+  // pixel's outside flag rides beside the beat into the stream controller (side_o with the
+  // slot) and waits in sgm_rectify_join for that pixel's output word, which it turns into 0
+  // (disparity 0, invalid; depth 0): docs/algorithm.md section 13.
+  logic [15:0]      ctrl_tdata;
+  logic             ctrl_tuser, ctrl_tlast, ctrl_tvalid, ctrl_tready, ctrl_tside;
+  logic [CFG_W-1:0] ctrl_cfg;
+  logic [3:0]       ctrl_error, ctrl_error_set;
+  logic             side0;
+  logic [15:0]      res_word_out;
+  if (RECTIFY != 0) begin : g_rectify
+    localparam int RXW = $clog2(MAX_WIDTH + 1);
+    localparam int RYW = $clog2(MAX_HEIGHT + 1);
+    localparam int RNX = ((MAX_WIDTH - 1) >> RECTIFY_GRID_LOG2) + 2;
+    localparam int RNY = ((MAX_HEIGHT - 1) >> RECTIFY_GRID_LOG2) + 2;
+`ifndef __ICARUS__
+    if (RNX > 4096 || RNY > 4096) begin : g_bad_mesh
+      $error("sgm_top: the mesh of %0d x %0d nodes exceeds the 12-bit mesh_col_i / mesh_row_i", RNX, RNY);
+    end
+`endif
+    logic [1:0] outside;
+    logic [2:0] rect_frame_error, rect_error_set;
+    sgm_rectify #(
+      .MAX_WIDTH (MAX_WIDTH),
+      .MAX_HEIGHT(MAX_HEIGHT),
+      .ROWS      (RECTIFY_ROWS),
+      .GRID_LOG2 (RECTIFY_GRID_LOG2),
+      .CHANNELS  (2),
+      .INFO_W    (CFG_W)
+    ) u_rectify (
+      .clk_i              (clk_i),
+      .rst_ni             (rst_ni),
+      .width_i            (RXW'(cfg_i[CFG_FRAME_SIZE_WIDTH_LSB +: CFG_FRAME_SIZE_WIDTH_W])),
+      .height_i           (RYW'(cfg_i[CFG_FRAME_SIZE_HEIGHT_LSB +: CFG_FRAME_SIZE_HEIGHT_W])),
+      .lag_i              (cfg_i[CFG_RECTIFY_LAG_LSB +: CFG_RECTIFY_LAG_W]),
+      .enable_i           (cfg_i[CFG_RECTIFY_ENABLE_LSB]),
+      .info_i             (cfg_i),
+      .info_o             (ctrl_cfg),
+      .mesh_we_i          (mesh_we_i),
+      .mesh_channel_i     (mesh_channel_i),
+      .mesh_row_i         ($clog2(RNY)'(mesh_row_i)),
+      .mesh_col_i         ($clog2(RNX)'(mesh_col_i)),
+      .mesh_u_i           (mesh_u_i),
+      .mesh_v_i           (mesh_v_i),
+      .mesh_swap_i        (mesh_swap_i),
+      .mesh_swap_pending_o(mesh_swap_pending_o),
+      .s_tdata_i          (s_tdata_i),
+      .s_tvalid_i         (s_tvalid_i),
+      .s_tready_o         (s_tready_o),
+      .s_tuser_i          (s_tuser_i),
+      .s_tlast_i          (s_tlast_i),
+      .m_tdata_o          (ctrl_tdata),
+      .m_tvalid_o         (ctrl_tvalid),
+      .m_tready_i         (ctrl_tready),
+      .m_tuser_o          (ctrl_tuser),
+      .m_tlast_o          (ctrl_tlast),
+      .m_outside_o        (outside),
+      .m_error_o          (rect_frame_error),
+      .error_set_o        (rect_error_set),
+      .row_miss_o         (rect_row_miss_o)
+    );
+    assign ctrl_tside    = outside[0];
+    // The mesh address ports are 12 bits for every build; the build's mesh takes the low bits.
+    wire [23:0] unused_mesh_address = {mesh_row_i, mesh_col_i};
+    wire unused_outside  = outside[1];  // a right pixel outside only costs its matches
+    // The outside flags in flight: at most the slots of a frame's flush, fewer than the rows
+    // the row positions keep apart beyond a frame (RW) times the width.
+    localparam int SIDE_ROWS = 16 + (LANES == 1 ? 0 : 2 * LR_LAG_MAX + 2 * LANES + 4) +
+                               (RIGHT_PATH != 0 ? RP_LATENCY / MIN_FRAME_WIDTH + 2 : 0);
+    sgm_rectify_join #(
+      .DEPTH_LOG2($clog2(SIDE_ROWS * MAX_WIDTH)),
+      .YW        (RW)
+    ) u_join (
+      .clk_i           (clk_i),
+      .rst_ni          (rst_ni),
+      .en_i            (en),
+      .row_i           (row0),
+      .height_i        (height),
+      .side_i          (side0),
+      .res_valid_i     (res_valid),
+      .res_word_i      (res_word),
+      .res_word_o      (res_word_out),
+      .ctrl_error_i    (ctrl_error),
+      .ctrl_error_set_i(ctrl_error_set),
+      .beat_valid_i    (ctrl_tvalid),
+      .beat_ready_i    (ctrl_tready),
+      .frame_error_i   (rect_frame_error),
+      .lut_start_i     (lut_start),
+      .rect_error_set_i(rect_error_set),
+      .error_o         (error_o),
+      .error_set_o     (error_event_o)
+    );
+  end else begin : g_no_rectify
+    assign ctrl_tdata          = s_tdata_i;
+    assign ctrl_tuser          = s_tuser_i;
+    assign ctrl_tlast          = s_tlast_i;
+    assign ctrl_tvalid         = s_tvalid_i;
+    assign s_tready_o          = ctrl_tready;
+    assign ctrl_tside          = 1'b0;
+    assign ctrl_cfg            = cfg_i;
+    assign error_o             = ctrl_error;
+    assign error_event_o       = ctrl_error_set;
+    assign res_word_out        = res_word;
+    assign mesh_swap_pending_o = 1'b0;
+    assign rect_row_miss_o     = 1'b0;
+    wire [63:0] unused_mesh = {mesh_we_i, mesh_channel_i, mesh_row_i, mesh_col_i, mesh_u_i, mesh_v_i, mesh_swap_i,
+                               side0};
+  end
+
   sgm_stream_ctrl #(
     .MAX_WIDTH (MAX_WIDTH),
     .MIN_WIDTH (MIN_FRAME_WIDTH),
@@ -214,21 +346,24 @@ module sgm_top #(
     .RIGHT_PATH(RIGHT_PATH),
     .EDGE_RESET(EDGE_RESET),
     .DEPTH     (DEPTH),
-    .MIN_DISPARITY(MIN_DISPARITY)
+    .MIN_DISPARITY(MIN_DISPARITY),
+    .RECTIFY   (RECTIFY),
+    .RECTIFY_ROWS(RECTIFY_ROWS)
   ) u_ctrl (
     .clk_i         (clk_i),
     .rst_ni        (rst_ni),
-    .s_tdata_i     (s_tdata_i),
-    .s_tuser_i     (s_tuser_i),
-    .s_tlast_i     (s_tlast_i),
-    .s_tvalid_i    (s_tvalid_i),
-    .s_tready_o    (s_tready_o),
+    .s_tdata_i     (ctrl_tdata),
+    .s_tuser_i     (ctrl_tuser),
+    .s_tlast_i     (ctrl_tlast),
+    .s_tvalid_i    (ctrl_tvalid),
+    .s_tready_o    (ctrl_tready),
+    .s_tside_i     (ctrl_tside),
     .m_tdata_o     (m_tdata_o),
     .m_tuser_o     (m_tuser_o),
     .m_tlast_o     (m_tlast_o),
     .m_tvalid_o    (m_tvalid_o),
     .m_tready_i    (m_tready_i),
-    .cfg_i         (cfg_i),
+    .cfg_i         (ctrl_cfg),
     .cfg_o         (cfg),
     .width_o       (width),
     .height_o      (height),
@@ -240,12 +375,13 @@ module sgm_top #(
     .col_o         (col0),
     .row_o         (row0),
     .sof_o         (sof0),
+    .side_o        (side0),
     .res_valid_i   (res_valid),
-    .res_word_i    (res_word),
+    .res_word_i    (res_word_out),
     .busy_o        (busy_o),
     .frame_done_o  (frame_done_o),
-    .error_o       (error_o),
-    .error_set_o   (error_event_o)
+    .error_o       (ctrl_error),
+    .error_set_o   (ctrl_error_set)
   );
 
   // The enable reaches every flip-flop of the datapath: on ECP5 it rides a

@@ -14,6 +14,7 @@
 # order; D and MAX_WIDTH always:
 #
 #   d<D>-w<MAX_WIDTH>[-h<MAX_HEIGHT>][-c9x<CENSUS_H>][-k<LANES>][-u<UNIQUENESS>][-ad<AD_TERM>][-rb<RIGHT_BLOCK>][-er<EDGE_RESET>][-z<DEPTH>][-dm<MIN_DISPARITY>]
+#   [-rect<RECTIFY>][-rr<RECTIFY_ROWS>][-rg<RECTIFY_GRID_LOG2>]
 #
 #   d64-w1280                 sgm_top's defaults (H 1024, 9x5 census, one lane, both levers,
 #                             the fifth path in blocks of 64, the path restart built, no
@@ -39,8 +40,10 @@
 #   $(call core_spec_of,PREFIX)   the spec of the variables PREFIX<NAME> that are set
 #                                 (PNR_ -> PNR_D, PNR_MAX_WIDTH, ...; empty -> D, MAX_WIDTH, ...)
 
-CORE_PARAMS   := D MAX_WIDTH MAX_HEIGHT CENSUS_H LANES UNIQUENESS AD_TERM RIGHT_BLOCK EDGE_RESET DEPTH MIN_DISPARITY
-CORE_DEFAULTS := D=64 MAX_WIDTH=1280 MAX_HEIGHT=1024 CENSUS_H=5 LANES=1 UNIQUENESS=1 AD_TERM=1 RIGHT_BLOCK=64 EDGE_RESET=1 DEPTH=0 MIN_DISPARITY=0
+CORE_PARAMS   := D MAX_WIDTH MAX_HEIGHT CENSUS_H LANES UNIQUENESS AD_TERM RIGHT_BLOCK EDGE_RESET DEPTH MIN_DISPARITY \
+                 RECTIFY RECTIFY_ROWS RECTIFY_GRID_LOG2
+CORE_DEFAULTS := D=64 MAX_WIDTH=1280 MAX_HEIGHT=1024 CENSUS_H=5 LANES=1 UNIQUENESS=1 AD_TERM=1 RIGHT_BLOCK=64 EDGE_RESET=1 DEPTH=0 \
+                 MIN_DISPARITY=0 RECTIFY=0 RECTIFY_ROWS=32 RECTIFY_GRID_LOG2=4
 # The tag's letters (D and MAX_WIDTH always named; CENSUS_H as the window, c9x9).
 CORE_TAG_D := d
 CORE_TAG_MAX_WIDTH := w
@@ -53,6 +56,9 @@ CORE_TAG_RIGHT_BLOCK := rb
 CORE_TAG_EDGE_RESET := er
 CORE_TAG_DEPTH := z
 CORE_TAG_MIN_DISPARITY := dm
+CORE_TAG_RECTIFY := rect
+CORE_TAG_RECTIFY_ROWS := rr
+CORE_TAG_RECTIFY_GRID_LOG2 := rg
 
 core_empty      :=
 core_space      := $(core_empty) $(core_empty)
@@ -83,6 +89,10 @@ RIGHT_BLOCK ?= $(if $(filter paper four-path,$(PRESET)),0,$(call core_default,RI
 EDGE_RESET  ?= $(call core_default,EDGE_RESET)
 DEPTH       ?= $(call core_default,DEPTH)
 MIN_DISPARITY ?= $(call core_default,MIN_DISPARITY)
+# CALIB=DIR (make sim: a raw pair and its calibration) builds the rectification.
+RECTIFY     ?= $(if $(CALIB),1,$(call core_default,RECTIFY))
+RECTIFY_ROWS ?= $(call core_default,RECTIFY_ROWS)
+RECTIFY_GRID_LOG2 ?= $(call core_default,RECTIFY_GRID_LOG2)
 CENSUS      ?= $(if $(filter paper,$(PRESET)),9x9,9x5)
 CENSUS_H     = $(if $(filter 9x9,$(CENSUS)),9,$(if $(filter 9x5,$(CENSUS)),5,$(error CENSUS=$(CENSUS): expected 9x5 or 9x9)))
 # The build those knobs name (make sim, make synth; make bench at its own MAX_WIDTH).

@@ -3,11 +3,16 @@
 // golden model on the same pair in the same process, compares every output
 // pixel, and writes disparity PNGs, a side-by-side picture and report.json (with
 // --output depth, a build with DEPTH = 1: the depth words as depth16.png and a depth
-// picture instead of the disparity pictures).
+// picture instead of the disparity pictures). With --calib DIR (a build with RECTIFY = 1) the
+// pair is raw: the core rectifies it through the meshes of the calibration in DIR (OpenCV's
+// intrinsics.yml and extrinsics.yml, sgm-eval calib-mesh's arithmetic), the golden model is
+// sgm::runRectifiedPipeline, and the rectified pair (the golden model's) is written too; a
+// build with DEPTH = 1 also runs one frame of depth from the calibration's f and B.
 #include "Vsgm_top.h"
 #include "Vsgm_top_sgm_top.h"
 #include "core_harness.hpp"
 
+#include "calibration.hpp"
 #include "eval_lib.hpp"
 #include "report_json.hpp"
 
@@ -38,8 +43,8 @@ using namespace sgm;
 namespace {
 
 const char* kUsage =
-    "usage: sgm-sim [--left L --right R [--gt G] [--gt-scale S]] [--out DIR] [--stall P] [--seed N]\n"
-    "               [--frames N] [--preset default|four-path|paper] [pipeline options]\n"
+    "usage: sgm-sim [--left L --right R [--gt G] [--gt-scale S] [--calib DIR [--unit-mm U]]] [--out DIR]\n"
+    "               [--stall P] [--seed N] [--frames N] [--preset default|four-path|paper] [pipeline options]\n"
     "Pipeline options as sgm-golden's (--d --p1 --p2 --mode --subpixel --lr --fill --snap\n"
     "--median --census --p2-mode --weights --output --focal --baseline; not the golden-only\n"
     "experiments); options after\n"
@@ -48,14 +53,18 @@ const char* kUsage =
     "Without --left/--right runs the default scene: the Middlebury Aloe pair shipped by\n"
     "opencv-doc, scaled by 1/4 so its disparities fit D = 64. --stall P idles the input and\n"
     "stalls the output with probability P per cycle; --frames N sends the pair N times back\n"
-    "to back. TRACE=1 (at build and run time) writes build/trace/sgm_top.fst.\n";
+    "to back. --calib DIR: L and R are a raw camera pair, rectified in the core (make sim RECTIFY=1) through\n"
+    "the meshes of the OpenCV calibration in DIR (intrinsics.yml, extrinsics.yml; --unit-mm: mm per\n"
+    "calibration unit, for the depth); the ground truth is in the rectified frame; 3 frames by default\n"
+    "(report.json: frame_period_cycles_per_pixel). TRACE=1 (at build and run time) writes\n"
+    "build/trace/sgm_top.fst.\n";
 
 }  // namespace
 
 int main(int argc, char** argv) {
   try {
     auto options = CliArgs::pipelineOptions();
-    options.insert({"left", "right", "gt", "gt-scale", "out", "stall", "seed", "frames"});
+    options.insert({"left", "right", "gt", "gt-scale", "out", "stall", "seed", "frames", "calib", "unit-mm"});
     const CliArgs args(argc, argv, options, {"help"});
     if (args.has("help")) {
       std::cout << kUsage;
@@ -103,7 +112,11 @@ int main(int argc, char** argv) {
     checkOutputDirectory(out);  // before the simulation; created only to write the results
     const double stall = args.real("stall", 0.0, 0.0, 0.95);
     const uint32_t seed = uint32_t(args.integer("seed", 1, 0, 0xffffffffL));
-    const int frames = int(args.integer("frames", 1, 1, 100));
+    const bool calibrated = args.has("calib");
+    const int frames = int(args.integer("frames", calibrated ? 3 : 1, 1, 100));
+    if (calibrated && !args.has("left")) throw Error("--calib needs the raw pair: --left and --right");
+    if (calibrated && !Vsgm_top_sgm_top::RECTIFY)
+      throw Error("--calib: this simulator is built without the rectification (make sim RECTIFY=1 builds one)");
 
     eval::Scene scene;
     if (args.has("left")) {
@@ -123,10 +136,43 @@ int main(int argc, char** argv) {
     if (h > SGM_MAX_HEIGHT)
       throw Error("height " + std::to_string(h) + " exceeds MAX_HEIGHT=" + std::to_string(SGM_MAX_HEIGHT));
 
-    const DisparityMap golden = runPipeline(scene.left, scene.right, params);
+    // The calibration: the pair's meshes at the build's step, their fit in its line buffer.
+    Params frameParams = params;
+    std::shared_ptr<StereoMesh> mesh;
+    RectifiedPair rectified;
+    RowSpan pairSpan;
+    eval::MeshError meshError[2];
+    if (calibrated) {
+      const std::string dir = args.text("calib", "");
+      const eval::StereoCalibration calibration = eval::readCalibration(dir);
+      mesh = std::make_shared<StereoMesh>(eval::stereoMesh(calibration, scene.left.size(),
+                                                           Vsgm_top_sgm_top::RECTIFY_GRID_LOG2,
+                                                           args.real("unit-mm", 1, 1e-6, 1e6), dir));
+      pairSpan = stereoRowSpan(*mesh);
+      if (lineBufferRows(pairSpan) > Vsgm_top_sgm_top::RECTIFY_ROWS)
+        throw Error(dir + ": the calibration needs a line buffer of " + std::to_string(lineBufferRows(pairSpan)) +
+                    " rows, this simulator's has " + std::to_string(Vsgm_top_sgm_top::RECTIFY_ROWS) +
+                    " (make sim RECTIFY_ROWS=" + std::to_string(lineBufferRows(pairSpan)) + " or more)");
+      meshError[0] = eval::meshError(calibration.left, mesh->left);
+      meshError[1] = eval::meshError(calibration.right, mesh->right);
+      frameParams.rectify = true, frameParams.rectifyLag = pairSpan.lag;
+    }
+    const DisparityMap golden = calibrated
+                                    ? runRectifiedPipeline(scene.left, scene.right, *mesh, frameParams, &rectified)
+                                    : runPipeline(scene.left, scene.right, frameParams);
 
     tb::CoreHarness<Vsgm_top> core("sgm_top", seed, tb::Stalls{stall, stall});
-    std::vector<tb::FrameInput> inputs(frames, tb::FrameInput{scene.left, scene.right, params});
+    std::vector<tb::FrameInput> inputs(frames, tb::FrameInput{scene.left, scene.right, frameParams});
+    if (calibrated) inputs[0].mesh = mesh;
+    // A calibrated pair in a build with the depth output: one more frame of depth (the
+    // calibration's f and B).
+    const bool depthFrame = calibrated && Vsgm_top_sgm_top::DEPTH && !depthOut;
+    Params depthParams = frameParams;
+    if (depthFrame) {
+      depthParams.output = OutputMode::kDepth;
+      depthParams.focalQ8 = int(mesh->focalQ8), depthParams.baselineUm = int(mesh->baselineUm);
+      inputs.push_back(tb::FrameInput{scene.left, scene.right, depthParams});
+    }
     const auto start = std::chrono::steady_clock::now();
     const bool tty = isatty(fileno(stderr));
     const std::vector<tb::FrameOutput> outputs = core.run(inputs, [&](uint64_t done, uint64_t total) {
@@ -139,15 +185,19 @@ int main(int argc, char** argv) {
 
     long mismatches = 0;
     std::string firstMismatch;
-    for (int k = 0; k < frames; ++k) {
+    for (size_t k = 0; k < inputs.size(); ++k) {
       long m = 0;
-      const std::string text = tb::compareOutput(golden, params, outputs[k], "sgm_top output", &m);
+      const std::string text = tb::compareOutput(golden, inputs[k].params, outputs[k], "sgm_top output", &m);
       if (firstMismatch.empty() && !text.empty()) firstMismatch = "frame " + std::to_string(k) + ": " + text;
       mismatches += m;
     }
     const DisparityMap& rtl = outputs[0].map;
     const uint64_t cycles = outputs[0].lastOutCycle - outputs[0].firstInCycle + 1;
-    const uint64_t allCycles = outputs.back().lastOutCycle - outputs[0].firstInCycle + 1;
+    const uint64_t allCycles = outputs[size_t(frames) - 1].lastOutCycle - outputs[0].firstInCycle + 1;
+    // Frames back to back: the input of frame k + 1 starts a frame period after frame k's.
+    const double period = frames > 1 ? double(outputs[size_t(frames) - 1].firstInCycle - outputs[0].firstInCycle) /
+                                           double(frames - 1)
+                                     : 0.0;
     const long pixels = long(w) * h;
 
     const int range = params.minDisparity + params.disparities;  // the largest disparity + 1
@@ -166,8 +216,19 @@ int main(int argc, char** argv) {
       if (scene.hasGroundTruth())
         pictures.push_back({out + "/sidebyside.png", eval::sideBySide(scene, eval::toFloat(rtl), maxD)});
     }
-    if (mismatches) {  // where the core differs from the golden model: white
-      const cv::Mat expected = outputWords(golden, params);
+    if (calibrated) {
+      pictures.push_back({out + "/rectified_left.png", rectified.left.gray});
+      pictures.push_back({out + "/rectified_right.png", rectified.right.gray});
+    }
+    if (depthFrame) {
+      char title[96];
+      std::snprintf(title, sizeof title, "depth (f %.1f px, B %.1f mm)", depthParams.focalQ8 / 256.0,
+                    depthParams.baselineUm / 1000.0);
+      pictures.push_back({out + "/depth16.png", outputs.back().words});
+      pictures.push_back({out + "/depth_color.png", eval::depthPicture(outputs.back().words, title)});
+    }
+    if (mismatches) {  // where the core differs from the golden model (the first frame): white
+      const cv::Mat expected = outputWords(golden, inputs[0].params);
       cv::Mat where(h, w, CV_8UC1);
       for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
@@ -181,8 +242,8 @@ int main(int argc, char** argv) {
     json.key("bit_exact").boolean(mismatches == 0);
     json.key("mismatches").integer(mismatches);
     json.key("first_mismatch").string(firstMismatch);
-    json.key("pixels").integer(pixels * frames);
-    json.key("frames").integer(frames);
+    json.key("pixels").integer(pixels * long(inputs.size()));
+    json.key("frames").integer(long(inputs.size()));
     json.key("width").integer(w);
     json.key("height").integer(h);
     json.key("disparities").integer(params.disparities);
@@ -206,6 +267,17 @@ int main(int argc, char** argv) {
     json.key("cycles_per_pixel").real(double(cycles) / double(pixels));
     json.key("latency_cycles").integer(long(cycles) - pixels);
     json.key("sustained_cycles_per_pixel").real(double(allCycles) / double(pixels * frames));
+    if (frames > 1) json.key("frame_period_cycles_per_pixel").real(period / double(pixels));
+    json.key("rectified").boolean(calibrated);
+    if (calibrated) {
+      json.key("calib").string(args.text("calib", ""));
+      json.key("rectify_lag").integer(pairSpan.lag);
+      json.key("line_buffer_rows_needed").integer(lineBufferRows(pairSpan));
+      json.key("line_buffer_rows").integer(Vsgm_top_sgm_top::RECTIFY_ROWS);
+      json.key("mesh_error_max_px").beginArray().real(meshError[0].maxPx, 4).real(meshError[1].maxPx, 4).endArray();
+      if (!depthOut) json.key("focal_q8").integer(mesh->focalQ8).key("baseline_um").integer(mesh->baselineUm);
+      json.key("depth_frame").boolean(depthFrame);
+    }
     json.key("sim_cycles_per_second").real(double(core.top().cycles()) / seconds);
     json.key("sim_seconds").real(seconds);
     json.key("frame_errors").integer(long(outputs[0].errors));
@@ -234,9 +306,16 @@ int main(int argc, char** argv) {
         scene.name.c_str(), w, h, params.disparities, costModeName(params.mode), censusWindowName(params.census),
         presetName(params).c_str(), params.p1, params.p2, p2ModeName(params.p2Mode), pathWeightingName(params.weights),
         frames, stall);
+    const long allPixels = pixels * long(inputs.size());
     std::printf("sgm-sim: bit-exact %s: %.2f%% of %ld pixels match the golden model%s%s\n", mismatches ? "NO" : "yes",
-                100.0 * double(pixels * frames - mismatches) / double(pixels * frames), pixels * frames,
+                100.0 * double(allPixels - mismatches) / double(allPixels), allPixels,
                 firstMismatch.empty() ? "" : "; ", firstMismatch.c_str());
+    if (calibrated)
+      std::printf("sgm-sim: rectified in the core: lag %d, line buffer %d of %d rows, mesh error %.4f / %.4f px%s\n",
+                  pairSpan.lag, lineBufferRows(pairSpan), int(Vsgm_top_sgm_top::RECTIFY_ROWS), meshError[0].maxPx,
+                  meshError[1].maxPx, depthFrame ? ", one more frame of depth" : "");
+    if (frames > 1)
+      std::printf("sgm-sim: %d frames back to back: %.4f cycles/pixel a frame\n", frames, period / double(pixels));
     std::printf(
         "sgm-sim: %llu cycles for the frame, %.4f cycles/pixel (latency %lld cycles), %.0f simulated cycles/s\n",
         (unsigned long long)cycles, double(cycles) / double(pixels), (long long)(cycles)-pixels,

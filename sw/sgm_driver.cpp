@@ -29,6 +29,9 @@ uint32_t Driver::encodeOutput(const FrameConfig& f) { return SGM_PUT(OUTPUT_MODE
 uint32_t Driver::encodeDepthFocal(const FrameConfig& f) { return SGM_PUT(DEPTH_FOCAL_F, f.focalQ8); }
 uint32_t Driver::encodeDepthBaseline(const FrameConfig& f) { return SGM_PUT(DEPTH_BASELINE_B, f.baselineUm); }
 uint32_t Driver::encodeMinDisparity(const FrameConfig& f) { return SGM_PUT(MIN_DISPARITY_DMIN, f.minDisparity); }
+uint32_t Driver::encodeRectify(const FrameConfig& f) {
+  return SGM_PUT(RECTIFY_ENABLE, f.rectify) | SGM_PUT(RECTIFY_LAG, f.rectifyLag);
+}
 
 bool Driver::sizeFits(const Identity& id, uint32_t width, uint32_t height) {
   return width >= id.minWidth && width <= id.maxWidth && height >= SGM_FRAME_SIZE_HEIGHT_MIN && height <= id.maxHeight;
@@ -40,7 +43,17 @@ bool Driver::featuresFit(const Identity& id, const FrameConfig& f) {
          (f.rightWeight == 0 || (id.features & SGM_FEATURES_RIGHT_PATH)) &&
          (f.edgeReset == 0 || (id.features & SGM_FEATURES_EDGE_RESET)) &&
          (f.output != SGM_OUTPUT_MODE_DEPTH || (id.features & SGM_FEATURES_DEPTH)) &&
-         (f.minDisparity == 0 || (id.features & SGM_FEATURES_MIN_DISPARITY));
+         (f.minDisparity == 0 || (id.features & SGM_FEATURES_MIN_DISPARITY)) &&
+         ((!f.rectify && f.rectifyLag == 0) ||
+          ((id.features & SGM_FEATURES_RECTIFY) && f.rectifyLag + 2 <= rectifyRows(id)));
+}
+
+uint32_t Driver::rectifyRows(const Identity& id) {
+  return (id.features & SGM_FEATURES_RECTIFY) ? 1u << SGM_GET(id.features, FEATURES_RECTIFY_ROWS) : 0;
+}
+
+uint32_t Driver::rectifyGrid(const Identity& id) {
+  return (id.features & SGM_FEATURES_RECTIFY) ? 1u << SGM_GET(id.features, FEATURES_RECTIFY_GRID) : 0;
 }
 
 uint32_t Driver::rightBlock(const Identity& id) {
@@ -76,6 +89,7 @@ void Driver::configure(const FrameConfig& f) {
   write(SGM_REG_DEPTH_FOCAL, encodeDepthFocal(f));
   write(SGM_REG_DEPTH_BASELINE, encodeDepthBaseline(f));
   write(SGM_REG_MIN_DISPARITY, encodeMinDisparity(f));
+  write(SGM_REG_RECTIFY, encodeRectify(f));
   write(SGM_REG_CTRL, ctrl & ~SGM_CTRL_HOLD);
 }
 
@@ -83,11 +97,12 @@ FrameConfig Driver::readConfig() {
   const uint32_t size = read(SGM_REG_FRAME_SIZE), penalty = read(SGM_REG_PENALTY), config = read(SGM_REG_CONFIG);
   const uint32_t edge = read(SGM_REG_EDGE_RESET), output = read(SGM_REG_OUTPUT);
   const uint32_t focal = read(SGM_REG_DEPTH_FOCAL), baseline = read(SGM_REG_DEPTH_BASELINE);
-  return decode(size, penalty, config, edge, output, focal, baseline, read(SGM_REG_MIN_DISPARITY));
+  return decode(size, penalty, config, edge, output, focal, baseline, read(SGM_REG_MIN_DISPARITY),
+                read(SGM_REG_RECTIFY));
 }
 
 FrameConfig Driver::decode(uint32_t size, uint32_t penalty, uint32_t config, uint32_t edge, uint32_t output,
-                           uint32_t focal, uint32_t baseline, uint32_t minDisparity) {
+                           uint32_t focal, uint32_t baseline, uint32_t minDisparity, uint32_t rectify) {
   FrameConfig f;
   f.width = SGM_GET(size, FRAME_SIZE_WIDTH);
   f.height = SGM_GET(size, FRAME_SIZE_HEIGHT);
@@ -113,6 +128,8 @@ FrameConfig Driver::decode(uint32_t size, uint32_t penalty, uint32_t config, uin
   f.focalQ8 = SGM_GET(focal, DEPTH_FOCAL_F);
   f.baselineUm = SGM_GET(baseline, DEPTH_BASELINE_B);
   f.minDisparity = SGM_GET(minDisparity, MIN_DISPARITY_DMIN);
+  f.rectify = SGM_GET(rectify, RECTIFY_ENABLE);
+  f.rectifyLag = SGM_GET(rectify, RECTIFY_LAG);
   return f;
 }
 
@@ -165,5 +182,34 @@ void Driver::enableInterrupts(uint32_t mask) { write(SGM_REG_IRQ_ENABLE, mask & 
 uint32_t Driver::interrupts() { return read(SGM_REG_IRQ_STATUS); }
 
 void Driver::clearInterrupts(uint32_t mask) { write(SGM_REG_IRQ_STATUS, mask & SGM_IRQ_STATUS_MASK); }
+
+bool Driver::meshSwapPending() { return SGM_GET(read(SGM_REG_MESH_CTRL), MESH_CTRL_PENDING); }
+
+bool Driver::rectifyRowMiss() { return SGM_GET(read(SGM_REG_MESH_CTRL), MESH_CTRL_ROW_MISS); }
+
+bool Driver::loadMeshes(const MeshImage& left, const MeshImage& right, long maxPolls) {
+  for (const MeshImage* m : {&left, &right})
+    if (m->nodesX == 0 || m->nodesY == 0 || m->nodesX > SGM_MESH_ADDR_COL_MAX + 1u ||
+        m->nodesY > SGM_MESH_ADDR_ROW_MAX + 1u || !m->u || !m->v)
+      return false;
+  long polls = 0;
+  while (meshSwapPending())
+    if (++polls >= maxPolls) return false;
+  for (uint32_t image = 0; image < 2; ++image) {
+    const MeshImage& m = image ? right : left;
+    for (uint32_t i = 0; i < m.nodesY; ++i) {
+      // A row: its address once, then (u, v) per node (a write of MESH_V stores it and steps the column).
+      write(SGM_REG_MESH_ADDR,
+            SGM_PUT(MESH_ADDR_COL, 0u) | SGM_PUT(MESH_ADDR_ROW, i) | SGM_PUT(MESH_ADDR_RIGHT, image));
+      for (uint32_t j = 0; j < m.nodesX; ++j) {
+        const size_t k = size_t(i) * m.nodesX + j;
+        write(SGM_REG_MESH_U, SGM_PUT(MESH_U_U, uint32_t(m.u[k])));
+        write(SGM_REG_MESH_V, SGM_PUT(MESH_V_V, uint32_t(m.v[k])));
+      }
+    }
+  }
+  write(SGM_REG_MESH_CTRL, SGM_MESH_CTRL_SWAP);
+  return true;
+}
 
 }  // namespace sgm::driver

@@ -23,6 +23,8 @@
 #   SYNTH_EDGE_RESET EDGE_RESET, the path restart at strong edges built (1) or not (0);
 #   SYNTH_DEPTH      DEPTH, the depth output built (1) or not (0; empty: sgm_top's default);
 #   SYNTH_MIN_DISPARITY MIN_DISPARITY, the minimum disparity built (1) or not (0; empty: the default);
+#   SYNTH_RECTIFY, SYNTH_RECTIFY_ROWS, SYNTH_RECTIFY_GRID_LOG2 the rectification (RECTIFY 1 or 0, its
+#                    line buffer rows and mesh step; empty: the default);
 #                    empty (the default): sgm_top's own default
 #   SYNTH_OUT        output directory of this target (created by make)
 #   SYNTH_DEFINES    Verilog macros to define, space-separated (the ECP5 flow:
@@ -51,6 +53,9 @@ set right_block [env_or SYNTH_RIGHT_BLOCK 0]
 set edge_reset [env_or SYNTH_EDGE_RESET ""]
 set depth      [env_or SYNTH_DEPTH ""]
 set min_disparity [env_or SYNTH_MIN_DISPARITY ""]
+set rectify    [env_or SYNTH_RECTIFY ""]
+set rectify_rows [env_or SYNTH_RECTIFY_ROWS ""]
+set rectify_grid [env_or SYNTH_RECTIFY_GRID_LOG2 ""]
 set out        [env_or SYNTH_OUT build/synth]
 set defines    [env_or SYNTH_DEFINES ""]
 
@@ -63,6 +68,9 @@ yosys chparam -set D $d -set MAX_WIDTH $max_width -set MAX_HEIGHT $max_height -s
 if {$edge_reset ne ""} { yosys chparam -set EDGE_RESET $edge_reset sgm_top }
 if {$depth ne ""} { yosys chparam -set DEPTH $depth sgm_top }
 if {$min_disparity ne ""} { yosys chparam -set MIN_DISPARITY $min_disparity sgm_top }
+if {$rectify ne ""} { yosys chparam -set RECTIFY $rectify sgm_top }
+if {$rectify_rows ne ""} { yosys chparam -set RECTIFY_ROWS $rectify_rows sgm_top }
+if {$rectify_grid ne ""} { yosys chparam -set RECTIFY_GRID_LOG2 $rectify_grid sgm_top }
 yosys hierarchy -check -top sgm_top
 yosys proc
 yosys tee -o $out/check.txt check

@@ -12,7 +12,8 @@
 #
 # Prints the script on stdout. Environment: as synth/common.tcl and synth/ecp5.tcl
 # (SYNTH_RTL, SYNTH_D, SYNTH_MAX_WIDTH, SYNTH_MAX_HEIGHT, SYNTH_CENSUS_H, SYNTH_LANES,
-# SYNTH_UNIQUENESS, SYNTH_AD_TERM, SYNTH_RIGHT_BLOCK, SYNTH_EDGE_RESET, SYNTH_DEPTH, SYNTH_MIN_DISPARITY, SYNTH_DEFINES,
+# SYNTH_UNIQUENESS, SYNTH_AD_TERM, SYNTH_RIGHT_BLOCK, SYNTH_EDGE_RESET, SYNTH_DEPTH, SYNTH_MIN_DISPARITY,
+# SYNTH_RECTIFY, SYNTH_RECTIFY_ROWS, SYNTH_RECTIFY_GRID_LOG2, SYNTH_DEFINES,
 # SYNTH_OUT, SYNTH_ECP5_FLAGS, SYNTH_ECP5_CMP_LUT, SYNTH_ECP5_CMP_CHAIN). Paths stay relative:
 # the WebAssembly Yosys sees only the directory it runs in.
 #
@@ -44,6 +45,9 @@ elab() {
   [ -z "${SYNTH_EDGE_RESET:-}" ] || echo "chparam -set EDGE_RESET $SYNTH_EDGE_RESET sgm_top"
   [ -z "${SYNTH_DEPTH:-}" ] || echo "chparam -set DEPTH $SYNTH_DEPTH sgm_top"
   [ -z "${SYNTH_MIN_DISPARITY:-}" ] || echo "chparam -set MIN_DISPARITY $SYNTH_MIN_DISPARITY sgm_top"
+  [ -z "${SYNTH_RECTIFY:-}" ] || echo "chparam -set RECTIFY $SYNTH_RECTIFY sgm_top"
+  [ -z "${SYNTH_RECTIFY_ROWS:-}" ] || echo "chparam -set RECTIFY_ROWS $SYNTH_RECTIFY_ROWS sgm_top"
+  [ -z "${SYNTH_RECTIFY_GRID_LOG2:-}" ] || echo "chparam -set RECTIFY_GRID_LOG2 $SYNTH_RECTIFY_GRID_LOG2 sgm_top"
   echo "hierarchy -check -top sgm_top"
   echo "proc"
   echo "tee -o $out/check.txt check"

@@ -95,11 +95,14 @@ class AxisSource {
   void setIdle(StallProfile idle) { stalls_.setProfile(idle); }
   // Bus reset: the beat on the bus and the queue are dropped.
   void clear() { queue_.clear(), valid_ = false; }
+  // Beats from this count of accepted beats on are held back (not presented) until the limit
+  // rises: a frame waits at its first beat for something the harness does first.
+  void setLimit(uint64_t acceptedLimit) { limit_ = acceptedLimit; }
 
   // Before the edge: presents a beat (valid never drops before its handshake).
   void drive(Model& m) {
     const bool idle = stalls_.next();
-    if (!valid_ && !queue_.empty() && !idle) {
+    if (!valid_ && !queue_.empty() && !idle && accepted_ < limit_) {
       current_ = queue_.front();
       queue_.pop_front();
       valid_ = true;
@@ -123,6 +126,7 @@ class AxisSource {
   Beat current_;
   bool valid_ = false;
   uint64_t accepted_ = 0;
+  uint64_t limit_ = UINT64_MAX;
 };
 
 // Records the output beats and checks the stream rules (AxisChecker: the

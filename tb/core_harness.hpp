@@ -14,6 +14,12 @@
 // first frame, then after each frame's first input beat) and cycle hooks (a bus
 // model driven and sampled every cycle). step() clocks one cycle with every
 // model, for blocking bus transfers made from inside the presenter.
+//
+// A frame with a calibration (FrameInput::mesh: its pair is raw, sgm_top RECTIFY = 1) has its
+// two meshes loaded before its first beat is offered: at the point its configuration is
+// presented, once mesh_swap_pending_o is low, one node per cycle through sgm_top's mesh
+// port (or by the mesh loader a model configured another way sets), then a swap; the input
+// stream holds at the frame's first beat until then, while the frames before it stream.
 #pragma once
 
 #include "axis_bfm.hpp"
@@ -24,12 +30,14 @@
 #include "sgm/depth.hpp"
 #include "sgm/image_io.hpp"
 #include "sgm/params.hpp"
+#include "sgm/rectify.hpp"
 
 #include <opencv2/core.hpp>
 
 #include <algorithm>
 #include <functional>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <type_traits>
@@ -43,6 +51,10 @@ template <class M, class = void>
 struct HasConfigPorts : std::false_type {};
 template <class M>
 struct HasConfigPorts<M, std::void_t<decltype(std::declval<M&>().cfg_i)>> : std::true_type {};
+template <class M, class = void>
+struct HasMeshPorts : std::false_type {};
+template <class M>
+struct HasMeshPorts<M, std::void_t<decltype(std::declval<M&>().mesh_we_i)>> : std::true_type {};
 template <class M, class = void>
 struct HasStatusPorts : std::false_type {};
 template <class M>
@@ -65,6 +77,9 @@ struct FrameInput {
   // The configuration is out of range: the core drops the frame whole (no output,
   // no frame_done_o); FrameOutput::errors is error_o once its last beat is in.
   bool dropped = false;
+  // When set, the calibration's meshes are loaded and swapped in for this frame (and kept for
+  // the frames after it); left and right are then the raw pair.
+  std::shared_ptr<const StereoMesh> mesh = nullptr;
 };
 
 struct FrameOutput {
@@ -136,6 +151,7 @@ class CoreHarness {
       : top_(name, initialState), source_(seed, stalls.sourceIdle), sink_(seed ^ 0x9e3779b9u, stalls.sinkBusy) {
     top_->s_tvalid_i = 0;
     top_->m_tready_i = 0;
+    if constexpr (HasMeshPorts<Model>::value) top_->mesh_we_i = 0, top_->mesh_swap_i = 0;
     top_.reset();
   }
 
@@ -162,6 +178,9 @@ class CoreHarness {
 
   // Replaces the cfg_i port as the way a frame's configuration is given.
   void setPresenter(std::function<void(const Params&, cv::Size)> presenter) { presenter_ = std::move(presenter); }
+  // Replaces sgm_top's mesh port as the way a calibration's meshes are loaded (blocking: it
+  // steps the clock until the meshes are written and swapped in).
+  void setMeshLoader(std::function<void(const StereoMesh&)> loader) { meshLoader_ = std::move(loader); }
   // Called every cycle before the model evaluates its inputs (drive) and
   // after (sample: the handshakes of this cycle), before the clock edge.
   void setCycleHooks(std::function<void()> drive, std::function<void()> sample) {
@@ -207,8 +226,18 @@ class CoreHarness {
     const uint64_t acceptedStart = source_.accepted();
     const size_t sinkStart = sink_.beats().size();
     size_t presented = 0, doneFrames = 0;
-    while (sink_.beats().size() - sinkStart < outputCount || source_.accepted() - acceptedStart < inputCount) {
-      const auto [in, outBeat] = cycle();
+    // The input holds at the first beat of the next frame whose meshes are not loaded yet.
+    const auto holdFrom = [&](size_t k) {
+      size_t j = k;
+      while (j < firstBeat.size() && !frames[begin + j].mesh) ++j;
+      source_.setLimit(j < firstBeat.size() ? acceptedStart + firstBeat[j] : UINT64_MAX);
+    };
+    holdFrom(0);
+    if (frames[begin].mesh) loadMesh(*frames[begin].mesh);
+    holdFrom(1);
+    // What each cycle's transfers and status mean for the frames (every cycle: also those a
+    // presenter or the mesh loading clock).
+    observer_ = [&](bool in, bool outBeat) {
       if (in) {
         const size_t i = source_.accepted() - 1 - acceptedStart;
         for (size_t k = 0; k < firstBeat.size(); ++k)
@@ -229,14 +258,23 @@ class CoreHarness {
           while (begin + doneFrames < owing && frames[begin + doneFrames].dropped) ++doneFrames;
           if (begin + doneFrames < owing) out[begin + doneFrames++].errors = top_->error_o;
         }
+    };
+    while (sink_.beats().size() - sinkStart < outputCount || source_.accepted() - acceptedStart < inputCount) {
+      cycle();
       while (presented + 1 < firstBeat.size() && source_.accepted() - acceptedStart > firstBeat[presented]) {
         ++presented;
         present(frames[begin + presented]);
+        if (frames[begin + presented].mesh) {
+          loadMesh(*frames[begin + presented].mesh);
+          holdFrom(presented + 1);
+        }
       }
       if (progress && (top_.cycles() & 0xfffff) == 0) progress(sink_.beats().size() - sinkStart, outputCount);
     }
+    observer_ = nullptr;
     for (size_t k = begin; k < owing; ++k)
       if (!frames[k].dropped) decode(sinkStart + outFirst[k - begin], frames[k].left.cols, frames[k].left.rows, out[k]);
+    source_.setLimit(UINT64_MAX);
     if (resets) {
       top_->s_tvalid_i = 0;
       top_.reset();
@@ -258,6 +296,7 @@ class CoreHarness {
     const bool out = sink_.sample(top_.model(), top_.cycles());
     if (!sink_.violation().empty()) throw Error("output stream protocol: " + sink_.violation());
     top_.tick();
+    if (observer_) observer_(in, out);
     lastMove_ = in || out ? top_.cycles() : lastMove_;
     if (top_.cycles() - lastMove_ > kHangCycles)
       throw Error("core hangs: no beat in or out for " + std::to_string(kHangCycles) + " cycles (cycle " +
@@ -283,6 +322,36 @@ class CoreHarness {
     for (size_t i = 0; i < word.size(); ++i) setWord(top_->cfg_i, int(i), word[i]);
   }
 
+  // The calibration's two meshes into the copy not in use, then a swap (the frames before
+  // keep streaming meanwhile).
+  void loadMesh(const StereoMesh& mesh) {
+    if (meshLoader_) return meshLoader_(mesh);
+    if constexpr (HasMeshPorts<Model>::value) {
+      for (uint64_t waited = 0; top_->mesh_swap_pending_o; ++waited) {
+        if (waited > kHangCycles)
+          throw Error("mesh_swap_pending_o stays high for " + std::to_string(kHangCycles) + " cycles (cycle " +
+                      std::to_string(top_.cycles()) + ", " + std::to_string(source_.accepted()) + " beats in, " +
+                      std::to_string(sink_.beats().size()) + " out)");
+        cycle();
+      }
+      for (int image = 0; image < 2; ++image) {
+        const Mesh& m = image ? mesh.right : mesh.left;
+        for (int i = 0; i < m.nodesY; ++i)
+          for (int j = 0; j < m.nodesX; ++j) {
+            const size_t k = size_t(i) * m.nodesX + j;
+            top_->mesh_we_i = 1, top_->mesh_channel_i = image, top_->mesh_row_i = i, top_->mesh_col_i = j;
+            top_->mesh_u_i = uint32_t(m.u[k]) & 0x3ffffu, top_->mesh_v_i = uint32_t(m.v[k]) & 0x3ffffu;
+            cycle();
+          }
+      }
+      top_->mesh_we_i = 0, top_->mesh_swap_i = 1;
+      cycle();
+      top_->mesh_swap_i = 0;
+    } else {
+      throw Error("the model has no mesh port: set a mesh loader");
+    }
+  }
+
   void decode(size_t first, int w, int h, FrameOutput& out) {
     out.map = DisparityMap{cv::Mat(h, w, CV_16UC1), cv::Mat(h, w, CV_8UC1)};
     out.words = cv::Mat(h, w, CV_16UC1);
@@ -300,6 +369,8 @@ class CoreHarness {
   uint64_t lastMove_ = 0;  // cycle of the last transfer in either direction
   std::function<void(const Params&, cv::Size)> presenter_;
   std::function<void()> driveHook_, sampleHook_;
+  std::function<void(const StereoMesh&)> meshLoader_;
+  std::function<void(bool, bool)> observer_;  // the running segment's bookkeeping of a cycle
 };
 
 }  // namespace sgm::tb

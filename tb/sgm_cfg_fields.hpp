@@ -24,9 +24,9 @@ struct CfgField {
   uint32_t (*golden)(const Params& p, int w, int h);
 };
 
-constexpr int kCfgWidth = 158;  // CFG_W, SGM_CFG_W
+constexpr int kCfgWidth = 167;  // CFG_W, SGM_CFG_W
 
-inline const std::array<CfgField, 24> kCfgFields = {{
+inline const std::array<CfgField, 26> kCfgFields = {{
     {"FRAME_SIZE_WIDTH", 0x24, 0, 16, 0,
      []([[maybe_unused]] const Params& p, [[maybe_unused]] int w, [[maybe_unused]] int h) { return uint32_t(w); }},
     {"FRAME_SIZE_HEIGHT", 0x24, 16, 16, 16,
@@ -75,6 +75,10 @@ inline const std::array<CfgField, 24> kCfgFields = {{
      []([[maybe_unused]] const Params& p, [[maybe_unused]] int w, [[maybe_unused]] int h) { return uint32_t(p.baselineUm); }},
     {"MIN_DISPARITY_DMIN", 0x5C, 0, 8, 150,
      []([[maybe_unused]] const Params& p, [[maybe_unused]] int w, [[maybe_unused]] int h) { return uint32_t(p.minDisparity); }},
+    {"RECTIFY_ENABLE", 0x60, 0, 1, 158,
+     []([[maybe_unused]] const Params& p, [[maybe_unused]] int w, [[maybe_unused]] int h) { return uint32_t(p.rectify ? 1 : 0); }},
+    {"RECTIFY_LAG", 0x60, 8, 8, 159,
+     []([[maybe_unused]] const Params& p, [[maybe_unused]] int w, [[maybe_unused]] int h) { return uint32_t(p.rectifyLag); }},
 }};
 
 }  // namespace sgm::tb

@@ -214,4 +214,21 @@ cv::Mat rawFromRectified(const cv::Mat& rectified, const Camera& camera) {
   return out;
 }
 
+StereoMesh stereoMesh(const StereoCalibration& calibration, cv::Size size, int gridLog2, double unitMm,
+                      const std::string& dir, DepthGeometry* depth) {
+  StereoMesh mesh;
+  mesh.left = meshFromCamera(calibration.left, size.width, size.height, gridLog2);
+  mesh.right = meshFromCamera(calibration.right, size.width, size.height, gridLog2);
+  const DepthGeometry geometry = depthGeometry(calibration);
+  const double baselineMm = geometry.baselineUnits * unitMm;
+  if (!(geometry.focalPx > 0 && geometry.focalPx * 256 < 4294967296.0))
+    throw Error(dir + ": focal length " + std::to_string(geometry.focalPx) + " px out of range");
+  if (!(baselineMm > 0 && baselineMm * 1000 < 4294967296.0))
+    throw Error(dir + ": baseline " + std::to_string(baselineMm) + " mm out of range (P2(0,3) must be negative)");
+  mesh.focalQ8 = uint32_t(std::lround(geometry.focalPx * 256));
+  mesh.baselineUm = uint32_t(std::lround(baselineMm * 1000));
+  if (depth) *depth = geometry;
+  return mesh;
+}
+
 }  // namespace sgm::eval

@@ -57,6 +57,12 @@ struct DepthGeometry {
 };
 DepthGeometry depthGeometry(const StereoCalibration& calibration);
 
+// The pair's meshes at step 2^gridLog2 with f and B (B in mm per calibration unit unitMm);
+// throws Error (naming dir) when f or B is out of the mesh file's range. depth (when given)
+// receives the geometry.
+StereoMesh stereoMesh(const StereoCalibration& calibration, cv::Size size, int gridLog2, double unitMm,
+                      const std::string& dir, DepthGeometry* depth = nullptr);
+
 // A plausible calibration of a camera pair whose rectified frame is a width x height scene
 // as given (both cameras with radial and tangential distortion, slightly different, a
 // small rotation between them; P1, P2 keep the scene's frame: f = width, principal point

@@ -52,8 +52,9 @@ const char* kUsage =
     "                                                      OpenCV's intrinsics.yml + extrinsics.yml in DIR -> the\n"
     "                                                      rectification meshes (step --grid px) -> mesh.bin, mesh.json:\n"
     "                                                      error against cv::initUndistortRectifyMap, line-buffer\n"
-    "                                                      rows (refused above --rows R), f and B (--unit-mm: mm per\n"
-    "                                                      calibration unit)\n"
+    "                                                      rows and the pair's lag (refused when the pair needs more\n"
+    "                                                      than the build's line buffer of R rows, --rows R), f and B\n"
+    "                                                      (--unit-mm: mm per calibration unit)\n"
     "       sgm-eval rectify --mesh FILE --left L --right R [--out DIR]\n"
     "                                                      the golden rectification -> left.png, right.png\n"
     "       sgm-eval raw-scene --left L --right R [--baseline-mm 160] [--out DIR]\n"
@@ -282,24 +283,15 @@ int commandCalibMesh(const CliArgs& args) {
   const eval::StereoCalibration calibration = eval::readCalibration(dir);
   int gridLog2 = 0;
   while ((1L << gridLog2) < grid) ++gridLog2;
-  StereoMesh mesh;
-  mesh.left = eval::meshFromCamera(calibration.left, size.width, size.height, gridLog2);
-  mesh.right = eval::meshFromCamera(calibration.right, size.width, size.height, gridLog2);
-  const eval::DepthGeometry depth = eval::depthGeometry(calibration);
+  eval::DepthGeometry depth;
+  const StereoMesh mesh = eval::stereoMesh(calibration, size, gridLog2, unitMm, dir, &depth);
   const double baselineMm = depth.baselineUnits * unitMm;
-  if (!(depth.focalPx > 0 && depth.focalPx * 256 < 4294967296.0))
-    throw Error(dir + ": focal length " + std::to_string(depth.focalPx) + " px out of range");
-  if (!(baselineMm > 0 && baselineMm * 1000 < 4294967296.0))
-    throw Error(dir + ": baseline " + std::to_string(baselineMm) + " mm out of range (P2(0,3) must be negative)");
-  mesh.focalQ8 = uint32_t(std::lround(depth.focalPx * 256));
-  mesh.baselineUm = uint32_t(std::lround(baselineMm * 1000));
   eval::JsonWriter json;
   json.beginObject().key("width").integer(size.width).key("height").integer(size.height);
   json.key("grid").integer(grid).key("frac_bits").integer(kMeshFracBits);
   json.key("nodes_x").integer(mesh.left.nodesX).key("nodes_y").integer(mesh.left.nodesY);
   json.key("focal_px").real(depth.focalPx, 4).key("baseline_mm").real(baselineMm, 4);
   json.key("disparity_offset_px").real(depth.disparityOffsetPx, 4);
-  int rowsNeeded = 0;
   std::string summary;
   json.key("images").beginArray();
   for (const auto& [name, camera, m] :
@@ -307,7 +299,6 @@ int commandCalibMesh(const CliArgs& args) {
         {"right", calibration.right, mesh.right}}) {
     const eval::MeshError error = eval::meshError(camera, m);
     const RowSpan span = meshRowSpan(m);
-    rowsNeeded = std::max(rowsNeeded, span.rows);
     json.beginObject().key("image").string(name).key("mesh_error_max_px").real(error.maxPx, 4);
     json.key("mesh_error_at").beginArray().integer(error.x).integer(error.y).endArray();
     json.key("row_lag").integer(span.lag).key("row_back").integer(span.back).key("rows").integer(span.rows).endObject();
@@ -317,10 +308,18 @@ int commandCalibMesh(const CliArgs& args) {
                   error.maxPx, error.x, error.y, span.back, span.lag, span.rows);
     summary += line;
   }
-  json.endArray().key("rows_needed").integer(rowsNeeded).endObject();
+  // The pair in the core: one lag (RECTIFY.LAG) and a line buffer of R >= rows_needed rows.
+  const RowSpan pair = stereoRowSpan(mesh);
+  const int rowsNeeded = lineBufferRows(pair);
+  json.endArray().key("lag").integer(pair.lag).key("rows_needed").integer(rowsNeeded).endObject();
   if (rowsLimit > 0 && rowsNeeded > rowsLimit)
     throw Error(dir + ": the calibration needs a line buffer of " + std::to_string(rowsNeeded) +
-                " rows, the build has " + std::to_string(rowsLimit) + " (--rows)");
+                " rows (RECTIFY_ROWS), the build has " + std::to_string(rowsLimit) + " (--rows)");
+  char pairLine[160];
+  std::snprintf(pairLine, sizeof pairLine,
+                "  the pair: lag %d (RECTIFY.LAG), line buffer of at least %d rows (RECTIFY_ROWS)\n", pair.lag,
+                rowsNeeded);
+  summary += pairLine;
   writeResults(out, {{out + "/mesh.bin", encodeMeshFile(mesh)}, {out + "/mesh.json", json.str()}});
   std::printf(
       "sgm-eval calib-mesh: %dx%d, step %ld px, %dx%d nodes, f %.3f px, B %.3f mm, disparity offset %.3f px\n%s"

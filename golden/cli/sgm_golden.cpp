@@ -77,27 +77,23 @@ int main(int argc, char** argv) {
     cv::Mat left = sgm::readGray(args.positional()[0]);
     cv::Mat right = sgm::readGray(args.positional()[1]);
     std::vector<std::pair<std::string, cv::Mat>> outputs;
-    sgm::StereoMesh mesh;
-    cv::Mat leftValid;
-    if (!meshPath.empty()) {
-      mesh = sgm::readMeshFile(meshPath);
+    const auto start = std::chrono::steady_clock::now();
+    cv::Mat confidence;
+    sgm::DisparityMap map;
+    if (!meshPath.empty()) {  // section 13: rectified first; no disparity where the left source is outside
+      const sgm::StereoMesh mesh = sgm::readMeshFile(meshPath);
       if (!args.has("focal")) params.focalQ8 = int(mesh.focalQ8);
       if (!args.has("baseline")) params.baselineUm = int(mesh.baselineUm);
       params.validate();
-      const sgm::RectifiedImage l = sgm::rectify(left, mesh.left), r = sgm::rectify(right, mesh.right);
-      left = l.gray, right = r.gray, leftValid = l.valid;
-      outputs.push_back({prefix + "_rectified_left.png", left});
-      outputs.push_back({prefix + "_rectified_right.png", right});
+      sgm::RectifiedPair rectified;
+      map = sgm::runRectifiedPipeline(left, right, mesh, params, &rectified, &confidence);
+      left = rectified.left.gray;
+      outputs.push_back({prefix + "_rectified_left.png", rectified.left.gray});
+      outputs.push_back({prefix + "_rectified_right.png", rectified.right.gray});
+    } else {
+      map = sgm::runPipeline(left, right, params, &confidence);
     }
-
-    const auto start = std::chrono::steady_clock::now();
-    cv::Mat confidence;
-    sgm::DisparityMap map = sgm::runPipeline(left, right, params, &confidence);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    if (!leftValid.empty()) {  // section 13: no disparity where the left source is outside the raw image
-      map.valid &= leftValid;
-      confidence.setTo(0, leftValid == 0);
-    }
 
     outputs.push_back({prefix + "_disp16.png", sgm::encodeDisparity16(map)});
     const int range = params.minDisparity + params.disparities;  // the largest disparity + 1

@@ -84,7 +84,7 @@ bool Params::operator==(const Params& o) const {
          adCap == o.adCap && linearSubpixel == o.linearSubpixel && mgm == o.mgm && medianGate == o.medianGate &&
          p1PathPercent == o.p1PathPercent && snapEdge == o.snapEdge && edgeReset == o.edgeReset &&
          lrStoreBits == o.lrStoreBits && minDisparity == o.minDisparity && output == o.output && focalQ8 == o.focalQ8 &&
-         baselineUm == o.baselineUm;
+         baselineUm == o.baselineUm && rectify == o.rectify && rectifyLag == o.rectifyLag;
 }
 
 const std::vector<std::string>& presetNames() {
@@ -130,6 +130,7 @@ std::string presetName(const Params& params) {
     preset.disparities = params.disparities;  // a preset fixes the algorithm, not the build's D
     preset.output = params.output;            // nor the output word
     preset.focalQ8 = params.focalQ8, preset.baselineUm = params.baselineUm;
+    preset.rectify = params.rectify, preset.rectifyLag = params.rectifyLag;  // nor the input
     if (params == preset) return name;
   }
   return "custom";
@@ -187,6 +188,9 @@ void Params::validate() const {
   if (minDisparity < 0 || minDisparity > kMaxMinDisparity)
     throw Error("minimum disparity " + std::to_string(minDisparity) + " out of range 0.." +
                 std::to_string(kMaxMinDisparity));
+  if (rectifyLag < 0 || rectifyLag > kMaxRectifyLag)
+    throw Error("rectification lag " + std::to_string(rectifyLag) + " out of range 0.." +
+                std::to_string(kMaxRectifyLag));
   if (focalQ8 < 0 || focalQ8 >= 1 << kDepthParamBits || baselineUm < 0 || baselineUm >= 1 << kDepthParamBits)
     throw Error("depth parameters out of range: f " + std::to_string(focalQ8) + "/256 px, B " +
                 std::to_string(baselineUm) + " um (0.." + std::to_string((1 << kDepthParamBits) - 1) + " each)");

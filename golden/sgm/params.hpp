@@ -47,6 +47,7 @@ enum class OutputMode { kDisparity = 0, kDepth = 1 };
 const char* outputModeName(OutputMode mode);          // "disparity", "depth"
 OutputMode parseOutputMode(const std::string& name);  // throws Error on unknown names
 constexpr int kDepthParamBits = 24;                   // Params::focalQ8 and baselineUm (registers DEPTH_*)
+constexpr int kMaxRectifyLag = 254;                   // Params::rectifyLag (register RECTIFY.LAG)
 
 // Matching-cost modes. The first three exist in the RTL; the others are
 // software-only, kept to reproduce the paper's Table I.
@@ -158,6 +159,13 @@ struct Params {
   OutputMode output = OutputMode::kDisparity;
   int focalQ8 = 0;
   int baselineUm = 0;
+  // Rectification in the stream (docs/algorithm.md section 13; in the core with sgm_top RECTIFY =
+  // 1, register RECTIFY): the frame's images are raw and go through the meshes of a calibration
+  // (sgm::runRectifiedPipeline), whose row lag (sgm::meshRowSpan) is rectifyLag, 0 ..
+  // kMaxRectifyLag. They describe the input, not the algorithm: a preset is the same preset
+  // with them.
+  bool rectify = false;
+  int rectifyLag = 0;
   // Golden-only experiments (issue 15, docs/algorithm.md section 12): NOT in the RTL,
   // every one off by default, so Params{} and the presets stay bit-exact with the core.
   bool linearSubpixel = false;  // sub-pixel by the equiangular (V) fit instead of the parabola

@@ -97,4 +97,19 @@ DisparityMap runPipeline(const cv::Mat& gl, const cv::Mat& gr, const Params& par
   return params.median ? median5x5(snapped, gl, params.medianGate) : snapped;
 }
 
+DisparityMap runRectifiedPipeline(const cv::Mat& rawLeft, const cv::Mat& rawRight, const StereoMesh& mesh,
+                                  const Params& params, RectifiedPair* rectified, cv::Mat* confidence) {
+  checkInput(rawLeft, rawRight, params);
+  if (rawLeft.cols != mesh.left.width || rawLeft.rows != mesh.left.height)
+    throw Error("the calibration is for " + std::to_string(mesh.left.width) + "x" + std::to_string(mesh.left.height) +
+                " frames, the pair is " + std::to_string(rawLeft.cols) + "x" + std::to_string(rawLeft.rows));
+  RectifiedPair pair{rectify(rawLeft, mesh.left), rectify(rawRight, mesh.right)};
+  DisparityMap map = runPipeline(pair.left.gray, pair.right.gray, params, confidence);
+  const cv::Mat outside = pair.left.valid == 0;
+  map.disp.setTo(0, outside), map.valid.setTo(0, outside);
+  if (confidence) confidence->setTo(0, outside);
+  if (rectified) *rectified = std::move(pair);
+  return map;
+}
+
 }  // namespace sgm

@@ -4,6 +4,7 @@
 
 #include "sgm/image_io.hpp"
 #include "sgm/params.hpp"
+#include "sgm/rectify.hpp"
 #include "sgm/volume.hpp"
 
 #include <opencv2/core.hpp>
@@ -29,5 +30,16 @@ PipelineStages runPipelineStages(const cv::Mat& grayLeft, const cv::Mat& grayRig
 // The streaming pipeline; confidence (when given) receives the confidence map (section 7b).
 DisparityMap runPipeline(const cv::Mat& grayLeft, const cv::Mat& grayRight, const Params& params,
                          cv::Mat* confidence = nullptr);
+
+// Rectification in the stream (section 13): the raw pair goes through its meshes, the pipeline
+// runs on the rectified grays, and a pixel whose left source position lies outside the raw
+// image gets disparity 0, invalid (output word 0 in either output mode) and confidence 0.
+// rectified and confidence (when given) receive the rectified pair and the confidence map.
+struct RectifiedPair {
+  RectifiedImage left, right;
+};
+DisparityMap runRectifiedPipeline(const cv::Mat& rawLeft, const cv::Mat& rawRight, const StereoMesh& mesh,
+                                  const Params& params, RectifiedPair* rectified = nullptr,
+                                  cv::Mat* confidence = nullptr);
 
 }  // namespace sgm

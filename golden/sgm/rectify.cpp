@@ -112,6 +112,12 @@ RowSpan meshRowSpan(const Mesh& mesh) {
   return {lag, back, lag - back + 1};
 }
 
+RowSpan stereoRowSpan(const StereoMesh& mesh) {
+  const RowSpan l = meshRowSpan(mesh.left), r = meshRowSpan(mesh.right);
+  const int lag = std::max({0, l.lag, r.lag}), back = std::min({lag, l.back, r.back});
+  return {lag, back, lag - back + 1};
+}
+
 std::string encodeMeshFile(const StereoMesh& mesh) {
   checkMesh(mesh.left, "left mesh");
   checkMesh(mesh.right, "right mesh");

@@ -68,6 +68,12 @@ struct StereoMesh {
   uint32_t baselineUm = 0;  // baseline, micrometres
 };
 
+// The line buffer of a pair in the core: one lag for both images (the larger, at least 0)
+// and the rows from the smaller back, rows = lag - back + 1; the core's buffer of R rows
+// also holds the row being written, so the pair needs R >= lineBufferRows = rows + 1.
+RowSpan stereoRowSpan(const StereoMesh& mesh);
+inline int lineBufferRows(const RowSpan& span) { return span.rows + 1; }
+
 // The mesh file (little-endian): "SGMMESH1", then uint32 width, height, gridLog2,
 // fracBits (5), nodesX, nodesY, focalQ8, baselineUm, then the left mesh's nodes and the
 // right's, row by row, each node int32 u then int32 v (1/32 px).

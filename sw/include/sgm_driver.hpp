@@ -36,7 +36,7 @@ struct Identity {
 };
 
 // One frame's run-time configuration (the fields of FRAME_SIZE, PENALTY, CONFIG, EDGE_RESET,
-// OUTPUT, DEPTH_FOCAL, DEPTH_BASELINE, MIN_DISPARITY).
+// OUTPUT, DEPTH_FOCAL, DEPTH_BASELINE, MIN_DISPARITY, RECTIFY).
 struct FrameConfig {
   uint32_t width = 0, height = 0;
   // Defaults: the golden model's, as the registers of a build with every lever reset to
@@ -68,6 +68,11 @@ struct FrameConfig {
   // The minimum disparity dmin, 0 .. 255 (a build with SGM_FEATURES_MIN_DISPARITY): the
   // search covers dmin .. dmin + D - 1 and the output is the true disparity.
   uint32_t minDisparity = 0;
+  // Rectification in the stream (a build with SGM_FEATURES_RECTIFY): the frame's raw pair goes
+  // through the meshes loaded with loadMeshes; rectifyLag is the calibration's row lag
+  // (sgm-eval calib-mesh), at most rectifyRows(id) - 2.
+  bool rectify = false;
+  uint32_t rectifyLag = 0;
 
   // The four-path defaults (golden preset "four-path"), for builds without those levers.
   static FrameConfig fourPath() {
@@ -84,6 +89,15 @@ struct FrameConfig {
     f.edgeResetPaths = SGM_EDGE_RESET_PATHS_FOUR_PATH;
     return f;
   }
+};
+
+// One image's rectification mesh: nodesX x nodesY source positions (u, v) in 1/32 px, row by
+// row (node (i, j) at index i nodesX + j), as sgm-eval calib-mesh's mesh file holds them
+// (docs/algorithm.md section 13).
+struct MeshImage {
+  uint32_t nodesX = 0, nodesY = 0;
+  const int32_t* u = nullptr;
+  const int32_t* v = nullptr;
 };
 
 struct Errors {
@@ -115,6 +129,14 @@ class Driver {
   void enableInterrupts(uint32_t mask);  // SGM_IRQ_ENABLE_* bits
   uint32_t interrupts();                 // IRQ_STATUS
   void clearInterrupts(uint32_t mask);
+  // Loads a calibration's two meshes into the copy the core does not use and swaps them in
+  // at the next start of frame: waits (at most maxPolls reads) until MESH_CTRL.PENDING is 0,
+  // writes every node, then MESH_CTRL.SWAP. False when PENDING stayed 1 or a mesh is larger
+  // than the register fields hold (nothing written then).
+  bool loadMeshes(const MeshImage& left, const MeshImage& right, long maxPolls);
+  bool meshSwapPending();
+  // Whether the frame leaving the rectification read a row its line buffer no longer held.
+  bool rectifyRowMiss();
 
   // Whether the core of this identity takes a frame of this size (the core drops
   // any other and flags ERROR.CONFIG): minWidth <= width <= maxWidth, 9 <= height <= maxHeight.
@@ -123,10 +145,14 @@ class Driver {
   // frame with uniqueness != 0 without SGM_FEATURES_UNIQUENESS, adWeight != 0 without
   // SGM_FEATURES_AD_TERM, rightWeight != 0 without SGM_FEATURES_RIGHT_PATH, edgeReset != 0
   // without SGM_FEATURES_EDGE_RESET, the depth output without SGM_FEATURES_DEPTH, or
-  // minDisparity != 0 without SGM_FEATURES_MIN_DISPARITY, and flags ERROR.CONFIG).
+  // minDisparity != 0 without SGM_FEATURES_MIN_DISPARITY, rectify or rectifyLag != 0 without
+  // SGM_FEATURES_RECTIFY or a rectifyLag above rectifyRows(id) - 2, and flags ERROR.CONFIG).
   static bool featuresFit(const Identity& id, const FrameConfig& frame);
   // The fifth path's block B of the build (0: the build has no fifth path).
   static uint32_t rightBlock(const Identity& id);
+  // The rectification's line buffer rows R and mesh step G of the build (0: no rectification).
+  static uint32_t rectifyRows(const Identity& id);
+  static uint32_t rectifyGrid(const Identity& id);
   static uint32_t encodeSize(uint32_t width, uint32_t height);
   static uint32_t encodePenalty(const FrameConfig& frame);
   static uint32_t encodeConfig(const FrameConfig& frame);
@@ -135,9 +161,10 @@ class Driver {
   static uint32_t encodeDepthFocal(const FrameConfig& frame);
   static uint32_t encodeDepthBaseline(const FrameConfig& frame);
   static uint32_t encodeMinDisparity(const FrameConfig& frame);
-  // The configuration the eight registers' values hold (readConfig reads them).
+  static uint32_t encodeRectify(const FrameConfig& frame);
+  // The configuration the nine registers' values hold (readConfig reads them).
   static FrameConfig decode(uint32_t frameSize, uint32_t penalty, uint32_t config, uint32_t edgeReset, uint32_t output,
-                            uint32_t depthFocal, uint32_t depthBaseline, uint32_t minDisparity);
+                            uint32_t depthFocal, uint32_t depthBaseline, uint32_t minDisparity, uint32_t rectify);
 
  private:
   uint32_t read(uint32_t offset) { return bus_.read(offset); }

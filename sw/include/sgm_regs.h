@@ -43,14 +43,19 @@
 #define SGM_REG_DEPTH_FOCAL        0x54u
 #define SGM_REG_DEPTH_BASELINE     0x58u
 #define SGM_REG_MIN_DISPARITY      0x5Cu
+#define SGM_REG_RECTIFY            0x60u
+#define SGM_REG_MESH_ADDR          0x64u
+#define SGM_REG_MESH_U             0x68u
+#define SGM_REG_MESH_V             0x6Cu
+#define SGM_REG_MESH_CTRL          0x70u
 
 /* ---- ID (0x00): identification: "SGM" and the map version */
-/* VERSION [7:0] RO: map version: 6 (5 had no OUTPUT, DEPTH_FOCAL, DEPTH_BASELINE and MIN_DISPARITY, 4 no EDGE_RESET, 3 no FEATURES, 2 no CONFIG.UNIQUENESS, 1 no MIN_WIDTH and LANES) */
+/* VERSION [7:0] RO: map version: 7 (6 had no RECTIFY, 5 had no OUTPUT, DEPTH_FOCAL, DEPTH_BASELINE and MIN_DISPARITY, 4 no EDGE_RESET, 3 no FEATURES, 2 no CONFIG.UNIQUENESS, 1 no MIN_WIDTH and LANES) */
 #define SGM_ID_VERSION_SHIFT 0
 #define SGM_ID_VERSION_WIDTH 8
 #define SGM_ID_VERSION_MASK 0x000000FFu
-#define SGM_ID_VERSION_MIN 6u
-#define SGM_ID_VERSION_MAX 6u
+#define SGM_ID_VERSION_MIN 7u
+#define SGM_ID_VERSION_MAX 7u
 /* MAGIC [31:8] RO: "SGM" in ASCII */
 #define SGM_ID_MAGIC_SHIFT 8
 #define SGM_ID_MAGIC_WIDTH 24
@@ -58,7 +63,7 @@
 #define SGM_ID_MAGIC_MIN 5457741u
 #define SGM_ID_MAGIC_MAX 5457741u
 #define SGM_ID_MASK 0xFFFFFFFFu
-#define SGM_ID_VALUE 0x53474D06u
+#define SGM_ID_VALUE 0x53474D07u
 
 /* ---- D (0x04): disparities of the build */
 /* VALUE [31:0] RO: D */
@@ -163,13 +168,32 @@
 #define SGM_FEATURES_MIN_DISPARITY (1u << 5)
 #define SGM_FEATURES_MIN_DISPARITY_MIN 0u
 #define SGM_FEATURES_MIN_DISPARITY_MAX 1u
+/* RECTIFY [6] RO: rectification in the stream, register RECTIFY (sgm_top RECTIFY) */
+#define SGM_FEATURES_RECTIFY_SHIFT 6
+#define SGM_FEATURES_RECTIFY_WIDTH 1
+#define SGM_FEATURES_RECTIFY_MASK 0x00000040u
+#define SGM_FEATURES_RECTIFY (1u << 6)
+#define SGM_FEATURES_RECTIFY_MIN 0u
+#define SGM_FEATURES_RECTIFY_MAX 1u
 /* RIGHT_BLOCK [11:8] RO: log2 of the fifth path's block B (0 without it) */
 #define SGM_FEATURES_RIGHT_BLOCK_SHIFT 8
 #define SGM_FEATURES_RIGHT_BLOCK_WIDTH 4
 #define SGM_FEATURES_RIGHT_BLOCK_MASK 0x00000F00u
 #define SGM_FEATURES_RIGHT_BLOCK_MIN 0u
 #define SGM_FEATURES_RIGHT_BLOCK_MAX 15u
-#define SGM_FEATURES_MASK 0x00000F3Fu
+/* RECTIFY_ROWS [15:12] RO: log2 of the rectification's line buffer rows R (0 without it): a calibration needs rows + 1 <= R (sgm-eval calib-mesh) */
+#define SGM_FEATURES_RECTIFY_ROWS_SHIFT 12
+#define SGM_FEATURES_RECTIFY_ROWS_WIDTH 4
+#define SGM_FEATURES_RECTIFY_ROWS_MASK 0x0000F000u
+#define SGM_FEATURES_RECTIFY_ROWS_MIN 0u
+#define SGM_FEATURES_RECTIFY_ROWS_MAX 8u
+/* RECTIFY_GRID [18:16] RO: log2 of the rectification's mesh step G (0 without it) */
+#define SGM_FEATURES_RECTIFY_GRID_SHIFT 16
+#define SGM_FEATURES_RECTIFY_GRID_WIDTH 3
+#define SGM_FEATURES_RECTIFY_GRID_MASK 0x00070000u
+#define SGM_FEATURES_RECTIFY_GRID_MIN 0u
+#define SGM_FEATURES_RECTIFY_GRID_MAX 6u
+#define SGM_FEATURES_MASK 0x0007FF7Fu
 
 /* ---- CTRL (0x20): control */
 /* ENABLE [0] RW: 0: a start-of-frame beat is held back (the core stops at a frame boundary) */
@@ -528,10 +552,88 @@
 #define SGM_MIN_DISPARITY_DMIN_MAX 255u
 #define SGM_MIN_DISPARITY_MASK 0x000000FFu
 
+/* ---- RECTIFY (0x60): rectification of the input pair */
+/* ENABLE [0] RW: 1: each image of the pair is resampled through its mesh; 0: the pair passes unchanged (needs FEATURES.RECTIFY) */
+#define SGM_RECTIFY_ENABLE_SHIFT 0
+#define SGM_RECTIFY_ENABLE_WIDTH 1
+#define SGM_RECTIFY_ENABLE_MASK 0x00000001u
+#define SGM_RECTIFY_ENABLE (1u << 0)
+#define SGM_RECTIFY_ENABLE_MIN 0u
+#define SGM_RECTIFY_ENABLE_MAX 1u
+/* LAG [15:8] RW: the calibration's row lag (sgm-eval calib-mesh): output row y waits for source row y + LAG; at most R - 2 (FEATURES.RECTIFY_ROWS) */
+#define SGM_RECTIFY_LAG_SHIFT 8
+#define SGM_RECTIFY_LAG_WIDTH 8
+#define SGM_RECTIFY_LAG_MASK 0x0000FF00u
+#define SGM_RECTIFY_LAG_MIN 0u
+#define SGM_RECTIFY_LAG_MAX 254u
+#define SGM_RECTIFY_MASK 0x0000FF01u
+
+/* ---- MESH_ADDR (0x64): the mesh node MESH_V's write stores (sgm-eval calib-mesh's mesh file, docs/integration.md) */
+/* COL [11:0] RW: node column j (pixel j G); a write of MESH_V steps it by one */
+#define SGM_MESH_ADDR_COL_SHIFT 0
+#define SGM_MESH_ADDR_COL_WIDTH 12
+#define SGM_MESH_ADDR_COL_MASK 0x00000FFFu
+#define SGM_MESH_ADDR_COL_MIN 0u
+#define SGM_MESH_ADDR_COL_MAX 4095u
+/* ROW [23:12] RW: node row i (pixel row i G) */
+#define SGM_MESH_ADDR_ROW_SHIFT 12
+#define SGM_MESH_ADDR_ROW_WIDTH 12
+#define SGM_MESH_ADDR_ROW_MASK 0x00FFF000u
+#define SGM_MESH_ADDR_ROW_MIN 0u
+#define SGM_MESH_ADDR_ROW_MAX 4095u
+/* RIGHT [24] RW: 0: the left image's mesh, 1: the right image's */
+#define SGM_MESH_ADDR_RIGHT_SHIFT 24
+#define SGM_MESH_ADDR_RIGHT_WIDTH 1
+#define SGM_MESH_ADDR_RIGHT_MASK 0x01000000u
+#define SGM_MESH_ADDR_RIGHT (1u << 24)
+#define SGM_MESH_ADDR_RIGHT_MIN 0u
+#define SGM_MESH_ADDR_RIGHT_MAX 1u
+#define SGM_MESH_ADDR_MASK 0x01FFFFFFu
+
+/* ---- MESH_U (0x68): the source column of the node, in 1/32 px */
+/* U [17:0] RW: u, signed 18 bits (two's complement) */
+#define SGM_MESH_U_U_SHIFT 0
+#define SGM_MESH_U_U_WIDTH 18
+#define SGM_MESH_U_U_MASK 0x0003FFFFu
+#define SGM_MESH_U_U_MIN 0u
+#define SGM_MESH_U_U_MAX 262143u
+#define SGM_MESH_U_MASK 0x0003FFFFu
+
+/* ---- MESH_V (0x6C): the source row of the node, in 1/32 px; a write stores the node (MESH_U, V) at MESH_ADDR into the copy not in use and steps MESH_ADDR.COL */
+/* V [17:0] RW: v, signed 18 bits (two's complement) */
+#define SGM_MESH_V_V_SHIFT 0
+#define SGM_MESH_V_V_WIDTH 18
+#define SGM_MESH_V_V_MASK 0x0003FFFFu
+#define SGM_MESH_V_V_MIN 0u
+#define SGM_MESH_V_V_MAX 262143u
+#define SGM_MESH_V_MASK 0x0003FFFFu
+
+/* ---- MESH_CTRL (0x70): the mesh copies: write a whole new mesh pair while PENDING is 0, then SWAP */
+/* SWAP [0] W1P: write 1: the copy written is used from the next start of frame on; reads 0 */
+#define SGM_MESH_CTRL_SWAP_SHIFT 0
+#define SGM_MESH_CTRL_SWAP_WIDTH 1
+#define SGM_MESH_CTRL_SWAP_MASK 0x00000001u
+#define SGM_MESH_CTRL_SWAP (1u << 0)
+/* PENDING [1] RO: 1 from SWAP until the core's output runs on the new copy: no mesh write meanwhile */
+#define SGM_MESH_CTRL_PENDING_SHIFT 1
+#define SGM_MESH_CTRL_PENDING_WIDTH 1
+#define SGM_MESH_CTRL_PENDING_MASK 0x00000002u
+#define SGM_MESH_CTRL_PENDING (1u << 1)
+#define SGM_MESH_CTRL_PENDING_MIN 0u
+#define SGM_MESH_CTRL_PENDING_MAX 1u
+/* ROW_MISS [2] RO: the frame leaving the rectification read a source row the line buffer no longer held (a calibration needing more rows than R) */
+#define SGM_MESH_CTRL_ROW_MISS_SHIFT 2
+#define SGM_MESH_CTRL_ROW_MISS_WIDTH 1
+#define SGM_MESH_CTRL_ROW_MISS_MASK 0x00000004u
+#define SGM_MESH_CTRL_ROW_MISS (1u << 2)
+#define SGM_MESH_CTRL_ROW_MISS_MIN 0u
+#define SGM_MESH_CTRL_ROW_MISS_MAX 1u
+#define SGM_MESH_CTRL_MASK 0x00000006u
+
 /* ---- the frame configuration word: sgm_top's cfg_i (rtl/sgm_cfg.svh), SGM_CFG_W bits, bit 0
  * first; field F of register R at bits [SGM_CFG_R_F_LSB +: SGM_R_F_WIDTH] (docs/registers.md). */
-#define SGM_CFG_W 158u
-#define SGM_CFG_WORDS 5u /* 32-bit words of the word */
+#define SGM_CFG_W 167u
+#define SGM_CFG_WORDS 6u /* 32-bit words of the word */
 #define SGM_CFG_FRAME_SIZE_WIDTH_LSB 0u
 #define SGM_CFG_FRAME_SIZE_HEIGHT_LSB 16u
 #define SGM_CFG_PENALTY_P1_LSB 32u
@@ -556,6 +658,8 @@
 #define SGM_CFG_DEPTH_FOCAL_F_LSB 102u
 #define SGM_CFG_DEPTH_BASELINE_B_LSB 126u
 #define SGM_CFG_MIN_DISPARITY_DMIN_LSB 150u
+#define SGM_CFG_RECTIFY_ENABLE_LSB 158u
+#define SGM_CFG_RECTIFY_LAG_LSB 159u
 
 /* ---- constants */
 #define SGM_MIN_HEIGHT 9u /* shortest frame of every build (sgm_stream_ctrl) */

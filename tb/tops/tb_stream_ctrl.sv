@@ -79,16 +79,17 @@ module tb_stream_ctrl #(
     .MAX_WIDTH(200), .MIN_WIDTH(16), .MAX_HEIGHT(200), .XW(XW), .YW(YW), .FIFO_DEPTH(4)
   ) u_ctrl (
     .clk_i, .rst_ni,
-    .s_tdata_i, .s_tuser_i, .s_tlast_i, .s_tvalid_i, .s_tready_o,
+    .s_tdata_i, .s_tuser_i, .s_tlast_i, .s_tvalid_i, .s_tready_o, .s_tside_i(1'b0),
     .m_tdata_o, .m_tuser_o, .m_tlast_o, .m_tvalid_o, .m_tready_i,
     .cfg_i, .cfg_o(unused_cfg), .width_o(width), .height_o(height),
     .lut_start_o(lut_start), .lut_ready_i(fill_q == '0),
-    .en_o, .pix_left_o(pix_l), .pix_right_o(pix_r), .col_o(col), .row_o(row), .sof_o(sof),
+    .en_o, .pix_left_o(pix_l), .pix_right_o(pix_r), .col_o(col), .row_o(row), .sof_o(sof), .side_o(unused_side),
     .res_valid_i(slot_out[SLOT-1]), .res_word_i({slot_out[0], 15'(slot_out[1 +: DW])}),
     .busy_o, .frame_done_o, .error_o, .error_set_o
   );
 
-  wire unused = &{1'b0, width, col, sof, unused_cfg};
+  logic unused_side;
+  wire unused = &{1'b0, width, col, sof, unused_cfg, unused_side};
 
 endmodule
 `default_nettype wire

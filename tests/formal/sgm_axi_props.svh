@@ -14,10 +14,15 @@
 //   reset        after a reset cycle every register holds its reset value (registers.md),
 //                the active configuration too;
 //   RW           CTRL, FRAME_SIZE, PENALTY, CONFIG, EDGE_RESET, IRQ_ENABLE, OUTPUT,
-//                DEPTH_FOCAL, DEPTH_BASELINE, MIN_DISPARITY change only by
-//                a write to their address, which replaces the bits of its enabled byte
-//                lanes within the register's fields; reserved bits and CTRL.SOFT_RESET
+//                DEPTH_FOCAL, DEPTH_BASELINE, MIN_DISPARITY, RECTIFY, MESH_U, MESH_V change
+//                only by a write to their address, which replaces the bits of its enabled
+//                byte lanes within the register's fields; reserved bits and CTRL.SOFT_RESET
 //                hold 0;
+//   meshes       MESH_ADDR changes only by a write to it (as RW) or, the cycle after a
+//                write of MESH_V, by the step of its column; the core's mesh port stores
+//                (MESH_U, MESH_V) at MESH_ADDR exactly in the cycle after each write of
+//                MESH_V, and swaps exactly in the cycle after each write of MESH_CTRL with
+//                SWAP = 1;
 //   W1C          ERROR and IRQ_STATUS: next = (now & ~cleared) | events (ERROR: the core's
 //                error_event_o; IRQ_STATUS: frame_done_o and any error event), so a clear
 //                in the cycle of an event never loses the event; nothing else changes them;
@@ -46,7 +51,7 @@
   wire f_past_valid = f_t != 2'd0;
 
   // The last register of the (dense) map.
-  localparam logic [ADDR_W-1:0] F_LAST = ADDR_MIN_DISPARITY;
+  localparam logic [ADDR_W-1:0] F_LAST = ADDR_MESH_CTRL;
 
   // A write accepted on the bus, its word address, the mask of its enabled byte lanes,
   // the bits it writes as 1 in them; a read accepted and its word address.
@@ -88,8 +93,10 @@
     if (f_past_valid && !$past(rst_ni)) begin
       assert (ctrl_q == 32'd0 && frame_size_q == 32'd0 && penalty_q == PENALTY_RESET && config_q == CONFIG_RESET &&
               edge_reset_q == EDGE_RESET_RESET && irq_enable_q == 32'd0 && output_q == 32'd0 &&
-              focal_q == 32'd0 && baseline_q == 32'd0 && dmin_q == 32'd0);
-      assert (act_cfg == cfg_from_regs(32'd0, PENALTY_RESET, CONFIG_RESET, EDGE_RESET_RESET, 32'd0, 32'd0, 32'd0, 32'd0));
+              focal_q == 32'd0 && baseline_q == 32'd0 && dmin_q == 32'd0 && rectify_q == 32'd0 &&
+              mesh_addr_q == 32'd0 && mesh_u_q == 32'd0 && mesh_v_q == 32'd0 && !mesh_we_q && !mesh_swap_q);
+      assert (act_cfg == cfg_from_regs(32'd0, PENALTY_RESET, CONFIG_RESET, EDGE_RESET_RESET, 32'd0, 32'd0, 32'd0, 32'd0,
+                                       32'd0));
       assert (error_q == '0 && irq_status_q == 2'd0 && error_count_q == 32'd0 && frames_q == 32'd0 &&
               last_size_q == 32'd0 && !core_reset);
     end
@@ -124,6 +131,24 @@
       assert (dmin_q == ($past(f_wr && f_wa == ADDR_MIN_DISPARITY) ?
                          f_write($past(dmin_q), $past(s_axil_wdata_i), $past(f_lanes), MIN_DISPARITY_MASK) :
                          $past(dmin_q)));
+      assert (rectify_q == ($past(f_wr && f_wa == ADDR_RECTIFY) ?
+                            f_write($past(rectify_q), $past(s_axil_wdata_i), $past(f_lanes), RECTIFY_MASK) :
+                            $past(rectify_q)));
+      assert (mesh_u_q == ($past(f_wr && f_wa == ADDR_MESH_U) ?
+                           f_write($past(mesh_u_q), $past(s_axil_wdata_i), $past(f_lanes), MESH_U_MASK) :
+                           $past(mesh_u_q)));
+      assert (mesh_v_q == ($past(f_wr && f_wa == ADDR_MESH_V) ?
+                           f_write($past(mesh_v_q), $past(s_axil_wdata_i), $past(f_lanes), MESH_V_MASK) :
+                           $past(mesh_v_q)));
+      // the mesh port: a store the cycle after each MESH_V write, at MESH_ADDR, then the column steps
+      assert (mesh_we_q == $past(f_wr && f_wa == ADDR_MESH_V));
+      assert (mesh_swap_q == $past(f_wr && f_wa == ADDR_MESH_CTRL && f_ones[MESH_CTRL_SWAP_LSB]));
+      if ($past(f_wr && f_wa == ADDR_MESH_ADDR))
+        assert (mesh_addr_q == f_write($past(mesh_addr_q), $past(s_axil_wdata_i), $past(f_lanes), MESH_ADDR_MASK));
+      else if ($past(mesh_we_q))
+        assert (mesh_addr_q == (($past(mesh_addr_q) & ~32'hFFF) | 32'(12'($past(mesh_addr_q[11:0]) + 12'd1))));
+      else
+        assert (mesh_addr_q == $past(mesh_addr_q));
       // W1C: an event in the cycle of its clear wins; no event is lost
       assert (error_q == (($past(error_q) & ~$past(f_err_clear)) | $past(error_event)));
       assert (($past(error_event) & ~error_q) == '0);
@@ -142,7 +167,8 @@
       end else begin
         // the word as the register map packs it; its frame size whole (16 bits each)
         assert (act_cfg == cfg_from_regs($past(frame_size_q), $past(penalty_q), $past(config_q), $past(edge_reset_q),
-                                         $past(output_q), $past(focal_q), $past(baseline_q), $past(dmin_q)));
+                                         $past(output_q), $past(focal_q), $past(baseline_q), $past(dmin_q),
+                                         $past(rectify_q)));
         assert (act_cfg[CFG_FRAME_SIZE_WIDTH_LSB +: 16] == $past(f_width) &&
                 act_cfg[CFG_FRAME_SIZE_HEIGHT_LSB +: 16] == $past(f_height));
       end
@@ -172,6 +198,8 @@
       assert ((edge_reset_q & ~EDGE_RESET_MASK) == 32'd0 && (irq_enable_q & ~IRQ_ENABLE_MASK) == 32'd0);
       assert ((output_q & ~OUTPUT_MASK) == 32'd0 && (focal_q & ~DEPTH_FOCAL_MASK) == 32'd0 &&
               (baseline_q & ~DEPTH_BASELINE_MASK) == 32'd0 && (dmin_q & ~MIN_DISPARITY_MASK) == 32'd0);
+      assert ((rectify_q & ~RECTIFY_MASK) == 32'd0 && (mesh_addr_q & ~MESH_ADDR_MASK) == 32'd0 &&
+              (mesh_u_q & ~MESH_U_MASK) == 32'd0 && (mesh_v_q & ~MESH_V_MASK) == 32'd0);
     end
     assert (irq_o == ((irq_status_q[IRQ_STATUS_FRAME_DONE_LSB] && irq_enable_q[IRQ_ENABLE_FRAME_DONE_LSB]) ||
                       (irq_status_q[IRQ_STATUS_ERROR_LSB] && irq_enable_q[IRQ_ENABLE_ERROR_LSB])));
@@ -216,6 +244,11 @@
       ADDR_DEPTH_FOCAL: f_rvalue = focal_q;
       ADDR_DEPTH_BASELINE: f_rvalue = baseline_q;
       ADDR_MIN_DISPARITY: f_rvalue = dmin_q;
+      ADDR_RECTIFY:     f_rvalue = rectify_q;
+      ADDR_MESH_ADDR:   f_rvalue = mesh_addr_q;
+      ADDR_MESH_U:      f_rvalue = mesh_u_q;
+      ADDR_MESH_V:      f_rvalue = mesh_v_q;
+      ADDR_MESH_CTRL:   f_rvalue = (32'(mesh_pending) << 1) | (32'(mesh_row_miss) << 2);
       default:          f_rvalue = 32'd0;
     endcase
   end
@@ -254,6 +287,7 @@
       cover (f_held_write && !$past(f_hold) && act_cfg != $past(act_cfg));
       cover (f_wr && f_wa > F_LAST);
       cover (error_count_q[7:0] == 8'd2);
+      cover (mesh_we_q && mesh_addr_q[11:0] == 12'd1);  // the second node of a row stored
       cover ($past(f_wr && f_wa == ADDR_ERROR_COUNT && s_axil_wstrb_i[0] && error_event[0]) && error_count_q[7:0] == 8'd1);
     end
   end

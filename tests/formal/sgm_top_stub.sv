@@ -18,6 +18,9 @@ module sgm_top #(
   parameter int EDGE_RESET  = 1,
   parameter int DEPTH       = 0,
   parameter int MIN_DISPARITY = 0,
+  parameter int RECTIFY     = 0,
+  parameter int RECTIFY_ROWS = 32,
+  parameter int RECTIFY_GRID_LOG2 = 4,
   localparam int XW         = $clog2(MAX_WIDTH + 1),
   localparam int YW         = $clog2(MAX_HEIGHT + 16)
 ) (
@@ -34,6 +37,15 @@ module sgm_top #(
   output logic          m_tvalid_o,
   input  wire           m_tready_i,
   input  wire  [CFG_W-1:0] cfg_i,
+  input  wire           mesh_we_i,
+  input  wire           mesh_channel_i,
+  input  wire  [11:0]   mesh_row_i,
+  input  wire  [11:0]   mesh_col_i,
+  input  wire  [17:0]   mesh_u_i,
+  input  wire  [17:0]   mesh_v_i,
+  input  wire           mesh_swap_i,
+  output logic          mesh_swap_pending_o,
+  output logic          rect_row_miss_o,
   output logic          busy_o,
   output logic          frame_done_o,
   output logic [3:0]    error_o,
@@ -48,6 +60,7 @@ module sgm_top #(
   (* anyseq *) logic [3:0]    any_error, any_event;
   (* anyseq *) logic [XW-1:0] any_width, any_min_width;
   (* anyseq *) logic [YW-1:0] any_height;
+  (* anyseq *) logic          any_pending, any_miss;
 
   assign s_tready_o     = any_tready;
   assign m_tdata_o      = any_tdata;
@@ -61,6 +74,8 @@ module sgm_top #(
   assign frame_width_o  = any_width;
   assign frame_height_o = any_height;
   assign min_width_o    = any_min_width;
+  assign mesh_swap_pending_o = any_pending;
+  assign rect_row_miss_o     = any_miss;
 
 endmodule
 `default_nettype wire

@@ -38,7 +38,10 @@ constexpr uint32_t kFeatures =
     (Rtl::UNIQUENESS ? SGM_FEATURES_UNIQUENESS : 0u) | (Rtl::AD_TERM ? SGM_FEATURES_AD_TERM : 0u) |
     (Rtl::RIGHT_BLOCK ? SGM_FEATURES_RIGHT_PATH | log2Of(Rtl::RIGHT_BLOCK) << SGM_FEATURES_RIGHT_BLOCK_SHIFT : 0u) |
     (Rtl::EDGE_RESET ? SGM_FEATURES_EDGE_RESET : 0u) | (Rtl::DEPTH ? SGM_FEATURES_DEPTH : 0u) |
-    (Rtl::MIN_DISPARITY ? SGM_FEATURES_MIN_DISPARITY : 0u);
+    (Rtl::MIN_DISPARITY ? SGM_FEATURES_MIN_DISPARITY : 0u) |
+    (Rtl::RECTIFY ? SGM_FEATURES_RECTIFY | log2Of(Rtl::RECTIFY_ROWS) << SGM_FEATURES_RECTIFY_ROWS_SHIFT |
+                        uint32_t(Rtl::RECTIFY_GRID_LOG2) << SGM_FEATURES_RECTIFY_GRID_SHIFT
+                  : 0u);
 
 // The settings with every lever the build lacks off (bit-exact frames run what the build has).
 sgm::Params withBuildLevers(sgm::Params p) {
@@ -75,12 +78,12 @@ FrameInput scene(int w, int h, uint32_t seed, const sgm::Params& p) {
 // of what it decoded gives the same registers back (a field the driver lacks stops the test).
 drv::FrameConfig frameConfig(const sgm::Params& p, cv::Size size) {
   const sgm::tb::HardwareConfig c = sgm::tb::hardwareConfig(p, size.width, size.height);
-  constexpr int kRegs = 8;
-  const uint32_t regs[kRegs] = {c.reg(SGM_REG_FRAME_SIZE),     c.reg(SGM_REG_PENALTY),      c.reg(SGM_REG_CONFIG),
-                                c.reg(SGM_REG_EDGE_RESET),     c.reg(SGM_REG_OUTPUT),       c.reg(SGM_REG_DEPTH_FOCAL),
-                                c.reg(SGM_REG_DEPTH_BASELINE), c.reg(SGM_REG_MIN_DISPARITY)};
-  const drv::FrameConfig f = drv::Driver::decode(regs[0], regs[1], regs[2], regs[3], regs[4], regs[5], regs[6],
-                                                 regs[7]);
+  constexpr int kRegs = 9;
+  const uint32_t regs[kRegs] = {c.reg(SGM_REG_FRAME_SIZE),     c.reg(SGM_REG_PENALTY),       c.reg(SGM_REG_CONFIG),
+                                c.reg(SGM_REG_EDGE_RESET),     c.reg(SGM_REG_OUTPUT),        c.reg(SGM_REG_DEPTH_FOCAL),
+                                c.reg(SGM_REG_DEPTH_BASELINE), c.reg(SGM_REG_MIN_DISPARITY), c.reg(SGM_REG_RECTIFY)};
+  const drv::FrameConfig f = drv::Driver::decode(regs[0], regs[1], regs[2], regs[3], regs[4], regs[5], regs[6], regs[7],
+                                                 regs[8]);
   const uint32_t back[kRegs] = {drv::Driver::encodeSize(f.width, f.height),
                                 drv::Driver::encodePenalty(f),
                                 drv::Driver::encodeConfig(f),
@@ -88,9 +91,10 @@ drv::FrameConfig frameConfig(const sgm::Params& p, cv::Size size) {
                                 drv::Driver::encodeOutput(f),
                                 drv::Driver::encodeDepthFocal(f),
                                 drv::Driver::encodeDepthBaseline(f),
-                                drv::Driver::encodeMinDisparity(f)};
-  const char* names[kRegs] = {"FRAME_SIZE", "PENALTY",     "CONFIG",         "EDGE_RESET",
-                              "OUTPUT",     "DEPTH_FOCAL", "DEPTH_BASELINE", "MIN_DISPARITY"};
+                                drv::Driver::encodeMinDisparity(f),
+                                drv::Driver::encodeRectify(f)};
+  const char* names[kRegs] = {"FRAME_SIZE",  "PENALTY",        "CONFIG",        "EDGE_RESET", "OUTPUT",
+                              "DEPTH_FOCAL", "DEPTH_BASELINE", "MIN_DISPARITY", "RECTIFY"};
   for (int r = 0; r < kRegs; ++r)
     if (back[r] != regs[r]) {
       char what[160];
@@ -198,6 +202,11 @@ TEST(SgmAxi, RtlOffsetsAndResetValuesMatchTheHeader) {
       {"DEPTH_FOCAL", {Rtl::ADDR_DEPTH_FOCAL, SGM_REG_DEPTH_FOCAL}},
       {"DEPTH_BASELINE", {Rtl::ADDR_DEPTH_BASELINE, SGM_REG_DEPTH_BASELINE}},
       {"MIN_DISPARITY", {Rtl::ADDR_MIN_DISPARITY, SGM_REG_MIN_DISPARITY}},
+      {"RECTIFY", {Rtl::ADDR_RECTIFY, SGM_REG_RECTIFY}},
+      {"MESH_ADDR", {Rtl::ADDR_MESH_ADDR, SGM_REG_MESH_ADDR}},
+      {"MESH_U", {Rtl::ADDR_MESH_U, SGM_REG_MESH_U}},
+      {"MESH_V", {Rtl::ADDR_MESH_V, SGM_REG_MESH_V}},
+      {"MESH_CTRL", {Rtl::ADDR_MESH_CTRL, SGM_REG_MESH_CTRL}},
       {"ID_VALUE", {Rtl::ID_VALUE, SGM_ID_VALUE}},
       {"FEATURES_UNIQUENESS", {1u << Rtl::FEATURES_UNIQUENESS_LSB, SGM_FEATURES_UNIQUENESS}},
       {"FEATURES_AD_TERM", {1u << Rtl::FEATURES_AD_TERM_LSB, SGM_FEATURES_AD_TERM}},
@@ -206,6 +215,9 @@ TEST(SgmAxi, RtlOffsetsAndResetValuesMatchTheHeader) {
       {"FEATURES_EDGE_RESET", {1u << Rtl::FEATURES_EDGE_RESET_LSB, SGM_FEATURES_EDGE_RESET}},
       {"FEATURES_DEPTH", {1u << Rtl::FEATURES_DEPTH_LSB, SGM_FEATURES_DEPTH}},
       {"FEATURES_MIN_DISPARITY", {1u << Rtl::FEATURES_MIN_DISPARITY_LSB, SGM_FEATURES_MIN_DISPARITY}},
+      {"FEATURES_RECTIFY", {1u << Rtl::FEATURES_RECTIFY_LSB, SGM_FEATURES_RECTIFY}},
+      {"FEATURES_RECTIFY_ROWS", {uint32_t(Rtl::FEATURES_RECTIFY_ROWS_LSB), SGM_FEATURES_RECTIFY_ROWS_SHIFT}},
+      {"FEATURES_RECTIFY_GRID", {uint32_t(Rtl::FEATURES_RECTIFY_GRID_LSB), SGM_FEATURES_RECTIFY_GRID_SHIFT}},
       {"EDGE_RESET_RESET", {Rtl::EDGE_RESET_RESET, kEdgeResetReset}},
       {"FEATURES_VALUE", {Rtl::FEATURES_VALUE, kFeatures}},
       {"PENALTY_RESET", {Rtl::PENALTY_RESET, kPenaltyReset}},
@@ -278,6 +290,11 @@ std::vector<RegisterSpec> registers() {
       {"DEPTH_FOCAL", SGM_REG_DEPTH_FOCAL, 0, SGM_DEPTH_FOCAL_MASK},
       {"DEPTH_BASELINE", SGM_REG_DEPTH_BASELINE, 0, SGM_DEPTH_BASELINE_MASK},
       {"MIN_DISPARITY", SGM_REG_MIN_DISPARITY, 0, SGM_MIN_DISPARITY_MASK},
+      {"RECTIFY", SGM_REG_RECTIFY, 0, SGM_RECTIFY_MASK},
+      {"MESH_ADDR", SGM_REG_MESH_ADDR, 0, SGM_MESH_ADDR_MASK},
+      {"MESH_U", SGM_REG_MESH_U, 0, SGM_MESH_U_MASK},
+      {"MESH_V", SGM_REG_MESH_V, 0, 0},  // a write stores a node and steps MESH_ADDR: its own test
+      {"MESH_CTRL", SGM_REG_MESH_CTRL, 0, 0},
   };
 }
 
@@ -407,7 +424,7 @@ TEST(SgmAxi, ReadBackReservedBitsAndWriteStrobes) {
   std::mt19937 rng(9);
   for (const RegisterSpec& r : registers()) {
     const bool w1c = r.offset == SGM_REG_ERROR || r.offset == SGM_REG_IRQ_STATUS || r.offset == SGM_REG_ERROR_COUNT;
-    if (w1c) continue;
+    if (w1c || r.offset == SGM_REG_MESH_V) continue;  // MESH_V: MeshRegistersStoreNodes
     const uint32_t before = c.bus.read(r.offset).data;
     std::vector<uint32_t> patterns = {0xFFFFFFFFu, 0u, 0xA5A5A5A5u, 0x5A5A5A5Au};
     for (int i = 0; i < 6; ++i) patterns.push_back(uint32_t(rng()));

@@ -12,11 +12,14 @@
 // ask for it dropped. A build with the fifth path (RIGHT_BLOCK = B) and both levers runs
 // our defaults in blocks of B, a build without any of them the four-path preset.
 // A build with the depth output (DEPTH = 1) runs DepthOutputIsExact: depth frames with
-// several f and B between disparity frames, every word against sgm::outputWords.
+// several f and B between disparity frames, every word against sgm::outputWords. A build
+// with the rectification (RECTIFY = 1) runs RawPairsThroughTheirMeshesAreExact: raw pairs
+// through random calibrations loaded between frames, against sgm::runRectifiedPipeline.
 #include "Vsgm_top.h"
 #include "Vsgm_top_sgm_top.h"
 #include "core_harness.hpp"
 #include "malformed_frames.hpp"
+#include "rectify_meshes.hpp"
 #include "regress_cases.hpp"
 
 #include "eval_lib.hpp"
@@ -52,6 +55,9 @@ constexpr int kRightBlock = Vsgm_top_sgm_top::RIGHT_BLOCK;            // the fif
 constexpr bool kEdgeReset = Vsgm_top_sgm_top::EDGE_RESET != 0;        // the build has the path restart
 constexpr bool kDepth = Vsgm_top_sgm_top::DEPTH != 0;                 // the build has the depth output
 constexpr bool kMinDisparity = Vsgm_top_sgm_top::MIN_DISPARITY != 0;  // the build has the minimum disparity
+constexpr bool kRectify = Vsgm_top_sgm_top::RECTIFY != 0;             // the build has the rectification
+constexpr int kRectifyRows = Vsgm_top_sgm_top::RECTIFY_ROWS;
+constexpr int kRectifyGridLog2 = Vsgm_top_sgm_top::RECTIFY_GRID_LOG2;
 constexpr bool kLean = !kUniqueness || !kAdTerm;
 
 // The settings with every lever the build lacks off (bit-exact tests run what the build
@@ -64,6 +70,7 @@ sgm::Params withBuildLevers(sgm::Params p) {
   if (!kEdgeReset) p.edgeReset.threshold = 0;
   if (!kDepth) p.output = sgm::OutputMode::kDisparity;
   if (!kMinDisparity) p.minDisparity = 0;
+  if (!kRectify) p.rectify = false, p.rectifyLag = 0;
   return p;
 }
 
@@ -71,7 +78,7 @@ sgm::Params withBuildLevers(sgm::Params p) {
 bool asksMissingLever(const sgm::Params& p) {
   return (p.uniqueness && !kUniqueness) || (p.adWeight && !kAdTerm) || (p.rightPathWeight && !kRightBlock) ||
          (p.edgeReset.threshold && !kEdgeReset) || (p.output == sgm::OutputMode::kDepth && !kDepth) ||
-         (p.minDisparity && !kMinDisparity);
+         (p.minDisparity && !kMinDisparity) || ((p.rectify || p.rectifyLag) && !kRectify);
 }
 
 // A textured left image and a right image shifted by a few pixels plus noise.
@@ -409,6 +416,80 @@ TEST(SgmTop, MinDisparityIsExact) {
       if (m.valid.at<uint8_t>(y, x)) ++valid, below += m.disp.at<uint16_t>(y, x) < 29 * 16;
   EXPECT_GT(valid, 0);
   EXPECT_EQ(below, 0);
+}
+
+// A calibration of random smooth meshes for w x h frames that fits the build's line buffer
+// (every mesh's rows within lag + 2 - R .. lag), pulled inside the source by `inside` (1: not).
+std::shared_ptr<sgm::StereoMesh> fittingCalibration(int w, int h, double strength, double inside, std::mt19937& rng,
+                                                    int* lag) {
+  for (;; strength *= 0.8) {
+    auto mesh = std::make_shared<sgm::StereoMesh>();
+    mesh->left = sgm::tb::smoothMesh(w, h, kRectifyGridLog2, strength, rng);
+    mesh->right = sgm::tb::smoothMesh(w, h, kRectifyGridLog2, strength, rng);
+    sgm::tb::shrinkMesh(mesh->left, inside), sgm::tb::shrinkMesh(mesh->right, inside);
+    const sgm::RowSpan l = sgm::meshRowSpan(mesh->left), r = sgm::meshRowSpan(mesh->right);
+    *lag = std::max({0, l.lag, r.lag});
+    if (std::min(l.back, r.back) >= *lag + 2 - kRectifyRows) return mesh;
+  }
+}
+
+// The rectification (RECTIFY = 1): raw pairs of several sizes back to back with stalls, each
+// through a calibration loaded before it (or the one before it kept), a pair that passes
+// through unrectified between them, one whose left image is shifted so that a band of its
+// pixels has its source outside (output word 0), and a lag above R - 2 (dropped): every
+// word equals sgm::runRectifiedPipeline's.
+TEST(SgmTop, RawPairsThroughTheirMeshesAreExact) {
+  if (!kRectify) GTEST_SKIP() << "this build has no rectification (sgm_top RECTIFY = 0)";
+  std::mt19937 rng(49);
+  std::vector<FrameInput> frames;
+  std::vector<std::shared_ptr<const sgm::StereoMesh>> calibration;  // per frame, the meshes in use
+  std::shared_ptr<const sgm::StereoMesh> current;
+  const sgm::Params base = withBuildLevers(hardwareDefaults());
+  const int sizes[][2] = {{kMaxWidth, 20}, {kMaxWidth - 13, 17}, {kMinWidth + 9, 12}, {kMaxWidth, 20}};
+  for (int k = 0; k < 9; ++k) {
+    const int w = sizes[k % 4][0], h = sizes[k % 4][1];
+    FrameInput f = syntheticPair(w, h, rng, base);
+    f.params.rectify = k != 4;
+    if (k == 4) {
+      calibration.push_back(nullptr);  // passes through
+    } else if (k == 3 && current && current->left.width == w && current->left.height == h) {
+      f.params.rectifyLag = frames.back().params.rectifyLag;  // keeps the calibration before it
+    } else {
+      int lag = 0;
+      auto mesh = fittingCalibration(w, h, 1.0 + 0.5 * (k % 3), k == 7 ? 1.0 : 0.95, rng, &lag);
+      if (k == 7)  // the left image's sources 5.5 px to the right: its last columns outside
+        for (int32_t& u : mesh->left.u) u += 5 * 32 + 16;
+      f.params.rectifyLag = std::max(lag, sgm::meshRowSpan(mesh->left).lag);
+      f.mesh = current = mesh;
+    }
+    if (k != 4) calibration.push_back(current);
+    frames.push_back(f);
+  }
+  // A lag above R - 2: dropped with the configuration error, then the frames go on.
+  FrameInput tooFar = frames.back();
+  tooFar.params.rectifyLag = kRectifyRows - 1, tooFar.mesh = nullptr, tooFar.dropped = true;
+  frames.insert(frames.begin() + 6, tooFar);
+  calibration.insert(calibration.begin() + 6, nullptr);
+  Harness core("sgm_top_rectify", 49, {0.2, 0.2});
+  const std::vector<sgm::tb::FrameOutput> out = core.run(frames);
+  int outside = 0;
+  for (size_t k = 0; k < frames.size(); ++k) {
+    if (frames[k].dropped) {
+      EXPECT_EQ(out[k].errors, 8u) << "frame " << k << ": a lag of R - 1 is out of range";
+      continue;
+    }
+    const sgm::DisparityMap golden = calibration[k]
+                                         ? sgm::runRectifiedPipeline(frames[k].left, frames[k].right, *calibration[k],
+                                                                     frames[k].params)
+                                         : sgm::runPipeline(frames[k].left, frames[k].right, frames[k].params);
+    EXPECT_EQ(sgm::tb::compareOutput(golden, frames[k].params, out[k], "sgm_top output (rectified)"), "")
+        << "frame " << k << ", lag " << frames[k].params.rectifyLag << (calibration[k] ? "" : ", passing through");
+    EXPECT_EQ(out[k].errors, 0u) << "frame " << k;
+    if (k == 8)
+      for (int y = 0; y < golden.disp.rows; ++y) outside += out[k].words.at<uint16_t>(y, golden.disp.cols - 1) == 0;
+  }
+  EXPECT_EQ(outside, frames[8].left.rows) << "the shifted calibration's last column: word 0 (source outside)";
+  EXPECT_FALSE(core.top()->rect_row_miss_o);
 }
 
 // The depth output (DEPTH = 1): frames in depth mode with f and B that give every kind of
