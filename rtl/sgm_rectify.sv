@@ -95,6 +95,7 @@ module sgm_rectify #(
 
     output logic [2:0] m_error_o,    // the frame's framing errors, on its last beat
     output logic [2:0] error_set_o,  // one-cycle pulse per event
+    output logic       busy_o,       // a frame is in, or on its way out
     output logic       row_miss_o
 );
   localparam int G = 1 << GRID_LOG2;
@@ -331,6 +332,7 @@ module sgm_rectify #(
     end
   end
   assign mesh_swap_pending_o = swap_pending_q || in_sel_q != out_sel_q;
+  assign busy_o = in_active_q || queued_q || out_active_q || p1_valid_q || p2_valid_q || m_tvalid_o;
 
   // ------------------------------------------------------------------ shared pixel pipeline
   // Stage 1 weights (column fraction), the frame's last column and row for stage 2.

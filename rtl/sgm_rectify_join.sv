@@ -7,9 +7,11 @@
 // the pixel's output word leaves the pipeline (res_valid_i, in raster order too), which it
 // turns into 0 (disparity 0, invalid; depth 0): docs/algorithm.md section 13. The framing
 // errors of the raw input, which sgm_rectify checks (its output frames are always whole),
-// come on the rectified frame's last beat (frame_error_i when the stream controller takes it)
-// and join the stream controller's error bits until it starts or drops its next frame,
-// so that error_o at frame_done_o is the frame's; the events join error_set_o as they come.
+// come on the rectified frame's last beat (frame_error_i when the stream controller takes it):
+// unless the controller is dropping that frame (not busy: its configuration is out of range,
+// ERROR.CONFIG alone), they are the frame's events (error_set_o) and join the controller's
+// error_o until it starts or drops its next frame, so that error_o at frame_done_o is the
+// frame's. busy_o: the controller's or the rectification's frame in flight.
 //
 // Parameters: DEPTH_LOG2, the FIFO's entries (2^DEPTH_LOG2: at least the frame slots in
 // flight, the slots of a frame's flush; sgm_top sizes it by its rows of row positions
@@ -35,7 +37,9 @@ module sgm_rectify_join #(
   input  wire              beat_ready_i,
   input  wire  [2:0]       frame_error_i,  // its m_error_o
   input  wire              lut_start_i,    // the controller starts a frame (dropped: ctrl_error_set_i[3])
-  input  wire  [2:0]       rect_error_set_i,  // sgm_rectify error_set_o (kinds 0 .. 2)
+  input  wire              ctrl_busy_i,    // sgm_stream_ctrl busy_o (0 while it drops a frame)
+  input  wire              rect_busy_i,    // sgm_rectify busy_o
+  output logic             busy_o,
   output logic [3:0]       error_o,
   output logic [3:0]       error_set_o
 );
@@ -67,13 +71,19 @@ module sgm_rectify_join #(
     head_q <= flag_mem[rd_d];
   end
   assign res_word_o  = res_valid_i && head_q ? 16'd0 : res_word_i;
-  logic [2:0] frame_error_q;
+  logic [2:0] frame_error_q, frame_event_q;
+  wire        frame_taken = beat_valid_i && beat_ready_i && ctrl_busy_i;
   always_ff @(posedge clk_i) begin
     if (!rst_ni || lut_start_i || ctrl_error_set_i[3]) frame_error_q <= '0;
-    else if (beat_valid_i && beat_ready_i) frame_error_q <= frame_error_q | frame_error_i;
+    else if (frame_taken) frame_error_q <= frame_error_q | frame_error_i;
+  end
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) frame_event_q <= '0;
+    else frame_event_q <= frame_taken ? frame_error_i : 3'd0;
   end
   assign error_o     = ctrl_error_i | {1'b0, frame_error_q};
-  assign error_set_o = ctrl_error_set_i | {1'b0, rect_error_set_i};
+  assign error_set_o = ctrl_error_set_i | {1'b0, frame_event_q};
+  assign busy_o      = ctrl_busy_i || rect_busy_i;
 
 `ifndef SYNTHESIS
   // The bound of DEPTH_LOG2, checked wherever the core is simulated.

@@ -232,6 +232,7 @@ module sgm_top #(
   logic             ctrl_tuser, ctrl_tlast, ctrl_tvalid, ctrl_tready, ctrl_tside;
   logic [CFG_W-1:0] ctrl_cfg;
   logic [3:0]       ctrl_error, ctrl_error_set;
+  logic             ctrl_busy;
   logic             side0;
   logic [15:0]      res_word_out;
   if (RECTIFY != 0) begin : g_rectify
@@ -246,6 +247,8 @@ module sgm_top #(
 `endif
     logic [1:0] outside;
     logic [2:0] rect_frame_error, rect_error_set;
+    logic       rect_busy;
+    wire  [2:0] unused_rect_error_set = rect_error_set;  // the events as the join counts them instead
     sgm_rectify #(
       .MAX_WIDTH (MAX_WIDTH),
       .MAX_HEIGHT(MAX_HEIGHT),
@@ -283,6 +286,7 @@ module sgm_top #(
       .m_outside_o        (outside),
       .m_error_o          (rect_frame_error),
       .error_set_o        (rect_error_set),
+      .busy_o             (rect_busy),
       .row_miss_o         (rect_row_miss_o)
     );
     assign ctrl_tside    = outside[0];
@@ -312,7 +316,9 @@ module sgm_top #(
       .beat_ready_i    (ctrl_tready),
       .frame_error_i   (rect_frame_error),
       .lut_start_i     (lut_start),
-      .rect_error_set_i(rect_error_set),
+      .ctrl_busy_i     (ctrl_busy),
+      .rect_busy_i     (rect_busy),
+      .busy_o          (busy_o),
       .error_o         (error_o),
       .error_set_o     (error_event_o)
     );
@@ -325,6 +331,7 @@ module sgm_top #(
     assign ctrl_tside          = 1'b0;
     assign ctrl_cfg            = cfg_i;
     assign error_o             = ctrl_error;
+    assign busy_o              = ctrl_busy;
     assign error_event_o       = ctrl_error_set;
     assign res_word_out        = res_word;
     assign mesh_swap_pending_o = 1'b0;
@@ -378,7 +385,7 @@ module sgm_top #(
     .side_o        (side0),
     .res_valid_i   (res_valid),
     .res_word_i    (res_word_out),
-    .busy_o        (busy_o),
+    .busy_o        (ctrl_busy),
     .frame_done_o  (frame_done_o),
     .error_o       (ctrl_error),
     .error_set_o   (ctrl_error_set)

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <random>
 
 namespace sgm::tb {
@@ -41,6 +42,25 @@ inline void shrinkMesh(Mesh& m, double factor) {
   const double cx = (m.width - 1) * 16.0, cy = (m.height - 1) * 16.0;  // the centre in 1/32 px
   for (int32_t& u : m.u) u = int32_t(std::lround(cx + (u - cx) * factor));
   for (int32_t& v : m.v) v = int32_t(std::lround(cy + (v - cy) * factor));
+}
+
+// A calibration of smooth random meshes (smoothMesh, the left and the right) for w x h frames
+// that fits a line buffer of `rows` rows (sgm::lineBufferRows <= rows; the strongest such,
+// from `strength` down), each pulled inside the source by `inside` (1: not); lag receives
+// the pair's lag (RECTIFY.LAG).
+inline std::shared_ptr<StereoMesh> fittingCalibration(int w, int h, int gridLog2, int rows, double strength,
+                                                      double inside, std::mt19937& rng, int* lag) {
+  for (;; strength *= 0.8) {
+    auto mesh = std::make_shared<StereoMesh>();
+    mesh->left = smoothMesh(w, h, gridLog2, strength, rng);
+    mesh->right = smoothMesh(w, h, gridLog2, strength, rng);
+    shrinkMesh(mesh->left, inside), shrinkMesh(mesh->right, inside);
+    const RowSpan span = stereoRowSpan(*mesh);
+    if (lineBufferRows(span) <= rows) {
+      *lag = span.lag;
+      return mesh;
+    }
+  }
 }
 
 }  // namespace sgm::tb

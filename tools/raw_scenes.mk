@@ -20,7 +20,7 @@ raw-scenes: golden
 	  if [ ! -f $$d/left.png ] || [ ! -f $$d/right.png ]; then echo "raw-scenes: $$s: no left.png and right.png under $(DATA), skipped"; continue; fi; \
 	  $(BIN)/sgm-eval raw-scene --left $$d/left.png --right $$d/right.png --out $(RAW_OUT)/raw/$$s >/dev/null || exit 1; \
 	  echo "raw-scenes: $$s"; \
-	  $(BIN)/sgm-eval calib-mesh --calib $(RAW_OUT)/raw/$$s --size-of $$d/left.png --grid $(RAW_GRID) --out $(RAW_OUT)/mesh/$$s | sed -n '2,3p' || exit 1; \
+	  $(BIN)/sgm-eval calib-mesh --calib $(RAW_OUT)/raw/$$s --size-of $$d/left.png --grid $(RAW_GRID) --out $(RAW_OUT)/mesh/$$s | sed -n '2,4p' || exit 1; \
 	  $(BIN)/sgm-eval rectify --mesh $(RAW_OUT)/mesh/$$s/mesh.bin --left $(RAW_OUT)/raw/$$s/left.png \
 	    --right $(RAW_OUT)/raw/$$s/right.png --out $(RAW_OUT)/rectified/$$s >/dev/null || exit 1; \
 	  for f in gt.png nonocc.png all.png disc.png meta.txt; do [ ! -e $$d/$$f ] || ln -s $$d/$$f $(RAW_OUT)/rectified/$$s/$$f; done; \

@@ -10,6 +10,7 @@
 #include "axil_bfm.hpp"
 #include "core_harness.hpp"
 #include "malformed_frames.hpp"
+#include "rectify_meshes.hpp"
 #include "sgm_driver.hpp"
 #include "sgm_regs.h"
 #include "synthetic_scene.hpp"
@@ -51,6 +52,7 @@ sgm::Params withBuildLevers(sgm::Params p) {
   if (!Rtl::EDGE_RESET) p.edgeReset.threshold = 0;
   if (!Rtl::DEPTH) p.output = sgm::OutputMode::kDisparity;
   if (!Rtl::MIN_DISPARITY) p.minDisparity = 0;
+  if (!Rtl::RECTIFY) p.rectify = false, p.rectifyLag = 0;
   return p;
 }
 
@@ -141,6 +143,14 @@ struct AxiCore {
       busyWhenConfigured.push_back(driver.busy());
       if (!enabled) driver.enable(enabled = true);
     });
+    // A calibration's meshes through the driver (MESH_* registers, docs/registers.md).
+    core.setMeshLoader([this](const sgm::StereoMesh& mesh) {
+      const auto image = [](const sgm::Mesh& m) {
+        return drv::MeshImage{uint32_t(m.nodesX), uint32_t(m.nodesY), m.u.data(), m.v.data()};
+      };
+      if (!driver.loadMeshes(image(mesh.left), image(mesh.right), 200000))
+        throw sgm::Error("the driver could not load the meshes (MESH_CTRL.PENDING stayed 1)");
+    });
   }
 
   static sgm::tb::AxilResponse okay(sgm::tb::AxilResponse r, uint32_t addr) {
@@ -151,14 +161,19 @@ struct AxiCore {
   void steps(int n) {
     for (int i = 0; i < n; ++i) core.step();
   }
-  // Every frame bit-exact against the golden model.
+  // Every frame bit-exact against the golden model (a rectified frame: against the meshes
+  // loaded last, `calibration`).
   void expectBitExact(const std::vector<FrameInput>& frames, const std::string& what) {
     const std::vector<sgm::tb::FrameOutput> out = core.run(frames);
-    for (size_t k = 0; k < frames.size(); ++k)
-      EXPECT_EQ(sgm::tb::compareOutput(sgm::runPipeline(frames[k].left, frames[k].right, frames[k].params),
-                                       frames[k].params, out[k], "sgm_axi output"),
-                "")
-          << what << ", frame " << k;
+    std::shared_ptr<const sgm::StereoMesh> calibration;
+    for (size_t k = 0; k < frames.size(); ++k) {
+      if (frames[k].mesh) calibration = frames[k].mesh;
+      const sgm::Params& p = frames[k].params;
+      const sgm::DisparityMap golden =
+          p.rectify ? sgm::runRectifiedPipeline(frames[k].left, frames[k].right, *calibration, p)
+                    : sgm::runPipeline(frames[k].left, frames[k].right, p);
+      EXPECT_EQ(sgm::tb::compareOutput(golden, p, out[k], "sgm_axi output"), "") << what << ", frame " << k;
+    }
   }
   ~AxiCore() { EXPECT_EQ(bus.finish(), "") << "AXI4-Lite protocol"; }
 };
@@ -424,7 +439,8 @@ TEST(SgmAxi, ReadBackReservedBitsAndWriteStrobes) {
   std::mt19937 rng(9);
   for (const RegisterSpec& r : registers()) {
     const bool w1c = r.offset == SGM_REG_ERROR || r.offset == SGM_REG_IRQ_STATUS || r.offset == SGM_REG_ERROR_COUNT;
-    if (w1c || r.offset == SGM_REG_MESH_V) continue;  // MESH_V: MeshRegistersStoreNodes
+    // MESH_V stores a node, MESH_CTRL swaps: MeshRegistersAndRectifiedFrames.
+    if (w1c || r.offset == SGM_REG_MESH_V || r.offset == SGM_REG_MESH_CTRL) continue;
     const uint32_t before = c.bus.read(r.offset).data;
     std::vector<uint32_t> patterns = {0xFFFFFFFFu, 0u, 0xA5A5A5A5u, 0x5A5A5A5Au};
     for (int i = 0; i < 6; ++i) patterns.push_back(uint32_t(rng()));
@@ -513,7 +529,7 @@ TEST(SgmAxi, UndefinedAddressesAnswerSlverrAndChangeNothing) {
     EXPECT_EQ(read.data, 0u) << "read 0x" << std::hex << a;
     EXPECT_EQ(c.bus.write(a, 0xFFFFFFFFu).resp, sgm::tb::kAxilSlvErr) << "write 0x" << std::hex << a;
   }
-  EXPECT_EQ(undefined, 64 - 24);  // the 24 registers of regmap/sgm_regmap.def
+  EXPECT_EQ(undefined, 64 - int(registers().size()));  // every register of regmap/sgm_regmap.def
   for (size_t k = 0; k < registers().size(); ++k)
     EXPECT_EQ(c.bus.read(registers()[k].offset).data, before[k]) << registers()[k].name;
   // Address bits [1:0] are ignored.
@@ -524,6 +540,56 @@ TEST(SgmAxi, UndefinedAddressesAnswerSlverrAndChangeNothing) {
 // Four parameter sets back to back; each frame's configuration is written
 // while the previous frame streams, and every frame is bit-exact with its own
 // parameters: a write takes effect from the next start of frame only.
+// The mesh registers: MESH_V stores the node and steps MESH_ADDR.COL (not ROW, not RIGHT),
+// a write of MESH_ADDR sets it, MESH_V and MESH_U read back; in a build with the rectification
+// (RECTIFY = 1) raw pairs through calibrations the driver loads (loadMeshes) while earlier
+// frames stream are bit-exact, MESH_CTRL.PENDING drops once the core runs on the last one and
+// ROW_MISS stays 0; in a build without it, a frame that asks for it is dropped (ERROR.CONFIG).
+TEST(SgmAxi, MeshRegistersAndRectifiedFrames) {
+  AxiCore c("sgm_axi_mesh");
+  const uint32_t addr = SGM_PUT(MESH_ADDR_COL, 4094u) | SGM_PUT(MESH_ADDR_ROW, 7u) | SGM_PUT(MESH_ADDR_RIGHT, 1u);
+  c.driver.enable(true);
+  c.bus.write(SGM_REG_MESH_ADDR, addr);
+  c.bus.write(SGM_REG_MESH_U, 0xFFFFFFFFu);
+  for (int k = 0; k < 3; ++k) c.bus.write(SGM_REG_MESH_V, 0x12345u + uint32_t(k));
+  EXPECT_EQ(c.bus.read(SGM_REG_MESH_U).data, uint32_t(SGM_MESH_U_MASK));
+  EXPECT_EQ(c.bus.read(SGM_REG_MESH_V).data, (0x12345u + 2) & uint32_t(SGM_MESH_V_MASK));
+  EXPECT_EQ(c.bus.read(SGM_REG_MESH_ADDR).data,
+            SGM_PUT(MESH_ADDR_COL, 1u) | SGM_PUT(MESH_ADDR_ROW, 7u) | SGM_PUT(MESH_ADDR_RIGHT, 1u))
+      << "three stores from column 4094: the column wraps at 12 bits, row and image stay";
+  std::mt19937 rng(51);
+  const sgm::Params base = withBuildLevers(defaults());
+  if (!Rtl::RECTIFY) {
+    sgm::Params p = base;
+    p.rectify = true;
+    FrameInput f = scene(40, 11, 61, p);
+    f.dropped = true;
+    c.core.run({f, scene(40, 11, 62, base)});
+    EXPECT_TRUE(c.driver.errors().sticky & SGM_ERROR_CONFIG) << "a rectified frame in a build without it";
+    return;
+  }
+  std::vector<FrameInput> frames;
+  for (int k = 0; k < 4; ++k) {
+    const int w = k == 2 ? 48 : 40, h = k == 2 ? 13 : 11;
+    sgm::Params p = base;
+    p.rectify = true;
+    FrameInput f = scene(w, h, 70 + uint32_t(k), p);
+    if (k != 1) {  // frame 1 keeps frame 0's calibration
+      int lag = 0;
+      f.mesh = sgm::tb::fittingCalibration(w, h, Rtl::RECTIFY_GRID_LOG2, Rtl::RECTIFY_ROWS, 1.0, 0.95, rng, &lag);
+      f.params.rectifyLag = lag;
+    } else {
+      f.params.rectifyLag = frames[0].params.rectifyLag;
+    }
+    frames.push_back(f);
+  }
+  c.expectBitExact(frames, "rectified through the driver's meshes");
+  c.steps(50);
+  EXPECT_FALSE(c.driver.meshSwapPending());
+  EXPECT_FALSE(c.driver.rectifyRowMiss());
+  EXPECT_EQ(c.driver.errors().sticky, 0u);
+}
+
 TEST(SgmAxi, ConfigurationWrittenMidFrameActsFromTheNextFrame) {
   AxiCore c("sgm_axi_midframe", 4, {0.15, 0.15});
   sgm::Params unified = defaults();

@@ -418,21 +418,6 @@ TEST(SgmTop, MinDisparityIsExact) {
   EXPECT_EQ(below, 0);
 }
 
-// A calibration of random smooth meshes for w x h frames that fits the build's line buffer
-// (every mesh's rows within lag + 2 - R .. lag), pulled inside the source by `inside` (1: not).
-std::shared_ptr<sgm::StereoMesh> fittingCalibration(int w, int h, double strength, double inside, std::mt19937& rng,
-                                                    int* lag) {
-  for (;; strength *= 0.8) {
-    auto mesh = std::make_shared<sgm::StereoMesh>();
-    mesh->left = sgm::tb::smoothMesh(w, h, kRectifyGridLog2, strength, rng);
-    mesh->right = sgm::tb::smoothMesh(w, h, kRectifyGridLog2, strength, rng);
-    sgm::tb::shrinkMesh(mesh->left, inside), sgm::tb::shrinkMesh(mesh->right, inside);
-    const sgm::RowSpan l = sgm::meshRowSpan(mesh->left), r = sgm::meshRowSpan(mesh->right);
-    *lag = std::max({0, l.lag, r.lag});
-    if (std::min(l.back, r.back) >= *lag + 2 - kRectifyRows) return mesh;
-  }
-}
-
 // The rectification (RECTIFY = 1): raw pairs of several sizes back to back with stalls, each
 // through a calibration loaded before it (or the one before it kept), a pair that passes
 // through unrectified between them, one whose left image is shifted so that a band of its
@@ -456,7 +441,8 @@ TEST(SgmTop, RawPairsThroughTheirMeshesAreExact) {
       f.params.rectifyLag = frames.back().params.rectifyLag;  // keeps the calibration before it
     } else {
       int lag = 0;
-      auto mesh = fittingCalibration(w, h, 1.0 + 0.5 * (k % 3), k == 7 ? 1.0 : 0.95, rng, &lag);
+      auto mesh = sgm::tb::fittingCalibration(w, h, kRectifyGridLog2, kRectifyRows, 1.0 + 0.5 * (k % 3),
+                                              k == 7 ? 1.0 : 0.95, rng, &lag);
       if (k == 7)  // the left image's sources 5.5 px to the right: its last columns outside
         for (int32_t& u : mesh->left.u) u += 5 * 32 + 16;
       f.params.rectifyLag = std::max(lag, sgm::meshRowSpan(mesh->left).lag);
