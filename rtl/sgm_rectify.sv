@@ -13,23 +13,24 @@
 // line) writes source rows into the buffer as one stream of rows across frames: a frame's
 // row 0 follows the previous frame's last row. Output row y of a frame starts when its source
 // rows 0 .. y + lag are in (or the frame's input is complete), and the input waits while it
-// is lag + 1 rows ahead of the output row (counting the rows of the frame before). So the
-// next frame's input runs while the previous frame's last lag + 1 output rows leave: no flush
-// between frames (a lag above ROWS - 2 is taken as ROWS - 2, so that a frame's input is never
-// more than ROWS - 1 rows ahead of its first output row). The calibration must read no row
-// outside y + lag + 2 -
-// ROWS .. y + lag (sgm-eval calib-mesh: rows + 1 <= ROWS); a read outside sets row_miss_o
-// (sticky from the frame's first pixel's read to the next frame's).
+// is lag + 1 rows ahead of the row being read (counting the rows of the frame before), or
+// lag + 1 rows into a frame the output has not started. So the next frame's input runs while
+// the previous frame's last rows leave: no flush between frames. A lag above ROWS - 2 is
+// taken as ROWS - 2. The calibration must read no row outside y + lag + 2 - ROWS .. y + lag
+// (sgm::lineBufferRows <= ROWS); a read outside sets row_miss_o (sticky from the frame's
+// first pixel's read to the next frame's).
 //
 // Frame side band: width_i, height_i, lag_i, enable_i and info_i (INFO_W bits the core's
 // stages need beside the frame, sgm_top's frame configuration word) are sampled with the
-// input's start of frame; info_o is the output frame's, from its first beat to the next frame's. The input's framing is checked against width_i and height_i:
-// tlast before the last column (error_set_o[0]), no tlast at the last column ([1]), tuser
-// inside a frame ([2]; it starts the next frame). A row ends at tlast or at its last column;
-// a tlast error abandons the frame: its other beats, and beats after the last row, are
-// dropped until the next tuser (the rows not written are stale), and the output frame is
-// always width x height beats (a width or height of 0 is taken as 1). m_error_o carries the
-// frame's errors (a tuser inside it among them) on its last beat, 0 on every other beat.
+// input's start of frame; info_o is the output frame's, from its first beat to the next
+// frame's. The input's framing is checked against width_i and height_i: tlast before the last
+// column (error_set_o[0]), no tlast at the last column ([1]), tuser inside a frame ([2]; it
+// starts the next frame). A row ends at tlast or at its last column; a tlast error abandons
+// the frame: its other beats, and beats after the last row, are dropped until the next tuser
+// (the rows not written are stale), and the output frame is always width x height beats (a
+// width or height of 0 is taken as 1). m_error_o carries the frame's errors (a tuser inside
+// it among them) on its last beat, 0 on every other beat. busy_o: a frame is in or on its way
+// out.
 //
 // The mesh: NX x NY nodes per copy and channel (the frame's ((W-1) >> GRID_LOG2) + 2 used),
 // written through mesh_we_i (mesh_channel_i selects the image) into the copy the newest
@@ -40,8 +41,9 @@
 // Parameters: MAX_WIDTH, MAX_HEIGHT (frame), ROWS (line buffer rows, a power of two, 4 ..
 // 256), GRID_LOG2 (mesh step 2^GRID_LOG2 px, 2 .. 6), CHANNELS (images, 1 or 2), INFO_W.
 // Throughput: one pixel per clock within a row; 5 cycles at each output row's start (its
-// rows checked, the first three mesh columns fetched) and 2 at each output frame's. Latency: output row y follows input row
-// y + lag + 1, 4 + 3 cycles from a row's start to its first pixel.
+// rows checked, the first three mesh columns fetched) and 2 at each output frame's.
+// Latency: output row y follows input row y + lag + 1; 5 + 3 cycles from a row's start to
+// its first pixel.
 `default_nettype none
 
 module sgm_rectify #(

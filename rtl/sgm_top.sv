@@ -5,7 +5,8 @@
 // Yao & Cheng, one pixel per clock (docs/algorithm.md defines every bit,
 // docs/rtl.md the architecture).
 //
-//   s_axis (left + right gray) -> sgm_stream_ctrl [-> sgm_lane_deal, LANES > 1] -> 2 x sgm_census_unit
+//   s_axis (left + right gray) [-> sgm_rectify, RECTIFY = 1] -> sgm_stream_ctrl [-> sgm_lane_deal, LANES > 1]
+//   -> 2 x sgm_census_unit
 //   -> sgm_cost_volume (D PEs) -> sgm_path_engine (4 paths, S) -> sgm_wta
 //   -> sgm_lr_check -> sgm_hole_fill -> sgm_edge_snap -> sgm_median5x5 [-> sgm_depth, DEPTH = 1]
 //   -> sgm_stream_ctrl -> m_axis
@@ -47,9 +48,19 @@
 // the LR check's bound is x - dmin - d >= 0, and the disparity is the true one from the WTA
 // on (DW = ceil(log2(D + 256)) + 4 bits in the stages behind it). 0 leaves it out (the
 // default), and a frame with dmin != 0 is dropped with error_o[3].
+// RECTIFY = 1 builds the rectification in the stream (sgm_rectify, docs/algorithm.md section
+// 13; docs/rtl.md "Rectification in the stream"): the input is a raw pair, each image resampled
+// through its mesh (RECTIFY_GRID_LOG2: the mesh step; the meshes through the mesh port, one
+// node a cycle into the copy not in use, then mesh_swap_i) from a line buffer of RECTIFY_ROWS
+// rows; run-time RECTIFY.ENABLE (0: the pair passes) and RECTIFY.LAG (at most RECTIFY_ROWS -
+// 2). cfg_i is then sampled with the raw frame's first beat and travels with the frame to the
+// stream controller; sgm_rectify_join makes the word of a pixel whose left source lies
+// outside the raw image 0 and counts the raw framing errors (sgm_rectify checks them) for the
+// frame. 0 leaves it out (the default), and a frame with RECTIFY.ENABLE or LAG not 0 is
+// dropped with error_o[3].
 // Configuration: cfg_i, the frame configuration word (rtl/sgm_cfg.svh, generated from
 // regmap/sgm_regmap.def; its fields are the read-write fields of sgm_axi's FRAME_SIZE,
-// PENALTY, CONFIG, EDGE_RESET, OUTPUT, DEPTH_FOCAL, DEPTH_BASELINE and MIN_DISPARITY,
+// PENALTY, CONFIG, EDGE_RESET, OUTPUT, DEPTH_FOCAL, DEPTH_BASELINE, MIN_DISPARITY and RECTIFY,
 // docs/registers.md), taken at each start of frame by
 // sgm_stream_ctrl, which checks it and latches it whole; this module slices the latched
 // word for the stages by the generated CFG_<REGISTER>_<FIELD>_LSB / _W.
@@ -195,6 +206,12 @@ module sgm_top #(
   end
   if (!(RECTIFY == 0 || RECTIFY == 1)) begin : g_bad_rectify
     $error("sgm_top: RECTIFY = %0d: RECTIFY must be 0 or 1", RECTIFY);
+  end
+  if (RECTIFY != 0 && !(RECTIFY_ROWS >= 4 && RECTIFY_ROWS <= 256 && (RECTIFY_ROWS & (RECTIFY_ROWS - 1)) == 0)) begin : g_bad_rectify_rows
+    $error("sgm_top: RECTIFY_ROWS = %0d: RECTIFY_ROWS must be a power of two from 4 to 256", RECTIFY_ROWS);
+  end
+  if (RECTIFY != 0 && !(RECTIFY_GRID_LOG2 >= 2 && RECTIFY_GRID_LOG2 <= 6)) begin : g_bad_rectify_grid
+    $error("sgm_top: RECTIFY_GRID_LOG2 = %0d: RECTIFY_GRID_LOG2 must be 2 .. 6 (mesh steps of 4 .. 64 px)", RECTIFY_GRID_LOG2);
   end
   if (!(RIGHT_BLOCK == 0 || (RIGHT_BLOCK >= 2 && (RIGHT_BLOCK & (RIGHT_BLOCK - 1)) == 0))) begin : g_bad_right_block
     $error("sgm_top: RIGHT_BLOCK = %0d: RIGHT_BLOCK must be 0 (no fifth path) or a power of two >= 2", RIGHT_BLOCK);

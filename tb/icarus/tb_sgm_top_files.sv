@@ -42,6 +42,7 @@ module tb_sgm_top_files #(
   wire  [3:0]    error, error_event;
   wire  [XW-1:0] frame_width;
   wire  [YW-1:0] frame_height;
+  wire           mesh_pending, rect_row_miss;
 
   sgm_top #(.D(D), .MAX_WIDTH(MAX_WIDTH), .MAX_HEIGHT(MAX_HEIGHT), .RIGHT_BLOCK(RIGHT_BLOCK)) dut (
     .clk_i         (clk),
@@ -57,6 +58,15 @@ module tb_sgm_top_files #(
     .m_tvalid_o    (m_tvalid),
     .m_tready_i    (m_tready),
     .cfg_i         (cfg_word),
+    .mesh_we_i     (1'b0),  // no rectification in this build
+    .mesh_channel_i(1'b0),
+    .mesh_row_i    (12'd0),
+    .mesh_col_i    (12'd0),
+    .mesh_u_i      (18'd0),
+    .mesh_v_i      (18'd0),
+    .mesh_swap_i   (1'b0),
+    .mesh_swap_pending_o(mesh_pending),
+    .rect_row_miss_o(rect_row_miss),
     .busy_o        (busy),
     .frame_done_o  (frame_done),
     .error_o       (error),

@@ -169,9 +169,9 @@ struct AxiCore {
     for (size_t k = 0; k < frames.size(); ++k) {
       if (frames[k].mesh) calibration = frames[k].mesh;
       const sgm::Params& p = frames[k].params;
-      const sgm::DisparityMap golden =
-          p.rectify ? sgm::runRectifiedPipeline(frames[k].left, frames[k].right, *calibration, p)
-                    : sgm::runPipeline(frames[k].left, frames[k].right, p);
+      const sgm::DisparityMap golden = p.rectify
+                                           ? sgm::runRectifiedPipeline(frames[k].left, frames[k].right, *calibration, p)
+                                           : sgm::runPipeline(frames[k].left, frames[k].right, p);
       EXPECT_EQ(sgm::tb::compareOutput(golden, p, out[k], "sgm_axi output"), "") << what << ", frame " << k;
     }
   }
