@@ -38,4 +38,15 @@ raw-scenes-ci:
 	@if [ -f "$(DATA)/venus/left.png" ]; then $(MAKE) --no-print-directory raw-scenes RAW_SCENES=venus RAW_OUT=$(BUILD)/raw-scenes-ci; \
 	 else echo "raw-scenes-ci: skipped: no venus scene under DATA='$(DATA)'"; fi
 
-TEST_EXTRA += raw-scenes-ci
+# CI: the raw venus pair through the core's rectification (make sim CALIB=, a D = 64 build with
+# the rectification and the depth output), bit-exact with the golden model or it fails.
+.PHONY: sim-calib-ci
+sim-calib-ci: raw-scenes-ci
+	@if [ -f "$(DATA)/venus/left.png" ]; then \
+	  $(MAKE) --no-print-directory sim D=64 MAX_WIDTH=512 MAX_HEIGHT=384 DEPTH=1 OUT=$(BUILD)/sim-calib-ci \
+	    LEFT=$(BUILD)/raw-scenes-ci/raw/venus/left.png RIGHT=$(BUILD)/raw-scenes-ci/raw/venus/right.png \
+	    CALIB=$(BUILD)/raw-scenes-ci/raw/venus GT=$(DATA)/venus/gt.png \
+	    GT_SCALE=$$(sed -n 's/^gt_scale: \([0-9]*\).*/\1/p' $(DATA)/venus/meta.txt) STALL= SEED= FRAMES=; \
+	 else echo "sim-calib-ci: skipped: no venus scene under DATA='$(DATA)'"; fi
+
+TEST_EXTRA += sim-calib-ci
