@@ -117,6 +117,7 @@ TEST_F(SgmSimCli, ParametersTheBuildOrTheCoreCannotTake) {
       {{"--dmin", "4"}, "built without the minimum disparity (make sim MIN_DISPARITY=1"},
       {{"--output", "depth"}, "built without the depth output (make sim DEPTH=1"},
       {{"--output", "range"}, "unknown output 'range'"},
+      {{"--calib", "somewhere"}, "built without the rectification (make sim RECTIFY=1"},
       {{"--focal", "16777216"}, "--focal=16777216 out of range"},
       {{"--dmin", "256"}, "--dmin=256 out of range"},
       {{"--lr-store-bits", "3"}, "stored Lr bits 3 out of range"},
@@ -137,6 +138,7 @@ TEST_F(SgmSimCli, ParametersTheBuildOrTheCoreCannotTake) {
     expectSimError(sim("left.png", "right.png", opts), needle);
   }
   expectSimError(run(kSim, {"--left", in("left.png")}), "give both --left and --right");
+  expectSimError(run(kSim, {"--calib", in("calib")}), "--calib needs the raw pair: --left and --right");
 }
 
 TEST_F(SgmSimCli, UnusableOutputDirectoryFailsBeforeSimulating) {
