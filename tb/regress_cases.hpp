@@ -14,12 +14,14 @@
 #include "Vsgm_top_sgm_top.h"
 #include "core_harness.hpp"
 #include "malformed_frames.hpp"
+#include "rectify_meshes.hpp"
 
 #include "eval_lib.hpp"
 #include "synthetic_scene.hpp"
 
 #include "sgm/pipeline.hpp"
 
+#include <random>
 #include <set>
 #include <sstream>
 #include <string>
@@ -109,6 +111,21 @@ Params drawParams(Rng& rng) {
   return p;
 }
 
+// Rectification in the stream (a build with RECTIFY = 1): a third of the frames are raw pairs
+// through a calibration of their own, random smooth meshes that fit the build's line buffer,
+// pulled inside the source or not (pixels whose source is outside: word 0).
+// Drawn in every build (a case is the same in every build but for it).
+void drawRectification(Rng& rng, tb::FrameInput& in) {
+  const bool rectify = rng.chance(1.0 / 3);
+  std::mt19937 meshRng(uint32_t(rng.next()));
+  const double strength = rng.real() * 2.0, inside = rng.chance(0.5) ? 1.0 : 0.9;
+  if (!Vsgm_top_sgm_top::RECTIFY || !rectify) return;
+  int lag = 0;
+  in.mesh = tb::fittingCalibration(in.left.cols, in.left.rows, Vsgm_top_sgm_top::RECTIFY_GRID_LOG2,
+                                   Vsgm_top_sgm_top::RECTIFY_ROWS, strength, inside, meshRng, &lag);
+  in.params.rectify = true, in.params.rectifyLag = lag;
+}
+
 std::string paramText(const Params& p) {
   std::ostringstream t;
   t << costModeName(p.mode) << " P1=" << p.p1 << " P2'=" << p.p2 << " sub=" << p.subpixel << " lr=" << p.lrTolerance
@@ -118,6 +135,7 @@ std::string paramText(const Params& p) {
     << p.rightPathBlock << " restart=" << p.edgeReset.threshold << "/" << p.edgeReset.length << "/";
   for (int on : p.edgeReset.paths) t << on;
   t << " dmin=" << p.minDisparity << " output=" << outputModeName(p.output);
+  if (p.rectify) t << " rectified lag " << p.rectifyLag;
   if (p.output == OutputMode::kDepth) t << "/" << p.focalQ8 << "/" << p.baselineUm;
   return t.str();
 }
@@ -135,6 +153,7 @@ Frame goodFrame(Rng& rng, int maxHeight) {
   const uint32_t sceneSeed = uint32_t(rng.next());
   const synth::SyntheticScene scene = synth::makeSyntheticScene(w, h, kD, sceneSeed);
   Frame f{tb::FrameInput{scene.left, scene.right, drawParams(rng)}, 0, true, "", scene};
+  drawRectification(rng, f.input);
   f.text = std::to_string(w) + "x" + std::to_string(h) + " scene " + std::to_string(sceneSeed) + " " +
            paramText(f.input.params);
   return f;
@@ -193,7 +212,9 @@ Case drawCase(uint64_t master, uint64_t index, int maxHeight) {
 struct Totals {
   long cases = 0, failed = 0, goodFrames = 0, pixels = 0, malformed = 0, resets = 0;
   long depthFrames = 0, minDisparityFrames = 0;  // good frames with the depth output, with dmin != 0
-  double badNonocc = 0;                          // sum over good frames of bad-1.0 (nonocc) vs the scene ground truth
+  long rectifiedFrames = 0;                      // good frames rectified in the core
+  double badNonocc = 0;   // sum over the good frames not rectified of bad-1.0 (nonocc) vs the scene ground truth
+  long scoredFrames = 0;  // those frames
   std::set<std::string> kinds, sourceStalls, sinkStalls;
   std::set<int> combinations, widths;
   int minHeight = 1 << 30, maxHeight = 0;
@@ -203,6 +224,10 @@ struct Totals {
 // against the golden stages (which stage the core's output agrees with).
 // result: the golden output map (what the core's words encode).
 std::string checkGoodFrame(const tb::FrameInput& in, const tb::FrameOutput& out, DisparityMap& result) {
+  if (in.params.rectify) {  // a raw pair through its calibration: the whole chain
+    result = runRectifiedPipeline(in.left, in.right, *in.mesh, in.params);
+    return tb::compareOutput(result, in.params, out, "sgm_top output (rectified)");
+  }
   const PipelineStages golden = runPipelineStages(in.left, in.right, in.params);
   result = golden.result;
   long mismatches = 0;
@@ -244,12 +269,16 @@ std::string runCase(const Case& c, Totals& totals) {
     DisparityMap map;  // the core's map: equal to the golden one, as checked
     const std::string mismatch = checkGoodFrame(f.input, outputs[k], map);
     if (!mismatch.empty()) return where + mismatch;
-    totals.badNonocc += eval::evaluate(eval::toFloat(map), synth::toEvalScene(f.scene, "synthetic")).errNonocc;
+    if (!f.input.params.rectify) {  // the scene's ground truth is in the frame of the pair as sent
+      totals.badNonocc += eval::evaluate(eval::toFloat(map), synth::toEvalScene(f.scene, "synthetic")).errNonocc;
+      ++totals.scoredFrames;
+    }
     ++totals.goodFrames;
     totals.pixels += long(f.input.left.total());
     totals.combinations.insert(paramCombination(f.input.params));
     totals.depthFrames += f.input.params.output == OutputMode::kDepth;
     totals.minDisparityFrames += f.input.params.minDisparity != 0;
+    totals.rectifiedFrames += f.input.params.rectify;
     totals.widths.insert(f.input.left.cols);
     totals.minHeight = std::min(totals.minHeight, f.input.left.rows);
     totals.maxHeight = std::max(totals.maxHeight, f.input.left.rows);

@@ -123,13 +123,13 @@ int main(int argc, char** argv) {
               << kMinWidth << ".." << kMaxWidth << ", heights " << totals.minHeight << ".." << totals.maxHeight << "), "
               << totals.malformed << " malformed frames flagged, " << totals.resets
               << " resets mid-frame; mean bad-1.0 (non-occluded) vs the scenes' ground truth "
-              << (totals.goodFrames ? totals.badNonocc / double(totals.goodFrames) : 0.0) << " %; "
+              << (totals.scoredFrames ? totals.badNonocc / double(totals.scoredFrames) : 0.0) << " %; "
               << totals.combinations.size()
               << " of 96 switch combinations (mode x sub-pixel x LR x fill x median x snap); " << totals.depthFrames
-              << " depth frames, " << totals.minDisparityFrames << " with a minimum disparity; stalls: source "
-              << totals.sourceStalls.size() << " of 5, sink " << totals.sinkStalls.size()
-              << " of 5 profiles; case kinds " << totals.kinds.size() << "; " << seconds << " s; master seed " << master
-              << "\n";
+              << " depth frames, " << totals.minDisparityFrames << " with a minimum disparity, "
+              << totals.rectifiedFrames << " rectified; stalls: source " << totals.sourceStalls.size() << " of 5, sink "
+              << totals.sinkStalls.size() << " of 5 profiles; case kinds " << totals.kinds.size() << "; " << seconds
+              << " s; master seed " << master << "\n";
     if (!xmlPath.empty()) writeXml(xmlPath, results);
     return totals.failed ? 1 : 0;
   } catch (const std::exception& e) {
