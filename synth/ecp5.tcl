@@ -52,8 +52,9 @@ yosys hierarchy -check -top sgm_top
 yosys tee -q -o $out/top.stat.txt stat -top sgm_top
 # As synth_ecp5 ends: the primitives stay as black boxes (their port directions).
 yosys blackbox =A:whitebox
-# Without the rectification (sgm_top RECTIFY = 0) its mesh port reaches nothing: it gets no
-# pins (65 IOs a package may not have).
+# Ports that carry nothing get no pins (IOs a package may not have): min_width_o, a constant
+# of the build, and without the rectification (sgm_top RECTIFY = 0) its mesh port.
+yosys delete -port sgm_top/w:min_width_o
 if {$rectify eq "" || $rectify == 0} {
   yosys delete -port sgm_top/w:mesh_* sgm_top/w:rect_row_miss_o
 }

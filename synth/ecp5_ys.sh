@@ -111,6 +111,8 @@ echo "read_verilog -lib -specify +/ecp5/cells_sim.v +/ecp5/cells_bb.v"
 echo "hierarchy -check -top sgm_top"
 echo "tee -q -o $out/top.stat.txt stat -top sgm_top"
 echo "blackbox =A:whitebox"
-# Without the rectification (sgm_top RECTIFY = 0) its mesh port reaches nothing: no pins.
+# Ports that carry nothing get no pins: min_width_o (a constant of the build), and without the
+# rectification (sgm_top RECTIFY = 0) its mesh port.
+echo "delete -port sgm_top/w:min_width_o"
 [ "${SYNTH_RECTIFY:-0}" != 0 ] || echo "delete -port sgm_top/w:mesh_* sgm_top/w:rect_row_miss_o"
 echo "write_json $out/netlist.json"
