@@ -278,8 +278,8 @@ $(eval $(call rtl_test,top-d16-lean,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=
 # (its defaults run weight 4; the settings, parameter sets and regression vary it); the first
 # also has the depth output (DEPTH = 1), both the minimum disparity (MIN_DISPARITY = 1) and the
 # rectification (RECTIFY = 1: line buffers of 16 rows and mesh steps of 8 px, 8 rows and 4 px).
-$(eval $(call rtl_test,top-d16-rb8,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GRIGHT_BLOCK=8 -GEDGE_RESET=1 -GDEPTH=1 -GMIN_DISPARITY=1 -GRECTIFY=1 -GRECTIFY_ROWS=16 -GRECTIFY_GRID_LOG2=3 -CFLAGS -DSGM_D=16))
-$(eval $(call rtl_test,top-d16-k2-rb16,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GLANES=2 -GRIGHT_BLOCK=16 -GEDGE_RESET=1 -GMIN_DISPARITY=1 -GRECTIFY=1 -GRECTIFY_ROWS=8 -GRECTIFY_GRID_LOG2=2 -CFLAGS -DSGM_D=16))
+$(eval $(call rtl_test,top-d16-rb8,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GRIGHT_BLOCK=8 -GEDGE_RESET=1 -GDEPTH=1 -GMIN_DISPARITY=1 -GRECTIFY=1 -GRECTIFY_ROWS=16 -GRECTIFY_GRID_LOG2=3 -GCONFIDENCE=1 -CFLAGS -DSGM_D=16))
+$(eval $(call rtl_test,top-d16-k2-rb16,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GLANES=2 -GRIGHT_BLOCK=16 -GEDGE_RESET=1 -GMIN_DISPARITY=1 -GRECTIFY=1 -GRECTIFY_ROWS=8 -GRECTIFY_GRID_LOG2=2 -GCONFIDENCE=1 -CFLAGS -DSGM_D=16))
 # The reference builds (scripts/refs.mk), each whole (its D, lanes, MAX_WIDTH, features and,
 # for the ECP5 ones, the ECP5 flow's register-chain delays): what `make pnr-ref` routes is
 # what is tested, with frames up to its MAX_WIDTH.
@@ -294,7 +294,7 @@ $(foreach r,$(REF_NAMES),$(eval $(BIN)/rtl-ref-$(r): scripts/refs.mk))
 # its FEATURES back and has the frames that ask for a missing lever dropped.
 $(eval $(call rtl_test,axi-d16,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
 $(eval $(call rtl_test,axi-d16-lean,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GUNIQUENESS=0 -GAD_TERM=0 -GEDGE_RESET=0 -GRIGHT_BLOCK=0 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
-$(eval $(call rtl_test,axi-d16-rb16,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GRIGHT_BLOCK=16 -GEDGE_RESET=1 -GDEPTH=1 -GMIN_DISPARITY=1 -GRECTIFY=1 -GRECTIFY_ROWS=16 -GRECTIFY_GRID_LOG2=3 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
+$(eval $(call rtl_test,axi-d16-rb16,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GRIGHT_BLOCK=16 -GEDGE_RESET=1 -GDEPTH=1 -GMIN_DISPARITY=1 -GRECTIFY=1 -GRECTIFY_ROWS=16 -GRECTIFY_GRID_LOG2=3 -GCONFIDENCE=1 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
 $(BIN)/rtl-axi-d16 $(BIN)/rtl-axi-d16-lean $(BIN)/rtl-axi-d16-rb16: sw/sgm_driver.cpp $(wildcard sw/include/*.h*)
 $(eval $(call rtl_test,path-engine-d16,sgm_path_engine,-GD=16 -GMAX_WIDTH=128 -GXW=8 -GYW=8 -GEDGE_RESET=1 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,path-engine-d64,sgm_path_engine,-GD=64 -GMAX_WIDTH=512 -GXW=10 -GYW=10 -GGRAY_LEAD=0 -GEDGE_RESET=1 -CFLAGS -DSGM_D=64 -CFLAGS -DSGM_YW=10))
@@ -366,13 +366,13 @@ lint: | check-tools
 	@# sgm_top is wiring only: the hierarchical synthesis flows (synth/common.tcl) synthesise
 	@# its stage modules and keep none of the top's own logic (nextpnr then meets raw cells).
 	@mkdir -p $(BUILD); for g in "" "-set RIGHT_BLOCK 8" "-set LANES 2" "-set LANES 2 -set RIGHT_BLOCK 8" "-set DEPTH 1 -set MIN_DISPARITY 1" \
-	  "-set RECTIFY 1 -set RECTIFY_ROWS 16 -set RECTIFY_GRID_LOG2 3" "-set RECTIFY 1 -set LANES 2"; do \
+	  "-set RECTIFY 1 -set RECTIFY_ROWS 16 -set RECTIFY_GRID_LOG2 3 -set CONFIDENCE 1" "-set RECTIFY 1 -set LANES 2" "-set CONFIDENCE 1 -set DEPTH 1"; do \
 	  yosys -q -p "read_verilog -sv $(RTL_SRC); chparam -set D 16 -set MAX_WIDTH 128 -set MAX_HEIGHT 64 $$g sgm_top; \
 	    hierarchy -top sgm_top; proc; tee -q -o $(BUILD)/lint-top-cells.txt select -list sgm_top/t:\$$* sgm_top/t:\$$paramod* %d" \
 	    > /dev/null 2>&1 || { echo "lint: yosys could not elaborate sgm_top ($$g)"; exit 1; }; \
 	  if [ -s $(BUILD)/lint-top-cells.txt ]; then echo "lint: sgm_top ($$g) has logic of its own (keep it in a module):"; \
 	    cat $(BUILD)/lint-top-cells.txt; exit 1; fi; \
-	done; echo "lint: sgm_top is wiring only (7 configurations)"
+	done; echo "lint: sgm_top is wiring only (8 configurations)"
 
 # ---------------------------------------------------------------- tests
 $(BIN)/unit-tests: $(TEST_OBJ) $(EVAL_OBJ) $(GOLDEN_LIB)

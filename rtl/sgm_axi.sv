@@ -36,8 +36,8 @@
 // writes to read-only registers are ignored with OKAY.
 //
 // Parameters: D, MAX_WIDTH, MAX_HEIGHT, CENSUS_H, LANES, UNIQUENESS, AD_TERM,
-// RIGHT_BLOCK, EDGE_RESET, DEPTH, MIN_DISPARITY, RECTIFY, RECTIFY_ROWS, RECTIFY_GRID_LOG2 as
-// sgm_top (FEATURES reads back all but the first five); ADDR_W AXI address bits.
+// RIGHT_BLOCK, EDGE_RESET, DEPTH, MIN_DISPARITY, RECTIFY, RECTIFY_ROWS, RECTIFY_GRID_LOG2,
+// CONFIDENCE as sgm_top (FEATURES reads back all but the first five); ADDR_W AXI address bits.
 // Latency and throughput: those of sgm_top; register responses one cycle
 // after the request.
 module sgm_axi #(
@@ -55,7 +55,9 @@ module sgm_axi #(
   parameter int RECTIFY    /*verilator public*/ = 0,
   parameter int RECTIFY_ROWS /*verilator public*/ = 32,
   parameter int RECTIFY_GRID_LOG2 /*verilator public*/ = 4,
+  parameter int CONFIDENCE /*verilator public*/ = 0,
   parameter int ADDR_W     = 8,
+  localparam int OUT_W     = CONFIDENCE != 0 ? 24 : 16,  // sgm_top OUT_W
   localparam int XW        = $clog2(MAX_WIDTH + 1),
   localparam int YW        = $clog2(MAX_HEIGHT + 16)
 ) (
@@ -67,8 +69,9 @@ module sgm_axi #(
   input  wire               s_tlast_i,
   input  wire               s_tvalid_i,
   output logic              s_tready_o,
-  // AXI4-Stream disparities out: {valid, zeros, disparity x 16}
-  output logic [15:0]       m_tdata_o,
+  // AXI4-Stream disparities out: {valid, zeros, disparity x 16} or the depth, and with
+  // CONFIDENCE the confidence in bits 23:16 (sgm_top OUT_W)
+  output logic [OUT_W-1:0]  m_tdata_o,
   output logic              m_tuser_o,
   output logic              m_tlast_o,
   output logic              m_tvalid_o,
@@ -275,7 +278,7 @@ module sgm_axi #(
     .D(D), .MAX_WIDTH(MAX_WIDTH), .MAX_HEIGHT(MAX_HEIGHT), .CENSUS_H(CENSUS_H), .LANES(LANES), .UNIQUENESS(UNIQUENESS),
     .AD_TERM(AD_TERM), .RIGHT_BLOCK(RIGHT_BLOCK), .EDGE_RESET(EDGE_RESET), .DEPTH(DEPTH),
     .MIN_DISPARITY(MIN_DISPARITY), .RECTIFY(RECTIFY), .RECTIFY_ROWS(RECTIFY_ROWS),
-    .RECTIFY_GRID_LOG2(RECTIFY_GRID_LOG2)
+    .RECTIFY_GRID_LOG2(RECTIFY_GRID_LOG2), .CONFIDENCE(CONFIDENCE)
   ) u_core (
     .clk_i         (clk_i),
     .rst_ni        (rst_ni && !core_reset),

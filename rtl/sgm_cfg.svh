@@ -28,11 +28,12 @@
 //   [94:91]    EDGE_RESET.LEN             EDGE_RESET[11:8]
 //   [99:95]    EDGE_RESET.PATHS           EDGE_RESET[20:16]
 //   [101:100]  OUTPUT.MODE                OUTPUT[1:0]
-//   [125:102]  DEPTH_FOCAL.F              DEPTH_FOCAL[23:0]
-//   [149:126]  DEPTH_BASELINE.B           DEPTH_BASELINE[23:0]
-//   [157:150]  MIN_DISPARITY.DMIN         MIN_DISPARITY[7:0]
-//   [158]      RECTIFY.ENABLE             RECTIFY[0]
-//   [166:159]  RECTIFY.LAG                RECTIFY[15:8]
+//   [102]      OUTPUT.CONFIDENCE          OUTPUT[2]
+//   [126:103]  DEPTH_FOCAL.F              DEPTH_FOCAL[23:0]
+//   [150:127]  DEPTH_BASELINE.B           DEPTH_BASELINE[23:0]
+//   [158:151]  MIN_DISPARITY.DMIN         MIN_DISPARITY[7:0]
+//   [159]      RECTIFY.ENABLE             RECTIFY[0]
+//   [167:160]  RECTIFY.LAG                RECTIFY[15:8]
 //
 // Declarations of the compilation unit, guarded: every file that reads the word includes
 // this file at its top, before its module (the ports use CFG_W). Localparams and functions
@@ -40,7 +41,7 @@
 `ifndef SGM_CFG_SVH
 `define SGM_CFG_SVH
 
-localparam int CFG_W = 167;  // bits of the word
+localparam int CFG_W = 168;  // bits of the word
 
 localparam int CFG_FRAME_SIZE_WIDTH_LSB = 0;
 localparam int CFG_FRAME_SIZE_WIDTH_W = 16;
@@ -147,27 +148,32 @@ localparam int CFG_OUTPUT_MODE_W = 2;
 localparam int CFG_OUTPUT_MODE_MIN = 0;
 localparam int CFG_OUTPUT_MODE_MAX = 1;
 
-localparam int CFG_DEPTH_FOCAL_F_LSB = 102;
+localparam int CFG_OUTPUT_CONFIDENCE_LSB = 102;
+localparam int CFG_OUTPUT_CONFIDENCE_W = 1;
+localparam int CFG_OUTPUT_CONFIDENCE_MIN = 0;
+localparam int CFG_OUTPUT_CONFIDENCE_MAX = 1;
+
+localparam int CFG_DEPTH_FOCAL_F_LSB = 103;
 localparam int CFG_DEPTH_FOCAL_F_W = 24;
 localparam int CFG_DEPTH_FOCAL_F_MIN = 0;
 localparam int CFG_DEPTH_FOCAL_F_MAX = 16777215;
 
-localparam int CFG_DEPTH_BASELINE_B_LSB = 126;
+localparam int CFG_DEPTH_BASELINE_B_LSB = 127;
 localparam int CFG_DEPTH_BASELINE_B_W = 24;
 localparam int CFG_DEPTH_BASELINE_B_MIN = 0;
 localparam int CFG_DEPTH_BASELINE_B_MAX = 16777215;
 
-localparam int CFG_MIN_DISPARITY_DMIN_LSB = 150;
+localparam int CFG_MIN_DISPARITY_DMIN_LSB = 151;
 localparam int CFG_MIN_DISPARITY_DMIN_W = 8;
 localparam int CFG_MIN_DISPARITY_DMIN_MIN = 0;
 localparam int CFG_MIN_DISPARITY_DMIN_MAX = 255;
 
-localparam int CFG_RECTIFY_ENABLE_LSB = 158;
+localparam int CFG_RECTIFY_ENABLE_LSB = 159;
 localparam int CFG_RECTIFY_ENABLE_W = 1;
 localparam int CFG_RECTIFY_ENABLE_MIN = 0;
 localparam int CFG_RECTIFY_ENABLE_MAX = 1;
 
-localparam int CFG_RECTIFY_LAG_LSB = 159;
+localparam int CFG_RECTIFY_LAG_LSB = 160;
 localparam int CFG_RECTIFY_LAG_W = 8;
 localparam int CFG_RECTIFY_LAG_MIN = 0;
 localparam int CFG_RECTIFY_LAG_MAX = 254;
@@ -175,8 +181,8 @@ localparam int CFG_RECTIFY_LAG_MAX = 254;
 // The word of the golden model's defaults (every field's DEFAULT: what a build with every
 // lever runs, sgm::Params{}) and of the four-path preset (FOUR_PATH: any other build), each
 // with the frame size 0: set FRAME_SIZE's fields to use one (docs/integration.md).
-localparam logic [CFG_W-1:0] CFG_DEFAULT = 167'h00000000000000000DB140F29D4314C81800000000;
-localparam logic [CFG_W-1:0] CFG_FOUR_PATH = 167'h00000000000000000FA800039D0014641200000000;
+localparam logic [CFG_W-1:0] CFG_DEFAULT = 168'h00000000000000000DB140F29D4314C81800000000;
+localparam logic [CFG_W-1:0] CFG_FOUR_PATH = 168'h00000000000000000FA800039D0014641200000000;
 
 // Every field of c at most its MAX (the fields whose legal range ends below their top). The
 // lower bounds above 0, the bounds of the build and the rules across fields are
@@ -198,6 +204,7 @@ function automatic logic cfg_levers_built(
     input logic has_uniqueness,
     input logic has_edge_reset,
     input logic has_depth,
+    input logic has_confidence,
     input logic has_min_disparity,
     input logic has_rectify);
   cfg_levers_built = (has_ad_term || c[CFG_PENALTY_AD_WEIGHT_LSB +: CFG_PENALTY_AD_WEIGHT_W] == 4'd0) &&
@@ -205,6 +212,7 @@ function automatic logic cfg_levers_built(
                      (has_uniqueness || c[CFG_CONFIG_UNIQUENESS_LSB +: CFG_CONFIG_UNIQUENESS_W] == 7'd0) &&
                      (has_edge_reset || c[CFG_EDGE_RESET_T_LSB +: CFG_EDGE_RESET_T_W] == 8'd0) &&
                      (has_depth || c[CFG_OUTPUT_MODE_LSB +: CFG_OUTPUT_MODE_W] == 2'd0) &&
+                     (has_confidence || c[CFG_OUTPUT_CONFIDENCE_LSB +: CFG_OUTPUT_CONFIDENCE_W] == 1'd0) &&
                      (has_min_disparity || c[CFG_MIN_DISPARITY_DMIN_LSB +: CFG_MIN_DISPARITY_DMIN_W] == 8'd0) &&
                      (has_rectify || c[CFG_RECTIFY_ENABLE_LSB +: CFG_RECTIFY_ENABLE_W] == 1'd0) &&
                      (has_rectify || c[CFG_RECTIFY_LAG_LSB +: CFG_RECTIFY_LAG_W] == 8'd0);

@@ -95,7 +95,10 @@
 // of a frame, flush rows included), LANES (K >= 1), ROW_BANKS (rows per
 // memory, a power of two: 2 with one lane and the S-side read position),
 // UNIQUENESS (1: unique_i is stored and gates valid_o; 0: the WTA builds no
-// uniqueness test, unique_i is ignored and the left word is one bit narrower).
+// uniqueness test, unique_i is ignored and the left word is one bit narrower),
+// CONFIDENCE (1: the WTA side's confidence conf_i goes into a memory of its own beside
+// the left word, same addresses, and conf_o is it where valid_o is 1 and 0 elsewhere
+// (docs/algorithm.md section 7b); 0: conf_o is 0, conf_i ignored).
 // Latency: one row plus LATENCY = 2 RAM_LATENCY + 1 = 7 slots: left pixel (x, y) presented on the
 // WTA side is on the outputs after the enabled edge of S slot (x, y+1) plus
 // LATENCY - 1 edges, i.e. S slot (x, y) + width + LATENCY - 1 edges.
@@ -111,6 +114,7 @@ module sgm_lr_check #(
   parameter int LANES     /*verilator public*/ = 1,
   parameter int ROW_BANKS /*verilator public*/ = 2,
   parameter int UNIQUENESS /*verilator public*/ = 1,
+  parameter int CONFIDENCE /*verilator public*/ = 0,
   localparam int LD       = $clog2(D),
   // sgm_bank_ram's read latency: the dR read comes RAM_LATENCY slots after the left
   // word's, the outputs RAM_LATENCY more and one later.
@@ -136,6 +140,7 @@ module sgm_lr_check #(
   input  wire  [LD-1:0]    d_i,
   input  wire  [DW-1:0]    disp_i,
   input  wire              unique_i,     // the winner passed sgm_wta's uniqueness test
+  input  wire  [7:0]       conf_i,       // the winner's confidence (sgm_wta, CONFIDENCE = 1)
   input  wire  [CW-1:0]    wta_col_i,
   input  wire  [RW-1:0]    wta_row_i,
   input  wire              wta_valid_i,
@@ -146,6 +151,7 @@ module sgm_lr_check #(
   // Output: left pixel (col_o, row_o) of the previous row.
   output logic [DW-1:0]    disp_o,
   output logic             valid_o,      // left-right check (and uniqueness) passed
+  output logic [7:0]       conf_o,       // the confidence where valid_o, else 0 (CONFIDENCE = 1; else 0)
   output logic [CW-1:0]    col_o,
   output logic [RW-1:0]    row_o,
   output logic             out_valid_o   // the slot carries a pixel of the frame
@@ -182,6 +188,9 @@ module sgm_lr_check #(
   end
   if (!(UNIQUENESS == 0 || UNIQUENESS == 1)) begin : g_bad_uniqueness
     $error("sgm_lr_check: UNIQUENESS = %0d: UNIQUENESS must be 0 or 1", UNIQUENESS);
+  end
+  if (!(CONFIDENCE == 0 || CONFIDENCE == 1)) begin : g_bad_confidence
+    $error("sgm_lr_check: CONFIDENCE = %0d: CONFIDENCE must be 0 or 1", CONFIDENCE);
   end
 `endif
 
@@ -438,6 +447,33 @@ module sgm_lr_check #(
       col_o   <= r2_col;
       row_o   <= r2_row;
     end
+  end
+
+  // ------------------------------------------------------------ confidence
+  // The same write and read addresses as the left word; R2's delay, then zeroed with pass.
+  if (CONFIDENCE != 0) begin : g_conf
+    wire [7:0] r1_conf, r2_conf;
+    sgm_bank_ram #(.WIDTH(8), .DEPTH(MW), .AW(MAW), .LATENCY(RAM_LATENCY)) u_conf_mem (
+      .clk_i  (clk_i),
+      .en_i   (en_i),
+      .we_i   (1'b1),
+      .waddr_i(mem_addr(wta_row_i[BW-1:0], wta_col_i)),
+      .wdata_i(conf_i),
+      .raddr_i(mem_addr(rd_prev[BW-1:0], rd_col_i)),
+      .rdata_o(r1_conf)
+    );
+    sgm_delay #(.WIDTH(8), .DEPTH(RAM_LATENCY)) u_r2_conf (
+      .clk_i(clk_i),
+      .en_i (en_i),
+      .d_i  (r1_conf),
+      .q_o  (r2_conf)
+    );
+    always_ff @(posedge clk_i) begin
+      if (en_i) conf_o <= pass ? r2_conf : 8'd0;
+    end
+  end else begin : g_no_conf
+    assign conf_o = 8'd0;
+    wire unused_conf = ^conf_i;
   end
 
   // armed_q: a frame pixel has entered since reset. Before that, positions in

@@ -15,12 +15,14 @@
 //
 // Parameters: DEPTH_LOG2, the FIFO's entries (2^DEPTH_LOG2: at least the frame slots in
 // flight, the slots of a frame's flush; sgm_top sizes it by its rows of row positions
-// beyond a frame), YW the row width.
+// beyond a frame), YW the row width, WORD_W the output word's width (sgm_top OUT_W: 16, or 24
+// with the confidence, which is then 0 too).
 // Latency: none (the word is masked in its cycle; the flag is read a cycle ahead).
 // Throughput: one slot and one word per enabled cycle.
 module sgm_rectify_join #(
   parameter int DEPTH_LOG2 = 12,
-  parameter int YW         = 11
+  parameter int YW         = 11,
+  parameter int WORD_W     = 16
 ) (
   input  wire              clk_i,
   input  wire              rst_ni,
@@ -29,8 +31,8 @@ module sgm_rectify_join #(
   input  wire  [YW-1:0]    height_i,
   input  wire              side_i,         // the slot's beat's outside flag
   input  wire              res_valid_i,    // the slot carries a frame pixel's output word
-  input  wire  [15:0]      res_word_i,
-  output logic [15:0]      res_word_o,     // 0 when the pixel's flag is set
+  input  wire  [WORD_W-1:0] res_word_i,
+  output logic [WORD_W-1:0] res_word_o,    // 0 when the pixel's flag is set
   input  wire  [3:0]       ctrl_error_i,   // sgm_stream_ctrl error_o, error_set_o
   input  wire  [3:0]       ctrl_error_set_i,
   input  wire              beat_valid_i,   // sgm_rectify's output beat (m_tvalid_o, m_tready_i)
@@ -46,6 +48,9 @@ module sgm_rectify_join #(
 `ifndef __ICARUS__
   if (DEPTH_LOG2 < 4 || DEPTH_LOG2 > 24) begin : g_bad_depth
     $error("sgm_rectify_join: DEPTH_LOG2 = %0d: 4 .. 24", DEPTH_LOG2);
+  end
+  if (!(WORD_W == 16 || WORD_W == 24)) begin : g_bad_word_w
+    $error("sgm_rectify_join: WORD_W = %0d: WORD_W must be 16 or 24", WORD_W);
   end
 `endif
 
@@ -70,7 +75,7 @@ module sgm_rectify_join #(
     if (push) flag_mem[wr_q] <= side_i;
     head_q <= flag_mem[rd_d];
   end
-  assign res_word_o  = res_valid_i && head_q ? 16'd0 : res_word_i;
+  assign res_word_o  = res_valid_i && head_q ? '0 : res_word_i;
   logic [2:0] frame_error_q, frame_event_q;
   wire        frame_taken = beat_valid_i && beat_ready_i && ctrl_busy_i;
   always_ff @(posedge clk_i) begin

@@ -44,7 +44,7 @@ localparam int ID_VERSION_W = 8;
 localparam int ID_MAGIC_LSB /*verilator public*/ = 8;
 localparam int ID_MAGIC_W = 24;
 localparam logic [31:0] ID_MASK = 32'hFFFFFFFF;
-localparam logic [31:0] ID_VALUE /*verilator public*/ = {24'h53474D, 8'd7};
+localparam logic [31:0] ID_VALUE /*verilator public*/ = {24'h53474D, 8'd8};
 localparam int D_VALUE_LSB /*verilator public*/ = 0;
 localparam int D_VALUE_W = 32;
 localparam logic [31:0] D_MASK = 32'hFFFFFFFF;
@@ -84,14 +84,16 @@ localparam int FEATURES_MIN_DISPARITY_LSB /*verilator public*/ = 5;
 localparam int FEATURES_MIN_DISPARITY_W = 1;
 localparam int FEATURES_RECTIFY_LSB /*verilator public*/ = 6;
 localparam int FEATURES_RECTIFY_W = 1;
+localparam int FEATURES_CONFIDENCE_LSB /*verilator public*/ = 7;
+localparam int FEATURES_CONFIDENCE_W = 1;
 localparam int FEATURES_RIGHT_BLOCK_LSB /*verilator public*/ = 8;
 localparam int FEATURES_RIGHT_BLOCK_W = 4;
 localparam int FEATURES_RECTIFY_ROWS_LSB /*verilator public*/ = 12;
 localparam int FEATURES_RECTIFY_ROWS_W = 4;
 localparam int FEATURES_RECTIFY_GRID_LSB /*verilator public*/ = 16;
 localparam int FEATURES_RECTIFY_GRID_W = 3;
-localparam logic [31:0] FEATURES_MASK = 32'h0007FF7F;
-localparam logic [31:0] FEATURES_VALUE /*verilator public*/ = {13'd0, 3'(RECTIFY != 0 ? RECTIFY_GRID_LOG2 : 0), 4'(RECTIFY != 0 ? $clog2(RECTIFY_ROWS) : 0), 4'(RIGHT_BLOCK != 0 ? $clog2(RIGHT_BLOCK) : 0), 1'd0, 1'(RECTIFY != 0), 1'(MIN_DISPARITY != 0), 1'(DEPTH != 0), 1'(EDGE_RESET != 0), 1'(RIGHT_BLOCK != 0), 1'(AD_TERM != 0), 1'(UNIQUENESS != 0)};
+localparam logic [31:0] FEATURES_MASK = 32'h0007FFFF;
+localparam logic [31:0] FEATURES_VALUE /*verilator public*/ = {13'd0, 3'(RECTIFY != 0 ? RECTIFY_GRID_LOG2 : 0), 4'(RECTIFY != 0 ? $clog2(RECTIFY_ROWS) : 0), 4'(RIGHT_BLOCK != 0 ? $clog2(RIGHT_BLOCK) : 0), 1'(CONFIDENCE != 0), 1'(RECTIFY != 0), 1'(MIN_DISPARITY != 0), 1'(DEPTH != 0), 1'(EDGE_RESET != 0), 1'(RIGHT_BLOCK != 0), 1'(AD_TERM != 0), 1'(UNIQUENESS != 0)};
 localparam int CTRL_ENABLE_LSB /*verilator public*/ = 0;
 localparam int CTRL_ENABLE_W = 1;
 localparam int CTRL_SOFT_RESET_LSB /*verilator public*/ = 1;
@@ -189,7 +191,9 @@ localparam int IRQ_STATUS_ERROR_W = 1;
 localparam logic [31:0] IRQ_STATUS_MASK = 32'h00000003;
 localparam int OUTPUT_MODE_LSB /*verilator public*/ = 0;
 localparam int OUTPUT_MODE_W = 2;
-localparam logic [31:0] OUTPUT_MASK = 32'h00000003;
+localparam int OUTPUT_CONFIDENCE_LSB /*verilator public*/ = 2;
+localparam int OUTPUT_CONFIDENCE_W = 1;
+localparam logic [31:0] OUTPUT_MASK = 32'h00000007;
 localparam int DEPTH_FOCAL_F_LSB /*verilator public*/ = 0;
 localparam int DEPTH_FOCAL_F_W = 24;
 localparam logic [31:0] DEPTH_FOCAL_MASK = 32'h00FFFFFF;
@@ -242,11 +246,12 @@ function automatic logic [CFG_W-1:0] cfg_from_regs(
     input logic [31:0] reg_min_disparity,
     input logic [31:0] reg_rectify);
   cfg_from_regs = {
-    reg_rectify[15:8],           // RECTIFY.LAG, word [166:159]
-    reg_rectify[0],              // RECTIFY.ENABLE, word [158]
-    reg_min_disparity[7:0],      // MIN_DISPARITY.DMIN, word [157:150]
-    reg_depth_baseline[23:0],    // DEPTH_BASELINE.B, word [149:126]
-    reg_depth_focal[23:0],       // DEPTH_FOCAL.F, word [125:102]
+    reg_rectify[15:8],           // RECTIFY.LAG, word [167:160]
+    reg_rectify[0],              // RECTIFY.ENABLE, word [159]
+    reg_min_disparity[7:0],      // MIN_DISPARITY.DMIN, word [158:151]
+    reg_depth_baseline[23:0],    // DEPTH_BASELINE.B, word [150:127]
+    reg_depth_focal[23:0],       // DEPTH_FOCAL.F, word [126:103]
+    reg_output[2],               // OUTPUT.CONFIDENCE, word [102]
     reg_output[1:0],             // OUTPUT.MODE, word [101:100]
     reg_edge_reset[20:16],       // EDGE_RESET.PATHS, word [99:95]
     reg_edge_reset[11:8],        // EDGE_RESET.LEN, word [94:91]

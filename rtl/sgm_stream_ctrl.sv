@@ -21,7 +21,7 @@
 // UNIQUENESS = 0, an AD weight other than 0 with AD_TERM = 0, a fifth-path weight
 // other than 0 with RIGHT_PATH = 0, a path restart threshold other than 0 with
 // EDGE_RESET = 0, a depth output with DEPTH = 0, a minimum disparity with MIN_DISPARITY
-// = 0, a rectification with RECTIFY = 0), a fifth-path weight above 8, a path restart with
+// = 0, a rectification with RECTIFY = 0, the confidence with CONFIDENCE = 0), a fifth-path weight above 8, a path restart with
 // length 0 or a rectification lag above RECTIFY_ROWS - 2.
 //
 // The configuration is one packed word, the frame configuration word cfg_i
@@ -46,7 +46,8 @@
 // must fit YW bits), FIFO_DEPTH, UNIQUENESS, AD_TERM, RIGHT_PATH, EDGE_RESET, DEPTH and
 // MIN_DISPARITY, RECTIFY (sgm_top's: whether the build has the uniqueness test, the AD term,
 // the fifth path, the path restart at strong edges, the depth output, the minimum disparity,
-// the rectification; 0 rejects frames that set them), RECTIFY_ROWS (its line buffer rows).
+// the rectification; 0 rejects frames that set them), RECTIFY_ROWS (its line buffer rows),
+// CONFIDENCE (the same for OUTPUT.CONFIDENCE), WORD_W the output word's bits (16 or 24).
 // s_tside_i is a flag beside each beat that comes out with the beat's slot (side_o; sgm_top:
 // the rectification's outside flag of the left pixel).
 // Throughput: one beat per cycle in both directions when the output is ready.
@@ -65,7 +66,9 @@ module sgm_stream_ctrl #(
   parameter int DEPTH      = 0,
   parameter int MIN_DISPARITY = 0,
   parameter int RECTIFY    = 0,
-  parameter int RECTIFY_ROWS = 32
+  parameter int RECTIFY_ROWS = 32,
+  parameter int CONFIDENCE = 0,
+  parameter int WORD_W     = 16
 ) (
   input  wire                 clk_i,
   input  wire                 rst_ni,
@@ -77,7 +80,7 @@ module sgm_stream_ctrl #(
   output logic                s_tready_o,
   input  wire                 s_tside_i,     // a flag beside the beat, given with its slot (side_o)
   // Output stream: tdata = the pipeline's output word (res_word_i).
-  output logic [15:0]         m_tdata_o,
+  output logic [WORD_W-1:0]   m_tdata_o,
   output logic                m_tuser_o,
   output logic                m_tlast_o,
   output logic                m_tvalid_o,
@@ -101,7 +104,7 @@ module sgm_stream_ctrl #(
   output logic                side_o,        // the slot's beat's s_tside_i (0 in a slot of no beat)
   // Pipeline result of the current slot: a frame pixel when res_valid_i.
   input  wire                 res_valid_i,
-  input  wire  [15:0]         res_word_i,    // the output word (sgm_depth: disparity or depth)
+  input  wire  [WORD_W-1:0]   res_word_i,    // the output word (sgm_top: disparity or depth, confidence)
   // Status.
   output logic                busy_o,        // a frame is in flight
   output logic                frame_done_o,  // one-cycle pulse: last output beat of a frame queued
@@ -158,6 +161,12 @@ module sgm_stream_ctrl #(
   end
   if (!(RECTIFY == 0 || RECTIFY == 1)) begin : g_bad_rectify
     $error("sgm_stream_ctrl: RECTIFY = %0d: RECTIFY must be 0 or 1", RECTIFY);
+  end
+  if (!(CONFIDENCE == 0 || CONFIDENCE == 1)) begin : g_bad_confidence
+    $error("sgm_stream_ctrl: CONFIDENCE = %0d: CONFIDENCE must be 0 or 1", CONFIDENCE);
+  end
+  if (!(WORD_W == 16 || WORD_W == 24)) begin : g_bad_word_w
+    $error("sgm_stream_ctrl: WORD_W = %0d: WORD_W must be 16 or 24", WORD_W);
   end
 `endif
 
@@ -222,7 +231,7 @@ module sgm_stream_ctrl #(
                 cfg_below_max(cfg_i) &&
                 (RECTIFY == 0 || 32'(cfg_rect_lag) <= RECTIFY_ROWS - 2) &&
                 cfg_levers_built(cfg_i, AD_TERM != 0, RIGHT_PATH != 0, UNIQUENESS != 0, EDGE_RESET != 0, DEPTH != 0,
-                                 MIN_DISPARITY != 0, RECTIFY != 0);
+                                 CONFIDENCE != 0, MIN_DISPARITY != 0, RECTIFY != 0);
   logic [CFG_W:0] pend_q [0:1];  // {in range, the word}
   always_ff @(posedge clk_i) begin
     if (in_push && s_tuser_i) pend_q[in_wr_q] <= {cfg_ok, cfg_i};
@@ -238,7 +247,7 @@ module sgm_stream_ctrl #(
 
   // ---------------------------------------------------------------- output FIFO
   localparam int FAW = $clog2(FIFO_DEPTH);
-  logic [17:0]    fifo_q [0:FIFO_DEPTH-1];  // {tuser, tlast, tdata}
+  logic [WORD_W+1:0] fifo_q [0:FIFO_DEPTH-1];  // {tuser, tlast, tdata}
   logic [FAW:0]   count_q;
   logic [FAW-1:0] rd_q, wr_q;
   wire pop  = m_tvalid_o && m_tready_i;
@@ -466,9 +475,9 @@ module sgm_stream_ctrl #(
   end
 
   assign m_tvalid_o = count_q != '0;
-  assign m_tuser_o  = fifo_q[rd_q][17];
-  assign m_tlast_o  = fifo_q[rd_q][16];
-  assign m_tdata_o  = fifo_q[rd_q][15:0];
+  assign m_tuser_o  = fifo_q[rd_q][WORD_W+1];
+  assign m_tlast_o  = fifo_q[rd_q][WORD_W];
+  assign m_tdata_o  = fifo_q[rd_q][WORD_W-1:0];
 
 `ifdef SGM_FORMAL
   // The formal property set (tests/formal/sgm_stream_ctrl_props.svh; make formal, docs/formal.md).

@@ -10,6 +10,7 @@
 //   -> sgm_cost_volume (D PEs) -> sgm_path_engine (4 paths, S) -> sgm_wta
 //   -> sgm_lr_check -> sgm_hole_fill -> sgm_edge_snap -> sgm_median5x5 [-> sgm_depth, DEPTH = 1]
 //   -> sgm_stream_ctrl -> m_axis
+//   [sgm_wta -> sgm_lr_check -> sgm_confidence_rows -> the output word's bits 23:16, CONFIDENCE = 1]
 //
 // Parameters: D disparities (a power of two from 16 to 256; built and tested at 16, 32,
 // 64, 128), MAX_WIDTH (>= MIN_FRAME_WIDTH), MAX_HEIGHT (>= 9) (public to
@@ -58,6 +59,14 @@
 // outside the raw image 0 and counts the raw framing errors (sgm_rectify checks them) for the
 // frame. 0 leaves it out (the default), and a frame with RECTIFY.ENABLE or LAG not 0 is
 // dropped with error_o[3].
+// CONFIDENCE = 1 builds the confidence (docs/algorithm.md section 7b): sgm_wta divides the
+// second best cost by the best (4 slots more of latency), sgm_lr_check keeps the result
+// beside the left word and zeroes it where the pixel is invalid, sgm_confidence_rows carries
+// it past the fill, the snap and the median (a memory of 8 rows x MAX_WIDTH x 8 bit), and
+// run-time OUTPUT.CONFIDENCE puts it in bits 23:16 of the output word, which is then 24 bits
+// wide (OUT_W; 0 there when the field is 0); the output stage waits 3 slots more for the
+// memory's read (without DEPTH; sgm_depth's latency covers it). 0 leaves it out (the
+// default; OUT_W = 16), and a frame with OUTPUT.CONFIDENCE = 1 is dropped with error_o[3].
 // Configuration: cfg_i, the frame configuration word (rtl/sgm_cfg.svh, generated from
 // regmap/sgm_regmap.def; its fields are the read-write fields of sgm_axi's FRAME_SIZE,
 // PENALTY, CONFIG, EDGE_RESET, OUTPUT, DEPTH_FOCAL, DEPTH_BASELINE, MIN_DISPARITY and RECTIFY,
@@ -88,6 +97,8 @@ module sgm_top #(
   parameter int RECTIFY    /*verilator public*/ = 0,  // the rectification in the stream is built (0: not)
   parameter int RECTIFY_ROWS /*verilator public*/ = 32,  // its line buffer rows R (a power of two, 4 .. 256)
   parameter int RECTIFY_GRID_LOG2 /*verilator public*/ = 4,  // its mesh step G = 2^RECTIFY_GRID_LOG2 px (2 .. 6)
+  parameter int CONFIDENCE /*verilator public*/ = 0,  // the confidence is built (0: not)
+  localparam int OUT_W     /*verilator public*/ = CONFIDENCE != 0 ? 24 : 16,  // the output word's bits
   localparam int XW        = $clog2(MAX_WIDTH + 1),
   // Lanes (docs/lanes.md "The top's wiring at K lanes"). The engine's
   // SKEW (sgm_path_engine owns the formula; mirrored here for the deal, checked
@@ -137,7 +148,8 @@ module sgm_top #(
   input  wire          s_tvalid_i,
   output logic         s_tready_o,
   // Output stream: one word per beat, same framing.
-  output logic [15:0]  m_tdata_o,   // {valid, zeros, disparity x 16}, or the depth in mm (OUTPUT.MODE)
+  output logic [OUT_W-1:0] m_tdata_o,  // [15:0] {valid, zeros, disparity x 16}, or the depth in mm
+                                       // (OUTPUT.MODE); [23:16] the confidence (OUTPUT.CONFIDENCE)
   output logic         m_tuser_o,
   output logic         m_tlast_o,
   output logic         m_tvalid_o,
@@ -204,6 +216,9 @@ module sgm_top #(
   if (!(MIN_DISPARITY == 0 || MIN_DISPARITY == 1)) begin : g_bad_min_disparity
     $error("sgm_top: MIN_DISPARITY = %0d: MIN_DISPARITY must be 0 or 1", MIN_DISPARITY);
   end
+  if (!(CONFIDENCE == 0 || CONFIDENCE == 1)) begin : g_bad_confidence
+    $error("sgm_top: CONFIDENCE = %0d: CONFIDENCE must be 0 or 1", CONFIDENCE);
+  end
   if (!(RECTIFY == 0 || RECTIFY == 1)) begin : g_bad_rectify
     $error("sgm_top: RECTIFY = %0d: RECTIFY must be 0 or 1", RECTIFY);
   end
@@ -234,7 +249,7 @@ module sgm_top #(
       {cfg[CFG_FRAME_SIZE_HEIGHT_LSB +: CFG_FRAME_SIZE_HEIGHT_W], cfg[CFG_FRAME_SIZE_WIDTH_LSB +: CFG_FRAME_SIZE_WIDTH_W]};
   logic          lut_start, lut_ready, lut_ready_core;
   logic          res_valid;
-  logic [15:0]   res_word;
+  logic [OUT_W-1:0] res_word;
 
   // ------------------------------------------------------------ rectification
   // With RECTIFY = 1 the input pair goes through sgm_rectify (two channels: left in bits 7:0,
@@ -251,7 +266,7 @@ module sgm_top #(
   logic [3:0]       ctrl_error, ctrl_error_set;
   logic             ctrl_busy;
   logic             side0;
-  logic [15:0]      res_word_out;
+  logic [OUT_W-1:0] res_word_out;
   if (RECTIFY != 0) begin : g_rectify
     localparam int RXW = $clog2(MAX_WIDTH + 1);
     localparam int RYW = $clog2(MAX_HEIGHT + 1);
@@ -316,7 +331,8 @@ module sgm_top #(
                                (RIGHT_PATH != 0 ? RP_LATENCY / MIN_FRAME_WIDTH + 2 : 0);
     sgm_rectify_join #(
       .DEPTH_LOG2($clog2(SIDE_ROWS * MAX_WIDTH)),
-      .YW        (RW)
+      .YW        (RW),
+      .WORD_W    (OUT_W)
     ) u_join (
       .clk_i           (clk_i),
       .rst_ni          (rst_ni),
@@ -372,7 +388,9 @@ module sgm_top #(
     .DEPTH     (DEPTH),
     .MIN_DISPARITY(MIN_DISPARITY),
     .RECTIFY   (RECTIFY),
-    .RECTIFY_ROWS(RECTIFY_ROWS)
+    .RECTIFY_ROWS(RECTIFY_ROWS),
+    .CONFIDENCE(CONFIDENCE),
+    .WORD_W    (OUT_W)
   ) u_ctrl (
     .clk_i         (clk_i),
     .rst_ni        (rst_ni),
@@ -703,11 +721,14 @@ module sgm_top #(
   logic [LD-1:0] win_d;
   logic [DW-1:0] win_disp;
   logic          win_unique;
+  logic [7:0]    win_conf;
   logic [XW-1:0] col4;
   logic [RW-1:0] row4;
   logic          valid4;
 
-  sgm_wta #(.D(D), .SW(SW), .CW(XW), .RW(RW), .UNIQUENESS(UNIQUENESS), .MIN_DISPARITY(MIN_DISPARITY)) u_wta (
+  sgm_wta #(
+    .D(D), .SW(SW), .CW(XW), .RW(RW), .UNIQUENESS(UNIQUENESS), .MIN_DISPARITY(MIN_DISPARITY), .CONFIDENCE(CONFIDENCE)
+  ) u_wta (
     .clk_i      (clk_i),
     .rst_ni     (rst_ni),
     .en_i       (en),
@@ -721,6 +742,7 @@ module sgm_top #(
     .d_o        (win_d),
     .disp_o     (win_disp),
     .unique_o   (win_unique),
+    .conf_o     (win_conf),
     .col_o      (col4),
     .row_o      (row4),
     .valid_o    (valid4)
@@ -738,11 +760,12 @@ module sgm_top #(
   localparam int LR_BANKS = LANES == 1 ? 2 : 1 << $clog2(LR_LAG_MAX + 2);
   logic [DW-1:0] lr_disp;
   logic          lr_ok, lr_valid;
+  logic [7:0]    lr_conf;
   logic [XW-1:0] col5;
   logic [RW-1:0] row5;
   sgm_lr_check #(
     .D(D), .SW(SW), .DW(DW), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(RW), .LANES(LANES), .ROW_BANKS(LR_BANKS),
-    .UNIQUENESS(UNIQUENESS)
+    .UNIQUENESS(UNIQUENESS), .CONFIDENCE(CONFIDENCE)
   ) u_lr (
     .clk_i       (clk_i),
     .rst_ni      (rst_ni),
@@ -760,6 +783,7 @@ module sgm_top #(
     .d_i         (win_d),
     .disp_i      (win_disp),
     .unique_i    (win_unique),
+    .conf_i      (win_conf),
     .wta_col_i   (col4),
     .wta_row_i   (row4),
     .wta_valid_i (valid4),
@@ -767,6 +791,7 @@ module sgm_top #(
     .rd_row_i    (rd_row),
     .disp_o      (lr_disp),
     .valid_o     (lr_ok),
+    .conf_o      (lr_conf),
     .col_o       (col5),
     .row_o       (row5),
     .out_valid_o (lr_valid)
@@ -835,7 +860,7 @@ module sgm_top #(
   // ------------------------------------------------------------ median
   logic [DW-1:0] med_disp;
   logic          med_ok, med_valid;
-  logic [XW-1:0] unused_col8;
+  logic [XW-1:0] col8;
   logic [RW-1:0] unused_row8;
 
   sgm_median5x5 #(.DW(DW), .MAX_WIDTH(MAX_WIDTH), .CW(XW), .RW(RW)) u_median (
@@ -852,15 +877,21 @@ module sgm_top #(
     .row_i       (row7),
     .disp_o      (med_disp),
     .valid_o     (med_ok),
-    .col_o       (unused_col8),
+    .col_o       (col8),
     .row_o       (unused_row8),
     .out_valid_o (med_valid)
   );
 
   // ------------------------------------------------------------ output word
+  // The 16-bit word (disparity or depth) and, with CONFIDENCE, the confidence above it
+  // (sgm_confidence_rows: its memory's read takes 3 slots, which the disparity word waits
+  // for; the depth word comes DEPTH_LATENCY slots after the median, the confidence waits).
   // With the depth output the frame's first slot also waits for K = F B (sgm_depth's
   // ready_o: the P2 table's ready and its product's, which takes up to 24 cycles after
   // lut_start). OUTPUT.MODE's upper bit is 0 in every frame the core takes (cfg_below_max).
+  localparam int DEPTH_LATENCY = 20;  // sgm_depth LATENCY
+  logic [15:0] word16;
+  logic        word16_valid;
   if (DEPTH != 0) begin : g_depth
     wire unused_mode_high = cfg[CFG_OUTPUT_MODE_LSB + 1];
     sgm_depth #(.DW(DW)) u_depth (
@@ -876,16 +907,39 @@ module sgm_top #(
       .disp_i      (med_disp),
       .valid_i     (med_ok),
       .in_valid_i  (med_valid),
-      .word_o      (res_word),
-      .out_valid_o (res_valid)
+      .word_o      (word16),
+      .out_valid_o (word16_valid)
     );
   end else begin : g_disparity
-    assign lut_ready = lut_ready_core;
-    assign res_word  = {med_ok, 15'(med_disp)};
-    assign res_valid = med_valid;
+    assign lut_ready    = lut_ready_core;
+    assign word16       = {med_ok, 15'(med_disp)};
+    assign word16_valid = med_valid;
     wire [CFG_OUTPUT_MODE_W+CFG_DEPTH_FOCAL_F_W+CFG_DEPTH_BASELINE_B_W-1:0] unused_cfg_depth =
         {cfg[CFG_OUTPUT_MODE_LSB +: CFG_OUTPUT_MODE_W], cfg[CFG_DEPTH_FOCAL_F_LSB +: CFG_DEPTH_FOCAL_F_W],
          cfg[CFG_DEPTH_BASELINE_B_LSB +: CFG_DEPTH_BASELINE_B_W]};
+  end
+  if (CONFIDENCE != 0) begin : g_confidence
+    sgm_confidence_rows #(
+      .MAX_WIDTH(MAX_WIDTH), .CW(XW), .ROWS(8), .WORD_DELAY(DEPTH != 0 ? DEPTH_LATENCY : 0)
+    ) u_conf_rows (
+      .clk_i       (clk_i),
+      .rst_ni      (rst_ni),
+      .en_i        (en),
+      .wr_valid_i  (lr_valid),
+      .wr_col_i    (col5),
+      .conf_i      (lr_conf),
+      .rd_valid_i  (med_valid),
+      .rd_col_i    (col8),
+      .conf_en_i   (cfg[CFG_OUTPUT_CONFIDENCE_LSB]),
+      .word_i      (word16),
+      .word_valid_i(word16_valid),
+      .word_o      (res_word),
+      .word_valid_o(res_valid)
+    );
+  end else begin : g_no_confidence
+    assign res_word  = word16;
+    assign res_valid = word16_valid;
+    wire unused_conf = ^{lr_conf, col8, cfg[CFG_OUTPUT_CONFIDENCE_LSB]};
   end
 
 endmodule

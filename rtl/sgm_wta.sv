@@ -52,16 +52,25 @@
 // stays the search's d* (0 .. D - 1). 0: DW = log2(D) + 4, dmin_i unused.
 //
 // UNIQUENESS = 0 builds no uniqueness test: the nodes carry {b, a, m, d} only
-// (no sec / exf / exl, no candidate selects), no product, no U pipeline;
+// (no sec / exf / exl, no candidate selects, unless CONFIDENCE), no product, no U pipeline;
 // unique_o is constant 1 and uniq_i is ignored (sgm_stream_ctrl drops frames
 // that ask for a ratio). The latency is the same.
 //
+// CONFIDENCE = 1 (docs/algorithm.md section 7b): conf_o = floor(256 (sec - m) / (sec + 1)),
+// 0 .. 255, the winner's confidence before the LR check (sgm_lr_check zeroes it where the
+// pixel is invalid). The nodes carry sec also without the uniqueness test. From stage P
+// on, a restoring division of (sec - m) 2^8 by V = sec + 1, one quotient bit per stage
+// (rem < V, so 2 rem < 2^(SW+1) and the quotient has 8 bits): C7 .. C0, of which C7 .. C4
+// run beside Q3 .. Q0; the other results wait 4 more stages for C3 .. C0 (LATENCY + 4).
+// 0: conf_o is 0 and nothing of it is built.
+//
 // Parameters: D disparities (a power of two from 16 to 256), SW width of S,
 // CW column bits, RW row bits of the slot position (passed through),
-// UNIQUENESS (1: the uniqueness test is built, 0: not), MIN_DISPARITY (1: built, 0: not).
-// Latency: LATENCY = TREE_STAGES + 5 slots (D = 16: 9, 32: 10, 64: 11, 128: 12): the
-// result of the slot presented at enabled edge n is on the outputs after
-// enabled edge n + LATENCY - 1. Throughput: one pixel per slot.
+// UNIQUENESS (1: the uniqueness test is built, 0: not), MIN_DISPARITY (1: built, 0: not),
+// CONFIDENCE (1: built, 0: not).
+// Latency: LATENCY = TREE_STAGES + 5 slots (D = 16: 9, 32: 10, 64: 11, 128: 12), 4 more
+// with CONFIDENCE: the result of the slot presented at enabled edge n is on the outputs
+// after enabled edge n + LATENCY - 1. Throughput: one pixel per slot.
 // Reset: only the valid_o pipeline (control); data registers start unknown.
 module sgm_wta #(
   parameter int D  /*verilator public*/ = 64,
@@ -70,10 +79,12 @@ module sgm_wta #(
   parameter int RW /*verilator public*/ = 11,
   parameter int UNIQUENESS /*verilator public*/ = 1,
   parameter int MIN_DISPARITY /*verilator public*/ = 0,
+  parameter int CONFIDENCE /*verilator public*/ = 0,
   localparam int LD          = $clog2(D),
   localparam int DW          = (MIN_DISPARITY != 0 ? $clog2(D + 256) : LD) + 4,
   localparam int TREE_STAGES = LD,                    // T0, T1 (levels 1, 2), levels 3 .. LD
-  localparam int LATENCY     /*verilator public*/ = TREE_STAGES + 5
+  localparam int CONF_WAIT   = CONFIDENCE != 0 ? 4 : 0,  // C3 .. C0 behind Q0
+  localparam int LATENCY     /*verilator public*/ = TREE_STAGES + 5 + CONF_WAIT
 ) (
   input  wire              clk_i,
   input  wire              rst_ni,
@@ -90,6 +101,7 @@ module sgm_wta #(
   output logic [LD-1:0]    d_o,
   output logic [DW-1:0]    disp_o,
   output logic             unique_o,     // the winner passes the uniqueness test
+  output logic [7:0]       conf_o,       // the winner's confidence (CONFIDENCE = 1; else 0)
   output logic [CW-1:0]    col_o,
   output logic [RW-1:0]    row_o,
   output logic             valid_o
@@ -118,9 +130,13 @@ module sgm_wta #(
   if (!(UNIQUENESS == 0 || UNIQUENESS == 1)) begin : g_bad_uniqueness
     $error("sgm_wta: UNIQUENESS = %0d: UNIQUENESS must be 0 or 1", UNIQUENESS);
   end
+  if (!(CONFIDENCE == 0 || CONFIDENCE == 1)) begin : g_bad_confidence
+    $error("sgm_wta: CONFIDENCE = %0d: CONFIDENCE must be 0 or 1", CONFIDENCE);
+  end
 `endif
 
-  localparam int UF = UNIQUENESS != 0 ? 3 : 0;  // uniqueness fields of a node
+  localparam int SEC = UNIQUENESS != 0 || CONFIDENCE != 0 ? 1 : 0;  // the nodes carry sec
+  localparam int UF = SEC != 0 ? 3 : 0;  // uniqueness fields of a node
   localparam int NW = (3 + UF) * SW + LD;  // tree node {exl, exf, sec, b, a, m, d} ({b, a, m, d} without them)
   localparam int UW = SW + 7;       // sec (100 - U) and 100 m: below 2^(SW+7)
   localparam logic [SW-1:0] NONE = '1;  // "no cost" of sec / exf / exl (never below a cost)
@@ -178,7 +194,7 @@ module sgm_wta #(
         end else begin : g_b
           assign b = s_q[(i+1)*SW +: SW];
         end
-        if (UNIQUENESS != 0) begin : g_u
+        if (SEC != 0) begin : g_u
           assign node[i*NW +: NW] = {NONE, NONE, NONE, b, a, s_q[i*SW +: SW], LD'(i)};
         end else begin : g_nu
           assign node[i*NW +: NW] = {b, a, s_q[i*SW +: SW], LD'(i)};
@@ -194,7 +210,7 @@ module sgm_wta #(
         wire          up = l == 1 ? c1_q[i] : hi_m < lo_m;
         // Uniqueness fields (level 1: two leaves, no comparison needed).
         wire [SW-1:0] sec, exf, exl;
-        if (UNIQUENESS == 0) begin : g_none
+        if (SEC == 0) begin : g_none
           assign {sec, exf, exl} = '0;  // not built: the node has no such fields
         end else if (l == 1) begin : g_pair
           assign sec = NONE;
@@ -214,7 +230,7 @@ module sgm_wta #(
           assign exf = hi_m < lo_exf ? hi_m : lo_exf;
           assign exl = hi_exl < lo_m ? hi_exl : lo_m;
         end
-        if (UNIQUENESS != 0) begin : g_pick_u
+        if (SEC != 0) begin : g_pick_u
           assign pick[i*NW +: NW] = {exl, exf, sec, up ? hi[0 +: 3*SW + LD] : lo[0 +: 3*SW + LD]};
         end else begin : g_pick
           assign pick[i*NW +: NW] = up ? hi : lo;
@@ -256,6 +272,11 @@ module sgm_wta #(
       p_d_q   <= win_d;
     end
   end
+
+  // The Q0 results: on the outputs directly, or CONF_WAIT stages later (CONFIDENCE).
+  logic [LD-1:0] q0_d_q;
+  logic [DW-1:0] q0_disp_q;
+  logic          q0_unique_q;
 
   // Uniqueness (UNIQUENESS = 0: not built, every winner passes; uniq_i ignored).
   // sec_times: sec (k2[1] 2 + k2[0]) 2^sh, two bits of the product by shift and add.
@@ -299,11 +320,11 @@ module sgm_wta #(
         u2_k_q   <= u3_k_q[6];
         u1_acc_q <= u2_acc_q + sec_times(u2_sec_q, {1'b0, u2_k_q}, 6);
         u1_m_q   <= u2_m_q;
-        unique_o <= u1_acc_q >= u1_m_q;
+        q0_unique_q <= u1_acc_q >= u1_m_q;
       end
     end
   end else begin : g_no_uniq
-    assign unique_o = 1'b1;
+    assign q0_unique_q = 1'b1;
     wire unused_uniq = ^uniq_i;
   end
 
@@ -355,9 +376,53 @@ module sgm_wta #(
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      d_o    <= d0;
-      disp_o <= neg0 && q != 4'd0 ? {dm10_true, 4'd0 - q} : {d0_true, q};
+      q0_d_q    <= d0;
+      q0_disp_q <= neg0 && q != 4'd0 ? {dm10_true, 4'd0 - q} : {d0_true, q};
     end
+  end
+
+  // ---------------------------------------------------- C7 .. C0: the confidence
+  // rem starts at sec - m (< V = sec + 1); stage j: rem = 2 rem, bit j = rem >= V, rem -= it.
+  if (CONFIDENCE != 0) begin : g_conf
+    wire [SW-1:0] win_sec = g_lvl[LD].node[3*SW+LD +: SW];
+    logic [8*(SW+1)-1:0] c_rem_q;  // word k: the remainder after stage C(8-k) .. (word 7: after P)
+    logic [8*(SW+1)-1:0] c_div_q;  // V, carried with it
+    logic [8*8-1:0]      c_quo_q;  // the quotient bits so far, carried with it
+    always_ff @(posedge clk_i) begin
+      if (en_i) begin
+        c_rem_q[7*(SW+1) +: SW+1] <= {1'b0, win_sec - win_m};
+        c_div_q[7*(SW+1) +: SW+1] <= {1'b0, win_sec} + 1'b1;
+        c_quo_q[7*8 +: 8]         <= '0;
+      end
+    end
+    for (genvar j = 7; j >= 1; j--) begin : g_cstep  // stage C(j) reads word j, writes word j - 1
+      wire [SW+1:0] twice = {c_rem_q[j*(SW+1) +: SW+1], 1'b0};
+      wire [SW+1:0] v     = {1'b0, c_div_q[j*(SW+1) +: SW+1]};
+      wire          bit_j = twice >= v;
+      wire [SW+1:0] rest  = bit_j ? twice - v : twice;
+      always_ff @(posedge clk_i) begin
+        if (en_i) begin
+          c_rem_q[(j-1)*(SW+1) +: SW+1] <= rest[SW:0];  // rest < V <= 2^SW
+          c_div_q[(j-1)*(SW+1) +: SW+1] <= c_div_q[j*(SW+1) +: SW+1];
+          c_quo_q[(j-1)*8 +: 8]         <= c_quo_q[j*8 +: 8] | (8'(bit_j) << j);
+        end
+      end
+      wire unused_rest = rest[SW+1];
+    end
+    // C0: bit 0 into the output register; the Q0 results wait CONF_WAIT stages.
+    wire [SW+1:0] twice0 = {c_rem_q[0 +: SW+1], 1'b0};
+    wire          bit0   = twice0 >= {1'b0, c_div_q[0 +: SW+1]};
+    logic [CONF_WAIT*(LD+DW+1)-1:0] wait_q;
+    always_ff @(posedge clk_i) begin
+      if (en_i) begin
+        conf_o <= c_quo_q[0 +: 8] | {7'd0, bit0};
+        wait_q <= {wait_q[0 +: (CONF_WAIT-1)*(LD+DW+1)], q0_d_q, q0_disp_q, q0_unique_q};
+      end
+    end
+    assign {d_o, disp_o, unique_o} = wait_q[(CONF_WAIT-1)*(LD+DW+1) +: LD+DW+1];
+  end else begin : g_no_conf
+    assign conf_o = 8'd0;
+    assign {d_o, disp_o, unique_o} = {q0_d_q, q0_disp_q, q0_unique_q};
   end
 
 endmodule

@@ -25,6 +25,7 @@
 #   SYNTH_MIN_DISPARITY MIN_DISPARITY, the minimum disparity built (1) or not (0; empty: the default);
 #   SYNTH_RECTIFY, SYNTH_RECTIFY_ROWS, SYNTH_RECTIFY_GRID_LOG2 the rectification (RECTIFY 1 or 0, its
 #                    line buffer rows and mesh step; empty: the default);
+#   SYNTH_CONFIDENCE CONFIDENCE, the confidence built (1) or not (0; empty: the default);
 #                    empty (the default): sgm_top's own default
 #   SYNTH_OUT        output directory of this target (created by make)
 #   SYNTH_DEFINES    Verilog macros to define, space-separated (the ECP5 flow:
@@ -56,6 +57,7 @@ set min_disparity [env_or SYNTH_MIN_DISPARITY ""]
 set rectify    [env_or SYNTH_RECTIFY ""]
 set rectify_rows [env_or SYNTH_RECTIFY_ROWS ""]
 set rectify_grid [env_or SYNTH_RECTIFY_GRID_LOG2 ""]
+set confidence [env_or SYNTH_CONFIDENCE ""]
 set out        [env_or SYNTH_OUT build/synth]
 set defines    [env_or SYNTH_DEFINES ""]
 
@@ -71,6 +73,7 @@ if {$min_disparity ne ""} { yosys chparam -set MIN_DISPARITY $min_disparity sgm_
 if {$rectify ne ""} { yosys chparam -set RECTIFY $rectify sgm_top }
 if {$rectify_rows ne ""} { yosys chparam -set RECTIFY_ROWS $rectify_rows sgm_top }
 if {$rectify_grid ne ""} { yosys chparam -set RECTIFY_GRID_LOG2 $rectify_grid sgm_top }
+if {$confidence ne ""} { yosys chparam -set CONFIDENCE $confidence sgm_top }
 yosys hierarchy -check -top sgm_top
 yosys proc
 yosys tee -o $out/check.txt check

@@ -108,7 +108,7 @@ class AxisSource {
       valid_ = true;
     }
     m.s_tvalid_i = valid_;
-    m.s_tdata_i = current_.data;
+    m.s_tdata_i = uint16_t(current_.data);
     m.s_tuser_i = current_.user;
     m.s_tlast_i = current_.last;
   }
@@ -142,7 +142,7 @@ class AxisSink {
   // Before the edge, after eval: records a transfer and checks the rules.
   // `cycle` names the cycle in violations (default: count of sample calls).
   bool sample(const Model& m, std::optional<uint64_t> cycle = std::nullopt) {
-    const Beat now{uint16_t(m.m_tdata_o), bool(m.m_tuser_o), bool(m.m_tlast_o)};
+    const Beat now{uint32_t(m.m_tdata_o), bool(m.m_tuser_o), bool(m.m_tlast_o)};
     const bool fire = checker_.observe(cycle.value_or(samples_), m.m_tvalid_o, m.m_tready_i, now);
     ++samples_;
     if (fire) beats_.push_back(now);

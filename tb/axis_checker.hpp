@@ -21,7 +21,7 @@
 namespace sgm::tb {
 
 struct Beat {
-  uint16_t data = 0;
+  uint32_t data = 0;  // tdata: 16 bits in, 16 or 24 out (sgm_top OUT_W)
   bool user = false;  // start of frame
   bool last = false;  // end of line
   bool operator==(const Beat& o) const { return data == o.data && user == o.user && last == o.last; }

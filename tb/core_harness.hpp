@@ -84,7 +84,8 @@ struct FrameInput {
 
 struct FrameOutput {
   DisparityMap map;           // what the core produced, read as disparity words (OUTPUT.MODE = DISPARITY)
-  cv::Mat words;              // the output words as they came (CV_16UC1)
+  cv::Mat words;              // the output words' bits 15:0 as they came (CV_16UC1)
+  cv::Mat confidence;         // their bits 23:16 (CV_8UC1; 0 in a word of 16 bits)
   uint64_t firstInCycle = 0;  // cycle of the frame's first input handshake
   uint64_t lastOutCycle = 0;  // cycle of its last output handshake
   unsigned errors = 0;        // error_o when the frame was done
@@ -112,11 +113,33 @@ inline std::string compareMaps(const DisparityMap& expected, const DisparityMap&
   return first;
 }
 
-// First differing output word of a frame against the golden model's map and the frame's
-// output mode (sgm::outputWords), as one line, or "" when equal. In disparity mode the
-// same as compareMaps; in depth mode the words, naming the stage sgm_depth.
-inline std::string compareOutput(const DisparityMap& golden, const Params& params, const FrameOutput& got,
-                                 const std::string& stage, long* mismatches = nullptr) {
+// First differing confidence (the output word's bits 23:16) of a frame as one line, or ""
+// when equal: the golden map's confidence with Params::outputConfidence, else 0 everywhere.
+inline std::string compareConfidence(const DisparityMap& golden, const Params& params, const FrameOutput& got,
+                                     const std::string& stage, long* mismatches = nullptr) {
+  if (params.outputConfidence && golden.confidence.empty())
+    throw Error("internal: the golden map has no confidence (Params::outputConfidence not set when it was run)");
+  std::string first;
+  long count = 0;
+  for (int y = 0; y < got.confidence.rows; ++y)
+    for (int x = 0; x < got.confidence.cols; ++x) {
+      const int e = params.outputConfidence ? golden.confidence.at<uint8_t>(y, x) : 0;
+      const int g = got.confidence.at<uint8_t>(y, x);
+      if (e == g) continue;
+      if (count++ == 0) {
+        std::ostringstream msg;
+        msg << "stage " << stage << " (confidence, bits 23:16" << (params.outputConfidence ? "" : ", OUTPUT.CONFIDENCE 0")
+            << "): first mismatch at (x=" << x << ", y=" << y << "): expected " << e << ", got " << g;
+        first = msg.str();
+      }
+    }
+  if (mismatches) *mismatches += count;
+  return first;
+}
+
+// The output word's bits 15:0 (compareOutput).
+inline std::string compareWord(const DisparityMap& golden, const Params& params, const FrameOutput& got,
+                               const std::string& stage, long* mismatches) {
   if (params.output != OutputMode::kDepth) return compareMaps(golden, got.map, stage, mismatches);
   const cv::Mat expected = outputWords(golden, params);
   std::string first;
@@ -135,6 +158,17 @@ inline std::string compareOutput(const DisparityMap& golden, const Params& param
     }
   if (mismatches) *mismatches = count;
   return first;
+}
+
+// First differing output word of a frame against the golden model's map and the frame's
+// output mode (sgm::outputWords), as one line, or "" when equal. In disparity mode the
+// same as compareMaps; in depth mode the words, naming the stage sgm_depth; then the
+// confidence (compareConfidence).
+inline std::string compareOutput(const DisparityMap& golden, const Params& params, const FrameOutput& got,
+                                 const std::string& stage, long* mismatches = nullptr) {
+  const std::string word = compareWord(golden, params, got, stage, mismatches);
+  const std::string confidence = compareConfidence(golden, params, got, stage, mismatches);
+  return word.empty() ? confidence : word;
 }
 
 template <class Model>
@@ -355,11 +389,13 @@ class CoreHarness {
   void decode(size_t first, int w, int h, FrameOutput& out) {
     out.map = DisparityMap{cv::Mat(h, w, CV_16UC1), cv::Mat(h, w, CV_8UC1)};
     out.words = cv::Mat(h, w, CV_16UC1);
+    out.confidence = cv::Mat(h, w, CV_8UC1);
     for (int i = 0; i < w * h; ++i) {
       const Beat& b = sink_.beats()[first + i];
       out.words.at<uint16_t>(i / w, i % w) = uint16_t(b.data);
+      out.confidence.at<uint8_t>(i / w, i % w) = uint8_t(b.data >> 16);
       out.map.disp.at<uint16_t>(i / w, i % w) = uint16_t(b.data & 0x7fff);
-      out.map.valid.at<uint8_t>(i / w, i % w) = uint8_t(b.data >> 15);
+      out.map.valid.at<uint8_t>(i / w, i % w) = uint8_t((b.data >> 15) & 1);
     }
   }
 

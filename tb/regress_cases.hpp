@@ -100,6 +100,8 @@ Params drawParams(Rng& rng) {
   // The minimum disparity: a third of the frames, 1 .. 3 (the cost volume's register paths
   // and its shortest memory lag) or any up to 255.
   p.minDisparity = rng.chance(0.67) ? 0 : rng.chance(0.5) ? rng.uniform(1, 3) : rng.uniform(4, kMaxMinDisparity);
+  // The confidence in the output word (with either output): half the frames.
+  p.outputConfidence = rng.chance(0.5);
   // A lever the build lacks (sgm_top UNIQUENESS / AD_TERM / EDGE_RESET = 0, RIGHT_BLOCK = 0)
   // stays off: drawn all the same, so that a case is the same in every build but for it.
   if (!Vsgm_top_sgm_top::UNIQUENESS) p.uniqueness = 0;
@@ -108,6 +110,7 @@ Params drawParams(Rng& rng) {
   if (!Vsgm_top_sgm_top::EDGE_RESET) p.edgeReset.threshold = 0;
   if (!Vsgm_top_sgm_top::DEPTH) p.output = OutputMode::kDisparity;
   if (!Vsgm_top_sgm_top::MIN_DISPARITY) p.minDisparity = 0;
+  if (!Vsgm_top_sgm_top::CONFIDENCE) p.outputConfidence = false;
   return p;
 }
 
@@ -135,6 +138,7 @@ std::string paramText(const Params& p) {
     << p.rightPathBlock << " restart=" << p.edgeReset.threshold << "/" << p.edgeReset.length << "/";
   for (int on : p.edgeReset.paths) t << on;
   t << " dmin=" << p.minDisparity << " output=" << outputModeName(p.output);
+  if (p.outputConfidence) t << "+confidence";
   if (p.rectify) t << " rectified lag " << p.rectifyLag;
   if (p.output == OutputMode::kDepth) t << "/" << p.focalQ8 << "/" << p.baselineUm;
   return t.str();
@@ -213,6 +217,7 @@ struct Totals {
   long cases = 0, failed = 0, goodFrames = 0, pixels = 0, malformed = 0, resets = 0;
   long depthFrames = 0, minDisparityFrames = 0;  // good frames with the depth output, with dmin != 0
   long rectifiedFrames = 0;                      // good frames rectified in the core
+  long confidenceFrames = 0;                     // good frames with the confidence in the word
   double badNonocc = 0;   // sum over the good frames not rectified of bad-1.0 (nonocc) vs the scene ground truth
   long scoredFrames = 0;  // those frames
   std::set<std::string> kinds, sourceStalls, sinkStalls;
@@ -279,6 +284,7 @@ std::string runCase(const Case& c, Totals& totals) {
     totals.depthFrames += f.input.params.output == OutputMode::kDepth;
     totals.minDisparityFrames += f.input.params.minDisparity != 0;
     totals.rectifiedFrames += f.input.params.rectify;
+    totals.confidenceFrames += f.input.params.outputConfidence;
     totals.widths.insert(f.input.left.cols);
     totals.minHeight = std::min(totals.minHeight, f.input.left.rows);
     totals.maxHeight = std::max(totals.maxHeight, f.input.left.rows);

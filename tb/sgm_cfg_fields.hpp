@@ -24,9 +24,9 @@ struct CfgField {
   uint32_t (*golden)(const Params& p, int w, int h);
 };
 
-constexpr int kCfgWidth = 167;  // CFG_W, SGM_CFG_W
+constexpr int kCfgWidth = 168;  // CFG_W, SGM_CFG_W
 
-inline const std::array<CfgField, 26> kCfgFields = {{
+inline const std::array<CfgField, 27> kCfgFields = {{
     {"FRAME_SIZE_WIDTH", 0x24, 0, 16, 0,
      []([[maybe_unused]] const Params& p, [[maybe_unused]] int w, [[maybe_unused]] int h) { return uint32_t(w); }},
     {"FRAME_SIZE_HEIGHT", 0x24, 16, 16, 16,
@@ -69,15 +69,17 @@ inline const std::array<CfgField, 26> kCfgFields = {{
      []([[maybe_unused]] const Params& p, [[maybe_unused]] int w, [[maybe_unused]] int h) { return uint32_t(flagBits(p.edgeReset.paths)); }},
     {"OUTPUT_MODE", 0x50, 0, 2, 100,
      []([[maybe_unused]] const Params& p, [[maybe_unused]] int w, [[maybe_unused]] int h) { return uint32_t(int(p.output)); }},
-    {"DEPTH_FOCAL_F", 0x54, 0, 24, 102,
+    {"OUTPUT_CONFIDENCE", 0x50, 2, 1, 102,
+     []([[maybe_unused]] const Params& p, [[maybe_unused]] int w, [[maybe_unused]] int h) { return uint32_t(p.outputConfidence ? 1 : 0); }},
+    {"DEPTH_FOCAL_F", 0x54, 0, 24, 103,
      []([[maybe_unused]] const Params& p, [[maybe_unused]] int w, [[maybe_unused]] int h) { return uint32_t(p.focalQ8); }},
-    {"DEPTH_BASELINE_B", 0x58, 0, 24, 126,
+    {"DEPTH_BASELINE_B", 0x58, 0, 24, 127,
      []([[maybe_unused]] const Params& p, [[maybe_unused]] int w, [[maybe_unused]] int h) { return uint32_t(p.baselineUm); }},
-    {"MIN_DISPARITY_DMIN", 0x5C, 0, 8, 150,
+    {"MIN_DISPARITY_DMIN", 0x5C, 0, 8, 151,
      []([[maybe_unused]] const Params& p, [[maybe_unused]] int w, [[maybe_unused]] int h) { return uint32_t(p.minDisparity); }},
-    {"RECTIFY_ENABLE", 0x60, 0, 1, 158,
+    {"RECTIFY_ENABLE", 0x60, 0, 1, 159,
      []([[maybe_unused]] const Params& p, [[maybe_unused]] int w, [[maybe_unused]] int h) { return uint32_t(p.rectify ? 1 : 0); }},
-    {"RECTIFY_LAG", 0x60, 8, 8, 159,
+    {"RECTIFY_LAG", 0x60, 8, 8, 160,
      []([[maybe_unused]] const Params& p, [[maybe_unused]] int w, [[maybe_unused]] int h) { return uint32_t(p.rectifyLag); }},
 }};
 

@@ -77,7 +77,7 @@ const std::set<std::string>& CliArgs::pipelineOptions() {
   static const std::set<std::string> names = {
       "d", "p1", "p2", "mode", "subpixel", "lr", "fill", "snap", "median", "census", "p2-mode", "weights", "preset",
       "uniqueness", "ad-weight", "ad-cap", "right-path", "right-block", "edge-reset", "edge-reset-len", "dmin",
-      "edge-reset-paths", "output", "focal", "baseline",
+      "edge-reset-paths", "output", "output-confidence", "focal", "baseline",
       // golden-only experiments (not in the RTL)
       "subpixel-fit", "mgm", "median-gate", "p1-paths", "snap-edge", "lr-store-bits"};
   return names;
@@ -97,6 +97,7 @@ Params CliArgs::pipelineParams(Params p) const {
   p.disparities = int(integer("d", p.disparities, kMinDisparities, kMaxDisparities));
   p.minDisparity = int(integer("dmin", p.minDisparity, 0, kMaxMinDisparity));
   if (has("output")) p.output = parseOutputMode(text("output", ""));
+  p.outputConfidence = onOff("output-confidence", p.outputConfidence);
   p.focalQ8 = int(integer("focal", p.focalQ8, 0, (1 << kDepthParamBits) - 1));
   p.baselineUm = int(integer("baseline", p.baselineUm, 0, (1 << kDepthParamBits) - 1));
   p.p1 = int(integer("p1", p.p1, 0, kMaxPenalty));

@@ -115,7 +115,7 @@ DisparityMap selectDisparity(const PathVolume& s, const Params& params, cv::Mat*
 
 DisparityMap fillHoles(const DisparityMap& in) {
   const int w = in.disp.cols, h = in.disp.rows;
-  DisparityMap out{in.disp.clone(), in.valid.clone()};
+  DisparityMap out{in.disp.clone(), in.valid.clone(), in.confidence};
   constexpr int kNone = -1;
   std::vector<int> fromRight(w);
   for (int y = 0; y < h; ++y) {
@@ -143,7 +143,7 @@ DisparityMap fillHoles(const DisparityMap& in) {
 
 DisparityMap snapEdges(const DisparityMap& in, const cv::Mat& grayLeft, int minStep) {
   const int w = in.disp.cols, h = in.disp.rows, r = kSnapReach;
-  DisparityMap out{in.disp.clone(), in.valid.clone()};
+  DisparityMap out{in.disp.clone(), in.valid.clone(), in.confidence};
   for (int y = 0; y < h; ++y) {
     const uint16_t* d = in.disp.ptr<uint16_t>(y);
     const uint8_t* v = in.valid.ptr<uint8_t>(y);
@@ -201,7 +201,7 @@ DisparityMap median5x5(const DisparityMap& in, const cv::Mat& gray, int gate) {
   std::vector<uint16_t> paddedGray(gate ? padded.size() : 0, 0);
   for (int y = 0; gate && y < h; ++y)
     for (int x = 0; x < w; ++x) paddedGray[size_t(y + r) * pw + x + r] = gray.at<uint8_t>(y, x);
-  DisparityMap out{in.disp.clone(), in.valid.clone()};
+  DisparityMap out{in.disp.clone(), in.valid.clone(), in.confidence};
   parallelFor(h, [&](int y0, int y1) {
     Lanes window[kMedianWindow];
     for (int y = y0; y < std::min(y1, h - r); ++y)  // the last r rows pass through (section 9)

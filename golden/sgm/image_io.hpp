@@ -16,6 +16,9 @@ namespace sgm {
 struct DisparityMap {
   cv::Mat disp;   // CV_16UC1, value = d * 16 (+ sub-pixel fraction)
   cv::Mat valid;  // CV_8UC1, 1 = valid
+  // CV_8UC1, the confidence of docs/algorithm.md section 7b (0 where the selection made the pixel
+  // invalid), which the later stages carry unchanged; empty unless the pipeline was asked for it.
+  cv::Mat confidence = cv::Mat();
 };
 
 // Input images (docs/algorithm.md, section 1, "Input files"): a regular file

@@ -83,7 +83,8 @@ bool Params::operator==(const Params& o) const {
          rightPathBlock == o.rightPathBlock && uniqueness == o.uniqueness && adWeight == o.adWeight &&
          adCap == o.adCap && linearSubpixel == o.linearSubpixel && mgm == o.mgm && medianGate == o.medianGate &&
          p1PathPercent == o.p1PathPercent && snapEdge == o.snapEdge && edgeReset == o.edgeReset &&
-         lrStoreBits == o.lrStoreBits && minDisparity == o.minDisparity && output == o.output && focalQ8 == o.focalQ8 &&
+         lrStoreBits == o.lrStoreBits && minDisparity == o.minDisparity && output == o.output &&
+         outputConfidence == o.outputConfidence && focalQ8 == o.focalQ8 &&
          baselineUm == o.baselineUm && rectify == o.rectify && rectifyLag == o.rectifyLag;
 }
 
@@ -129,6 +130,7 @@ std::string presetName(const Params& params) {
     Params preset = presetParams(name);
     preset.disparities = params.disparities;  // a preset fixes the algorithm, not the build's D
     preset.output = params.output;            // nor the output word
+    preset.outputConfidence = params.outputConfidence;
     preset.focalQ8 = params.focalQ8, preset.baselineUm = params.baselineUm;
     preset.rectify = params.rectify, preset.rectifyLag = params.rectifyLag;  // nor the input
     if (params == preset) return name;

@@ -157,6 +157,10 @@ struct Params {
   // and B in micrometres, each 0 .. 2^24 - 1 (sgm-eval calib-mesh gives both). They change what
   // the core sends, not the disparities: a preset is the same preset with any of them.
   OutputMode output = OutputMode::kDisparity;
+  // The confidence of section 7b in the output word's bits 23:16 (register OUTPUT.CONFIDENCE; a
+  // core built with sgm_top CONFIDENCE = 1, whose word is 24 bits): disparity plus confidence,
+  // or depth plus confidence.
+  bool outputConfidence = false;
   int focalQ8 = 0;
   int baselineUm = 0;
   // Rectification in the stream (docs/algorithm.md section 13; in the core with sgm_top RECTIFY =

@@ -48,6 +48,7 @@ PipelineStages runPipelineStages(const cv::Mat& gl, const cv::Mat& gr, const Par
                                 params.rightPathWeight, params.mgm, params.rightPathBlock, params.p1PathPercent.data(),
                                 params.edgeReset, params.lrStoreBits);
   st.selected = selectDisparity(st.aggregated, params, &st.confidence);
+  st.selected.confidence = st.confidence;
   st.filled = params.fill ? fillHoles(st.selected) : st.selected;
   st.snapped = params.snap ? snapEdges(st.filled, gl, params.snapEdge) : st.filled;
   st.result = params.median ? median5x5(st.snapped, gl, params.medianGate) : st.snapped;
@@ -82,18 +83,20 @@ DisparityMap runPipeline(const cv::Mat& gl, const cv::Mat& gr, const Params& par
     };
   }
   DisparityMap selected{cv::Mat(h, w, CV_16UC1), cv::Mat(h, w, CV_8UC1)};
-  if (confidence) confidence->create(h, w, CV_8UC1);
+  if (confidence || params.outputConfidence) selected.confidence.create(h, w, CV_8UC1);
+  const bool withConfidence = !selected.confidence.empty();
   RowSelector selectors[2] = {RowSelector(w, nd, params), RowSelector(w, nd, params)};  // one per worker
   aggregateRows(
       w, h, nd, gl, params.p1, params.p2, params.p2Mode, params.weights, costRow,
       [&](int worker, int y, const uint16_t* sum) {
         selectors[worker].select(sum, selected.disp.ptr<uint16_t>(y), selected.valid.ptr<uint8_t>(y),
-                                 confidence ? confidence->ptr<uint8_t>(y) : nullptr);
+                                 withConfidence ? selected.confidence.ptr<uint8_t>(y) : nullptr);
       },
       params.rightPathWeight, params.mgm, params.rightPathBlock, params.p1PathPercent.data(), params.edgeReset,
       params.lrStoreBits);
   const DisparityMap filled = params.fill ? fillHoles(selected) : selected;
   const DisparityMap snapped = params.snap ? snapEdges(filled, gl, params.snapEdge) : filled;
+  if (confidence) *confidence = selected.confidence;
   return params.median ? median5x5(snapped, gl, params.medianGate) : snapped;
 }
 
@@ -107,7 +110,7 @@ DisparityMap runRectifiedPipeline(const cv::Mat& rawLeft, const cv::Mat& rawRigh
   DisparityMap map = runPipeline(pair.left.gray, pair.right.gray, params, confidence);
   const cv::Mat outside = pair.left.valid == 0;
   map.disp.setTo(0, outside), map.valid.setTo(0, outside);
-  if (confidence) confidence->setTo(0, outside);
+  if (!map.confidence.empty()) map.confidence.setTo(0, outside);  // also *confidence: the same pixels
   if (rectified) *rectified = std::move(pair);
   return map;
 }

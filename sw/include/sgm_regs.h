@@ -50,12 +50,12 @@
 #define SGM_REG_MESH_CTRL          0x70u
 
 /* ---- ID (0x00): identification: "SGM" and the map version */
-/* VERSION [7:0] RO: map version: 7 (6 had no RECTIFY, 5 had no OUTPUT, DEPTH_FOCAL, DEPTH_BASELINE and MIN_DISPARITY, 4 no EDGE_RESET, 3 no FEATURES, 2 no CONFIG.UNIQUENESS, 1 no MIN_WIDTH and LANES) */
+/* VERSION [7:0] RO: map version: 8 (7 had no OUTPUT.CONFIDENCE, 6 no RECTIFY, 5 had no OUTPUT, DEPTH_FOCAL, DEPTH_BASELINE and MIN_DISPARITY, 4 no EDGE_RESET, 3 no FEATURES, 2 no CONFIG.UNIQUENESS, 1 no MIN_WIDTH and LANES) */
 #define SGM_ID_VERSION_SHIFT 0
 #define SGM_ID_VERSION_WIDTH 8
 #define SGM_ID_VERSION_MASK 0x000000FFu
-#define SGM_ID_VERSION_MIN 7u
-#define SGM_ID_VERSION_MAX 7u
+#define SGM_ID_VERSION_MIN 8u
+#define SGM_ID_VERSION_MAX 8u
 /* MAGIC [31:8] RO: "SGM" in ASCII */
 #define SGM_ID_MAGIC_SHIFT 8
 #define SGM_ID_MAGIC_WIDTH 24
@@ -63,7 +63,7 @@
 #define SGM_ID_MAGIC_MIN 5457741u
 #define SGM_ID_MAGIC_MAX 5457741u
 #define SGM_ID_MASK 0xFFFFFFFFu
-#define SGM_ID_VALUE 0x53474D07u
+#define SGM_ID_VALUE 0x53474D08u
 
 /* ---- D (0x04): disparities of the build */
 /* VALUE [31:0] RO: D */
@@ -175,6 +175,13 @@
 #define SGM_FEATURES_RECTIFY (1u << 6)
 #define SGM_FEATURES_RECTIFY_MIN 0u
 #define SGM_FEATURES_RECTIFY_MAX 1u
+/* CONFIDENCE [7] RO: the confidence, OUTPUT.CONFIDENCE: the output word is 24 bits (sgm_top CONFIDENCE) */
+#define SGM_FEATURES_CONFIDENCE_SHIFT 7
+#define SGM_FEATURES_CONFIDENCE_WIDTH 1
+#define SGM_FEATURES_CONFIDENCE_MASK 0x00000080u
+#define SGM_FEATURES_CONFIDENCE (1u << 7)
+#define SGM_FEATURES_CONFIDENCE_MIN 0u
+#define SGM_FEATURES_CONFIDENCE_MAX 1u
 /* RIGHT_BLOCK [11:8] RO: log2 of the fifth path's block B (0 without it) */
 #define SGM_FEATURES_RIGHT_BLOCK_SHIFT 8
 #define SGM_FEATURES_RIGHT_BLOCK_WIDTH 4
@@ -193,7 +200,7 @@
 #define SGM_FEATURES_RECTIFY_GRID_MASK 0x00070000u
 #define SGM_FEATURES_RECTIFY_GRID_MIN 0u
 #define SGM_FEATURES_RECTIFY_GRID_MAX 6u
-#define SGM_FEATURES_MASK 0x0007FF7Fu
+#define SGM_FEATURES_MASK 0x0007FFFFu
 
 /* ---- CTRL (0x20): control */
 /* ENABLE [0] RW: 0: a start-of-frame beat is held back (the core stops at a frame boundary) */
@@ -523,7 +530,14 @@
 #define SGM_OUTPUT_MODE_MAX 1u
 #define SGM_OUTPUT_MODE_DISPARITY 0u /* {valid, zeros, disparity x 16} (docs/algorithm.md section 10) */
 #define SGM_OUTPUT_MODE_DEPTH 1u /* the depth in mm, 0 = invalid, 65535 at and beyond the far limit (section 10b; needs FEATURES.DEPTH) */
-#define SGM_OUTPUT_MASK 0x00000003u
+/* CONFIDENCE [2] RW: 1: the output word's bits 23:16 hold the pixel's confidence (docs/algorithm.md section 7b), 0 where it is invalid; 0: they are 0 (needs FEATURES.CONFIDENCE, whose word is 24 bits) */
+#define SGM_OUTPUT_CONFIDENCE_SHIFT 2
+#define SGM_OUTPUT_CONFIDENCE_WIDTH 1
+#define SGM_OUTPUT_CONFIDENCE_MASK 0x00000004u
+#define SGM_OUTPUT_CONFIDENCE (1u << 2)
+#define SGM_OUTPUT_CONFIDENCE_MIN 0u
+#define SGM_OUTPUT_CONFIDENCE_MAX 1u
+#define SGM_OUTPUT_MASK 0x00000007u
 
 /* ---- DEPTH_FOCAL (0x54): the rectified focal length for the depth output */
 /* F [23:0] RW: f in 1/256 px (sgm-eval calib-mesh writes it) */
@@ -632,7 +646,7 @@
 
 /* ---- the frame configuration word: sgm_top's cfg_i (rtl/sgm_cfg.svh), SGM_CFG_W bits, bit 0
  * first; field F of register R at bits [SGM_CFG_R_F_LSB +: SGM_R_F_WIDTH] (docs/registers.md). */
-#define SGM_CFG_W 167u
+#define SGM_CFG_W 168u
 #define SGM_CFG_WORDS 6u /* 32-bit words of the word */
 #define SGM_CFG_FRAME_SIZE_WIDTH_LSB 0u
 #define SGM_CFG_FRAME_SIZE_HEIGHT_LSB 16u
@@ -655,11 +669,12 @@
 #define SGM_CFG_EDGE_RESET_LEN_LSB 91u
 #define SGM_CFG_EDGE_RESET_PATHS_LSB 95u
 #define SGM_CFG_OUTPUT_MODE_LSB 100u
-#define SGM_CFG_DEPTH_FOCAL_F_LSB 102u
-#define SGM_CFG_DEPTH_BASELINE_B_LSB 126u
-#define SGM_CFG_MIN_DISPARITY_DMIN_LSB 150u
-#define SGM_CFG_RECTIFY_ENABLE_LSB 158u
-#define SGM_CFG_RECTIFY_LAG_LSB 159u
+#define SGM_CFG_OUTPUT_CONFIDENCE_LSB 102u
+#define SGM_CFG_DEPTH_FOCAL_F_LSB 103u
+#define SGM_CFG_DEPTH_BASELINE_B_LSB 127u
+#define SGM_CFG_MIN_DISPARITY_DMIN_LSB 151u
+#define SGM_CFG_RECTIFY_ENABLE_LSB 159u
+#define SGM_CFG_RECTIFY_LAG_LSB 160u
 
 /* ---- constants */
 #define SGM_MIN_HEIGHT 9u /* shortest frame of every build (sgm_stream_ctrl) */

@@ -21,6 +21,8 @@ module sgm_top #(
   parameter int RECTIFY     = 0,
   parameter int RECTIFY_ROWS = 32,
   parameter int RECTIFY_GRID_LOG2 = 4,
+  parameter int CONFIDENCE  = 0,
+  localparam int OUT_W      = CONFIDENCE != 0 ? 24 : 16,
   localparam int XW         = $clog2(MAX_WIDTH + 1),
   localparam int YW         = $clog2(MAX_HEIGHT + 16)
 ) (
@@ -31,7 +33,7 @@ module sgm_top #(
   input  wire           s_tlast_i,
   input  wire           s_tvalid_i,
   output logic          s_tready_o,
-  output logic [15:0]   m_tdata_o,
+  output logic [OUT_W-1:0] m_tdata_o,
   output logic          m_tuser_o,
   output logic          m_tlast_o,
   output logic          m_tvalid_o,
@@ -56,7 +58,7 @@ module sgm_top #(
 );
 
   (* anyseq *) logic          any_tready, any_tuser, any_tlast, any_tvalid, any_busy, any_done;
-  (* anyseq *) logic [15:0]   any_tdata;
+  (* anyseq *) logic [OUT_W-1:0] any_tdata;
   (* anyseq *) logic [3:0]    any_error, any_event;
   (* anyseq *) logic [XW-1:0] any_width, any_min_width;
   (* anyseq *) logic [YW-1:0] any_height;

@@ -127,7 +127,8 @@ int main(int argc, char** argv) {
               << totals.combinations.size()
               << " of 96 switch combinations (mode x sub-pixel x LR x fill x median x snap); " << totals.depthFrames
               << " depth frames, " << totals.minDisparityFrames << " with a minimum disparity, "
-              << totals.rectifiedFrames << " rectified; stalls: source " << totals.sourceStalls.size() << " of 5, sink "
+              << totals.rectifiedFrames << " rectified, " << totals.confidenceFrames
+              << " with the confidence; stalls: source " << totals.sourceStalls.size() << " of 5, sink "
               << totals.sinkStalls.size() << " of 5 profiles; case kinds " << totals.kinds.size() << "; " << seconds
               << " s; master seed " << master << "\n";
     if (!xmlPath.empty()) writeXml(xmlPath, results);

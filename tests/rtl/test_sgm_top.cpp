@@ -58,6 +58,7 @@ constexpr bool kMinDisparity = Vsgm_top_sgm_top::MIN_DISPARITY != 0;  // the bui
 constexpr bool kRectify = Vsgm_top_sgm_top::RECTIFY != 0;             // the build has the rectification
 constexpr int kRectifyRows = Vsgm_top_sgm_top::RECTIFY_ROWS;
 constexpr int kRectifyGridLog2 = Vsgm_top_sgm_top::RECTIFY_GRID_LOG2;
+constexpr bool kConfidence = Vsgm_top_sgm_top::CONFIDENCE != 0;       // the build has the confidence
 constexpr bool kLean = !kUniqueness || !kAdTerm;
 
 // The settings with every lever the build lacks off (bit-exact tests run what the build
@@ -78,7 +79,8 @@ sgm::Params withBuildLevers(sgm::Params p) {
 bool asksMissingLever(const sgm::Params& p) {
   return (p.uniqueness && !kUniqueness) || (p.adWeight && !kAdTerm) || (p.rightPathWeight && !kRightBlock) ||
          (p.edgeReset.threshold && !kEdgeReset) || (p.output == sgm::OutputMode::kDepth && !kDepth) ||
-         (p.minDisparity && !kMinDisparity) || ((p.rectify || p.rectifyLag) && !kRectify);
+         (p.minDisparity && !kMinDisparity) || ((p.rectify || p.rectifyLag) && !kRectify) ||
+         (p.outputConfidence && !kConfidence);
 }
 
 // A textured left image and a right image shifted by a few pixels plus noise.
@@ -337,6 +339,8 @@ TEST(SgmTop, LeversTheBuildLacksAreDroppedThenGoodFrame) {
   depthOff.focalQ8 = (1 << 24) - 1, depthOff.baselineUm = 7;  // disparity words: f and B unused
   sgm::Params dmin1 = hardwareDefaults();
   dmin1.minDisparity = 1;  // the smallest that asks for the lever
+  sgm::Params confidence = hardwareDefaults();
+  confidence.outputConfidence = true;
   const std::vector<std::pair<std::string, sgm::Params>> asks = {{"uniqueness 25", unique},
                                                                  {"uniqueness 1", unique1},
                                                                  {"AD weight 4 cap 30", ad},
@@ -348,7 +352,8 @@ TEST(SgmTop, LeversTheBuildLacksAreDroppedThenGoodFrame) {
                                                                  {"path restart T 0, R 15, every flag", restartOff},
                                                                  {"depth output", depth},
                                                                  {"disparity output with f and B", depthOff},
-                                                                 {"minimum disparity 1", dmin1}};
+                                                                 {"minimum disparity 1", dmin1},
+                                                                 {"confidence in the word", confidence}};
   std::vector<FrameInput> frames = {syntheticPair(kMinWidth + 2, 9, rng, hardwareDefaults())};
   std::vector<std::string> what = {"first good frame"};
   for (const auto& [name, p] : asks) {
@@ -365,7 +370,8 @@ TEST(SgmTop, LeversTheBuildLacksAreDroppedThenGoodFrame) {
     const std::string build = std::string(" (UNIQUENESS=") + (kUniqueness ? "1" : "0") +
                               ", AD_TERM=" + (kAdTerm ? "1" : "0") + ", RIGHT_BLOCK=" + std::to_string(kRightBlock) +
                               ", EDGE_RESET=" + (kEdgeReset ? "1" : "0") + ", DEPTH=" + (kDepth ? "1" : "0") +
-                              ", MIN_DISPARITY=" + (kMinDisparity ? "1" : "0") + ")";
+                              ", MIN_DISPARITY=" + (kMinDisparity ? "1" : "0") +
+                              ", CONFIDENCE=" + (kConfidence ? "1" : "0") + ")";
     if (frames[k].dropped) {
       EXPECT_EQ(out[k].errors, 8u) << what[k] << build << ": error_o of a frame asking for a lever the build lacks";
       continue;
@@ -512,6 +518,56 @@ TEST(SgmTop, DepthOutputIsExact) {
   const cv::Mat saturated = sgm::outputWords(sgm::runPipeline(frames[2].left, frames[2].right, frames[2].params),
                                              frames[2].params);
   EXPECT_GT(cv::countNonZero(saturated == 65535), 0);
+}
+
+// The confidence (CONFIDENCE = 1): frames with OUTPUT.CONFIDENCE on and off back to back with
+// stalls, with the LR check on and off, the uniqueness ratio, sub-pixel, the depth output (a
+// DEPTH build: the confidence waits for sgm_depth) and a raw pair through its calibration (a
+// RECTIFY build: word 0 where the source is outside): bits 23:16 equal the golden model's
+// confidence (docs/algorithm.md section 7b) with it on and are 0 with it off, and bits 15:0
+// stay exact.
+TEST(SgmTop, ConfidenceInTheOutputWordIsExact) {
+  if (!kConfidence) GTEST_SKIP() << "this build has no confidence (sgm_top CONFIDENCE = 0)";
+  std::mt19937 rng(53);
+  const sgm::Params base = withBuildLevers(hardwareDefaults());
+  std::vector<FrameInput> frames;
+  std::vector<std::shared_ptr<const sgm::StereoMesh>> calibration;
+  for (int k = 0; k < 8; ++k) {
+    sgm::Params p = base;
+    p.outputConfidence = k != 2 && k != 5;
+    p.lrTolerance = k == 3 ? -1 : k == 4 ? 0 : 1;
+    p.uniqueness = kUniqueness ? (k == 1 ? 0 : k == 6 ? 40 : 15) : 0;
+    p.subpixel = k % 2 == 0;
+    if (kDepth && k == 6) p.output = sgm::OutputMode::kDepth, p.focalQ8 = 700 * 256, p.baselineUm = 60000;
+    const int w = k % 3 == 0 ? kMaxWidth : kMinWidth + 5 * k, h = 9 + 3 * (k % 4);
+    FrameInput f = syntheticPair(w, h, rng, p);
+    std::shared_ptr<const sgm::StereoMesh> mesh;
+    if (kRectify && k == 7) {
+      int lag = 0;
+      auto m = sgm::tb::fittingCalibration(w, h, kRectifyGridLog2, kRectifyRows, 1.0, 1.0, rng, &lag);
+      for (int32_t& u : m->left.u) u += 3 * 32;  // the last columns' sources outside: word 0
+      f.params.rectify = true, f.params.rectifyLag = std::max(lag, sgm::meshRowSpan(m->left).lag);
+      f.mesh = mesh = m;
+    }
+    calibration.push_back(mesh);
+    frames.push_back(f);
+  }
+  Harness core("sgm_top_confidence", 53, {0.2, 0.3});
+  const std::vector<sgm::tb::FrameOutput> out = core.run(frames);
+  long confident = 0, zero = 0;
+  for (size_t k = 0; k < frames.size(); ++k) {
+    const sgm::DisparityMap golden =
+        calibration[k] ? sgm::runRectifiedPipeline(frames[k].left, frames[k].right, *calibration[k], frames[k].params)
+                       : sgm::runPipeline(frames[k].left, frames[k].right, frames[k].params);
+    EXPECT_EQ(sgm::tb::compareOutput(golden, frames[k].params, out[k], "sgm_top output"), "")
+        << "frame " << k << (frames[k].params.outputConfidence ? ", confidence on" : ", confidence off");
+    EXPECT_EQ(out[k].errors, 0u) << "frame " << k;
+    if (frames[k].params.outputConfidence)
+      confident += cv::countNonZero(out[k].confidence), zero += long(out[k].confidence.total()) - cv::countNonZero(out[k].confidence);
+  }
+  // Both kinds of pixel occur: the comparison is not of constants.
+  EXPECT_GT(confident, 0);
+  EXPECT_GT(zero, 0);
 }
 
 // Every malformed kind, in two places each, between good frames: the core
