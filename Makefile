@@ -139,11 +139,13 @@ golden: $(BIN)/sgm-golden $(BIN)/sgm-eval
 #          [STALL=0.0] [SEED=1] [FRAMES=1] [TRACE=1] [PRESET=default|four-path|paper] [CENSUS=9x5|9x9] [LANES=1]
 #          [RIGHT_BLOCK=64 [RIGHT_WEIGHT=]] [MAX_HEIGHT=1024] [UNIQUENESS=1] [AD_TERM=1] [EDGE_RESET=1]
 #          [DEPTH=0 [OUTPUT=depth FOCAL=F BASELINE=B]] [MIN_DISPARITY=0 [DMIN=N]]
-#          [CALIB=DIR [UNIT_MM=U]] [RECTIFY=0 [RECTIFY_ROWS=32] [RECTIFY_GRID_LOG2=4]]
+#          [CALIB=DIR [UNIT_MM=U]] [RECTIFY=0 [RECTIFY_ROWS=32] [RECTIFY_GRID_LOG2=4]] [CONFIDENCE=0]
 # CALIB=DIR: LEFT and RIGHT are a raw camera pair and DIR its OpenCV calibration
 # (intrinsics.yml, extrinsics.yml); it builds the rectification (RECTIFY=1: a line buffer
-# of RECTIFY_ROWS rows, mesh steps of 2^RECTIFY_GRID_LOG2 px) and runs sgm-sim --calib DIR
-# (3 frames back to back; the ground truth GT is in the rectified frame).
+# of RECTIFY_ROWS rows, mesh steps of 2^RECTIFY_GRID_LOG2 px) and the confidence, and runs
+# sgm-sim --calib DIR (3 frames back to back; the ground truth GT is in the rectified frame).
+# CONFIDENCE=1 builds the confidence: the output word's bits 23:16, written as confidence.png
+# and confidence_color.png (sgm-sim --output-confidence, on by default in such a build).
 # DEPTH=1 builds the depth output; OUTPUT=depth runs it with f = F/256 px and B um (sgm-sim
 # --output depth --focal F --baseline B: writes depth16.png and depth_color.png);
 # MIN_DISPARITY=1 builds the minimum disparity, DMIN=N runs it (sgm-sim --dmin N).
@@ -319,8 +321,9 @@ $(eval $(call rtl_test,path-ring-d32-k6,sgm_path_ring,-GD=32 -GLANES=6 -CFLAGS -
 $(eval $(call rtl_test,path-ring-d64-k4,sgm_path_ring,-GD=64 -GLANES=4 -CFLAGS -DSGM_D=64))
 $(eval $(call rtl_test,path-ring-d64-k6,sgm_path_ring,-GD=64 -GLANES=6 -CFLAGS -DSGM_D=64))
 $(eval $(call rtl_test,wta-d16,sgm_wta,-GD=16))
-$(eval $(call rtl_test,wta-d64,sgm_wta,-GD=64))
+$(eval $(call rtl_test,wta-d64,sgm_wta,-GD=64 -GCONFIDENCE=1))
 $(eval $(call rtl_test,wta-d16-lean,sgm_wta,-GD=16 -GUNIQUENESS=0))
+$(eval $(call rtl_test,wta-d16-conf,sgm_wta,-GD=16 -GUNIQUENESS=0 -GCONFIDENCE=1))
 $(eval $(call rtl_test,lr-check-d16,sgm_lr_check,-GD=16 -GMAX_WIDTH=128))
 $(eval $(call rtl_test,lr-check-d64,sgm_lr_check,-GD=64 -GMAX_WIDTH=128))
 $(eval $(call rtl_test,lr-check-d16-lean,sgm_lr_check,-GD=16 -GMAX_WIDTH=128 -GUNIQUENESS=0))

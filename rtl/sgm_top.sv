@@ -939,7 +939,7 @@ module sgm_top #(
   end else begin : g_no_confidence
     assign res_word  = word16;
     assign res_valid = word16_valid;
-    wire unused_conf = ^{lr_conf, col8, cfg[CFG_OUTPUT_CONFIDENCE_LSB]};
+    wire [8+XW:0] unused_conf = {lr_conf, col8, cfg[CFG_OUTPUT_CONFIDENCE_LSB]};
   end
 
 endmodule

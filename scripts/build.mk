@@ -94,7 +94,8 @@ MIN_DISPARITY ?= $(call core_default,MIN_DISPARITY)
 RECTIFY     ?= $(if $(CALIB),1,$(call core_default,RECTIFY))
 RECTIFY_ROWS ?= $(call core_default,RECTIFY_ROWS)
 RECTIFY_GRID_LOG2 ?= $(call core_default,RECTIFY_GRID_LOG2)
-CONFIDENCE  ?= $(call core_default,CONFIDENCE)
+# CALIB=DIR also builds the confidence (make sim writes the confidence picture).
+CONFIDENCE  ?= $(if $(CALIB),1,$(call core_default,CONFIDENCE))
 CENSUS      ?= $(if $(filter paper,$(PRESET)),9x9,9x5)
 CENSUS_H     = $(if $(filter 9x9,$(CENSUS)),9,$(if $(filter 9x5,$(CENSUS)),5,$(error CENSUS=$(CENSUS): expected 9x5 or 9x9)))
 # The build those knobs name (make sim, make synth; make bench at its own MAX_WIDTH).

@@ -7,7 +7,9 @@
 // pair is raw: the core rectifies it through the meshes of the calibration in DIR (OpenCV's
 // intrinsics.yml and extrinsics.yml, sgm-eval calib-mesh's arithmetic), the golden model is
 // sgm::runRectifiedPipeline, and the rectified pair (the golden model's) is written too; a
-// build with DEPTH = 1 also runs one frame of depth from the calibration's f and B.
+// build with DEPTH = 1 also runs one frame of depth from the calibration's f and B. A build with
+// CONFIDENCE = 1 sends the confidence in bits 23:16 (--output-confidence, on by default there),
+// checked against the golden model's and written as confidence.png and a picture.
 #include "Vsgm_top.h"
 #include "Vsgm_top_sgm_top.h"
 #include "core_harness.hpp"
@@ -46,7 +48,7 @@ const char* kUsage =
     "usage: sgm-sim [--left L --right R [--gt G] [--gt-scale S] [--calib DIR [--unit-mm U]]] [--out DIR]\n"
     "               [--stall P] [--seed N] [--frames N] [--preset default|four-path|paper] [pipeline options]\n"
     "Pipeline options as sgm-golden's (--d --p1 --p2 --mode --subpixel --lr --fill --snap\n"
-    "--median --census --p2-mode --weights --output --focal --baseline; not the golden-only\n"
+    "--median --census --p2-mode --weights --output --output-confidence --focal --baseline; not the golden-only\n"
     "experiments); options after\n"
     "--preset override it. The census window must be the build's (make sim CENSUS=9x9 or\n"
     "PRESET=paper builds 9x9).\n"
@@ -77,7 +79,9 @@ int main(int argc, char** argv) {
     BuildLevers build;
     build.rightBlock = kRightBlock, build.census9x9 = kCensusH == 9;
     build.edgeReset = Vsgm_top_sgm_top::EDGE_RESET != 0;
-    const Params params = args.pipelineParams(buildDefaults(build, SGM_D));  // the build's defaults, then the options
+    Params base = buildDefaults(build, SGM_D);                  // the build's defaults, then the options
+    base.outputConfidence = Vsgm_top_sgm_top::CONFIDENCE != 0;  // a build with the confidence sends it
+    const Params params = args.pipelineParams(base);
     if (params.disparities != SGM_D)
       throw Error("this simulator is built for D=" + std::to_string(SGM_D) +
                   " (make sim D=" + std::to_string(params.disparities) + " builds another)");
@@ -98,6 +102,10 @@ int main(int argc, char** argv) {
     if (params.minDisparity && !Vsgm_top_sgm_top::MIN_DISPARITY)
       throw Error("--dmin " + std::to_string(params.minDisparity) +
                   ": this simulator is built without the minimum disparity (make sim MIN_DISPARITY=1 builds one)");
+    if (params.outputConfidence && !Vsgm_top_sgm_top::CONFIDENCE)
+      throw Error(
+          "--output-confidence on: this simulator is built without the confidence (make sim CONFIDENCE=1 "
+          "builds one)");
     const bool depthOut = params.output == OutputMode::kDepth;
     if (depthOut && !Vsgm_top_sgm_top::DEPTH)
       throw Error("this simulator is built without the depth output (make sim DEPTH=1 builds one)");
@@ -216,6 +224,11 @@ int main(int argc, char** argv) {
       if (scene.hasGroundTruth())
         pictures.push_back({out + "/sidebyside.png", eval::sideBySide(scene, eval::toFloat(rtl), maxD)});
     }
+    if (params.outputConfidence) {  // the first frame's bits 23:16 (docs/algorithm.md section 7b)
+      pictures.push_back({out + "/confidence.png", outputs[0].confidence});
+      pictures.push_back({out + "/confidence_color.png",
+                          eval::confidencePicture(outputs[0].confidence, "confidence (" + scene.name + ")")});
+    }
     if (calibrated) {
       pictures.push_back({out + "/rectified_left.png", rectified.left.gray});
       pictures.push_back({out + "/rectified_right.png", rectified.right.gray});
@@ -257,6 +270,7 @@ int main(int argc, char** argv) {
     json.key("weights").string(pathWeightingName(params.weights));
     json.key("min_disparity").integer(params.minDisparity);
     json.key("output").string(outputModeName(params.output));
+    json.key("output_confidence").boolean(params.outputConfidence);
     if (depthOut) {
       json.key("focal_q8").integer(params.focalQ8);
       json.key("baseline_um").integer(params.baselineUm);

@@ -25,7 +25,9 @@ uint32_t Driver::encodeEdgeReset(const FrameConfig& f) {
          SGM_PUT(EDGE_RESET_PATHS, f.edgeResetPaths);
 }
 
-uint32_t Driver::encodeOutput(const FrameConfig& f) { return SGM_PUT(OUTPUT_MODE, f.output); }
+uint32_t Driver::encodeOutput(const FrameConfig& f) {
+  return SGM_PUT(OUTPUT_MODE, f.output) | SGM_PUT(OUTPUT_CONFIDENCE, f.confidence);
+}
 uint32_t Driver::encodeDepthFocal(const FrameConfig& f) { return SGM_PUT(DEPTH_FOCAL_F, f.focalQ8); }
 uint32_t Driver::encodeDepthBaseline(const FrameConfig& f) { return SGM_PUT(DEPTH_BASELINE_B, f.baselineUm); }
 uint32_t Driver::encodeMinDisparity(const FrameConfig& f) { return SGM_PUT(MIN_DISPARITY_DMIN, f.minDisparity); }
@@ -44,6 +46,7 @@ bool Driver::featuresFit(const Identity& id, const FrameConfig& f) {
          (f.edgeReset == 0 || (id.features & SGM_FEATURES_EDGE_RESET)) &&
          (f.output != SGM_OUTPUT_MODE_DEPTH || (id.features & SGM_FEATURES_DEPTH)) &&
          (f.minDisparity == 0 || (id.features & SGM_FEATURES_MIN_DISPARITY)) &&
+         (!f.confidence || (id.features & SGM_FEATURES_CONFIDENCE)) &&
          ((!f.rectify && f.rectifyLag == 0) ||
           ((id.features & SGM_FEATURES_RECTIFY) && f.rectifyLag + 2 <= rectifyRows(id)));
 }
@@ -125,6 +128,7 @@ FrameConfig Driver::decode(uint32_t size, uint32_t penalty, uint32_t config, uin
   f.edgeResetLength = SGM_GET(edge, EDGE_RESET_LEN);
   f.edgeResetPaths = SGM_GET(edge, EDGE_RESET_PATHS);
   f.output = SGM_GET(output, OUTPUT_MODE);
+  f.confidence = SGM_GET(output, OUTPUT_CONFIDENCE);
   f.focalQ8 = SGM_GET(focal, DEPTH_FOCAL_F);
   f.baselineUm = SGM_GET(baseline, DEPTH_BASELINE_B);
   f.minDisparity = SGM_GET(minDisparity, MIN_DISPARITY_DMIN);

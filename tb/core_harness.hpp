@@ -128,8 +128,9 @@ inline std::string compareConfidence(const DisparityMap& golden, const Params& p
       if (e == g) continue;
       if (count++ == 0) {
         std::ostringstream msg;
-        msg << "stage " << stage << " (confidence, bits 23:16" << (params.outputConfidence ? "" : ", OUTPUT.CONFIDENCE 0")
-            << "): first mismatch at (x=" << x << ", y=" << y << "): expected " << e << ", got " << g;
+        msg << "stage " << stage << " (confidence, bits 23:16"
+            << (params.outputConfidence ? "" : ", OUTPUT.CONFIDENCE 0") << "): first mismatch at (x=" << x
+            << ", y=" << y << "): expected " << e << ", got " << g;
         first = msg.str();
       }
     }

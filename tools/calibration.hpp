@@ -70,7 +70,7 @@ StereoMesh stereoMesh(const StereoCalibration& calibration, cv::Size size, int g
 StereoCalibration syntheticCalibration(int width, int height, double baseline);
 
 // The raw view of a rectified image: each raw pixel takes the rectified image at the
-// position the camera's rectification maps it to (cv::undistortPoints, bilinear,
+// position the camera's rectification maps it to (cv::undistortPoints, Lanczos-4,
 // the border replicated).
 cv::Mat rawFromRectified(const cv::Mat& rectified, const Camera& camera);
 

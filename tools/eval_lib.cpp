@@ -341,6 +341,48 @@ cv::Mat sideBySide(const Scene& scene, const cv::Mat& disp, float maxDisparity, 
   return out;
 }
 
+namespace {
+
+// level (CV_8UC1) in the JET colours, black where none (CV_8UC1, may be empty), under a
+// title, above a colour bar whose left end is level leftLevel and right end 255 - leftLevel,
+// with five ticks from leftValue to rightValue and a legend.
+cv::Mat colourBarPicture(const cv::Mat& level, const cv::Mat& none, const std::string& title, int leftLevel,
+                         double leftValue, double rightValue, const std::string& legend) {
+  cv::Mat color;
+  cv::applyColorMap(level, color, cv::COLORMAP_JET);
+  if (!none.empty()) color.setTo(cv::Scalar::all(0), none);
+  const int w = level.cols, h = level.rows;
+  const double font = std::clamp(w / 750.0, 0.35, 0.8);
+  const int line = int(std::lround(30 * font / 0.6)), pad = line / 3;
+  const int titleH = line + pad, barH = std::max(8, line / 2), legendH = barH + 2 * line + pad;
+  const cv::Scalar ink(30, 30, 30), muted(90, 90, 90);
+  cv::Mat out(titleH + h + legendH, w, CV_8UC3, cv::Scalar::all(255));
+  color.copyTo(out(cv::Rect(0, titleH, w, h)));
+  int base = 0;  // the title fits the picture's width
+  const double titleWidth = cv::getTextSize(title, cv::FONT_HERSHEY_SIMPLEX, font, 1, &base).width;
+  drawCentredText(out, title, w / 2, titleH - pad, font * std::min(1.0, 0.95 * w / titleWidth), ink);
+  const cv::Rect bar(w / 8, titleH + h + pad, w - w / 4, barH);
+  cv::Mat ramp(1, bar.width, CV_8UC1);
+  for (int x = 0; x < bar.width; ++x) {
+    const double t = double(x) / std::max(1, bar.width - 1);  // 0 at the left end
+    ramp.at<uint8_t>(0, x) = uint8_t(std::lround(leftLevel + (255 - 2 * leftLevel) * t));
+  }
+  cv::Mat rampColor;
+  cv::applyColorMap(ramp, rampColor, cv::COLORMAP_JET);
+  cv::resize(rampColor, out(bar), bar.size(), 0, 0, cv::INTER_NEAREST);
+  cv::rectangle(out, bar, ink, 1);
+  for (int k = 0; k <= 4; ++k) {
+    const int x = bar.x + (bar.width - 1) * k / 4;
+    cv::line(out, {x, bar.y + bar.height}, {x, bar.y + bar.height + pad}, ink, 1);
+    drawCentredText(out, pixels(float(std::lround(leftValue + (rightValue - leftValue) * k / 4))), x,
+                    bar.y + bar.height + pad + line * 2 / 3, font * 0.8, ink);
+  }
+  drawCentredText(out, legend, bar.x + bar.width / 2, bar.y + bar.height + pad + line * 3 / 2, font * 0.8, muted);
+  return out;
+}
+
+}  // namespace
+
 cv::Mat depthPicture(const cv::Mat& depthMm, const std::string& title) {
   if (depthMm.type() != CV_16UC1) throw Error("depthPicture: expected a 16-bit depth map");
   std::vector<uint16_t> valid;
@@ -355,36 +397,13 @@ cv::Mat depthPicture(const cv::Mat& depthMm, const std::string& title) {
     for (int x = 0; x < depthMm.cols; ++x)
       level.at<uint8_t>(
           y, x) = uint8_t(std::lround(255.0 * std::clamp((hi - depthMm.at<uint16_t>(y, x)) / (hi - lo), 0.0, 1.0)));
-  cv::Mat color;
-  cv::applyColorMap(level, color, cv::COLORMAP_JET);
-  color.setTo(cv::Scalar::all(0), depthMm == 0);
-  const int w = depthMm.cols, h = depthMm.rows;
-  const double font = std::clamp(w / 750.0, 0.35, 0.8);
-  const int line = int(std::lround(30 * font / 0.6)), pad = line / 3;
-  const int titleH = line + pad, barH = std::max(8, line / 2), legendH = barH + 2 * line + pad;
-  const cv::Scalar ink(30, 30, 30), muted(90, 90, 90);
-  cv::Mat out(titleH + h + legendH, w, CV_8UC3, cv::Scalar::all(255));
-  color.copyTo(out(cv::Rect(0, titleH, w, h)));
-  int base = 0;  // the title fits the picture's width
-  const double titleWidth = cv::getTextSize(title, cv::FONT_HERSHEY_SIMPLEX, font, 1, &base).width;
-  drawCentredText(out, title, w / 2, titleH - pad, font * std::min(1.0, 0.95 * w / titleWidth), ink);
-  const cv::Rect bar(w / 8, titleH + h + pad, w - w / 4, barH);
-  cv::Mat ramp(1, bar.width, CV_8UC1);
-  for (int x = 0; x < bar.width; ++x)  // near (left) to far (right)
-    ramp.at<uint8_t>(0, x) = uint8_t(std::lround(255.0 * (bar.width - 1 - x) / std::max(1, bar.width - 1)));
-  cv::Mat rampColor;
-  cv::applyColorMap(ramp, rampColor, cv::COLORMAP_JET);
-  cv::resize(rampColor, out(bar), bar.size(), 0, 0, cv::INTER_NEAREST);
-  cv::rectangle(out, bar, ink, 1);
-  for (int k = 0; k <= 4; ++k) {
-    const int x = bar.x + (bar.width - 1) * k / 4;
-    cv::line(out, {x, bar.y + bar.height}, {x, bar.y + bar.height + pad}, ink, 1);
-    drawCentredText(out, pixels(float(std::lround(lo + (hi - lo) * k / 4))), x, bar.y + bar.height + pad + line * 2 / 3,
-                    font * 0.8, ink);
-  }
-  drawCentredText(out, "depth (mm); black: none", bar.x + bar.width / 2, bar.y + bar.height + pad + line * 3 / 2,
-                  font * 0.8, muted);
-  return out;
+  // Near (left) to far (right).
+  return colourBarPicture(level, depthMm == 0, title, 255, lo, hi, "depth (mm); black: none");
+}
+
+cv::Mat confidencePicture(const cv::Mat& confidence, const std::string& title) {
+  if (confidence.type() != CV_8UC1) throw Error("confidencePicture: expected an 8-bit confidence map");
+  return colourBarPicture(confidence, cv::Mat(), title, 0, 0, 255, "confidence (0: invalid or none)");
 }
 
 }  // namespace sgm::eval

@@ -120,5 +120,8 @@ cv::Mat sideBySide(const Scene& scene, const cv::Mat& disparity, float maxDispar
 // saturation (65535, drawn blue), invalid black,
 // with the title above and a colour bar in mm below.
 cv::Mat depthPicture(const cv::Mat& depthMm, const std::string& title);
+// The confidence map (CV_8UC1, docs/algorithm.md section 7b) in colours (0 .. 255 from blue to
+// red) under a title, with a colour bar: confidence.png of make sim (a CONFIDENCE build).
+cv::Mat confidencePicture(const cv::Mat& confidence, const std::string& title);
 
 }  // namespace sgm::eval

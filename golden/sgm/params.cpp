@@ -84,8 +84,8 @@ bool Params::operator==(const Params& o) const {
          adCap == o.adCap && linearSubpixel == o.linearSubpixel && mgm == o.mgm && medianGate == o.medianGate &&
          p1PathPercent == o.p1PathPercent && snapEdge == o.snapEdge && edgeReset == o.edgeReset &&
          lrStoreBits == o.lrStoreBits && minDisparity == o.minDisparity && output == o.output &&
-         outputConfidence == o.outputConfidence && focalQ8 == o.focalQ8 &&
-         baselineUm == o.baselineUm && rectify == o.rectify && rectifyLag == o.rectifyLag;
+         outputConfidence == o.outputConfidence && focalQ8 == o.focalQ8 && baselineUm == o.baselineUm &&
+         rectify == o.rectify && rectifyLag == o.rectifyLag;
 }
 
 const std::vector<std::string>& presetNames() {

@@ -65,6 +65,9 @@ struct FrameConfig {
   // sgm-eval calib-mesh prints both).
   uint32_t output = SGM_OUTPUT_MODE_DISPARITY;
   uint32_t focalQ8 = 0, baselineUm = 0;
+  // The pixel's confidence in bits 23:16 of the output word (a build with
+  // SGM_FEATURES_CONFIDENCE, whose word is 24 bits), beside either output.
+  bool confidence = false;
   // The minimum disparity dmin, 0 .. 255 (a build with SGM_FEATURES_MIN_DISPARITY): the
   // search covers dmin .. dmin + D - 1 and the output is the true disparity.
   uint32_t minDisparity = 0;
@@ -146,7 +149,8 @@ class Driver {
   // SGM_FEATURES_AD_TERM, rightWeight != 0 without SGM_FEATURES_RIGHT_PATH, edgeReset != 0
   // without SGM_FEATURES_EDGE_RESET, the depth output without SGM_FEATURES_DEPTH, or
   // minDisparity != 0 without SGM_FEATURES_MIN_DISPARITY, rectify or rectifyLag != 0 without
-  // SGM_FEATURES_RECTIFY or a rectifyLag above rectifyRows(id) - 2, and flags ERROR.CONFIG).
+  // SGM_FEATURES_RECTIFY or a rectifyLag above rectifyRows(id) - 2, the confidence without
+  // SGM_FEATURES_CONFIDENCE, and flags ERROR.CONFIG).
   static bool featuresFit(const Identity& id, const FrameConfig& frame);
   // The fifth path's block B of the build (0: the build has no fifth path).
   static uint32_t rightBlock(const Identity& id);

@@ -39,7 +39,7 @@ constexpr uint32_t kFeatures =
     (Rtl::UNIQUENESS ? SGM_FEATURES_UNIQUENESS : 0u) | (Rtl::AD_TERM ? SGM_FEATURES_AD_TERM : 0u) |
     (Rtl::RIGHT_BLOCK ? SGM_FEATURES_RIGHT_PATH | log2Of(Rtl::RIGHT_BLOCK) << SGM_FEATURES_RIGHT_BLOCK_SHIFT : 0u) |
     (Rtl::EDGE_RESET ? SGM_FEATURES_EDGE_RESET : 0u) | (Rtl::DEPTH ? SGM_FEATURES_DEPTH : 0u) |
-    (Rtl::MIN_DISPARITY ? SGM_FEATURES_MIN_DISPARITY : 0u) |
+    (Rtl::MIN_DISPARITY ? SGM_FEATURES_MIN_DISPARITY : 0u) | (Rtl::CONFIDENCE ? SGM_FEATURES_CONFIDENCE : 0u) |
     (Rtl::RECTIFY ? SGM_FEATURES_RECTIFY | log2Of(Rtl::RECTIFY_ROWS) << SGM_FEATURES_RECTIFY_ROWS_SHIFT |
                         uint32_t(Rtl::RECTIFY_GRID_LOG2) << SGM_FEATURES_RECTIFY_GRID_SHIFT
                   : 0u);
@@ -231,6 +231,7 @@ TEST(SgmAxi, RtlOffsetsAndResetValuesMatchTheHeader) {
       {"FEATURES_DEPTH", {1u << Rtl::FEATURES_DEPTH_LSB, SGM_FEATURES_DEPTH}},
       {"FEATURES_MIN_DISPARITY", {1u << Rtl::FEATURES_MIN_DISPARITY_LSB, SGM_FEATURES_MIN_DISPARITY}},
       {"FEATURES_RECTIFY", {1u << Rtl::FEATURES_RECTIFY_LSB, SGM_FEATURES_RECTIFY}},
+      {"FEATURES_CONFIDENCE", {1u << Rtl::FEATURES_CONFIDENCE_LSB, SGM_FEATURES_CONFIDENCE}},
       {"FEATURES_RECTIFY_ROWS", {uint32_t(Rtl::FEATURES_RECTIFY_ROWS_LSB), SGM_FEATURES_RECTIFY_ROWS_SHIFT}},
       {"FEATURES_RECTIFY_GRID", {uint32_t(Rtl::FEATURES_RECTIFY_GRID_LSB), SGM_FEATURES_RECTIFY_GRID_SHIFT}},
       {"EDGE_RESET_RESET", {Rtl::EDGE_RESET_RESET, kEdgeResetReset}},
@@ -391,21 +392,25 @@ TEST(SgmAxi, FeaturesAgreeWithTheCore) {
   depth.output = sgm::OutputMode::kDepth, depth.focalQ8 = 600 * 256, depth.baselineUm = 75000;
   sgm::Params dmin = withBuildLevers(defaults());  // the minimum disparity
   dmin.minDisparity = 5;
+  sgm::Params confidence = withBuildLevers(defaults());  // the confidence in the word
+  confidence.outputConfidence = true;
   EXPECT_EQ(drv::Driver::rightBlock(id), uint32_t(Rtl::RIGHT_BLOCK));
   const int w = 40, h = 11;
   uint32_t seed = 30;
-  for (const sgm::Params& p : {unique, ad, right, restart, depth, dmin}) {
+  for (const sgm::Params& p : {unique, ad, right, restart, depth, dmin, confidence}) {
     const drv::FrameConfig config = frameConfig(p, {w, h});
     const bool fits = drv::Driver::featuresFit(id, config);
     const bool asksDepth = p.output == sgm::OutputMode::kDepth;
-    const uint32_t lever = p.minDisparity          ? SGM_FEATURES_MIN_DISPARITY
+    const uint32_t lever = p.outputConfidence      ? SGM_FEATURES_CONFIDENCE
+                           : p.minDisparity        ? SGM_FEATURES_MIN_DISPARITY
                            : asksDepth             ? SGM_FEATURES_DEPTH
                            : p.edgeReset.threshold ? SGM_FEATURES_EDGE_RESET
                            : p.uniqueness          ? SGM_FEATURES_UNIQUENESS
                            : p.adWeight            ? SGM_FEATURES_AD_TERM
                                                    : SGM_FEATURES_RIGHT_PATH;
     EXPECT_EQ(fits, (kFeatures & lever) != 0);
-    const std::string what = p.minDisparity          ? "minimum disparity 5"
+    const std::string what = p.outputConfidence      ? "confidence in the word"
+                             : p.minDisparity        ? "minimum disparity 5"
                              : asksDepth             ? "depth output"
                              : p.edgeReset.threshold ? "path restart T 30"
                              : p.uniqueness          ? "uniqueness 30"

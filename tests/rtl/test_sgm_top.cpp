@@ -58,7 +58,7 @@ constexpr bool kMinDisparity = Vsgm_top_sgm_top::MIN_DISPARITY != 0;  // the bui
 constexpr bool kRectify = Vsgm_top_sgm_top::RECTIFY != 0;             // the build has the rectification
 constexpr int kRectifyRows = Vsgm_top_sgm_top::RECTIFY_ROWS;
 constexpr int kRectifyGridLog2 = Vsgm_top_sgm_top::RECTIFY_GRID_LOG2;
-constexpr bool kConfidence = Vsgm_top_sgm_top::CONFIDENCE != 0;       // the build has the confidence
+constexpr bool kConfidence = Vsgm_top_sgm_top::CONFIDENCE != 0;  // the build has the confidence
 constexpr bool kLean = !kUniqueness || !kAdTerm;
 
 // The settings with every lever the build lacks off (bit-exact tests run what the build
@@ -556,14 +556,16 @@ TEST(SgmTop, ConfidenceInTheOutputWordIsExact) {
   const std::vector<sgm::tb::FrameOutput> out = core.run(frames);
   long confident = 0, zero = 0;
   for (size_t k = 0; k < frames.size(); ++k) {
-    const sgm::DisparityMap golden =
-        calibration[k] ? sgm::runRectifiedPipeline(frames[k].left, frames[k].right, *calibration[k], frames[k].params)
-                       : sgm::runPipeline(frames[k].left, frames[k].right, frames[k].params);
+    const sgm::DisparityMap golden = calibration[k]
+                                         ? sgm::runRectifiedPipeline(frames[k].left, frames[k].right, *calibration[k],
+                                                                     frames[k].params)
+                                         : sgm::runPipeline(frames[k].left, frames[k].right, frames[k].params);
     EXPECT_EQ(sgm::tb::compareOutput(golden, frames[k].params, out[k], "sgm_top output"), "")
         << "frame " << k << (frames[k].params.outputConfidence ? ", confidence on" : ", confidence off");
     EXPECT_EQ(out[k].errors, 0u) << "frame " << k;
     if (frames[k].params.outputConfidence)
-      confident += cv::countNonZero(out[k].confidence), zero += long(out[k].confidence.total()) - cv::countNonZero(out[k].confidence);
+      confident += cv::countNonZero(out[k].confidence),
+          zero += long(out[k].confidence.total()) - cv::countNonZero(out[k].confidence);
   }
   // Both kinds of pixel occur: the comparison is not of constants.
   EXPECT_GT(confident, 0);

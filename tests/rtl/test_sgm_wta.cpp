@@ -7,7 +7,8 @@
 // contract (position, valid_o), every pixel's d and disp against the golden
 // model, and the outputs must hold while en_i = 0 (the slot driver of
 // tb/slot_driver.hpp). D / SW / LATENCY come from the model (public
-// parameters), so the same file serves every build.
+// parameters), so the same file serves every build. A build with CONFIDENCE = 1 also has
+// every pixel's conf_o checked against sgm::confidence (docs/algorithm.md section 7b).
 #include "Vsgm_wta.h"
 #include "Vsgm_wta_sgm_wta.h"
 #include "cones.hpp"
@@ -40,9 +41,11 @@ constexpr int kLatency = int(Rtl::LATENCY);
 // UNIQUENESS = 0 (the lean build, rtl-wta-d16-lean): no uniqueness test, every winner is
 // unique whatever uniq_i says; the frames still drive their ratios and expect that.
 constexpr bool kUniqueness = Rtl::UNIQUENESS != 0;
+constexpr bool kConfidence = Rtl::CONFIDENCE != 0;  // conf_o built (else 0)
 constexpr int kMaxS = (1 << kSW) - 1;
 
-static_assert(kLatency == sgm::tb::wtaLatency(kD), "sgm_wta latency: T0 + log2(D) - 1 tree stages + 5");
+static_assert(kLatency == sgm::tb::wtaLatency(kD) + (kConfidence ? 4 : 0),
+              "sgm_wta latency: T0 + log2(D) - 1 tree stages + 5, and C3 .. C0 with the confidence");
 
 struct Frame {
   sgm::PathVolume s;
@@ -56,7 +59,7 @@ std::string describe(const Frame& f) {
   std::ostringstream o;
   o << "frame '" << f.name << "' " << f.s.width << "x" << f.s.height << " sub-pixel " << (f.subpixel ? "on" : "off")
     << " uniqueness " << f.uniqueness << " (D=" << kD << ", SW=" << kSW << ", LATENCY=" << kLatency
-    << (kUniqueness ? "" : ", UNIQUENESS=0: always unique") << ")";
+    << (kUniqueness ? "" : ", UNIQUENESS=0: always unique") << (kConfidence ? ", CONFIDENCE=1" : "") << ")";
   return o.str();
 }
 
@@ -82,7 +85,9 @@ void runFrames(Top& top, const std::vector<Frame>& frames, uint32_t seed, double
         m.subpixel_i = junk() & 1;
         m.uniq_i = junk() & 127;
       },
-      [](Vsgm_wta& m) { return sgm::tb::portWords(m.d_o, m.disp_o, m.unique_o, m.col_o, m.row_o, m.valid_o); });
+      [](Vsgm_wta& m) {
+        return sgm::tb::portWords(m.d_o, m.disp_o, m.unique_o, m.conf_o, m.col_o, m.row_o, m.valid_o);
+      });
   driver.reset();
   ASSERT_EQ(int(top->valid_o), 0) << "valid_o after reset";
 
@@ -149,6 +154,16 @@ void runFrames(Top& top, const std::vector<Frame>& frames, uint32_t seed, double
         FAIL() << sgm::tb::firstMismatch(s.x, s.y, describe(sf), result(want.d, want.disp), result(gd, gdisp),
                                          ctx.str());
       }
+      const int wantConf = kConfidence ? sgm::confidence(sp, kD, want.d) : 0;
+      if (int(top->conf_o) != wantConf) {
+        int sec = -1;
+        for (int k = 0; k < kD; ++k)
+          if (std::abs(k - want.d) > 1 && (sec < 0 || sp[k] < sec)) sec = sp[k];
+        std::ostringstream ctx;
+        ctx << "confidence division (C7 .. C0); S(d*) = " << int(sp[want.d]) << ", min S(k), |k - d*| > 1 = " << sec;
+        FAIL() << sgm::tb::firstMismatch(s.x, s.y, describe(sf), "conf " + std::to_string(wantConf),
+                                         "conf " + std::to_string(int(top->conf_o)), ctx.str());
+      }
     }
   }
 }
@@ -172,7 +187,7 @@ sgm::PathVolume edgeCaseVolume(int w, int h, std::mt19937& rng) {
       const int m = int(rng() % 200);  // the minimum
       for (int d = 0; d < kD; ++d) s[d] = uint16_t(m + 1 + above(rng) % (kMaxS - m));
       const int dm = 1 + int(rng() % (kD - 2));  // an interior winner
-      switch (k % 16) {
+      switch (k % 17) {
         case 0: std::fill(s, s + kD, uint16_t(m)); break;    // all equal: d = 0
         case 1: s[0] = uint16_t(m); break;                   // winner at 0
         case 2: s[kD - 1] = uint16_t(m); break;              // winner at D-1
@@ -194,6 +209,7 @@ sgm::PathVolume edgeCaseVolume(int w, int h, std::mt19937& rng) {
           break;  // half-way rounding
         case 13: s[dm] = uint16_t(m), s[dm - 1] = uint16_t(m + 3), s[dm + 1] = uint16_t(m + 1); break;
         case 14: std::fill(s, s + kD, uint16_t(kMaxS)), s[dm] = uint16_t(kMaxS - 1); break;  // all at the top
+        case 15: std::fill(s, s + kD, uint16_t(kMaxS)), s[dm] = 0; break;  // confidence 255: sec = max, m = 0
         default: s[dm] = uint16_t(m); break;
       }
     }
