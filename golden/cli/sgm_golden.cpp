@@ -49,6 +49,8 @@ const char* kUsage =
     "                  [--output disparity|depth] [--focal F] [--baseline B] the core's output word\n"
     "                                (register OUTPUT.MODE); depth also writes PREFIX_depth16.png from f = F/256 px\n"
     "                                and B um (default 0, or the --mesh file's)\n"
+    "                  [--output-confidence on|off] the core's word carries the confidence (register\n"
+    "                                OUTPUT.CONFIDENCE); --confidence on writes the map\n"
     "Writes PREFIX_disp16.png (disparity x 256, 0 = invalid), PREFIX_disp8.png\n"
     "(the paper's [0, 255] scaling) and PREFIX_color.png. PREFIX defaults to 'disparity'.\n";
 
