@@ -227,7 +227,7 @@ int main(int argc, char** argv) {
     if (params.outputConfidence) {  // the first frame's bits 23:16 (docs/algorithm.md section 7b)
       pictures.push_back({out + "/confidence.png", outputs[0].confidence});
       pictures.push_back({out + "/confidence_color.png",
-                          eval::confidencePicture(outputs[0].confidence, "confidence (" + scene.name + ")")});
+                          eval::confidencePicture(outputs[0].confidence, "confidence, the output word's bits 23:16")});
     }
     if (calibrated) {
       pictures.push_back({out + "/rectified_left.png", rectified.left.gray});
