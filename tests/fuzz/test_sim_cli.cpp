@@ -118,6 +118,8 @@ TEST_F(SgmSimCli, ParametersTheBuildOrTheCoreCannotTake) {
       {{"--output", "depth"}, "built without the depth output (make sim DEPTH=1"},
       {{"--output", "range"}, "unknown output 'range'"},
       {{"--calib", "somewhere"}, "built without the rectification (make sim RECTIFY=1"},
+      {{"--output-confidence", "on"}, "built without the confidence (make sim CONFIDENCE=1"},
+      {{"--output-confidence", "maybe"}, "option --output-confidence expects on or off"},
       {{"--focal", "16777216"}, "--focal=16777216 out of range"},
       {{"--dmin", "256"}, "--dmin=256 out of range"},
       {{"--lr-store-bits", "3"}, "stored Lr bits 3 out of range"},
