@@ -483,6 +483,28 @@ TEST(Confidence, StreamingEqualsStagesAndRanksTheErrors) {
   EXPECT_GT(cv::countNonZero(staged.confidence), 0);
 }
 
+// Params::outputConfidence: the map carries the selection's confidence through the fill, the
+// snap and the median unchanged (the core's bits 23:16), from either pipeline; without it the
+// streaming pipeline computes none.
+TEST(Confidence, TheMapCarriesItUnchangedWithOutputConfidence) {
+  const sgm::eval::Scene scene = sgm::synth::toEvalScene(sgm::synth::makeSyntheticScene(96, 48, 14, 5), "s");
+  sgm::Params p;
+  p.disparities = 16, p.snap = true;
+  EXPECT_TRUE(sgm::runPipeline(scene.left, scene.right, p).confidence.empty());
+  p.outputConfidence = true;
+  EXPECT_EQ(sgm::presetName(p), "custom");  // snap on; the confidence changes no preset
+  cv::Mat selected;
+  const sgm::DisparityMap map = sgm::runPipeline(scene.left, scene.right, p, &selected);
+  const sgm::PipelineStages staged = sgm::runPipelineStages(scene.left, scene.right, p);
+  ASSERT_EQ(map.confidence.type(), CV_8UC1);
+  EXPECT_EQ(cv::countNonZero(map.confidence != selected), 0);
+  EXPECT_EQ(cv::countNonZero(staged.result.confidence != staged.confidence), 0);
+  EXPECT_GT(cv::countNonZero(map.valid != staged.selected.valid), 0);  // the fill changed validity, not it
+  sgm::Params plain;
+  plain.disparities = 16, plain.outputConfidence = true;
+  EXPECT_EQ(sgm::presetName(plain), "default");
+}
+
 TEST(Confidence, ErrorOfTheMostConfidentSharesTies) {
   // Confidences 9, 9, 5, 5, 5, 5, 1, 1; errors 0, 0, 1, 0, 0, 0, 1, 1.
   const std::vector<uint8_t> c = {9, 5, 1, 5, 9, 5, 1, 5}, e = {0, 1, 1, 0, 0, 0, 1, 0};
