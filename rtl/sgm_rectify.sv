@@ -396,8 +396,14 @@ module sgm_rectify #(
     // Line buffer.
     logic [XHW+RHW-1:0] read_addr[4];  // stage 2 below
     logic [7:0] p2_pixel_q[4];
+    // A bank's word of column pair j and slot pair k is j 2^RHW + k ({j, k}): column-major, so
+    // the bank holds exactly the (MAX_WIDTH + 1) / 2 column pairs it uses (1280 columns: 10,240
+    // words, 5 block RAMs of 2048 x 9; a depth of 2^(XHW + RHW) would round 640 pairs up to
+    // 1024: 8 block RAMs). A read outside the source may address beyond it: its gray is not
+    // used (p2_inside_q).
+    localparam int LINE_WORDS = ((MAX_WIDTH + 1) / 2) << RHW;
     for (genvar b = 0; b < 4; b++) begin : g_line_bank
-      logic [7:0] line_mem[0:(1 << (XHW + RHW)) - 1];
+      logic [7:0] line_mem[0:LINE_WORDS - 1];
       always_ff @(posedge clk_i) begin
         if (in_write && in_bank == 2'(b)) line_mem[in_addr] <= s_tdata_i[8*c+:8];
       end
