@@ -385,7 +385,7 @@ module sgm_wta #(
   // rem starts at sec - m (< V = sec + 1); stage j: rem = 2 rem, bit j = rem >= V, rem -= it.
   if (CONFIDENCE != 0) begin : g_conf
     wire [SW-1:0] win_sec = g_lvl[LD].node[3*SW+LD +: SW];
-    logic [8*(SW+1)-1:0] c_rem_q;  // word k: the remainder after stage C(8-k) .. (word 7: after P)
+    logic [8*(SW+1)-1:0] c_rem_q;  // word k: the input of stage C(k) (word 7: after P, k - 1: after C(k))
     logic [8*(SW+1)-1:0] c_div_q;  // V, carried with it
     logic [8*8-1:0]      c_quo_q;  // the quotient bits so far, carried with it
     always_ff @(posedge clk_i) begin
