@@ -66,14 +66,14 @@
   // 0 .. 2, uniqueness ratio 0 .. 99, the AD term's largest value (W T) >> 3 added to the
   // mode's Cmax (NB; unified 2 NB) within the cost word, fifth-path weight 0 .. 8, a path
   // restart (T != 0) of length 1 .. 15, output mode 0 .. 1, a rectification lag of at most
-  // RECTIFY_ROWS - 2, and no lever the build lacks (the depth output, the minimum disparity
-  // and the rectification among them).
+  // RECTIFY_ROWS - 2, and no lever the build lacks (the depth output, the minimum disparity,
+  // the rectification and the confidence among them).
   // Written from the documented rules, not from the generated cfg_below_max /
   // cfg_levers_built, so that a wrong generated bound fails here; the field positions are
   // the word's (rtl/sgm_cfg.svh).
   localparam int F_CMAX_WORD = (1 << $clog2(2 * NB + 1)) - 1;
   function automatic logic f_in_range(input logic [CFG_W-1:0] c);
-    logic [31:0] w, h, p1, p2, mode, u, adw, adcap, rw, rt, rlen, ad_top, out_mode, dmin, rect, lag;
+    logic [31:0] w, h, p1, p2, mode, u, adw, adcap, rw, rt, rlen, ad_top, out_mode, out_conf, dmin, rect, lag;
     w      = 32'(c[CFG_FRAME_SIZE_WIDTH_LSB +: CFG_FRAME_SIZE_WIDTH_W]);
     h      = 32'(c[CFG_FRAME_SIZE_HEIGHT_LSB +: CFG_FRAME_SIZE_HEIGHT_W]);
     p1     = 32'(c[CFG_PENALTY_P1_LSB +: CFG_PENALTY_P1_W]);
@@ -86,6 +86,7 @@
     rt     = 32'(c[CFG_EDGE_RESET_T_LSB +: CFG_EDGE_RESET_T_W]);
     rlen   = 32'(c[CFG_EDGE_RESET_LEN_LSB +: CFG_EDGE_RESET_LEN_W]);
     out_mode = 32'(c[CFG_OUTPUT_MODE_LSB +: CFG_OUTPUT_MODE_W]);
+    out_conf = 32'(c[CFG_OUTPUT_CONFIDENCE_LSB +: CFG_OUTPUT_CONFIDENCE_W]);
     dmin   = 32'(c[CFG_MIN_DISPARITY_DMIN_LSB +: CFG_MIN_DISPARITY_DMIN_W]);
     rect   = 32'(c[CFG_RECTIFY_ENABLE_LSB +: CFG_RECTIFY_ENABLE_W]);
     lag    = 32'(c[CFG_RECTIFY_LAG_LSB +: CFG_RECTIFY_LAG_W]);
@@ -95,6 +96,7 @@
                  (rt == 32'd0 || rlen != 32'd0) && (UNIQUENESS != 0 || u == 32'd0) &&
                  (AD_TERM != 0 || adw == 32'd0) && (RIGHT_PATH != 0 || rw == 32'd0) && (EDGE_RESET != 0 || rt == 32'd0) &&
                  out_mode <= 32'd1 && (DEPTH != 0 || out_mode == 32'd0) && (MIN_DISPARITY != 0 || dmin == 32'd0) &&
+                 (CONFIDENCE != 0 || out_conf == 32'd0) &&
                  (RECTIFY != 0 ? lag + 32'd2 <= 32'(RECTIFY_ROWS) : rect == 32'd0 && lag == 32'd0);
   endfunction
   wire f_cfg_in_range = f_in_range(cfg_i);
