@@ -210,6 +210,8 @@ class CoreHarness {
   }
 
   VerilatedTop<Model>& top() { return top_; }
+  // Every error_event_o pulse (its bits, one entry per cycle it was not 0) since construction.
+  const std::vector<unsigned>& errorEvents() const { return errorEvents_; }
 
   // Replaces the cfg_i port as the way a frame's configuration is given.
   void setPresenter(std::function<void(const Params&, cv::Size)> presenter) { presenter_ = std::move(presenter); }
@@ -329,6 +331,8 @@ class CoreHarness {
     if (sampleHook_) sampleHook_();
     const bool in = source_.sample(top_.model());
     const bool out = sink_.sample(top_.model(), top_.cycles());
+    if constexpr (HasStatusPorts<Model>::value)
+      if (top_->error_event_o) errorEvents_.push_back(unsigned(top_->error_event_o));
     if (!sink_.violation().empty()) throw Error("output stream protocol: " + sink_.violation());
     top_.tick();
     if (observer_) observer_(in, out);
@@ -408,6 +412,7 @@ class CoreHarness {
   std::function<void()> driveHook_, sampleHook_;
   std::function<void(const StereoMesh&)> meshLoader_;
   std::function<void(bool, bool)> observer_;  // the running segment's bookkeeping of a cycle
+  std::vector<unsigned> errorEvents_;
 };
 
 }  // namespace sgm::tb

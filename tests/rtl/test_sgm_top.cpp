@@ -596,6 +596,13 @@ TEST(SgmTop, EveryMalformedFrameKindIsFlaggedAndRecovered) {
       }
       for (size_t k = 0; k < bad.frames.size(); ++k)
         EXPECT_EQ(out[1 + k].errors, bad.errors[k]) << bad.description << ": error_o of frame " << 1 + k;
+      if (kRectify) {  // the raw framing errors: one error_event_o pulse per frame that has them
+        long framesWithErrors = 0, pulses = 0;
+        for (const sgm::tb::FrameOutput& o : out) framesWithErrors += (o.errors & 7u) != 0;
+        for (const unsigned e : core.errorEvents()) pulses += (e & 7u) != 0;
+        EXPECT_EQ(pulses, framesWithErrors) << bad.description << ": error_event_o pulses of the raw framing";
+        EXPECT_GT(framesWithErrors, 0) << bad.description;
+      }
       for (const size_t k : {size_t(0), frames.size() - 1}) {
         EXPECT_EQ(sgm::tb::compareMaps(sgm::runPipeline(frames[k].left, frames[k].right, frames[k].params), out[k].map,
                                        "sgm_top output"),
