@@ -95,10 +95,10 @@ proc stage_modules {} {
   return [lsort -unique $mods]
 }
 
-# sgm_<name> of a stage module (the part after the last backslash).
+# sgm_<name> of a stage module: $paramod$<hash>\sgm_<name>, or with one parameter
+# $paramod\sgm_<name>\NAME=value (sgm_depth's DW), or sgm_<name> itself.
 proc stage_name {mod} {
-  set i [string last "\\" $mod]
-  if {$i >= 0} { return [string range $mod [expr {$i + 1}] end] }
+  if {[regexp {\\(sgm_[A-Za-z0-9_]+)} $mod -> name]} { return $name }
   return $mod
 }
 

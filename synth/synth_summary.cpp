@@ -67,10 +67,13 @@ double toDouble(const std::string &s, double dflt = NAN) {
     return dflt;
   }
 }
-// The part after the last backslash: $paramod$<hash>\sgm_wta -> sgm_wta.
+// The module's own name: $paramod$<hash>\sgm_wta -> sgm_wta; with one parameter Yosys names it
+// $paramod\sgm_depth\DW=s32'... -> sgm_depth.
 std::string baseName(const std::string &mod) {
-  auto i = mod.rfind('\\');
-  return i == std::string::npos ? mod : mod.substr(i + 1);
+  const auto i = mod.find("\\sgm_");
+  if (i != std::string::npos) return mod.substr(i + 1, mod.find('\\', i + 1) - (i + 1));
+  const auto j = mod.rfind('\\');
+  return j == std::string::npos ? mod : mod.substr(j + 1);
 }
 bool startsWith(const std::string &s, const std::string &p) { return s.compare(0, p.size(), p) == 0; }
 
