@@ -873,8 +873,9 @@ int main(int argc, char **argv) {
   }
   std::vector<Target> targets;
   std::vector<Loop> loops;
-  static const std::regex cfgRe(
-      R"(d[0-9]+-w[0-9]+(-h[0-9]+)?(-c9x[0-9]+)?(-k[0-9]+)?(-u[0-9]+)?(-ad[0-9]+)?(-rb[0-9]+)?(-er[0-9]+)?)");
+  // A build tag (scripts/build.mk, core_tag): d<D>-w<MAX_WIDTH>, then one -<letters><value> part per
+  // parameter that differs from sgm_top's default (whichever the build names).
+  static const std::regex cfgRe(R"(d[0-9]+-w[0-9]+(-[a-z][a-z0-9]*)*)");
   static const std::regex loopRe(R"(ice40-loop-d[0-9]+)");
   for (auto &cfg : listDir(root)) {
     std::string p = root + "/" + cfg;
