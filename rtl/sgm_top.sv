@@ -919,8 +919,14 @@ module sgm_top #(
          cfg[CFG_DEPTH_BASELINE_B_LSB +: CFG_DEPTH_BASELINE_B_W]};
   end
   if (CONFIDENCE != 0) begin : g_confidence
+    // A pixel's confidence is read 3 W + 2 DW + 21 slots after it is written (the fill's row
+    // and 5 slots, the snap's 10, the median's 2 rows and 2 DW + 6) and its memory read takes
+    // 3 more; its row slot is written again (ROWS - 1) W slots or more later (every row has
+    // W slots or more): ROWS >= 4 + ceil((2 DW + 24) / W) rows, a power of two (8 for every
+    // legal build: W >= 16, DW <= 13).
+    localparam int CONF_ROWS = 1 << $clog2(4 + (2 * DW + 24 + MIN_FRAME_WIDTH - 1) / MIN_FRAME_WIDTH);
     sgm_confidence_rows #(
-      .MAX_WIDTH(MAX_WIDTH), .CW(XW), .ROWS(8), .WORD_DELAY(DEPTH != 0 ? DEPTH_LATENCY : 0)
+      .MAX_WIDTH(MAX_WIDTH), .CW(XW), .ROWS(CONF_ROWS), .WORD_DELAY(DEPTH != 0 ? DEPTH_LATENCY : 0)
     ) u_conf_rows (
       .clk_i       (clk_i),
       .rst_ni      (rst_ni),
