@@ -13,8 +13,8 @@
 // frame's first rows, written while the last rows of a frame are still read, take
 // other slots. Both sides see the same rows in the same order, so their counts agree
 // (both start at reset). A word is read before its slot is written again as long as the
-// reading side runs less than ROWS - 1 rows behind the writing side (sgm_top: about 5
-// rows: the fill's row, the median's two rows and the stages' slots).
+// reading side runs less than ROWS - 1 rows behind the writing side (sgm_top derives ROWS
+// from the fill's, the snap's and the median's latencies).
 //
 // The output word: the 16-bit word of the same pixel (word_i, word_valid_i: the disparity
 // word in the slot of the read, or sgm_depth's word WORD_DELAY slots after it) with the
