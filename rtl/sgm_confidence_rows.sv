@@ -90,6 +90,7 @@ module sgm_confidence_rows #(
     end
   end
 
+  logic [7:0] conf_read, conf_now;  // the memory's word; its pixel's, beside word
   sgm_bank_ram #(.WIDTH(8), .DEPTH(MW), .AW(MAW), .LATENCY(RAM_LATENCY)) u_mem (
     .clk_i  (clk_i),
     .en_i   (en_i),
@@ -101,7 +102,6 @@ module sgm_confidence_rows #(
   );
 
   // ------------------------------------------------------------ the output word
-  logic [7:0]  conf_read, conf_now;  // the memory's word; its pixel's, beside word
   logic [15:0] word;
   logic        word_valid;
   if (WORD_DELAY < RAM_LATENCY) begin : g_word_waits
