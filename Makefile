@@ -20,7 +20,7 @@ HOST_X86_V3 := $(shell grep -qw avx2 /proc/cpuinfo 2>/dev/null && grep -qw bmi2 
 ARCH       ?= $(if $(and $(filter x86_64-%,$(CXX_MACHINE)),$(HOST_X86_V3)),x86-64-v3)
 MARCH      := $(if $(strip $(ARCH)),-march=$(strip $(ARCH)))
 CXXFLAGS   ?= -O3 $(MARCH) -g
-override CXXFLAGS += -std=c++17 -Wall -Wextra -pthread -Igolden -Itools
+override CXXFLAGS += -std=c++17 -Wall -Wextra -pthread -Igolden -Itools -Isw/include
 OPENCV_CFLAGS = $(shell pkg-config --cflags opencv4 2>/dev/null)
 OPENCV_LIBS   = $(shell pkg-config --libs opencv4 2>/dev/null)
 LDLIBS     += $(OPENCV_LIBS) -pthread
@@ -139,7 +139,7 @@ golden: $(BIN)/sgm-golden $(BIN)/sgm-eval
 #          [STALL=0.0] [SEED=1] [FRAMES=1] [TRACE=1] [PRESET=default|four-path|paper] [CENSUS=9x5|9x9] [LANES=1]
 #          [RIGHT_BLOCK=64 [RIGHT_WEIGHT=]] [MAX_HEIGHT=1024] [UNIQUENESS=1] [AD_TERM=1] [EDGE_RESET=1]
 #          [DEPTH=0 [OUTPUT=depth FOCAL=F BASELINE=B]] [MIN_DISPARITY=0 [DMIN=N]]
-#          [CALIB=DIR [UNIT_MM=U]] [RECTIFY=0 [RECTIFY_ROWS=32] [RECTIFY_GRID_LOG2=4]] [CONFIDENCE=0]
+#          [CALIB=DIR [UNIT_MM=U]] [RECTIFY=0 [RECTIFY_ROWS=32] [RECTIFY_GRID_LOG2=4]] [CONFIDENCE=0] [MIN_WIDTH=0]
 # CALIB=DIR: LEFT and RIGHT are a raw camera pair and DIR its OpenCV calibration
 # (intrinsics.yml, extrinsics.yml); it builds the rectification (RECTIFY=1: a line buffer
 # of RECTIFY_ROWS rows, mesh steps of 2^RECTIFY_GRID_LOG2 px) and the confidence, and runs
@@ -270,8 +270,10 @@ $(eval $(call rtl_test,top-d16-9x9,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=6
 $(eval $(call rtl_test,top-d64-9x9,sgm_top,-GD=64 -GMAX_WIDTH=512 -GMAX_HEIGHT=384 -GCENSUS_H=9 -GRIGHT_BLOCK=0 -CFLAGS -DSGM_D=64))
 # K row lanes (docs/lanes.md): the whole core at 2 lanes (9x5) and 3 lanes (9x9). The
 # 3-lane build has its rotating delays as register chains (SGM_DELAY_CHAIN, the form the ECP5
-# flow builds, rtl/sgm_delay_ram.sv); every other build has them in distributed RAM.
-$(eval $(call rtl_test,top-d16-k2,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GLANES=2 -GRIGHT_BLOCK=0 -CFLAGS -DSGM_D=16))
+# flow builds, rtl/sgm_delay_ram.sv); every other build has them in distributed RAM. The
+# 2-lane build takes frames from 48 columns (MIN_WIDTH = 48: LR_LAG at most 2 rows, not 4,
+# and LR check memories of 4 rows, not 8); its frames of 47 columns are dropped.
+$(eval $(call rtl_test,top-d16-k2,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GLANES=2 -GRIGHT_BLOCK=0 -GMIN_WIDTH=48 -CFLAGS -DSGM_D=16))
 $(eval $(call rtl_test,top-d16-k3-9x9,sgm_top,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GLANES=3 -GCENSUS_H=9 -GRIGHT_BLOCK=0 -DSGM_DELAY_CHAIN -CFLAGS -DSGM_D=16))
 # The lean build: neither run-time lever that costs area (UNIQUENESS = 0, AD_TERM = 0, docs/rtl.md
 # "Build parameters"): bit-exact with the levers off, frames that ask for them dropped.
@@ -293,9 +295,10 @@ $(foreach r,$(REF_NAMES),$(if $(FIXTURE_TOP_ref-$(r)),,$(error scripts/refs.mk: 
 # A reference build's fixture is rebuilt when scripts/refs.mk (its parameters) changes.
 $(foreach r,$(REF_NAMES),$(eval $(BIN)/rtl-ref-$(r): scripts/refs.mk))
 # sgm_axi configured through the driver (sw/) over an AXI4-Lite bus model; the lean build reads
-# its FEATURES back and has the frames that ask for a missing lever dropped.
+# its FEATURES back and has the frames that ask for a missing lever dropped; it takes frames from
+# 40 columns (MIN_WIDTH = 40, read back in the MIN_WIDTH register).
 $(eval $(call rtl_test,axi-d16,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
-$(eval $(call rtl_test,axi-d16-lean,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GUNIQUENESS=0 -GAD_TERM=0 -GEDGE_RESET=0 -GRIGHT_BLOCK=0 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
+$(eval $(call rtl_test,axi-d16-lean,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GUNIQUENESS=0 -GAD_TERM=0 -GEDGE_RESET=0 -GRIGHT_BLOCK=0 -GMIN_WIDTH=40 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
 $(eval $(call rtl_test,axi-d16-rb16,sgm_axi,-GD=16 -GMAX_WIDTH=128 -GMAX_HEIGHT=64 -GRIGHT_BLOCK=16 -GEDGE_RESET=1 -GDEPTH=1 -GMIN_DISPARITY=1 -GRECTIFY=1 -GRECTIFY_ROWS=16 -GRECTIFY_GRID_LOG2=3 -GCONFIDENCE=1 -CFLAGS -I$(abspath sw/include) $(abspath sw/sgm_driver.cpp)))
 $(BIN)/rtl-axi-d16 $(BIN)/rtl-axi-d16-lean $(BIN)/rtl-axi-d16-rb16: sw/sgm_driver.cpp $(wildcard sw/include/*.h*)
 $(eval $(call rtl_test,path-engine-d16,sgm_path_engine,-GD=16 -GMAX_WIDTH=128 -GXW=8 -GYW=8 -GEDGE_RESET=1 -CFLAGS -DSGM_D=16))

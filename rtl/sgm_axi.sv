@@ -37,7 +37,9 @@
 //
 // Parameters: D, MAX_WIDTH, MAX_HEIGHT, CENSUS_H, LANES, UNIQUENESS, AD_TERM,
 // RIGHT_BLOCK, EDGE_RESET, DEPTH, MIN_DISPARITY, RECTIFY, RECTIFY_ROWS, RECTIFY_GRID_LOG2,
-// CONFIDENCE as sgm_top (FEATURES reads back all but the first five); ADDR_W AXI address bits.
+// CONFIDENCE, MIN_WIDTH as sgm_top (FEATURES reads back UNIQUENESS .. CONFIDENCE; the
+// MIN_WIDTH register the narrowest frame, MIN_WIDTH or the build's least); ADDR_W AXI
+// address bits.
 // Latency and throughput: those of sgm_top; register responses one cycle
 // after the request.
 module sgm_axi #(
@@ -56,6 +58,7 @@ module sgm_axi #(
   parameter int RECTIFY_ROWS /*verilator public*/ = 32,
   parameter int RECTIFY_GRID_LOG2 /*verilator public*/ = 4,
   parameter int CONFIDENCE /*verilator public*/ = 0,
+  parameter int MIN_WIDTH  /*verilator public*/ = 0,
   parameter int ADDR_W     = 8,
   localparam int OUT_W     = CONFIDENCE != 0 ? 24 : 16,  // sgm_top OUT_W
   localparam int XW        = $clog2(MAX_WIDTH + 1),
@@ -278,7 +281,7 @@ module sgm_axi #(
     .D(D), .MAX_WIDTH(MAX_WIDTH), .MAX_HEIGHT(MAX_HEIGHT), .CENSUS_H(CENSUS_H), .LANES(LANES), .UNIQUENESS(UNIQUENESS),
     .AD_TERM(AD_TERM), .RIGHT_BLOCK(RIGHT_BLOCK), .EDGE_RESET(EDGE_RESET), .DEPTH(DEPTH),
     .MIN_DISPARITY(MIN_DISPARITY), .RECTIFY(RECTIFY), .RECTIFY_ROWS(RECTIFY_ROWS),
-    .RECTIFY_GRID_LOG2(RECTIFY_GRID_LOG2), .CONFIDENCE(CONFIDENCE)
+    .RECTIFY_GRID_LOG2(RECTIFY_GRID_LOG2), .CONFIDENCE(CONFIDENCE), .MIN_WIDTH(MIN_WIDTH)
   ) u_core (
     .clk_i         (clk_i),
     .rst_ni        (rst_ni && !core_reset),

@@ -107,7 +107,13 @@ module sgm_lane_timing #(
   );
 
   // ------------------------------------------------------------ LR_LAG
-  logic [LAG_TERMS-1:0] narrow;  // bit m - 1: m W < LR_WAIT
+  // With MIN_FRAME_WIDTH >= LR_WAIT no m can hold (LR_LAG = 2K - 2 for every frame):
+  // one constant 0 bit.
+  localparam int NARROW_W = LAG_TERMS > 0 ? LAG_TERMS : 1;
+  logic [NARROW_W-1:0] narrow;  // bit m - 1: m W < LR_WAIT
+  if (LAG_TERMS == 0) begin : g_no_lag_term
+    assign narrow = 1'b0;
+  end
   for (genvar m = 1; m <= LAG_TERMS; m++) begin : g_lag_term
     assign narrow[m-1] = {{(32 - XW){1'b0}}, width_i} <= 32'((LR_WAIT - 1) / m);
   end
@@ -115,7 +121,7 @@ module sgm_lane_timing #(
   logic [LAGW-1:0] lag_d, lag_q;
   always_comb begin
     lag_d = LAGW'(2 * LANES - 2);
-    for (int m = 0; m < LAG_TERMS; m++) lag_d = lag_d + LAGW'(narrow[m]);
+    for (int m = 0; m < NARROW_W; m++) lag_d = lag_d + LAGW'(narrow[m]);
   end
 
   always_ff @(posedge clk_i) begin

@@ -67,6 +67,12 @@
 // wide (OUT_W; 0 there when the field is 0); the output stage waits 3 slots more for the
 // memory's read (without DEPTH; sgm_depth's latency covers it). 0 leaves it out (the
 // default; OUT_W = 16), and a frame with OUTPUT.CONFIDENCE = 1 is dropped with error_o[3].
+// MIN_WIDTH: the narrowest frame the build accepts; 0 (the default) is the least the build
+// allows, max(D, 16, K SKEW + 1). With lanes a larger value is a memory lever: the LR check
+// runs LR_LAG = 2K - 3 + ceil(LR_WAIT / W) rows behind the census, so a wider narrowest frame
+// bounds the lag lower, and the LR check's word memories and the edge snap's gray rows (a
+// power of two above the lag) shrink with it; at D = 64, six lanes, MIN_WIDTH 128 halves both.
+// A frame narrower than MIN_FRAME_WIDTH is dropped with error_o[3] (sgm_axi: MIN_WIDTH).
 // Configuration: cfg_i, the frame configuration word (rtl/sgm_cfg.svh, generated from
 // regmap/sgm_regmap.def; its fields are the read-write fields of sgm_axi's FRAME_SIZE,
 // PENALTY, CONFIG, EDGE_RESET, OUTPUT, DEPTH_FOCAL, DEPTH_BASELINE, MIN_DISPARITY and RECTIFY,
@@ -98,14 +104,15 @@ module sgm_top #(
   parameter int RECTIFY_ROWS /*verilator public*/ = 32,  // its line buffer rows R (a power of two, 4 .. 256)
   parameter int RECTIFY_GRID_LOG2 /*verilator public*/ = 4,  // its mesh step G = 2^RECTIFY_GRID_LOG2 px (2 .. 6)
   parameter int CONFIDENCE /*verilator public*/ = 0,  // the confidence is built (0: not)
+  parameter int MIN_WIDTH  /*verilator public*/ = 0,  // the narrowest frame accepted (0: the least the build allows)
   localparam int OUT_W     /*verilator public*/ = CONFIDENCE != 0 ? 24 : 16,  // the output word's bits
   localparam int XW        = $clog2(MAX_WIDTH + 1),
   // Lanes (docs/lanes.md "The top's wiring at K lanes"). The engine's
   // SKEW (sgm_path_engine owns the formula; mirrored here for the deal, checked
   // by every lane build's whole-core test) and the narrowest frame it allows.
   localparam int SKEW       = 1 + (5 + ($clog2(D) + 1) / 2 + LANES - 1) / LANES,
-  localparam int MIN_FRAME_WIDTH /*verilator public*/ =
-      (LANES * SKEW + 1 > D && LANES * SKEW + 1 > 16) ? LANES * SKEW + 1 : (D > 16 ? D : 16),
+  localparam int MIN_WIDTH_BOUND = (LANES * SKEW + 1 > D && LANES * SKEW + 1 > 16) ? LANES * SKEW + 1 : (D > 16 ? D : 16),
+  localparam int MIN_FRAME_WIDTH /*verilator public*/ = MIN_WIDTH > MIN_WIDTH_BOUND ? MIN_WIDTH : MIN_WIDTH_BOUND,
   // The LR check's read side runs LR_LAG whole rows behind the raster census
   // position (where a census unit in raster order would be): every word the
   // read of left pixel (x, y) needs (its WTA result, dR of the diagonal, or of
@@ -189,8 +196,11 @@ module sgm_top #(
   if (!(D >= 16 && D <= 256 && (D & (D - 1)) == 0)) begin : g_bad_d
     $error("sgm_top: D = %0d: D must be a power of two from 16 to 256", D);
   end
+  if (!(MIN_WIDTH == 0 || MIN_WIDTH >= MIN_WIDTH_BOUND)) begin : g_bad_min_width
+    $error("sgm_top: MIN_WIDTH = %0d: MIN_WIDTH must be 0 or at least the build's narrowest frame, max(D, 16, LANES SKEW + 1) = %0d", MIN_WIDTH, MIN_WIDTH_BOUND);
+  end
   if (!(MAX_WIDTH >= MIN_FRAME_WIDTH)) begin : g_bad_max_width
-    $error("sgm_top: MAX_WIDTH = %0d: MAX_WIDTH must be at least the narrowest frame, MIN_FRAME_WIDTH = %0d (max(D, 16, LANES SKEW + 1))", MAX_WIDTH, MIN_FRAME_WIDTH);
+    $error("sgm_top: MAX_WIDTH = %0d: MAX_WIDTH must be at least the narrowest frame, MIN_FRAME_WIDTH = %0d (MIN_WIDTH, or max(D, 16, LANES SKEW + 1))", MAX_WIDTH, MIN_FRAME_WIDTH);
   end
   if (!(MAX_HEIGHT >= 9)) begin : g_bad_max_height
     $error("sgm_top: MAX_HEIGHT = %0d: MAX_HEIGHT must be at least 9 (the narrowest frame has 9 rows)", MAX_HEIGHT);

@@ -14,7 +14,7 @@
 # order; D and MAX_WIDTH always:
 #
 #   d<D>-w<MAX_WIDTH>[-h<MAX_HEIGHT>][-c9x<CENSUS_H>][-k<LANES>][-u<UNIQUENESS>][-ad<AD_TERM>][-rb<RIGHT_BLOCK>][-er<EDGE_RESET>][-z<DEPTH>][-dm<MIN_DISPARITY>]
-#   [-rect<RECTIFY>][-rr<RECTIFY_ROWS>][-rg<RECTIFY_GRID_LOG2>][-cf<CONFIDENCE>]
+#   [-rect<RECTIFY>][-rr<RECTIFY_ROWS>][-rg<RECTIFY_GRID_LOG2>][-cf<CONFIDENCE>][-mw<MIN_WIDTH>]
 #
 #   d64-w1280                 sgm_top's defaults (H 1024, 9x5 census, one lane, both levers,
 #                             the fifth path in blocks of 64, the path restart built, no
@@ -41,9 +41,9 @@
 #                                 (PNR_ -> PNR_D, PNR_MAX_WIDTH, ...; empty -> D, MAX_WIDTH, ...)
 
 CORE_PARAMS   := D MAX_WIDTH MAX_HEIGHT CENSUS_H LANES UNIQUENESS AD_TERM RIGHT_BLOCK EDGE_RESET DEPTH MIN_DISPARITY \
-                 RECTIFY RECTIFY_ROWS RECTIFY_GRID_LOG2 CONFIDENCE
+                 RECTIFY RECTIFY_ROWS RECTIFY_GRID_LOG2 CONFIDENCE MIN_WIDTH
 CORE_DEFAULTS := D=64 MAX_WIDTH=1280 MAX_HEIGHT=1024 CENSUS_H=5 LANES=1 UNIQUENESS=1 AD_TERM=1 RIGHT_BLOCK=64 EDGE_RESET=1 DEPTH=0 \
-                 MIN_DISPARITY=0 RECTIFY=0 RECTIFY_ROWS=32 RECTIFY_GRID_LOG2=4 CONFIDENCE=0
+                 MIN_DISPARITY=0 RECTIFY=0 RECTIFY_ROWS=32 RECTIFY_GRID_LOG2=4 CONFIDENCE=0 MIN_WIDTH=0
 # The tag's letters (D and MAX_WIDTH always named; CENSUS_H as the window, c9x9).
 CORE_TAG_D := d
 CORE_TAG_MAX_WIDTH := w
@@ -60,6 +60,7 @@ CORE_TAG_RECTIFY := rect
 CORE_TAG_RECTIFY_ROWS := rr
 CORE_TAG_RECTIFY_GRID_LOG2 := rg
 CORE_TAG_CONFIDENCE := cf
+CORE_TAG_MIN_WIDTH := mw
 
 core_empty      :=
 core_space      := $(core_empty) $(core_empty)
@@ -96,6 +97,7 @@ RECTIFY_ROWS ?= $(call core_default,RECTIFY_ROWS)
 RECTIFY_GRID_LOG2 ?= $(call core_default,RECTIFY_GRID_LOG2)
 # CALIB=DIR also builds the confidence (make sim writes the confidence picture).
 CONFIDENCE  ?= $(if $(CALIB),1,$(call core_default,CONFIDENCE))
+MIN_WIDTH   ?= $(call core_default,MIN_WIDTH)
 CENSUS      ?= $(if $(filter paper,$(PRESET)),9x9,9x5)
 CENSUS_H     = $(if $(filter 9x9,$(CENSUS)),9,$(if $(filter 9x5,$(CENSUS)),5,$(error CENSUS=$(CENSUS): expected 9x5 or 9x9)))
 # The build those knobs name (make sim, make synth; make bench at its own MAX_WIDTH).

@@ -23,6 +23,8 @@
 # - hd64: the D = 64 core on the largest ECP5. Four paths: the default feature set's fifth
 #   path does not fit beside it (LUT positions and block RAM). Six lanes: one lane slot per
 #   unit of the 0 degree recursion at D = 64. MAX_WIDTH: the widest whose block RAM fits.
+#   MIN_WIDTH 128: frames from 128 columns, so that the LR check's lag is at most 13 rows, not
+#   16, and its memories and the edge snap's gray rows hold 16 rows, not 32.
 # - fhd32: 1080p frames at D = 32 on the largest ECP5. Three lanes (two units of the recursion
 #   per lane slot: a clock for 1080p30): six lanes' rows in flight do not fit its block RAM
 #   at 1920 columns.
@@ -30,7 +32,7 @@
 # - fhd128: sgm_top's default features at D = 128, where the block RAM and the logic are.
 REF_NAMES := hd64 fhd32 small fhd128
 
-REF_hd64_CORE    := D=64 MAX_WIDTH=1024 LANES=6 RIGHT_BLOCK=0 EDGE_RESET=0
+REF_hd64_CORE    := D=64 MAX_WIDTH=1024 LANES=6 RIGHT_BLOCK=0 EDGE_RESET=0 MIN_WIDTH=128
 REF_hd64_TARGET  := ecp5
 REF_hd64_DEVICE  := 85k
 REF_hd64_PACKAGE := CABGA381

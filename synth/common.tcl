@@ -26,6 +26,7 @@
 #   SYNTH_RECTIFY, SYNTH_RECTIFY_ROWS, SYNTH_RECTIFY_GRID_LOG2 the rectification (RECTIFY 1 or 0, its
 #                    line buffer rows and mesh step; empty: the default);
 #   SYNTH_CONFIDENCE CONFIDENCE, the confidence built (1) or not (0; empty: the default);
+#   SYNTH_MIN_WIDTH  MIN_WIDTH, the narrowest frame accepted (0: the build's least; empty: the default);
 #                    empty (the default): sgm_top's own default
 #   SYNTH_OUT        output directory of this target (created by make)
 #   SYNTH_DEFINES    Verilog macros to define, space-separated (the ECP5 flow:
@@ -58,6 +59,7 @@ set rectify    [env_or SYNTH_RECTIFY ""]
 set rectify_rows [env_or SYNTH_RECTIFY_ROWS ""]
 set rectify_grid [env_or SYNTH_RECTIFY_GRID_LOG2 ""]
 set confidence [env_or SYNTH_CONFIDENCE ""]
+set min_width  [env_or SYNTH_MIN_WIDTH ""]
 set out        [env_or SYNTH_OUT build/synth]
 set defines    [env_or SYNTH_DEFINES ""]
 
@@ -74,6 +76,7 @@ if {$rectify ne ""} { yosys chparam -set RECTIFY $rectify sgm_top }
 if {$rectify_rows ne ""} { yosys chparam -set RECTIFY_ROWS $rectify_rows sgm_top }
 if {$rectify_grid ne ""} { yosys chparam -set RECTIFY_GRID_LOG2 $rectify_grid sgm_top }
 if {$confidence ne ""} { yosys chparam -set CONFIDENCE $confidence sgm_top }
+if {$min_width ne ""} { yosys chparam -set MIN_WIDTH $min_width sgm_top }
 yosys hierarchy -check -top sgm_top
 yosys proc
 yosys tee -o $out/check.txt check

@@ -13,7 +13,7 @@
 # Prints the script on stdout. Environment: as synth/common.tcl and synth/ecp5.tcl
 # (SYNTH_RTL, SYNTH_D, SYNTH_MAX_WIDTH, SYNTH_MAX_HEIGHT, SYNTH_CENSUS_H, SYNTH_LANES,
 # SYNTH_UNIQUENESS, SYNTH_AD_TERM, SYNTH_RIGHT_BLOCK, SYNTH_EDGE_RESET, SYNTH_DEPTH, SYNTH_MIN_DISPARITY,
-# SYNTH_RECTIFY, SYNTH_RECTIFY_ROWS, SYNTH_RECTIFY_GRID_LOG2, SYNTH_CONFIDENCE, SYNTH_DEFINES,
+# SYNTH_RECTIFY, SYNTH_RECTIFY_ROWS, SYNTH_RECTIFY_GRID_LOG2, SYNTH_CONFIDENCE, SYNTH_MIN_WIDTH, SYNTH_DEFINES,
 # SYNTH_OUT, SYNTH_ECP5_FLAGS, SYNTH_ECP5_CMP_LUT, SYNTH_ECP5_CMP_CHAIN). Paths stay relative:
 # the WebAssembly Yosys sees only the directory it runs in.
 #
@@ -49,6 +49,7 @@ elab() {
   [ -z "${SYNTH_RECTIFY_ROWS:-}" ] || echo "chparam -set RECTIFY_ROWS $SYNTH_RECTIFY_ROWS sgm_top"
   [ -z "${SYNTH_RECTIFY_GRID_LOG2:-}" ] || echo "chparam -set RECTIFY_GRID_LOG2 $SYNTH_RECTIFY_GRID_LOG2 sgm_top"
   [ -z "${SYNTH_CONFIDENCE:-}" ] || echo "chparam -set CONFIDENCE $SYNTH_CONFIDENCE sgm_top"
+  [ -z "${SYNTH_MIN_WIDTH:-}" ] || echo "chparam -set MIN_WIDTH $SYNTH_MIN_WIDTH sgm_top"
   echo "hierarchy -check -top sgm_top"
   echo "proc"
   echo "tee -o $out/check.txt check"

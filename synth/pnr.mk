@@ -31,7 +31,8 @@
 # is redone only when its directory has no "done" stamp or the RTL or the Tcl
 # scripts changed (after changing an option here, `make pnr-clean`).
 # The build of `make pnr`: the reference build hd64 (scripts/refs.mk, which says why D = 64,
-# six lanes, four paths and MAX_WIDTH 1024 on the LFE5U-85F), each parameter overridable.
+# six lanes, four paths, MAX_WIDTH 1024 and MIN_WIDTH 128 on the LFE5U-85F), each parameter
+# overridable (a build narrower than 128 columns sets PNR_MIN_WIDTH=0).
 pnr_hd64          = $(call core_get,$(REF_hd64_CORE),$(1))
 PNR_D            ?= $(call pnr_hd64,D)
 PNR_MAX_WIDTH    ?= $(call pnr_hd64,MAX_WIDTH)
@@ -41,6 +42,7 @@ PNR_LANES        ?= $(call pnr_hd64,LANES)
 PNR_UNIQUENESS   ?= $(call pnr_hd64,UNIQUENESS)
 PNR_AD_TERM      ?= $(call pnr_hd64,AD_TERM)
 PNR_RIGHT_BLOCK  ?= $(call pnr_hd64,RIGHT_BLOCK)
+PNR_MIN_WIDTH    ?= $(call pnr_hd64,MIN_WIDTH)
 # The core's EDGE_RESET (the path restart at strong edges): hd64's, or built with the fifth
 # path when PNR_RIGHT_BLOCK asks for one (as in sgm_top's defaults). Like every parameter,
 # the tag of the run directory names it where it differs from sgm_top's default (-er0).
@@ -64,6 +66,7 @@ PNR_CI_MAX_WIDTH ?= 128
 PNR_CI_DEVICE    ?= 45k
 PNR_CI_SPEED     ?= 6
 PNR_CI_LANES     ?= 1
+PNR_CI_MIN_WIDTH ?= 0
 # Extra nextpnr options of a run (recorded in its meta.txt and summary). The CI
 # smoke only has to show that the core routes and gets an fmax: without
 # timing-driven placement and with router2 it takes about 4 min of CPU instead
@@ -138,7 +141,7 @@ TEST_EXTRA += ecp5-cmp-check pnr-ci pnr-ys-ci
 PNR_DIR     := $(BUILD)/pnr
 # The build: PNR_D, PNR_MAX_WIDTH, ... PNR_EDGE_RESET (scripts/build.mk); pnr-ci's at its size.
 PNR_CORE     = $(call core_spec_of,PNR_)
-PNR_CI_CORE  = $(PNR_CORE) D=$(PNR_CI_D) MAX_WIDTH=$(PNR_CI_MAX_WIDTH) LANES=$(PNR_CI_LANES)
+PNR_CI_CORE  = $(PNR_CORE) D=$(PNR_CI_D) MAX_WIDTH=$(PNR_CI_MAX_WIDTH) LANES=$(PNR_CI_LANES) MIN_WIDTH=$(PNR_CI_MIN_WIDTH)
 PNR_CFG      = $(PNR_DIR)/$(call core_tag,$(PNR_CORE))$(if $(filter yowasp,$(PNR_YOSYS)),-yowasp)
 PNR_DEVNAME  = LFE5U-$(subst k,F,$(PNR_DEVICE))
 PNR_RUN      = $(PNR_CFG)/$(PNR_RUN_NAME)
@@ -171,7 +174,7 @@ pnr: pnr-tools $(PNR_SUMMARY)
 pnr-ci: pnr-tools $(PNR_SUMMARY)
 	@start=$$(date +%s); \
 	 $(MAKE) --no-print-directory pnr-one PNR_D=$(PNR_CI_D) PNR_MAX_WIDTH=$(PNR_CI_MAX_WIDTH) PNR_LANES=$(PNR_CI_LANES) \
-	   PNR_DEVICE=$(PNR_CI_DEVICE) PNR_SPEED=$(PNR_CI_SPEED) PNR_FLAGS="$(PNR_CI_FLAGS)" && \
+	   PNR_MIN_WIDTH=$(PNR_CI_MIN_WIDTH) PNR_DEVICE=$(PNR_CI_DEVICE) PNR_SPEED=$(PNR_CI_SPEED) PNR_FLAGS="$(PNR_CI_FLAGS)" && \
 	 $(MAKE) --no-print-directory pnr-summary \
 	   PNR_CHECK=$(call core_tag,$(PNR_CI_CORE))/lfe5u-$(subst k,f,$(PNR_CI_DEVICE))-$(PNR_CI_SPEED)-s$(PNR_SEED) && \
 	 echo "pnr-ci: OK ($$(( $$(date +%s) - start )) s)"
@@ -186,7 +189,7 @@ STAT_COUNT = ($$1 == c && $$2 ~ /^[0-9]+$$/) { n = $$2 } ($$2 == c && $$1 ~ /^[0
 # netlist for nextpnr-ecp5 with every stage mapped (no routing: pnr-ci routes the 0.23 flow's).
 PNR_YS_CI_DIR = $(PNR_DIR)/$(call core_tag,$(PNR_CI_CORE))-yowasp/synth
 pnr-ys-ci: pnr-tools
-	@$(MAKE) --no-print-directory pnr-synth PNR_D=$(PNR_CI_D) PNR_MAX_WIDTH=$(PNR_CI_MAX_WIDTH) PNR_LANES=$(PNR_CI_LANES) PNR_YOSYS=yowasp
+	@$(MAKE) --no-print-directory pnr-synth PNR_D=$(PNR_CI_D) PNR_MAX_WIDTH=$(PNR_CI_MAX_WIDTH) PNR_LANES=$(PNR_CI_LANES) PNR_MIN_WIDTH=$(PNR_CI_MIN_WIDTH) PNR_YOSYS=yowasp
 	@test -s $(PNR_YS_CI_DIR)/netlist.json || { echo "pnr-ys-ci: no netlist ($(PNR_YS_CI_DIR))"; exit 1; }
 	@stages=$$(ls $(PNR_YS_CI_DIR)/*.stat.txt | grep -v '/top\.stat\.txt$$'); \
 	 n=$$(for f in $$stages; do awk -v c=LUT4 '$(STAT_COUNT)' $$f; done | awk '{ n += $$1 } END { print n + 0 }'); \

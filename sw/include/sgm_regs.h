@@ -107,7 +107,7 @@
 #define SGM_CENSUS_HEIGHT_MAX 9u
 #define SGM_CENSUS_MASK 0x0000FFFFu
 
-/* ---- MIN_WIDTH (0x14): narrowest frame width of the build: max(D, 16), more with many lanes (sgm_top MIN_FRAME_WIDTH); a narrower frame is dropped with ERROR.CONFIG */
+/* ---- MIN_WIDTH (0x14): narrowest frame width of the build: the MIN_WIDTH parameter where set, else max(D, 16), more with many lanes (sgm_top MIN_FRAME_WIDTH); a narrower frame is dropped with ERROR.CONFIG */
 /* VALUE [31:0] RO: the narrowest frame width */
 #define SGM_MIN_WIDTH_VALUE_SHIFT 0
 #define SGM_MIN_WIDTH_VALUE_WIDTH 32

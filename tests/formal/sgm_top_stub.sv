@@ -22,6 +22,7 @@ module sgm_top #(
   parameter int RECTIFY_ROWS = 32,
   parameter int RECTIFY_GRID_LOG2 = 4,
   parameter int CONFIDENCE  = 0,
+  parameter int MIN_WIDTH   = 0,
   localparam int OUT_W      = CONFIDENCE != 0 ? 24 : 16,
   localparam int XW         = $clog2(MAX_WIDTH + 1),
   localparam int YW         = $clog2(MAX_HEIGHT + 16)

@@ -69,8 +69,9 @@ constexpr uint32_t kPenaltyReset = kFullDefaults ? SGM_PENALTY_RESET : SGM_PENAL
 constexpr uint32_t kConfigReset = kFullDefaults ? SGM_CONFIG_RESET : SGM_CONFIG_RESET_FOUR_PATH;
 constexpr uint32_t kEdgeResetReset = kFullDefaults ? SGM_EDGE_RESET_RESET : SGM_EDGE_RESET_RESET_FOUR_PATH;
 
+// A synthetic scene of w x h, widened to the build's MIN_WIDTH where that is set and wider.
 FrameInput scene(int w, int h, uint32_t seed, const sgm::Params& p) {
-  const sgm::synth::SyntheticScene s = sgm::synth::makeSyntheticScene(w, h, kD, seed);
+  const sgm::synth::SyntheticScene s = sgm::synth::makeSyntheticScene(std::max(w, int(Rtl::MIN_WIDTH)), h, kD, seed);
   return FrameInput{s.left, s.right, p};
 }
 
@@ -273,11 +274,16 @@ struct RegisterSpec {
 constexpr sgm::CensusShape kCensus = sgm::censusShape(Rtl::CENSUS_H == 9 ? sgm::CensusWindow::k9x9
                                                                          : sgm::CensusWindow::k9x5);
 
-// MIN_WIDTH of a one-lane build is max(D, 16) (sgm_top MIN_FRAME_WIDTH; the
-// fixture's builds have one lane). SizeFitsAgreesWithTheCore checks the value by
-// behaviour: a frame one column narrower is dropped.
+// MIN_WIDTH of a one-lane build is the MIN_WIDTH parameter where it is set, else
+// max(D, 16) (sgm_top MIN_FRAME_WIDTH; the fixture's builds have one lane).
+// SizeFitsAgreesWithTheCore checks the value by behaviour: a frame one column
+// narrower is dropped.
 static_assert(Rtl::LANES == 1, "kOneLaneMinWidth holds for one-lane builds");
-constexpr uint32_t kOneLaneMinWidth = Rtl::D > 16 ? uint32_t(Rtl::D) : 16u;
+constexpr uint32_t kOneLaneMinWidth = Rtl::MIN_WIDTH != 0 ? uint32_t(Rtl::MIN_WIDTH)
+                                      : Rtl::D > 16       ? uint32_t(Rtl::D)
+                                                          : 16u;
+// A small frame's width, widened to the build's narrowest where that is wider.
+constexpr int smallWidth(int w) { return std::max(w, int(kOneLaneMinWidth)); }
 
 std::vector<RegisterSpec> registers() {
   return {
@@ -395,7 +401,7 @@ TEST(SgmAxi, FeaturesAgreeWithTheCore) {
   sgm::Params confidence = withBuildLevers(defaults());  // the confidence in the word
   confidence.outputConfidence = true;
   EXPECT_EQ(drv::Driver::rightBlock(id), uint32_t(Rtl::RIGHT_BLOCK));
-  const int w = 40, h = 11;
+  const int w = smallWidth(40), h = 11;
   uint32_t seed = 30;
   for (const sgm::Params& p : {unique, ad, right, restart, depth, dmin, confidence}) {
     const drv::FrameConfig config = frameConfig(p, {w, h});
@@ -645,7 +651,7 @@ TEST(SgmAxi, FramesOfTheLargestSizeThroughTheRegisters) {
 // it is set runs with the old one; clearing it releases the new one.
 TEST(SgmAxi, HoldKeepsTheReleasedConfigurationUntilCleared) {
   AxiCore c("sgm_axi_hold", 8);
-  const int w = 38, h = 11;
+  const int w = smallWidth(38), h = 11;
   sgm::Params other = defaults();
   other.mode = sgm::CostMode::kRt, other.p1 = 10, other.p2 = 60, other.fill = false;
   c.driver.configure(frameConfig(defaults(), {w, h}));
@@ -667,7 +673,7 @@ TEST(SgmAxi, ErrorsAreStickyCountedAndClearedByWritingOne) {
   AxiCore c("sgm_axi_errors", 5, {0.1, 0.1});
   c.driver.enableInterrupts(SGM_IRQ_ENABLE_ERROR);
   std::mt19937 rng(2);
-  const int w = 36, h = 12;
+  const int w = smallWidth(36), h = 12;
   std::vector<FrameInput> frames = {scene(w, h, 10, defaults())};
   unsigned expected = 0;
   for (const sgm::tb::Malformation kind :
@@ -764,7 +770,7 @@ struct TimedClear {
 
 EventRun runEvent(Event event, TimedClear clear = {}) {
   AxiCore c("sgm_axi_clear_timing", 12, {0.1, 0.1}, kNoBusDelays);
-  const int w = 36, h = 12;
+  const int w = smallWidth(36), h = 12;
   const bool error = event == Event::kConfigError;
   c.driver.configure(frameConfig(defaults(), {error ? 0 : w, h}));
   c.driver.enableInterrupts(error ? SGM_IRQ_ENABLE_ERROR : SGM_IRQ_ENABLE_FRAME_DONE);
@@ -839,7 +845,7 @@ TEST(SgmAxi, AClearInTheCycleOfItsEventKeepsTheEvent) {
 // middle of a frame leaves a core whose next frame is bit-exact.
 TEST(SgmAxi, EnableHoldsTheStartOfFrameAndSoftResetRecovers) {
   AxiCore c("sgm_axi_enable", 7, {0, 0});
-  const int w = 36, h = 12;
+  const int w = smallWidth(36), h = 12;
   c.driver.configure(frameConfig(defaults(), {w, h}));
   const FrameInput f = scene(w, h, 30, defaults());
   c.extra.push(sgm::tb::frameBeats(f.left.data, f.right.data, w, h, f.left.step, f.right.step));

@@ -146,13 +146,17 @@ TEST(SgmTop, SyntheticFramesBackToBackWithStalls) {
     std::mt19937 rng(3);
     std::vector<FrameInput> frames;
     const int narrowest = Vsgm_top_sgm_top::MIN_FRAME_WIDTH;  // the core's minimum width
-    for (const auto [w, h] : {std::pair{narrowest, 9}, {narrowest + 37, 17}, {narrowest + 84, 12}, {narrowest + 1, 10}})
+    const int widest = Vsgm_top_sgm_top::MAX_WIDTH;
+    for (const auto [w, h] : {std::pair{narrowest, 9},
+                              {std::min(widest, narrowest + 37), 17},
+                              {std::min(widest, narrowest + 84), 12},
+                              {narrowest + 1, 10}})
       frames.push_back(syntheticPair(w, h, rng, hardwareDefaults()));
     expectBitExact(core, frames, "stall " + std::to_string(stall));
   }
 }
 
-constexpr int kMinWidth = Vsgm_top_sgm_top::MIN_FRAME_WIDTH;  // max(D, 16), more with many lanes
+constexpr int kMinWidth = Vsgm_top_sgm_top::MIN_FRAME_WIDTH;  // MIN_WIDTH, else max(D, 16), more with many lanes
 constexpr int kMaxHeight = Vsgm_top_sgm_top::MAX_HEIGHT;      // of this build
 
 // Frames at the build's limits: MAX_WIDTH wide, MAX_HEIGHT tall, and both at
@@ -309,7 +313,7 @@ TEST(SgmTop, ParameterSetsChangeFromFrameToFrame) {
   restartFifth.edgeReset = sgm::EdgeReset{20, 3, {0, 0, 0, 0, 1}};
   for (const sgm::Params& p : {unified, rt, paperP2, unique, ad, strict, kneeEqual, restart, uniqueLr, adRt, raw,
                                candidate, restartAll, rightEqual, restartFifth, hardwareDefaults()})
-    frames.push_back(syntheticPair(kD + 20, 20, rng, withBuildLevers(p)));
+    frames.push_back(syntheticPair(std::max(kMinWidth, kD + 20), 20, rng, withBuildLevers(p)));
   expectBitExact(core, frames, "parameter sets");
 }
 
@@ -577,7 +581,7 @@ TEST(SgmTop, ConfidenceInTheOutputWordIsExact) {
 // the harness's stream checker), and the next good frame is bit-exact.
 TEST(SgmTop, EveryMalformedFrameKindIsFlaggedAndRecovered) {
   std::mt19937 rng(6);
-  const int w = std::max(kD, 16) + 8, h = 12;
+  const int w = kMinWidth + 8, h = 12;
   for (const Malformation kind : sgm::tb::kAllMalformations)
     for (const unsigned at : {0u, unsigned(rng())}) {
       Harness core("sgm_top_malformed", 9 + at, {0.2, 0.2});
@@ -617,7 +621,7 @@ TEST(SgmTop, EveryMalformedFrameKindIsFlaggedAndRecovered) {
 // the middle, after its last beat): the next frame is bit-exact.
 TEST(SgmTop, ResetInTheMiddleOfAFrameThenCleanFrame) {
   std::mt19937 rng(8);
-  const int w = std::max(kD, 16) + 11, h = 14;
+  const int w = kMinWidth + 11, h = 14;
   for (const long resetAfter : {0L, 1L, long(w) * 7 + 3, long(w) * h}) {
     Harness core("sgm_top_reset", 3, {0.15, 0.15});
     FrameInput cut = syntheticPair(w, h, rng, hardwareDefaults());
