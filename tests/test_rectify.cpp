@@ -5,6 +5,7 @@
 #include "calibration.hpp"
 #include "eval_lib.hpp"
 #include "sgm/rectify.hpp"
+#include "sgm_mesh_file.hpp"
 
 #include "expect_error.hpp"
 
@@ -17,6 +18,7 @@
 #include <filesystem>
 #include <fstream>
 #include <stdlib.h>
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 using sgm::Mesh;
@@ -170,6 +172,48 @@ TEST(Rectify, MeshFileRoundTripsAndRejectsDamage) {
   wide.u[3] = sgm::kMeshCoordMax + 1;
   expectError([&] { sgm::checkMesh(wide, "left mesh"); }, {"left mesh", "18-bit"});
   expectError([&] { sgm::rectify(cv::Mat(31, 40, CV_8UC1), mesh.left); }, {"40x30"});
+}
+
+// The driver reads the file the tool writes (sw/include/sgm_mesh_file.hpp, the one parser of the
+// format): the same nodes, f and B, MeshImage views of them for Driver::loadMeshes, and one line
+// naming the path for a file that is not whole.
+TEST(Rectify, TheDriverReadsTheMeshFile) {
+  sgm::StereoMesh mesh;
+  mesh.left = affineMesh(40, 30, 3, 1, 0.5, -1);
+  mesh.right = affineMesh(40, 30, 3, 0.99, 2, 1);
+  mesh.focalQ8 = 4321;
+  mesh.baselineUm = 75000;
+  const std::string bytes = sgm::encodeMeshFile(mesh);
+  const fs::path dir = fs::temp_directory_path() / ("sgm-mesh-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string path = (dir / "mesh.bin").string(), cut = (dir / "cut.bin").string();
+  std::ofstream(path, std::ios::binary) << bytes;
+  std::ofstream(cut, std::ios::binary) << bytes.substr(0, bytes.size() - 8);
+  sgm::driver::MeshFile file;
+  ASSERT_EQ(sgm::driver::readMeshFile(path, &file), "");
+  EXPECT_EQ(file.width, 40u);
+  EXPECT_EQ(file.height, 30u);
+  EXPECT_EQ(file.gridLog2, 3u);
+  EXPECT_EQ(file.focalQ8, 4321u);
+  EXPECT_EQ(file.baselineUm, 75000u);
+  EXPECT_EQ(file.leftU, mesh.left.u);
+  EXPECT_EQ(file.leftV, mesh.left.v);
+  EXPECT_EQ(file.rightU, mesh.right.u);
+  EXPECT_EQ(file.rightV, mesh.right.v);
+  const sgm::driver::MeshImage right = file.right();
+  EXPECT_EQ(right.nodesX, uint32_t(mesh.right.nodesX));
+  EXPECT_EQ(right.nodesY, uint32_t(mesh.right.nodesY));
+  EXPECT_EQ(right.v[right.nodesX + 1], mesh.right.v[size_t(mesh.right.nodesX) + 1]);
+  EXPECT_EQ(sgm::driver::formatMeshFile(file), bytes);
+  const std::string truncated = sgm::driver::readMeshFile(cut, &file);
+  EXPECT_NE(truncated.find(cut + ": "), std::string::npos) << truncated;
+  EXPECT_NE(truncated.find("the header announces"), std::string::npos) << truncated;
+  EXPECT_EQ(truncated.find('\n'), std::string::npos) << "one line";
+  std::string zero = bytes;
+  zero[8 + 20] = zero[8 + 21] = zero[8 + 22] = zero[8 + 23] = 0;  // no node rows
+  EXPECT_NE(sgm::driver::parseMeshFile(zero.data(), zero.size(), &file).find("node count 0"), std::string::npos);
+  EXPECT_NE(sgm::driver::readMeshFile((dir / "none.bin").string(), &file).find("cannot read"), std::string::npos);
+  fs::remove_all(dir);
 }
 
 TEST(Calibration, SourcePositionIsOpenCvsMap) {

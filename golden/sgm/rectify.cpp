@@ -3,34 +3,12 @@
 
 #include "sgm/image_io.hpp"
 #include "sgm/params.hpp"
+#include "sgm_mesh_file.hpp"
 
 #include <algorithm>
-#include <cstring>
-#include <fstream>
-#include <iterator>
 #include <limits>
 
 namespace sgm {
-
-namespace {
-
-constexpr char kMeshMagic[8] = {'S', 'G', 'M', 'M', 'E', 'S', 'H', '1'};
-constexpr int kMeshHeaderWords = 8;
-// The largest mesh file: two meshes of kMaxImageSide-wide frames at the finest step.
-constexpr size_t kMaxMeshFileBytes = 64u << 20;
-
-void putWord(std::string& out, uint32_t word) {
-  for (int i = 0; i < 4; ++i) out.push_back(char((word >> (8 * i)) & 0xff));
-}
-
-uint32_t getWord(const std::string& bytes, size_t& at) {
-  uint32_t word = 0;
-  for (int i = 0; i < 4; ++i) word |= uint32_t(uint8_t(bytes[at + i])) << (8 * i);
-  at += 4;
-  return word;
-}
-
-}  // namespace
 
 int meshNodes(int size, int gridLog2) { return ((size - 1) >> gridLog2) + 2; }
 
@@ -118,6 +96,7 @@ RowSpan stereoRowSpan(const StereoMesh& mesh) {
   return {lag, back, lag - back + 1};
 }
 
+// The file's format is the driver's (sw/include/sgm_mesh_file.hpp): one definition of it.
 std::string encodeMeshFile(const StereoMesh& mesh) {
   checkMesh(mesh.left, "left mesh");
   checkMesh(mesh.right, "right mesh");
@@ -125,65 +104,54 @@ std::string encodeMeshFile(const StereoMesh& mesh) {
   const Mesh& r = mesh.right;
   if (l.width != r.width || l.height != r.height || l.gridLog2 != r.gridLog2)
     throw Error("the left and right meshes differ in frame or step");
-  std::string out(kMeshMagic, sizeof kMeshMagic);
-  for (uint32_t word : {uint32_t(l.width), uint32_t(l.height), uint32_t(l.gridLog2), uint32_t(kMeshFracBits),
-                        uint32_t(l.nodesX), uint32_t(l.nodesY), mesh.focalQ8, mesh.baselineUm})
-    putWord(out, word);
-  for (const Mesh* m : {&l, &r})
-    for (size_t i = 0; i < m->u.size(); ++i) {
-      putWord(out, uint32_t(m->u[i]));
-      putWord(out, uint32_t(m->v[i]));
-    }
-  return out;
+  driver::MeshFile file;
+  file.width = uint32_t(l.width), file.height = uint32_t(l.height), file.gridLog2 = uint32_t(l.gridLog2);
+  file.nodesX = uint32_t(l.nodesX), file.nodesY = uint32_t(l.nodesY);
+  file.focalQ8 = mesh.focalQ8, file.baselineUm = mesh.baselineUm;
+  file.leftU = l.u, file.leftV = l.v, file.rightU = r.u, file.rightV = r.v;
+  return driver::formatMeshFile(file);
 }
 
-StereoMesh decodeMeshFile(const std::string& bytes, const std::string& path) {
-  const size_t header = sizeof kMeshMagic + 4 * kMeshHeaderWords;
-  if (bytes.size() < header || std::memcmp(bytes.data(), kMeshMagic, sizeof kMeshMagic) != 0)
-    throw Error(path + ": not a mesh file (no SGMMESH1 header)");
-  size_t at = sizeof kMeshMagic;
-  uint32_t words[kMeshHeaderWords];
-  for (uint32_t& w : words) w = getWord(bytes, at);
-  if (words[3] != uint32_t(kMeshFracBits))
-    throw Error(path + ": positions in 1/2^" + std::to_string(words[3]) + " px, this build reads 1/32 px");
-  for (int i : {0, 1, 2, 4, 5})
-    if (words[i] > uint32_t(kMaxImageSide)) throw Error(path + ": header field " + std::to_string(i) + " out of range");
+namespace {
+
+// A parsed file's meshes, checked as every mesh is (the frame, the step, the node counts, the
+// coordinates).
+StereoMesh meshesOf(driver::MeshFile&& file, const std::string& path) {
+  static_assert(driver::kMeshFileFracBits == uint32_t(kMeshFracBits), "the file's fraction is the core's");
+  for (uint32_t field : {file.width, file.height, file.gridLog2})
+    if (field > uint32_t(kMaxImageSide))
+      throw Error(path + ": header field " + std::to_string(field) + " out of range");
   StereoMesh mesh;
   for (Mesh* m : {&mesh.left, &mesh.right}) {
-    m->width = int(words[0]);
-    m->height = int(words[1]);
-    m->gridLog2 = int(words[2]);
-    m->nodesX = int(words[4]);
-    m->nodesY = int(words[5]);
+    m->width = int(file.width);
+    m->height = int(file.height);
+    m->gridLog2 = int(file.gridLog2);
+    m->nodesX = int(file.nodesX);
+    m->nodesY = int(file.nodesY);
   }
-  mesh.focalQ8 = words[6];
-  mesh.baselineUm = words[7];
-  const size_t nodes = size_t(mesh.left.nodesX) * size_t(mesh.left.nodesY);
-  if (bytes.size() != header + 2 * nodes * 8)
-    throw Error(path + ": " + std::to_string(bytes.size()) + " bytes, the header announces " +
-                std::to_string(header + 2 * nodes * 8));
-  for (Mesh* m : {&mesh.left, &mesh.right}) {
-    m->u.resize(nodes);
-    m->v.resize(nodes);
-    for (size_t i = 0; i < nodes; ++i) {
-      m->u[i] = int32_t(getWord(bytes, at));
-      m->v[i] = int32_t(getWord(bytes, at));
-    }
-  }
+  mesh.left.u = std::move(file.leftU), mesh.left.v = std::move(file.leftV);
+  mesh.right.u = std::move(file.rightU), mesh.right.v = std::move(file.rightV);
+  mesh.focalQ8 = file.focalQ8;
+  mesh.baselineUm = file.baselineUm;
   checkMesh(mesh.left, path + ": left mesh");
   checkMesh(mesh.right, path + ": right mesh");
   return mesh;
 }
 
+}  // namespace
+
+StereoMesh decodeMeshFile(const std::string& bytes, const std::string& path) {
+  driver::MeshFile file;
+  const std::string error = driver::parseMeshFile(bytes.data(), bytes.size(), &file);
+  if (!error.empty()) throw Error(path + ": " + error);
+  return meshesOf(std::move(file), path);
+}
+
 StereoMesh readMeshFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error("cannot read '" + path + "'");
-  in.seekg(0, std::ios::end);
-  const std::streamoff size = in.tellg();
-  if (size < 0 || size_t(size) > kMaxMeshFileBytes) throw Error(path + ": not a mesh file (size)");
-  in.seekg(0);
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return decodeMeshFile(bytes, path);
+  driver::MeshFile file;
+  const std::string error = driver::readMeshFile(path, &file);
+  if (!error.empty()) throw Error(error);
+  return meshesOf(std::move(file), path);
 }
 
 }  // namespace sgm

@@ -12,10 +12,12 @@
 #include "malformed_frames.hpp"
 #include "rectify_meshes.hpp"
 #include "sgm_driver.hpp"
+#include "sgm_mesh_file.hpp"
 #include "sgm_regs.h"
 #include "synthetic_scene.hpp"
 
 #include "sgm/pipeline.hpp"
+#include "sgm/rectify.hpp"
 
 #include <gtest/gtest.h>
 
@@ -144,12 +146,17 @@ struct AxiCore {
       busyWhenConfigured.push_back(driver.busy());
       if (!enabled) driver.enable(enabled = true);
     });
-    // A calibration's meshes through the driver (MESH_* registers, docs/registers.md).
+    // A calibration's meshes as a user loads them: the mesh file's bytes (sgm-eval calib-mesh
+    // writes them with the golden model's encodeMeshFile) read by the driver's parser
+    // (sw/include/sgm_mesh_file.hpp), then through the MESH_* registers (docs/registers.md).
     core.setMeshLoader([this](const sgm::StereoMesh& mesh) {
-      const auto image = [](const sgm::Mesh& m) {
-        return drv::MeshImage{uint32_t(m.nodesX), uint32_t(m.nodesY), m.u.data(), m.v.data()};
-      };
-      if (!driver.loadMeshes(image(mesh.left), image(mesh.right), 200000))
+      const std::string bytes = sgm::encodeMeshFile(mesh);
+      drv::MeshFile file;
+      const std::string error = drv::parseMeshFile(bytes.data(), bytes.size(), &file);
+      if (!error.empty()) throw sgm::Error("the driver's mesh file parser: " + error);
+      if (file.focalQ8 != mesh.focalQ8 || file.baselineUm != mesh.baselineUm)
+        throw sgm::Error("the driver's mesh file parser: f or B differ from the file's");
+      if (!driver.loadMeshes(file.left(), file.right(), 200000))
         throw sgm::Error("the driver could not load the meshes (MESH_CTRL.PENDING stayed 1)");
     });
   }
