@@ -576,6 +576,37 @@ TEST_F(SgmEvalCli, RawSceneToMeshToRectifiedPair) {
                                                     "r_disp8.png", "r_rectified_left.png", "r_rectified_right.png"}));
   expectOneLineError(run("sgm-golden", {in("left.png"), in("right.png"), "--mesh", mesh + "/mesh.bin"}), "sgm-golden",
                      "96x64");
+  // sgm-eval run on a scene of the raw pair with its mesh.bin: rectified as the core does it, so
+  // the figures of the pair sgm-eval rectify wrote, except the pixels whose left source falls
+  // outside the raw image (a corner here), which are invalid; not those of the raw pair taken
+  // as rectified.
+  const cv::Mat gt(64, 96, CV_8UC1, cv::Scalar(12));  // 3 px at scale 4
+  const auto image = [](const std::string& path) { return cv::imread(path, cv::IMREAD_UNCHANGED); };
+  makeScene("asrect", image(rect + "/left.png"), image(rect + "/right.png"), gt);
+  makeScene("rawmesh", image(raw + "/left.png"), image(raw + "/right.png"), gt);
+  const std::string data = makeScene("rawonly", image(raw + "/left.png"), image(raw + "/right.png"), gt);
+  std::filesystem::copy_file(mesh + "/mesh.bin", data + "/rawmesh/mesh.bin");
+  res = run("sgm-eval", {"run", "--data", data, "--d", "16"});
+  ASSERT_EQ(res.rc, 0) << res.err;
+  struct Figures {
+    double nonocc = -1, density = -1;
+  };
+  const auto figures = [&](const std::string& name) {
+    Figures f;
+    const size_t at = res.out.find(name + " ");
+    if (at != std::string::npos)
+      std::sscanf(res.out.c_str() + at + name.size(), " nonocc %lf%% all %*f%% disc %*f%% density %lf%%", &f.nonocc,
+                  &f.density);
+    return f;
+  };
+  const Figures asRect = figures("asrect"), rawMesh = figures("rawmesh"), rawOnly = figures("rawonly");
+  ASSERT_GE(asRect.nonocc, 0) << res.out;
+  ASSERT_GE(rawMesh.nonocc, 0) << res.out;
+  EXPECT_LT(rawMesh.density, asRect.density) << "the outside pixels are invalid\n" << res.out;
+  EXPECT_GE(rawMesh.nonocc, asRect.nonocc) << res.out;
+  EXPECT_LT(rawMesh.nonocc, asRect.nonocc + 100 - rawMesh.density + 0.02) << "only the outside pixels differ\n"
+                                                                          << res.out;
+  EXPECT_GT(rawOnly.nonocc, rawMesh.nonocc + 10) << "the raw pair is not rectified\n" << res.out;
   // The errors: each one line, nothing written.
   const std::string none = out_ + "/none";
   expectOneLineError(run("sgm-eval", {"calib-mesh", "--calib", raw, "--out", none}), "sgm-eval", "--size");

@@ -153,6 +153,7 @@ Scene loadScene(const std::string& dir, double scaleOverride) {
   Scene s = makeScene(name, left, right, gtRaw, scaleOverride > 0 ? scaleOverride : meta.gtScale);
   s.ndisp = meta.ndisp;
   s.set = meta.set;
+  if (fs::exists(dir + "/mesh.bin")) s.meshPath = dir + "/mesh.bin";
   useMasksIn(dir, s);
   return s;
 }

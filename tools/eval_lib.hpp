@@ -24,6 +24,8 @@ struct Scene {
   bool nonoccDerived = false;  // true when nonocc was derived from gt
   int ndisp = 0;               // meta.txt `ndisp:` (the D to run it with), 0 = not given
   std::string set;             // meta.txt `set:` (e.g. middlebury2006, kitti2015), "" = not given
+  std::string meshPath;        // the scene's mesh.bin, "" = none: with one, left and right are a raw
+                               // pair and the ground truth is in the meshes' rectified frame
   bool hasGroundTruth() const { return !gt.empty(); }
 };
 

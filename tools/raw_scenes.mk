@@ -5,7 +5,10 @@
 #   raw/<scene>/        sgm-eval raw-scene: left.png, right.png (gray), intrinsics.yml, extrinsics.yml
 #   mesh/<scene>/       sgm-eval calib-mesh: mesh.bin, mesh.json (mesh error, line-buffer rows, f, B)
 #   rectified/<scene>/  sgm-eval rectify: left.png, right.png, and links to the scene's ground truth
-# then the golden model's accuracy on the rectified pairs beside the original ones (sgm-eval run).
+#   rawpairs/<scene>/   links to the raw pair, its mesh.bin and the ground truth
+# then the golden model's accuracy on the raw pairs, rectified as the core does it (a pixel whose
+# left source lies outside the raw image is invalid; sgm-eval run on rawpairs/), beside the
+# original ones.
 # The scenes are read in place; a scene missing under DATA is skipped with a message.
 RAW_OUT    ?= $(BUILD)/raw-scenes
 RAW_SCENES ?= cones teddy venus sawtooth
@@ -14,7 +17,7 @@ RAW_GRID   ?= 16
 .PHONY: raw-scenes
 raw-scenes: golden
 	@test -d "$(DATA)" || { echo "raw-scenes: no scenes at DATA='$(DATA)' (set DATA=/path/to/middlebury)"; exit 1; }
-	@rm -rf $(RAW_OUT) && mkdir -p $(RAW_OUT)/rectified
+	@rm -rf $(RAW_OUT) && mkdir -p $(RAW_OUT)/rectified $(RAW_OUT)/rawpairs
 	@found=; for s in $(RAW_SCENES); do \
 	  d=$(abspath $(DATA))/$$s; \
 	  if [ ! -f $$d/left.png ] || [ ! -f $$d/right.png ]; then echo "raw-scenes: $$s: no left.png and right.png under $(DATA), skipped"; continue; fi; \
@@ -23,12 +26,16 @@ raw-scenes: golden
 	  $(BIN)/sgm-eval calib-mesh --calib $(RAW_OUT)/raw/$$s --size-of $$d/left.png --grid $(RAW_GRID) --out $(RAW_OUT)/mesh/$$s | sed -n '2,4p' || exit 1; \
 	  $(BIN)/sgm-eval rectify --mesh $(RAW_OUT)/mesh/$$s/mesh.bin --left $(RAW_OUT)/raw/$$s/left.png \
 	    --right $(RAW_OUT)/raw/$$s/right.png --out $(RAW_OUT)/rectified/$$s >/dev/null || exit 1; \
-	  for f in gt.png nonocc.png all.png disc.png meta.txt; do [ ! -e $$d/$$f ] || ln -s $$d/$$f $(RAW_OUT)/rectified/$$s/$$f; done; \
+	  mkdir -p $(RAW_OUT)/rawpairs/$$s; \
+	  for f in left.png right.png; do ln -s $(abspath $(RAW_OUT))/raw/$$s/$$f $(RAW_OUT)/rawpairs/$$s/$$f; done; \
+	  ln -s $(abspath $(RAW_OUT))/mesh/$$s/mesh.bin $(RAW_OUT)/rawpairs/$$s/mesh.bin; \
+	  for f in gt.png nonocc.png all.png disc.png meta.txt; do [ ! -e $$d/$$f ] || { ln -s $$d/$$f $(RAW_OUT)/rectified/$$s/$$f; \
+	    ln -s $$d/$$f $(RAW_OUT)/rawpairs/$$s/$$f; }; done; \
 	  found="$$found,$$s"; \
 	done; \
 	[ -n "$$found" ] || { echo "raw-scenes: none of $(RAW_SCENES) under $(DATA)"; exit 1; }; \
-	echo "raw-scenes: the golden model on the rectified raw pairs:"; \
-	$(BIN)/sgm-eval run --data $(RAW_OUT)/rectified | grep nonocc; \
+	echo "raw-scenes: the golden model on the raw pairs, rectified as the core does it:"; \
+	$(BIN)/sgm-eval run --data $(RAW_OUT)/rawpairs | grep nonocc; \
 	echo "raw-scenes: the golden model on the original pairs:"; \
 	$(BIN)/sgm-eval run --data $(DATA) --scenes $${found#,} | grep nonocc
 

@@ -31,7 +31,8 @@ using eval::Scene;
 namespace {
 
 const char* kUsage =
-    "usage: sgm-eval run   --data DIR [pipeline options]   golden pipeline on every scene\n"
+    "usage: sgm-eval run   --data DIR [pipeline options]   golden pipeline on every scene (a scene with a\n"
+    "                                                      mesh.bin: a raw pair, rectified as the core does)\n"
     "       sgm-eval table --data DIR [--out DIR] [--d 64] Table I + full pipeline + OpenCV\n"
     "                                                      -> report.md, report.json, table1.png\n"
     "       sgm-eval bench --data DIR [--out DIR] [--scene cones] [--repeats 5]\n"
@@ -143,7 +144,11 @@ int commandRun(const CliArgs& args) {
   double sum = 0;
   const std::vector<Scene> scenes = loadAll(args);
   for (const auto& s : scenes) {
-    const DisparityMap map = runPipeline(s.left, s.right, params);
+    // A raw pair with its meshes (mesh.bin in the scene) is rectified as the core does it: the
+    // pixels whose left source lies outside the raw image are invalid.
+    const DisparityMap map = s.meshPath.empty()
+                                 ? runPipeline(s.left, s.right, params)
+                                 : runRectifiedPipeline(s.left, s.right, readMeshFile(s.meshPath), params);
     const eval::ErrorFigures f = eval::evaluate(eval::toFloat(map), s, delta);
     std::printf("%-10s nonocc %6.2f%%  all %6.2f%%  disc %6.2f%%  density %6.2f%%  valid-nonocc %6.2f%%\n",
                 s.name.c_str(), f.errNonocc, f.errAll, f.errDisc.value_or(-1), f.density, f.errNonoccValid);

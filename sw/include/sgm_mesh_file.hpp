@@ -37,10 +37,10 @@ inline constexpr size_t kMeshFileMaxBytes = size_t(64) << 20;
 
 // A calibration's two meshes as the file holds them.
 struct MeshFile {
-  uint32_t width = 0, height = 0, gridLog2 = 0;  // the frame, the step G = 2^gridLog2 px
-  uint32_t nodesX = 0, nodesY = 0;               // nodes per row, node rows (both meshes)
-  uint32_t focalQ8 = 0;                          // f, 1/256 px (FrameConfig::focalQ8)
-  uint32_t baselineUm = 0;                       // B, micrometres (FrameConfig::baselineUm)
+  uint32_t width = 0, height = 0, gridLog2 = 0;       // the frame, the step G = 2^gridLog2 px
+  uint32_t nodesX = 0, nodesY = 0;                    // nodes per row, node rows (both meshes)
+  uint32_t focalQ8 = 0;                               // f, 1/256 px (FrameConfig::focalQ8)
+  uint32_t baselineUm = 0;                            // B, micrometres (FrameConfig::baselineUm)
   std::vector<int32_t> leftU, leftV, rightU, rightV;  // nodesX x nodesY each, row by row, 1/32 px
 
   MeshImage left() const { return MeshImage{nodesX, nodesY, leftU.data(), leftV.data()}; }
@@ -94,8 +94,7 @@ inline std::string parseMeshFile(const void* data, size_t size, MeshFile* out) {
              std::to_string(kMeshFileMaxNodesPerSide);
   const size_t nodes = size_t(words[4]) * words[5];
   const size_t expected = kMeshFileHeaderBytes + 2 * nodes * 8;
-  if (size != expected)
-    return std::to_string(size) + " bytes, the header announces " + std::to_string(expected);
+  if (size != expected) return std::to_string(size) + " bytes, the header announces " + std::to_string(expected);
   MeshFile mesh;
   mesh.width = words[0], mesh.height = words[1], mesh.gridLog2 = words[2];
   mesh.nodesX = words[4], mesh.nodesY = words[5], mesh.focalQ8 = words[6], mesh.baselineUm = words[7];
