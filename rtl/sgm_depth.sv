@@ -20,13 +20,15 @@
 // V 2^(i+1), is compared with V 2^i on its top VW + 1 bits only (a VW + 1-bit
 // subtraction per stage, not a 49-bit one).
 //
-// Parameters: DW disparity bits (4 fractional; 5 .. 15).
+// Parameters: DW disparity bits (4 fractional; 5 .. 15); LATENCY the latency its user
+// expects (must be 20: the module checks its user's pipeline, as sgm_top waits the
+// confidence for the depth word).
 // Latency: LATENCY = 20 slots (input registers, N and V, the saturation, 16 quotient
 // bits, the word) in both modes. Throughput: one pixel per enabled slot (en_i).
 // Cost (Yosys 0.23, DW = 10, synth_ecp5): docs/notes/synthesis-log.md.
 module sgm_depth #(
   parameter int DW /*verilator public*/ = 10,
-  localparam int LATENCY = 20
+  parameter int LATENCY = 20
 ) (
   input  wire         clk_i,
   input  wire         rst_ni,
@@ -46,6 +48,9 @@ module sgm_depth #(
   output logic          out_valid_o
 );
 
+  // The pipeline's stages: the input registers, N and V, the saturation, 16 quotient bits, the word.
+  localparam int STAGES = 3 + 16 + 1;
+
   // ------------------------------------------------------------ parameter checks
   // An illegal parameter value stops elaboration with a message naming it ($error in
   // a generate block: Verilator and Yosys; Icarus 11 has no elaboration system tasks,
@@ -53,6 +58,9 @@ module sgm_depth #(
 `ifndef __ICARUS__
   if (!(DW >= 5 && DW <= 15)) begin : g_bad_dw
     $error("sgm_depth: DW = %0d: DW must be from 5 to 15 (4 fractional bits; the disparity word has 15 data bits)", DW);
+  end
+  if (!(LATENCY == STAGES)) begin : g_bad_latency
+    $error("sgm_depth: LATENCY = %0d: the latency is %0d slots (input registers, N and V, the saturation, 16 quotient bits, the word)", LATENCY, STAGES);
   end
 `endif
 

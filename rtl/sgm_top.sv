@@ -899,12 +899,12 @@ module sgm_top #(
   // With the depth output the frame's first slot also waits for K = F B (sgm_depth's
   // ready_o: the P2 table's ready and its product's, which takes up to 24 cycles after
   // lut_start). OUTPUT.MODE's upper bit is 0 in every frame the core takes (cfg_below_max).
-  localparam int DEPTH_LATENCY = 20;  // sgm_depth LATENCY
+  localparam int DEPTH_LATENCY = 20;  // sgm_depth LATENCY (which checks it)
   logic [15:0] word16;
   logic        word16_valid;
   if (DEPTH != 0) begin : g_depth
     wire unused_mode_high = cfg[CFG_OUTPUT_MODE_LSB + 1];
-    sgm_depth #(.DW(DW)) u_depth (
+    sgm_depth #(.DW(DW), .LATENCY(DEPTH_LATENCY)) u_depth (
       .clk_i       (clk_i),
       .rst_ni      (rst_ni),
       .en_i        (en),
