@@ -19,7 +19,7 @@
 #   d64-w1280                 sgm_top's defaults (H 1024, 9x5 census, one lane, both levers,
 #                             the fifth path in blocks of 64, the path restart built, no
 #                             depth output or minimum disparity)
-#   d64-w1024-k6-rb0-er0      the `make pnr` core (six lanes, four paths, no restart)
+#   d64-w1024-k6-rb0-er0-mw128  the `make pnr` core (six lanes, four paths, no restart, frames from 128 columns)
 #   d16-w128-u0-ad0-rb0-er0   the lean build
 #
 # One build has one tag whichever flow makes it: build/bin/sgm-sim-<tag>[-trace|-<variant>],

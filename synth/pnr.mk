@@ -22,7 +22,7 @@
 #                       to the four-path preset, which leaves the restart off); PNR_MAX_HEIGHT
 #                       and PNR_CENSUS_H (sgm_top's defaults) complete the build, PNR_CORE
 #                       (scripts/build.mk): every parameter goes to Yosys, the run directory
-#                       is build/pnr/<tag>/lfe5u-<device>-<speed>-s<seed>/ (e.g. d64-w1024-k6-rb0-er0)
+#                       is build/pnr/<tag>/lfe5u-<device>-<speed>-s<seed>/ (e.g. d64-w1024-k6-rb0-er0-mw128)
 #                       and its meta.txt records every parameter
 #   make pnr-summary    rebuild summary.{json,md} from what build/pnr holds
 #
