@@ -109,4 +109,6 @@ build-defaults-check:
 	@for kv in $(CORE_DEFAULTS); do n=$${kv%%=*}; v=$${kv#*=}; \
 	   rtl=$$(sed -nE "s/^[[:space:]]*parameter[[:space:]]+int[[:space:]]+$$n[[:space:]][^=]*=[[:space:]]*([0-9]+).*/\1/p" rtl/sgm_top.sv | head -1); \
 	   [ "$$rtl" = "$$v" ] || { echo "build-defaults-check: $$n: scripts/build.mk says $$v, rtl/sgm_top.sv says '$$rtl'"; exit 1; }; \
-	 done; echo "build-defaults-check: OK (CORE_DEFAULTS = sgm_top's parameter defaults)"
+	 done; \
+	 for n in $(CORE_PARAMS); do grep -q "^  $$n:$$" sgm.core || { echo "build-defaults-check: sgm.core declares no parameter $$n (scripts/build.mk CORE_PARAMS)"; exit 1; }; done; \
+	 echo "build-defaults-check: OK (CORE_DEFAULTS = sgm_top's parameter defaults; sgm.core declares each)"
