@@ -66,6 +66,16 @@ struct TempDir {
   }
 };
 
+// A 40x30 pair's meshes (step 8) with the depth parameters f (1/256 px) and B (um).
+sgm::StereoMesh meshPair(uint32_t focalQ8, uint32_t baselineUm) {
+  sgm::StereoMesh mesh;
+  mesh.left = affineMesh(40, 30, 3, 1, 0.5, -1);
+  mesh.right = affineMesh(40, 30, 3, 0.99, 2, 1);
+  mesh.focalQ8 = focalQ8;
+  mesh.baselineUm = baselineUm;
+  return mesh;
+}
+
 }  // namespace
 
 TEST(Rectify, NodeCountCoversTheLastPixel) {
@@ -147,11 +157,7 @@ TEST(Rectify, RowSpanFollowsTheVerticalShift) {
 }
 
 TEST(Rectify, MeshFileRoundTripsAndRejectsDamage) {
-  sgm::StereoMesh mesh;
-  mesh.left = affineMesh(40, 30, 3, 1, 0.5, -1);
-  mesh.right = affineMesh(40, 30, 3, 0.99, 2, 1);
-  mesh.focalQ8 = 12345;
-  mesh.baselineUm = 160000;
+  const sgm::StereoMesh mesh = meshPair(12345, 160000);
   const std::string bytes = sgm::encodeMeshFile(mesh);
   const sgm::StereoMesh back = sgm::decodeMeshFile(bytes, "m.bin");
   EXPECT_EQ(back.left.u, mesh.left.u);
@@ -178,11 +184,7 @@ TEST(Rectify, MeshFileRoundTripsAndRejectsDamage) {
 // format): the same nodes, f and B, MeshImage views of them for Driver::loadMeshes, and one line
 // naming the path for a file that is not whole.
 TEST(Rectify, TheDriverReadsTheMeshFile) {
-  sgm::StereoMesh mesh;
-  mesh.left = affineMesh(40, 30, 3, 1, 0.5, -1);
-  mesh.right = affineMesh(40, 30, 3, 0.99, 2, 1);
-  mesh.focalQ8 = 4321;
-  mesh.baselineUm = 75000;
+  const sgm::StereoMesh mesh = meshPair(4321, 75000);
   const std::string bytes = sgm::encodeMeshFile(mesh);
   const fs::path dir = fs::temp_directory_path() / ("sgm-mesh-" + std::to_string(::getpid()));
   fs::create_directories(dir);
